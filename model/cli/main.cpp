@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// anglecore: the command-line front end (DESIGN 3.3). Exit 0 ok, 2 bad usage/input, 1 failed check.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+#include "errors.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"AngleCore: angle-sensor calibration, estimation, co-simulation and diagnosis"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Print help for every subcommand");
+  acore::cli::add_demo(app);
+  acore::cli::add_simulate(app);
+  acore::cli::add_calibrate(app);
+  acore::cli::add_estimate(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const acore::InputError& e) {
+    std::cerr << "anglecore: error: " << e.what() << "\n";
+    return 2;
+  } catch (const acore::CheckFailed& e) {
+    std::cerr << "anglecore: check failed: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "anglecore: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

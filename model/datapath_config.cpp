@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#include "datapath_config.hpp"
+
+#include <fmt/format.h>
+
+#include "errors.hpp"
+
+namespace acore {
+
+void DatapathConfig::validate() const {
+  auto need = [](bool ok, const std::string& why) {
+    if (!ok) throw InputError("datapath configuration: " + why);
+  };
+  need(in_w >= 8 && in_w <= 24, fmt::format("in_w={} must be 8..24", in_w));
+  need(reg_w >= d_w() + 1 && reg_w <= 30,
+       fmt::format("reg_w={} must hold an offset of d_w+1={} bits and be <= 30", reg_w, d_w() + 1));
+  need(s_w >= s_f + 2 && s_w <= 30, fmt::format("s_w={} must be s_f+2..30 (s_f={})", s_w, s_f));
+  need(r_shift >= 0 && scale_guard >= 0 && scale_guard <= r_shift,
+       fmt::format("need 0 <= scale_guard={} <= r_shift={}", scale_guard, r_shift));
+  need(degree >= 1 && degree <= 7, fmt::format("degree={} must be 1..7", degree));
+  need(regions == 4 || regions == 8, fmt::format("regions={} must be 4 or 8", regions));
+  need(coef_f >= 1 && coef_f < reg_w, fmt::format("coef_f={} must be 1..reg_w-1", coef_f));
+  need(acc_f() >= s_f, fmt::format("coef_f+acc_guard={} must be >= s_f={}", acc_f(), s_f));
+  need(acc_int >= reg_w - coef_f + 1, fmt::format("acc_int={} too small for the coefficients", acc_int));
+  need(acc_w() <= 40, fmt::format("acc_w={} must be <= 40", acc_w()));
+  need(iterations >= 4 && iterations <= 24, fmt::format("iterations={} must be 4..24", iterations));
+  need(cordic_guard >= 0 && cordic_guard <= 8, fmt::format("cordic_guard={} must be 0..8", cordic_guard));
+  need(z_w >= angle_w && z_w <= reg_w + 2,
+       fmt::format("z_w={} must be angle_w={}..reg_w+2={} (atan(1) must fit a word)", z_w, angle_w,
+                   reg_w + 2));
+  need(angle_w >= 8 && angle_w <= 24, fmt::format("angle_w={} must be 8..24", angle_w));
+}
+
+std::string DatapathConfig::describe() const {
+  return fmt::format(
+      "in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} coef_f={} "
+      "acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}",
+      in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions, coef_f, acc_guard, acc_int,
+      iterations, cordic_guard, z_w, angle_w);
+}
+
+}  // namespace acore

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// The fixed-point contract of the estimator datapath: every width, Q-format and register address.
+// The RTL parameters of rtl/acore_top.v have the same names in upper case (IN_W, S_W, ...), and the
+// README's "Fixed-point contract" section documents the same numbers.
+#pragma once
+#include <string>
+
+namespace acore {
+
+struct DatapathConfig {
+  // --- input and pre-filter ---
+  int in_w = 16;  // IN_W: channel code width, signed two's complement
+  // --- register file ---
+  int reg_w = 18;  // REG_W: coefficient register word width
+  // --- scaling: s = (d - O) * R, R = round(2^(S_F + R_SHIFT) / A) ---
+  int s_w = 18;         // S_W: scaled/corrected curve width, signed
+  int s_f = 16;         // S_F: fraction bits of s (Q2.16: 1.0 = 65536)
+  int r_shift = 14;     // R_SHIFT: extra scale of the amplitude reciprocal R
+  int scale_guard = 4;  // SCALE_G: guard fraction bits kept in the shift-add product
+  // --- domain selection and polynomial correction ---
+  int degree = 3;     // DEGREE: polynomial degree n
+  int regions = 4;    // REGIONS: 4 or 8
+  int coef_f = 15;    // COEF_F: fraction bits of a polynomial coefficient (REG_W wide, signed)
+  int acc_guard = 4;  // ACC_G: guard fraction bits of the Horner accumulator
+  int acc_int = 6;    // ACC_I: integer bits (incl. sign) of the Horner accumulator
+  // --- CORDIC ---
+  int iterations = 16;   // K: CORDIC iterations = pipeline stages
+  int cordic_guard = 3;  // CORDIC_G: guard fraction bits of the CORDIC x/y registers
+  int z_w = 20;          // Z_W: CORDIC angle accumulator width, one turn = 2^Z_W
+  int angle_w = 16;      // ANGLE_W: output angle width, unsigned, one turn = 2^ANGLE_W
+
+  // Derived, do not set.
+  int d_w() const { return in_w + 1; }                 // D_W: c1 - c3
+  int t_w() const { return d_w() + 1; }                // T_W: d - O
+  int acc_f() const { return coef_f + acc_guard; }     // ACC_F
+  int acc_w() const { return acc_f() + acc_int; }      // ACC_W
+  int coef_per_curve() const { return degree + 1; }
+  int poly_words() const { return 2 * regions * (degree + 1); }
+  int words() const { return 4 + poly_words() + iterations; }
+  int xy_w() const { return s_w + 2 + cordic_guard; }  // XY_W: CORDIC x/y (gain 1.65 * sqrt 2)
+
+  // Register map (DESIGN 3.2). curve 0 = sine curve c13, 1 = cosine curve c24.
+  int addr_offset(int curve) const { return curve; }
+  int addr_recip(int curve) const { return 2 + curve; }
+  int addr_poly(int region, int curve, int power) const {
+    return 4 + 2 * (degree + 1) * region + (degree + 1) * curve + power;
+  }
+  int addr_atan(int i) const { return 4 + poly_words() + i; }
+
+  // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
+  void validate() const;
+  std::string describe() const;  // "degree=3 regions=4 iterations=16 ..." for headers and logs
+};
+
+}  // namespace acore

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include "fixed_model.hpp"
+
+#include <cmath>
+
+#include "fixed_point.hpp"
+#include "poly_correct.hpp"
+#include "prefilter.hpp"
+#include "region_select.hpp"
+#include "scaler.hpp"
+
+namespace acore {
+
+StatusWindow StatusWindow::defaults(const DatapathConfig& cfg) {
+  // CORDIC gain prod sqrt(1 + 2^-2i) for K iterations.
+  double gain = 1.0;
+  for (int i = 0; i < cfg.iterations; ++i) gain *= std::sqrt(1.0 + std::ldexp(1.0, -2 * i));
+  const double nominal = gain * std::ldexp(1.0, cfg.s_f);
+  return {static_cast<int64_t>(std::llround(0.5 * nominal)),
+          static_cast<int64_t>(std::llround(1.5 * nominal))};
+}
+
+bool FixedSample::operator==(const FixedSample& o) const {
+  return angle == o.angle && region == o.region && ovf == o.ovf && los == o.los && dos == o.dos;
+}
+
+FixedModel::FixedModel(const RegImage& img) : FixedModel(img, StatusWindow::defaults(img.cfg)) {}
+
+FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), window_(window) {
+  const DatapathConfig& cfg = img_.cfg;
+  cfg.validate();
+  for (int r = 0; r < cfg.regions; ++r)
+    for (int c = 0; c < 2; ++c)
+      for (int j = 0; j <= cfg.degree; ++j) coef_.push_back(img_.poly(r, c, j));
+  for (int i = 0; i < cfg.iterations; ++i) atan_.push_back(img_.atan(i));
+}
+
+CordicConfig FixedModel::cordic_config() const {
+  const DatapathConfig& cfg = img_.cfg;
+  CordicConfig c;
+  c.in_w = cfg.s_w;
+  c.guard = cfg.cordic_guard;
+  c.z_w = cfg.z_w;
+  c.angle_w = cfg.angle_w;
+  c.iterations = cfg.iterations;
+  c.normalize = false;
+  return c;
+}
+
+int64_t FixedModel::to_code(double v, double in_scale, int in_w) {
+  const double code = std::nearbyint(v * in_scale);
+  if (!(code <= static_cast<double>(fx::smax(in_w)))) return fx::smax(in_w);  // also NaN
+  if (code < static_cast<double>(fx::smin(in_w))) return fx::smin(in_w);
+  return static_cast<int64_t>(code);
+}
+
+FixedSample FixedModel::step(const ChannelCodes& c) const {
+  const DatapathConfig& cfg = img_.cfg;
+  FixedSample out;
+  const DiffPair d = prefilter(c[0], c[1], c[2], c[3]);
+  out.s13 = scale_curve(d.d13, img_.offset(0), img_.recip(0), cfg, &out.ovf);
+  out.s24 = scale_curve(d.d24, img_.offset(1), img_.recip(1), cfg, &out.ovf);
+  const RegionChoice rc = select_region(out.s13, out.s24, cfg.regions);
+  out.region = rc.region;
+  const int64_t* coef = &coef_[static_cast<size_t>(rc.region) * 2 * (cfg.degree + 1)];
+  out.y13 = poly_correct(out.s13, rc.x, coef, cfg, &out.ovf);
+  out.y24 = poly_correct(out.s24, rc.x, coef + cfg.degree + 1, cfg, &out.ovf);
+  const CordicConfig cc = cordic_config();
+  const CordicResult r = cordic_vector(out.y24, out.y13, cc, atan_.data());
+  out.angle = r.angle;
+  out.magnitude = r.magnitude;
+  out.los = r.magnitude < window_.mag_lo;
+  out.dos = r.magnitude > window_.mag_hi;
+  out.uncorrected_angle = cordic_vector(out.s24, out.s13, cc, atan_.data()).angle;
+  return out;
+}
+
+}  // namespace acore

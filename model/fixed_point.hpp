@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// Integer primitives of the bit-accurate model. Each maps to one RTL construct:
+//   shr()            arithmetic shift right (floor), a wire slice / `>>>` in Verilog
+//   round_shr()      add half an LSB then shift: round half up, one adder
+//   saturate()       clamp to a signed width, sets the stage's overflow flag
+//   shift_add_mul()  the adder/shifter multiplier: one conditional add of a shifted operand per
+//                    bit of the other operand, every partial product truncated (floor) on its own
+#pragma once
+#include <cstdint>
+
+namespace acore::fx {
+
+// v * 2^-n with floor for n >= 0, v * 2^-n exactly (left shift) for n < 0.
+inline int64_t shr(int64_t v, int n) {
+  return n >= 0 ? (v >> n) : static_cast<int64_t>(static_cast<uint64_t>(v) << -n);
+}
+
+// Round half up: floor(v * 2^-n + 1/2), n >= 1; plain v for n == 0.
+inline int64_t round_shr(int64_t v, int n) { return n > 0 ? ((v + (int64_t{1} << (n - 1))) >> n) : v; }
+
+inline int64_t smax(int w) { return (int64_t{1} << (w - 1)) - 1; }
+inline int64_t smin(int w) { return -(int64_t{1} << (w - 1)); }
+
+// Clamps v to a signed w-bit word; sets *ovf (if given) when it had to.
+inline int64_t saturate(int64_t v, int w, bool* ovf) {
+  if (v > smax(w)) {
+    if (ovf) *ovf = true;
+    return smax(w);
+  }
+  if (v < smin(w)) {
+    if (ovf) *ovf = true;
+    return smin(w);
+  }
+  return v;
+}
+
+// Sign-extends the low w bits of v.
+inline int64_t sext(int64_t v, int w) {
+  const uint64_t m = uint64_t{1} << (w - 1);
+  const uint64_t u = static_cast<uint64_t>(v) & ((m << 1) - 1);
+  return static_cast<int64_t>((u ^ m) - m);
+}
+
+// a * b * 2^-rshift on adders and shifters: sum over the bits j of b (b_w bits, two's complement
+// when b_signed, so its top bit weighs -2^(b_w-1)) of shr(a, rshift - j). Each partial product is
+// truncated on its own, so the result is not a*b>>rshift but what the RTL's adder tree computes.
+inline int64_t shift_add_mul(int64_t a, int64_t b, int b_w, bool b_signed, int rshift) {
+  const uint64_t bits = static_cast<uint64_t>(b);
+  int64_t sum = 0;
+  for (int j = 0; j < b_w; ++j) {
+    const int64_t pp = shr(a, rshift - j);
+    const int64_t take = -static_cast<int64_t>((bits >> j) & 1u);  // all ones when bit j is set
+    if (b_signed && j == b_w - 1)
+      sum -= pp & take;
+    else
+      sum += pp & take;
+  }
+  return sum;
+}
+
+}  // namespace acore::fx

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: MIT
+#include "regimage.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "errors.hpp"
+#include "fixed_point.hpp"
+
+namespace acore {
+
+namespace {
+
+uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
+
+// Header keys and the config field each sets.
+std::map<std::string, int DatapathConfig::*> config_fields() {
+  return {{"in_w", &DatapathConfig::in_w},         {"reg_w", &DatapathConfig::reg_w},
+          {"s_w", &DatapathConfig::s_w},           {"s_f", &DatapathConfig::s_f},
+          {"r_shift", &DatapathConfig::r_shift},   {"scale_guard", &DatapathConfig::scale_guard},
+          {"degree", &DatapathConfig::degree},     {"regions", &DatapathConfig::regions},
+          {"coef_f", &DatapathConfig::coef_f},     {"acc_guard", &DatapathConfig::acc_guard},
+          {"acc_int", &DatapathConfig::acc_int},   {"iterations", &DatapathConfig::iterations},
+          {"cordic_guard", &DatapathConfig::cordic_guard}, {"z_w", &DatapathConfig::z_w},
+          {"angle_w", &DatapathConfig::angle_w}};
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+}  // namespace
+
+int64_t RegImage::offset(int curve) const { return fx::sext(words.at(cfg.addr_offset(curve)), cfg.reg_w); }
+int64_t RegImage::recip(int curve) const { return static_cast<int64_t>(words.at(cfg.addr_recip(curve))); }
+int64_t RegImage::poly(int r, int c, int j) const {
+  return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
+}
+int64_t RegImage::atan(int i) const { return static_cast<int64_t>(words.at(cfg.addr_atan(i))); }
+
+void RegImage::set_signed(int addr, int64_t value) {
+  if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))
+    throw InputError(fmt::format("register {}: value {} does not fit a signed {}-bit word", addr, value,
+                                 cfg.reg_w));
+  words.at(addr) = static_cast<uint64_t>(value) & word_mask(cfg.reg_w);
+}
+
+void RegImage::set_unsigned(int addr, int64_t value) {
+  if (value < 0 || static_cast<uint64_t>(value) > word_mask(cfg.reg_w))
+    throw InputError(fmt::format("register {}: value {} does not fit an unsigned {}-bit word", addr,
+                                 value, cfg.reg_w));
+  words.at(addr) = static_cast<uint64_t>(value);
+}
+
+RegImage parse_regimage(const std::string& text, const std::string& name) {
+  RegImage img;
+  const auto fields = config_fields();
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  bool in_scale_seen = false;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::string comment;
+    if (const auto pos = line.find("//"); pos != std::string::npos) {
+      comment = trim(line.substr(pos + 2));
+      line = line.substr(0, pos);
+    }
+    if (comment.rfind("acore:", 0) == 0) {
+      const std::string kv = trim(comment.substr(6));
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos)
+        throw InputError(fmt::format("{}:{}: header: expected 'acore: key=value'", name, lineno));
+      const std::string key = trim(kv.substr(0, eq)), val = trim(kv.substr(eq + 1));
+      try {
+        size_t used = 0;
+        if (key == "in_scale") {
+          img.in_scale = std::stod(val, &used);
+          in_scale_seen = true;
+          if (!(img.in_scale > 0) || !std::isfinite(img.in_scale)) used = 0;
+        } else if (auto it = fields.find(key); it != fields.end()) {
+          img.cfg.*(it->second) = std::stoi(val, &used);
+        } else {
+          used = val.size();  // unknown keys (command, date, ...) are provenance
+          img.provenance.push_back(kv);
+        }
+        if (used != val.size()) throw std::invalid_argument(val);
+      } catch (const std::exception&) {
+        throw InputError(fmt::format("{}:{}: header field '{}': bad value '{}'", name, lineno, key, val));
+      }
+      continue;
+    }
+    const std::string word = trim(line);
+    if (word.empty()) continue;
+    if (word.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos || word.size() > 15)
+      throw InputError(fmt::format("{}:{}: word {}: '{}' is not a hex word", name, lineno,
+                                   img.words.size(), word));
+    img.words.push_back(std::stoull(word, nullptr, 16));
+  }
+  try {
+    img.cfg.validate();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: header: {}", name, e.what()));
+  }
+  if (!in_scale_seen) throw InputError(fmt::format("{}: header: missing 'acore: in_scale=...'", name));
+  if (static_cast<int>(img.words.size()) != img.cfg.words())
+    throw InputError(fmt::format("{}: {} words, but the header's configuration needs {} ({})", name,
+                                 img.words.size(), img.cfg.words(), img.cfg.describe()));
+  for (size_t a = 0; a < img.words.size(); ++a)
+    if (img.words[a] > word_mask(img.cfg.reg_w))
+      throw InputError(fmt::format("{}: word {} = {:x} does not fit {} bits", name, a, img.words[a],
+                                   img.cfg.reg_w));
+  return img;
+}
+
+RegImage read_regimage(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(fmt::format("{}: cannot open register image", path));
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return parse_regimage(ss.str(), path);
+}
+
+std::string format_regimage(const RegImage& img) {
+  const DatapathConfig& c = img.cfg;
+  std::string out = "// AngleCore coefficient register image ($readmemh), DESIGN 3.2 map\n";
+  for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
+  out += fmt::format("// acore: in_scale={}\n", img.in_scale);
+  for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  const int digits = (c.reg_w + 3) / 4;
+  auto line = [&](int addr, const std::string& what) {
+    out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
+  };
+  for (int k = 0; k < 2; ++k)
+    line(c.addr_offset(k), fmt::format("offset O{} = {} codes", k ? "24" : "13", img.offset(k)));
+  for (int k = 0; k < 2; ++k)
+    line(c.addr_recip(k), fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
+                                      std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
+  for (int r = 0; r < c.regions; ++r)
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j <= c.degree; ++j)
+        line(c.addr_poly(r, k, j), fmt::format("region {} {} x^{} = {:+.6f}", r, k ? "c24" : "c13", j,
+                                               std::ldexp(static_cast<double>(img.poly(r, k, j)), -c.coef_f)));
+  for (int i = 0; i < c.iterations; ++i)
+    line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,
+                                     std::ldexp(static_cast<double>(img.atan(i)), -c.z_w) * 360.0));
+  return out;
+}
+
+void write_regimage(const RegImage& img, const std::string& path) {
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw InputError(fmt::format("{}: cannot write register image", path));
+  f << format_regimage(img);
+  if (!f) throw InputError(fmt::format("{}: write failed", path));
+}
+
+}  // namespace acore
