@@ -15,7 +15,7 @@ struct DatapathConfig {
   // --- scaling: s = (d - O) * R, R = round(2^(S_F + R_SHIFT) / A) ---
   int s_w = 18;         // S_W: scaled/corrected curve width, signed
   int s_f = 16;         // S_F: fraction bits of s (Q2.16: 1.0 = 65536)
-  int r_shift = 14;     // R_SHIFT: extra scale of the amplitude reciprocal R
+  int r_shift = 13;     // R_SHIFT: extra scale of the amplitude reciprocal R
   int scale_guard = 4;  // SCALE_G: guard fraction bits kept in the shift-add product
   // --- domain selection and polynomial correction ---
   int degree = 3;     // DEGREE: polynomial degree n

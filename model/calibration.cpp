@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+#include "calibration.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "cordic.hpp"
+#include "errors.hpp"
+#include "region_select.hpp"
+
+namespace acore {
+
+FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
+  if (!rec.has_theta()) throw InputError("calibration needs a theta_ref column");
+  const size_t n = rec.size();
+  const int terms = opt.degree + 1;
+  if (n < static_cast<size_t>(8 * terms * opt.regions))
+    throw InputError(fmt::format("calibration needs at least {} samples, the recording has {}",
+                                 8 * terms * opt.regions, n));
+  // The fit must see the whole electrical turn: every 10-degree sector of p * theta_ref.
+  std::vector<int> sector(36, 0);
+  for (double th : rec.theta_ref) {
+    const double e = std::fmod(opt.periodicity * th, 2 * M_PI);
+    ++sector[std::min(35, static_cast<int>((e < 0 ? e + 2 * M_PI : e) / (2 * M_PI) * 36))];
+  }
+  const long covered = std::count_if(sector.begin(), sector.end(), [](int k) { return k > 0; });
+  if (covered < 36)
+    throw InputError(fmt::format("calibration: theta_ref covers only {} of the 36 ten-degree sectors "
+                                 "of a turn; record at least one full turn", covered));
+  FloatCoefficients fc;
+  fc.degree = opt.degree;
+  fc.regions = opt.regions;
+  fc.poly.assign(static_cast<size_t>(opt.regions) * 2 * terms, 0.0);
+
+  // Scaling: offset = mean, amplitude = sqrt(2/N sum (c - O)^2)  (Eq. 4).
+  std::vector<double> d[2] = {std::vector<double>(n), std::vector<double>(n)};
+  for (size_t i = 0; i < n; ++i) {
+    d[0][i] = rec.d13(i);
+    d[1][i] = rec.d24(i);
+  }
+  for (int c = 0; c < 2; ++c) {
+    double sum = 0;
+    for (double v : d[c]) sum += v;
+    fc.offset[c] = sum / n;
+    double ss = 0;
+    for (double v : d[c]) ss += (v - fc.offset[c]) * (v - fc.offset[c]);
+    fc.amp[c] = std::sqrt(2.0 * ss / n);
+    if (!(fc.amp[c] > 0)) throw InputError(fmt::format("calibration: curve {} has zero amplitude", c ? "c24" : "c13"));
+  }
+
+  // Domain selection and the design matrix per region.
+  std::vector<std::vector<size_t>> members(opt.regions);
+  std::vector<double> xs(n), s13(n), s24(n);
+  for (size_t i = 0; i < n; ++i) {
+    s13[i] = (d[0][i] - fc.offset[0]) / fc.amp[0];
+    s24[i] = (d[1][i] - fc.offset[1]) / fc.amp[1];
+    members[select_region_real(s13[i], s24[i], opt.regions, &xs[i])].push_back(i);
+  }
+  for (int r = 0; r < opt.regions; ++r) {
+    const auto& m = members[r];
+    if (m.size() < static_cast<size_t>(2 * terms))
+      throw InputError(fmt::format(
+          "calibration: region {} has {} samples, at least {} needed (does the recording cover a turn?)",
+          r, m.size(), 2 * terms));
+    Eigen::MatrixXd V(m.size(), terms);
+    Eigen::MatrixXd rhs(m.size(), 2);
+    for (size_t k = 0; k < m.size(); ++k) {
+      const size_t i = m[k];
+      double pw = 1;
+      for (int j = 0; j < terms; ++j, pw *= xs[i]) V(k, j) = pw;
+      const double e = opt.periodicity * rec.theta_ref[i];
+      rhs(k, 0) = s13[i] - std::sin(e);  // Eq. 6: measured scaled curve minus the ideal one
+      rhs(k, 1) = s24[i] - std::cos(e);
+    }
+    const Eigen::MatrixXd sol = V.colPivHouseholderQr().solve(rhs);
+    for (int c = 0; c < 2; ++c)
+      for (int j = 0; j < terms; ++j) fc.coef(r, c, j) = sol(j, c);
+  }
+  return fc;
+}
+
+double choose_in_scale(const Recording& rec, int in_w) {
+  double peak = 0;
+  for (int c = 0; c < rec.channels; ++c)
+    for (double v : rec.ch[c]) peak = std::max(peak, std::fabs(v));
+  if (!(peak > 0) || !std::isfinite(peak)) throw InputError("recording has no signal (all channels zero)");
+  const double target = std::ldexp(1.0, in_w - 3);  // a quarter of full scale
+  return std::ldexp(1.0, static_cast<int>(std::floor(std::log2(target / peak))));
+}
+
+RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_scale) {
+  cfg.degree = fc.degree;
+  cfg.regions = fc.regions;
+  cfg.validate();
+  RegImage img;
+  img.cfg = cfg;
+  img.in_scale = in_scale;
+  img.words.assign(cfg.words(), 0);
+  for (int c = 0; c < 2; ++c) {
+    const char* curve = c ? "c24" : "c13";
+    // The offset and amplitude are in codes of the pre-filtered curve d (D_W bits).
+    try {
+      img.set_signed(cfg.addr_offset(c), std::llround(fc.offset[c] * in_scale));
+    } catch (const InputError&) {
+      throw InputError(fmt::format("offset of {} = {} does not fit the {}-bit register", curve,
+                                   fc.offset[c], cfg.reg_w));
+    }
+    const double amp_codes = fc.amp[c] * in_scale;
+    const double recip = std::ldexp(1.0, cfg.s_f + cfg.r_shift) / amp_codes;
+    try {
+      img.set_unsigned(cfg.addr_recip(c), std::llround(recip));
+    } catch (const InputError&) {
+      throw InputError(fmt::format(
+          "amplitude of {} = {:.1f} codes is out of the reciprocal register's range (needs "
+          "2^(S_F+R_SHIFT)/A < 2^REG_W, i.e. A > {:.0f} codes): raise in_scale or r_shift",
+          curve, amp_codes, std::ldexp(1.0, cfg.s_f + cfg.r_shift - cfg.reg_w)));
+    }
+  }
+  for (int r = 0; r < cfg.regions; ++r)
+    for (int c = 0; c < 2; ++c)
+      for (int j = 0; j <= cfg.degree; ++j) {
+        const double v = fc.coef(r, c, j);
+        const long long q = std::llround(std::ldexp(v, cfg.coef_f));
+        try {
+          img.set_signed(cfg.addr_poly(r, c, j), q);
+        } catch (const InputError&) {
+          throw InputError(fmt::format(
+              "polynomial coefficient region {} curve {} x^{} = {:.4f} exceeds the Q{}.{} range: "
+              "lower --coef-frac",
+              r, c ? "c24" : "c13", j, v, cfg.reg_w - cfg.coef_f, cfg.coef_f));
+        }
+      }
+  const auto table = cordic_atan_table(cfg.z_w, cfg.iterations);
+  for (int i = 0; i < cfg.iterations; ++i) img.set_unsigned(cfg.addr_atan(i), table[i]);
+  return img;
+}
+
+FloatCoefficients dequantize(const RegImage& img) {
+  const DatapathConfig& cfg = img.cfg;
+  FloatCoefficients fc;
+  fc.degree = cfg.degree;
+  fc.regions = cfg.regions;
+  fc.poly.assign(static_cast<size_t>(cfg.regions) * 2 * (cfg.degree + 1), 0.0);
+  for (int c = 0; c < 2; ++c) {
+    fc.offset[c] = img.offset(c) / img.in_scale;
+    if (img.recip(c) <= 0) throw InputError("register image: an amplitude reciprocal is zero");
+    fc.amp[c] = std::ldexp(1.0, cfg.s_f + cfg.r_shift) / img.recip(c) / img.in_scale;
+  }
+  for (int r = 0; r < cfg.regions; ++r)
+    for (int c = 0; c < 2; ++c)
+      for (int j = 0; j <= cfg.degree; ++j)
+        fc.coef(r, c, j) = std::ldexp(static_cast<double>(img.poly(r, c, j)), -cfg.coef_f);
+  return fc;
+}
+
+}  // namespace acore

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Calibration (paper section II.B): pre-filter, scaling (offset = mean, amplitude per Eq. 4),
+// domain selection (region_select.hpp), and a least-squares fit per region of the differences of
+// Eq. 6: d13 = s13 - sin(p theta_ref) and d24 = s24 - cos(p theta_ref) against powers of x.
+// Then quantization of everything into the register image (DESIGN 3.2).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "datapath_config.hpp"
+#include "recording.hpp"
+#include "regimage.hpp"
+
+namespace acore {
+
+// The calibrated estimator in real numbers: what the float model runs.
+struct FloatCoefficients {
+  int degree = 3;
+  int regions = 4;
+  double offset[2] = {0, 0};  // O13, O24 in recording units
+  double amp[2] = {1, 1};     // A13, A24 in recording units
+  std::vector<double> poly;   // [region][curve][power], curve 0 = c13, 1 = c24
+  double& coef(int r, int c, int j) { return poly[(r * 2 + c) * (degree + 1) + j]; }
+  double coef(int r, int c, int j) const { return poly[(r * 2 + c) * (degree + 1) + j]; }
+};
+
+struct CalOptions {
+  int degree = 3;
+  int regions = 4;
+  int periodicity = 1;  // electrical periods per turn: the reference is sin/cos(p theta_ref)
+};
+
+// Throws InputError when the recording has no theta_ref or too few samples in a region.
+FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt);
+
+// The "ADC" gain: the largest power of two that maps the recording's largest |channel| to at most
+// a quarter of the IN_W-bit full scale (headroom for samples the calibration never saw).
+double choose_in_scale(const Recording& rec, int in_w);
+
+// Quantizes into a register image of configuration cfg (degree and regions taken from coef).
+// Throws InputError naming the register when a value does not fit its field.
+RegImage quantize(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
+
+// The real values a register image stands for (so the float engine can run from an image).
+FloatCoefficients dequantize(const RegImage& img);
+
+}  // namespace acore

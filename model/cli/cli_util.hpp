@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// Small helpers shared by the subcommands: JSON output (`--json FILE`, `-` for stdout) and the
+// periodicity a recording declares in its metadata.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "error_stats.hpp"
+#include "recording.hpp"
+
+namespace acore::cli {
+
+void write_json(const std::string& path, const nlohmann::json& j);
+nlohmann::json stats_json(const ErrorStats& s);
+// `# p=N` in the recording's metadata, else 1; throws InputError on a malformed value.
+int recording_periodicity(const Recording& rec, const std::string& path);
+
+}  // namespace acore::cli

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// Runs an estimator engine over a whole recording: the common front of `estimate`, `demo` and
+// `diagnose`. The RTL engine lives in tb/rtl_engine.hpp and returns the same FixedSample rows.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "calibration.hpp"
+#include "fixed_model.hpp"
+#include "recording.hpp"
+
+namespace acore {
+
+enum class Engine { Float, Fixed, Rtl };
+Engine parse_engine(const std::string& name);  // throws InputError
+const char* engine_name(Engine e);
+
+struct AngleSeries {
+  std::vector<double> angle;        // corrected electrical angle, rad [0, 2 pi)
+  std::vector<double> uncorrected;  // the chain without the polynomial correction, rad
+  std::vector<int> region;
+  std::vector<unsigned> flags;      // bit 0 ovf, 1 los, 2 dos (fixed/RTL engines)
+};
+
+// The recording's channels as input codes: round(v * in_scale) saturated to IN_W bits;
+// two-channel recordings become c1 = sin, c2 = cos, c3 = c4 = 0.
+std::vector<ChannelCodes> to_codes(const Recording& rec, double in_scale, int in_w);
+
+AngleSeries run_float(const Recording& rec, const FloatCoefficients& fc);
+AngleSeries run_fixed(const Recording& rec, const RegImage& img);
+// Converts bit-accurate rows (model or RTL) into angles.
+AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const DatapathConfig& cfg);
+
+}  // namespace acore
