@@ -28,7 +28,7 @@ std::vector<ChannelCodes> to_codes(const Recording& rec, double in_scale, int in
   std::vector<ChannelCodes> codes(rec.size());
   for (size_t i = 0; i < rec.size(); ++i)
     for (int c = 0; c < 4; ++c)
-      codes[i][c] = c < rec.channels ? FixedModel::to_code(rec.ch[c][i], in_scale, in_w) : 0;
+      codes[i][c] = c < rec.channels ? static_cast<int32_t>(FixedModel::to_code(rec.ch[c][i], in_scale, in_w)) : 0;
   return codes;
 }
 

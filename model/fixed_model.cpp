@@ -24,6 +24,11 @@ bool FixedSample::operator==(const FixedSample& o) const {
   return angle == o.angle && region == o.region && ovf == o.ovf && los == o.los && dos == o.dos;
 }
 
+FixedOutput to_output(const FixedSample& s) {
+  return {s.angle, static_cast<int32_t>(s.magnitude), static_cast<uint8_t>(s.region),
+          static_cast<uint8_t>((s.ovf ? 1 : 0) | (s.los ? 2 : 0) | (s.dos ? 4 : 0))};
+}
+
 FixedModel::FixedModel(const RegImage& img) : FixedModel(img, StatusWindow::defaults(img.cfg)) {}
 
 FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), window_(window) {

@@ -19,7 +19,7 @@ struct StatusWindow {
   static StatusWindow defaults(const DatapathConfig& cfg);
 };
 
-using ChannelCodes = std::array<int64_t, 4>;  // c1..c4 input codes (IN_W-bit signed)
+using ChannelCodes = std::array<int32_t, 4>;  // c1..c4 input codes (IN_W-bit signed, IN_W <= 24)
 
 struct FixedSample {
   uint32_t angle = 0;   // ANGLE_W-bit unsigned, one turn = 2^ANGLE_W
@@ -34,11 +34,28 @@ struct FixedSample {
   bool operator==(const FixedSample& o) const;  // the RTL-visible fields: angle, region, flags
 };
 
+// The RTL-visible outputs only, compact: what the batch path and the co-sim compare.
+struct FixedOutput {
+  uint32_t angle;
+  int32_t magnitude;
+  uint8_t region;
+  uint8_t flags;  // bit 0 ovf, 1 los, 2 dos
+  bool operator==(const FixedOutput& o) const {
+    return angle == o.angle && magnitude == o.magnitude && region == o.region && flags == o.flags;
+  }
+};
+FixedOutput to_output(const FixedSample& s);
+
 class FixedModel {
  public:
   explicit FixedModel(const RegImage& img, StatusWindow window);
   explicit FixedModel(const RegImage& img);
   FixedSample step(const ChannelCodes& c) const;
+  // The same chain over many samples at once (model/fixed_batch.cpp): structure-of-arrays int32
+  // loops the compiler vectorizes, bit-identical to step() in the RTL-visible outputs
+  // (tests/test_fixed_batch.cpp). Falls back to step() for configurations wider than 32 bits.
+  void run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const;
+  bool batch_fits_int32() const;
   const RegImage& image() const { return img_; }
   CordicConfig cordic_config() const;
   // Recording value -> input code: round to nearest, saturate to IN_W bits.

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The bit-accurate chain against std::atan2 over the same 1 M samples, in one run:
+//   build/tests/bench/bench_estimator
+// Compare the per-sample times (items_per_second) of BM_FixedChain and BM_Atan2.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "calibration.hpp"
+#include "estimator.hpp"
+#include "fixed_model.hpp"
+#include "paper_signals.hpp"
+
+namespace {
+
+constexpr size_t kSamples = 1 << 20;
+
+struct Fixture {
+  acore::Recording rec = acore::test::paper_recording(kSamples);
+  acore::RegImage img = acore::quantize(acore::calibrate(rec, acore::CalOptions{}), acore::DatapathConfig{},
+                                        acore::choose_in_scale(rec, 16));
+  std::vector<acore::ChannelCodes> codes = acore::to_codes(rec, img.in_scale, 16);
+};
+
+const Fixture& fixture() {
+  static const Fixture f;  // built once, outside the timed loops
+  return f;
+}
+
+void BM_Atan2(benchmark::State& state) {
+  const auto& f = fixture();
+  std::vector<double> s(kSamples), c(kSamples);
+  for (size_t i = 0; i < kSamples; ++i) {
+    s[i] = f.rec.d13(i);
+    c[i] = f.rec.d24(i);
+  }
+  for (auto _ : state) {
+    double acc = 0;
+    for (size_t i = 0; i < kSamples; ++i) acc += std::atan2(s[i], c[i]);
+    benchmark::DoNotOptimize(acc);
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
+}
+BENCHMARK(BM_Atan2)->Unit(benchmark::kMillisecond);
+
+void BM_FixedChain(benchmark::State& state) {
+  const auto& f = fixture();
+  const acore::FixedModel model(f.img);
+  std::vector<acore::FixedOutput> out(kSamples);
+  for (auto _ : state) {
+    model.run_batch(f.codes.data(), f.codes.size(), out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
+}
+BENCHMARK(BM_FixedChain)->Unit(benchmark::kMillisecond);
+
+void BM_FixedChainPerSample(benchmark::State& state) {
+  const auto& f = fixture();
+  const acore::FixedModel model(f.img);
+  for (auto _ : state) {
+    uint64_t acc = 0;
+    for (const auto& c : f.codes) acc += model.step(c).angle;
+    benchmark::DoNotOptimize(acc);
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
+}
+BENCHMARK(BM_FixedChainPerSample)->Unit(benchmark::kMillisecond);
+
+void BM_FloatChain(benchmark::State& state) {
+  const auto& f = fixture();
+  const acore::FloatCoefficients fc = acore::dequantize(f.img);
+  for (auto _ : state) {
+    auto s = acore::run_float(f.rec, fc);
+    benchmark::DoNotOptimize(s.angle.data());
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
+}
+BENCHMARK(BM_FloatChain)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
