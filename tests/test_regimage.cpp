@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// Register image: the DESIGN 3.2 map, round trip through the $readmemh text, and bad input.
+#include <gtest/gtest.h>
+
+#include "calibration.hpp"
+#include "cordic.hpp"
+#include "errors.hpp"
+#include "paper_signals.hpp"
+#include "regimage.hpp"
+
+namespace acore {
+namespace {
+
+RegImage paper_image() {
+  const Recording rec = test::paper_recording(4096);
+  return quantize(calibrate(rec, CalOptions{}), DatapathConfig{}, choose_in_scale(rec, 16));
+}
+
+void expect_error(const std::string& text, const std::string& fragment) {
+  try {
+    parse_regimage(text, "regs.hex");
+    FAIL() << "no error for: " << fragment;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(RegImage, DefaultMapIsThePapers52Words) {
+  DatapathConfig c;
+  EXPECT_EQ(c.words(), 52);
+  EXPECT_EQ(c.addr_offset(0), 0);
+  EXPECT_EQ(c.addr_offset(1), 1);
+  EXPECT_EQ(c.addr_recip(0), 2);
+  EXPECT_EQ(c.addr_recip(1), 3);
+  for (int r = 0; r < 4; ++r)
+    for (int cv = 0; cv < 2; ++cv)
+      for (int j = 0; j < 4; ++j) EXPECT_EQ(c.addr_poly(r, cv, j), 4 + 8 * r + 4 * cv + j);
+  for (int i = 0; i < 16; ++i) EXPECT_EQ(c.addr_atan(i), 36 + i);
+  c.degree = 5;
+  c.regions = 8;
+  EXPECT_EQ(c.words(), 4 + 2 * 8 * 6 + 16);
+}
+
+TEST(RegImage, RoundTripKeepsWordsConfigAndScale) {
+  const RegImage a = paper_image();
+  const std::string text = format_regimage(a);
+  const RegImage b = parse_regimage(text, "x");
+  EXPECT_EQ(a.words, b.words);
+  EXPECT_EQ(a.in_scale, b.in_scale);
+  EXPECT_EQ(a.cfg.describe(), b.cfg.describe());
+  // atan(2^0) = 45 deg = 1/8 turn of 2^Z_W, written with its human value.
+  EXPECT_EQ(b.atan(0), int64_t{1} << (b.cfg.z_w - 3));
+  EXPECT_NE(text.find("atan(2^-0) = 45.000000 deg"), std::string::npos);
+}
+
+TEST(RegImage, DequantizeInvertsQuantizeWithinOneLsb) {
+  const Recording rec = test::paper_recording(4096);
+  const FloatCoefficients fc = calibrate(rec, CalOptions{});
+  const RegImage img = quantize(fc, DatapathConfig{}, choose_in_scale(rec, 16));
+  const FloatCoefficients back = dequantize(img);
+  for (size_t k = 0; k < fc.poly.size(); ++k) EXPECT_NEAR(back.poly[k], fc.poly[k], std::ldexp(0.5, -img.cfg.coef_f));
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_NEAR(back.offset[c], fc.offset[c], 0.5 / img.in_scale);
+    EXPECT_NEAR(back.amp[c] / fc.amp[c], 1.0, 1e-4);
+  }
+}
+
+TEST(RegImage, BadInputNamesFileLineAndField) {
+  const std::string good = format_regimage(paper_image());
+  expect_error("", "missing 'acore: in_scale");
+  std::string bad = good;
+  bad.replace(bad.rfind("\n", bad.size() - 2) + 1, 5, "zz");  // corrupt the last word
+  expect_error(bad, "regs.hex:");
+  expect_error(good + "00001\n", "53 words");
+  std::string hdr = good;
+  hdr.replace(hdr.find("degree=3"), 8, "degree=x");
+  expect_error(hdr, "header field 'degree'");
+  std::string deg = good;
+  deg.replace(deg.find("degree=3"), 8, "degree=9");
+  expect_error(deg, "degree=9 must be 1..7");
+  std::string wide = good;
+  const auto p = wide.find("\n", wide.find("acore: z_w=")) + 1;  // first word line
+  wide.replace(p, 5, "fffff");  // 20 bits in an 18-bit word
+  expect_error(wide, "does not fit 18 bits");
+  EXPECT_THROW(read_regimage("/nonexistent/regs.hex"), InputError);
+}
+
+TEST(RegImage, QuantizeRejectsCoefficientsOutOfRange) {
+  const Recording rec = test::paper_recording(4096);
+  FloatCoefficients fc = calibrate(rec, CalOptions{});
+  fc.coef(2, 1, 3) = 9.0;  // Q3.15 holds +-4
+  try {
+    quantize(fc, DatapathConfig{}, 4096);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("region 2 curve c24 x^3"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace acore
