@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "calibration.hpp"
 #include "error_stats.hpp"
 #include "errors.hpp"
 #include "estimator.hpp"
+#include "noise_floor.hpp"
 #include "paper_signals.hpp"
 #include "region_select.hpp"
 
@@ -108,6 +110,28 @@ TEST(RegionSelect, IntegerAndRealRulesAgree) {
       EXPECT_EQ(rr, ri.region);
       EXPECT_EQ(xr, static_cast<double>(ri.x));
     }
+}
+
+}  // namespace
+}  // namespace acore
+
+namespace acore {
+namespace {
+
+TEST(NoiseFloor, CircleOfAmplitudeAHasFloorSigmaOverA) {
+  // Closed form: for v = A (sin, cos), |dv/dtheta| = A, so the bound is sigma/A rad everywhere.
+  const Recording clean = test::ideal_recording(1024, 2.0, 0.0, 0.0);
+  EXPECT_NEAR(crlb_rms_deg(clean, 0.0707), 0.0707 / 2.0 * 180 / M_PI, 1e-3);
+}
+
+TEST(NoiseFloor, MeasuredNoiseSigmaMatchesTheInjectedOne) {
+  const Recording clean = test::ideal_recording(20000, 1.0, 0.0, 0.0);
+  Recording noisy = clean;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n(0.0, 0.03);
+  for (auto& v : noisy.ch[0]) v += n(rng);
+  for (auto& v : noisy.ch[1]) v += n(rng);
+  EXPECT_NEAR(differential_noise_sigma(noisy, clean), 0.03, 0.0005);
 }
 
 }  // namespace
