@@ -15,7 +15,7 @@ namespace acore {
 
 namespace {
 
-constexpr int kChunk = 256;
+constexpr int kChunk = 512;
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define ACORE_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
@@ -49,39 +49,52 @@ void scale_chunk(const int32_t* d, int n, int32_t offset, uint32_t recip, int re
   }
 }
 
-// Horner on the adder/shifter multiplier; the bit masks of x are shared by every product.
+// Horner on the adder/shifter multiplier, both curves at once: they share x, so each bit mask of
+// x is loaded once for the two products.
 ACORE_VECTOR_CLONES
-void poly_chunk(const int32_t* s, const int32_t* const* mask, const int32_t* coef, int n, int degree,
-                int s_w, int s_f, int acc_guard, int acc_w, int out_shift, int32_t* y, uint8_t* ovf) {
-  int32_t acc[kChunk], prod[kChunk];
+void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* mask, const int32_t* c13,
+                const int32_t* c24, int n, int degree, int s_w, int s_f, int acc_guard, int acc_w, int out_shift,
+                int32_t* y13, int32_t* y24, uint8_t* ovf) {
+  int32_t a13[kChunk], a24[kChunk], p13[kChunk], p24[kChunk];
   const int32_t ahi = (1 << (acc_w - 1)) - 1, alo = -(1 << (acc_w - 1));
-  for (int i = 0; i < n; ++i) acc[i] = coef[degree * kChunk + i] * (1 << acc_guard);
+  for (int i = 0; i < n; ++i) {
+    a13[i] = c13[degree * kChunk + i] * (1 << acc_guard);
+    a24[i] = c24[degree * kChunk + i] * (1 << acc_guard);
+  }
   for (int j = degree - 1; j >= 0; --j) {
-    for (int i = 0; i < n; ++i) prod[i] = 0;
+    for (int i = 0; i < n; ++i) p13[i] = p24[i] = 0;
     for (int b = 0; b < s_w; ++b) {
       const int sh = s_f - b;
       const int32_t* m = mask[b];
-      if (b == s_w - 1) {  // the top bit of x weighs -2^(S_W-1)
-        for (int i = 0; i < n; ++i) prod[i] -= (sh >= 0 ? acc[i] >> sh : acc[i] * (1 << -sh)) & m[i];
-      } else if (sh >= 0) {
-        for (int i = 0; i < n; ++i) prod[i] += (acc[i] >> sh) & m[i];
+      const int32_t sign = b == s_w - 1 ? -1 : 1;  // the top bit of x weighs -2^(S_W-1)
+      if (sh >= 0) {
+        for (int i = 0; i < n; ++i) {
+          p13[i] += sign * ((a13[i] >> sh) & m[i]);
+          p24[i] += sign * ((a24[i] >> sh) & m[i]);
+        }
       } else {
-        for (int i = 0; i < n; ++i) prod[i] += (acc[i] * (1 << -sh)) & m[i];
+        for (int i = 0; i < n; ++i) {
+          p13[i] += sign * ((a13[i] * (1 << -sh)) & m[i]);
+          p24[i] += sign * ((a24[i] * (1 << -sh)) & m[i]);
+        }
       }
     }
-    const int32_t* a = coef + j * kChunk;
+    const int32_t* k13 = c13 + j * kChunk;
+    const int32_t* k24 = c24 + j * kChunk;
     for (int i = 0; i < n; ++i) {
-      const int32_t v = prod[i] + a[i] * (1 << acc_guard);
-      ovf[i] |= static_cast<uint8_t>((v > ahi) | (v < alo));
-      acc[i] = std::clamp(v, alo, ahi);
+      const int32_t v13 = p13[i] + k13[i] * (1 << acc_guard), v24 = p24[i] + k24[i] * (1 << acc_guard);
+      ovf[i] |= static_cast<uint8_t>((v13 > ahi) | (v13 < alo) | (v24 > ahi) | (v24 < alo));
+      a13[i] = std::clamp(v13, alo, ahi);
+      a24[i] = std::clamp(v24, alo, ahi);
     }
   }
   const int32_t hi = (1 << (s_w - 1)) - 1, lo = -(1 << (s_w - 1));
   const int32_t half = out_shift > 0 ? 1 << (out_shift - 1) : 0;
   for (int i = 0; i < n; ++i) {
-    const int32_t v = s[i] - ((acc[i] + half) >> out_shift);
-    ovf[i] |= static_cast<uint8_t>((v > hi) | (v < lo));
-    y[i] = std::clamp(v, lo, hi);
+    const int32_t v13 = s13[i] - ((a13[i] + half) >> out_shift), v24 = s24[i] - ((a24[i] + half) >> out_shift);
+    ovf[i] |= static_cast<uint8_t>((v13 > hi) | (v13 < lo) | (v24 > hi) | (v24 < lo));
+    y13[i] = std::clamp(v13, lo, hi);
+    y24[i] = std::clamp(v24, lo, hi);
   }
 }
 
@@ -171,7 +184,7 @@ void output_chunk(const uint32_t* angle, const int32_t* mag, const int32_t* regi
                   int64_t mag_lo, int64_t mag_hi, FixedOutput* out) {
   for (int i = 0; i < n; ++i) {
     const bool los = mag[i] < mag_lo, dos = mag[i] > mag_hi;
-    out[i] = {angle[i], mag[i], static_cast<uint8_t>(region[i]),
+    out[i] = {angle[i], static_cast<uint8_t>(region[i]),
               static_cast<uint8_t>((ovf[i] ? 1 : 0) | (los ? 2 : 0) | (dos ? 4 : 0))};
   }
 }
@@ -211,11 +224,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
     region_chunk(s13, s24, m, cfg.regions, region, x);
     gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
     mask_chunk(x, m, cfg.s_w, mask_store.data());
-    const int out_shift = cfg.acc_f() - cfg.s_f;
-    poly_chunk(s13, mask.data(), coef13.data(), m, cfg.degree, cfg.s_w, cfg.s_f, cfg.acc_guard,
-               cfg.acc_w(), out_shift, y13, ovf);
-    poly_chunk(s24, mask.data(), coef24.data(), m, cfg.degree, cfg.s_w, cfg.s_f, cfg.acc_guard,
-               cfg.acc_w(), out_shift, y24, ovf);
+    poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w, cfg.s_f,
+               cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
     cordic_chunk(y24, y13, m, atan32.data(), cfg.iterations, cfg.cordic_guard, cfg.z_w, cfg.angle_w,
                  angle, mag);
     output_chunk(angle, mag, region, ovf, m, window_.mag_lo, window_.mag_hi, out + base);

@@ -25,7 +25,7 @@ bool FixedSample::operator==(const FixedSample& o) const {
 }
 
 FixedOutput to_output(const FixedSample& s) {
-  return {s.angle, static_cast<int32_t>(s.magnitude), static_cast<uint8_t>(s.region),
+  return {s.angle, static_cast<uint8_t>(s.region),
           static_cast<uint8_t>((s.ovf ? 1 : 0) | (s.los ? 2 : 0) | (s.dos ? 4 : 0))};
 }
 

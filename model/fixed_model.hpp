@@ -37,11 +37,10 @@ struct FixedSample {
 // The RTL-visible outputs only, compact: what the batch path and the co-sim compare.
 struct FixedOutput {
   uint32_t angle;
-  int32_t magnitude;
   uint8_t region;
   uint8_t flags;  // bit 0 ovf, 1 los, 2 dos
   bool operator==(const FixedOutput& o) const {
-    return angle == o.angle && magnitude == o.magnitude && region == o.region && flags == o.flags;
+    return angle == o.angle && region == o.region && flags == o.flags;
   }
 };
 FixedOutput to_output(const FixedSample& s);
