@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# calibrate / estimate / demo through the CLI: exit codes, JSON fields, bad input.
+# usage: cli_estimate.sh ANGLECORE SOURCE_DIR
+set -u
+bin=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+passes=0
+check() {  # check NAME EXPECTED_STATUS COMMAND...
+  local name=$1 want=$2
+  shift 2
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL $name: exit $got, expected $want"; sed 's/^/  /' "$tmp/err" | head -5; fails=$((fails + 1))
+  else
+    passes=$((passes + 1))
+  fi
+}
+expect_text() {  # expect_text NAME FILE TEXT
+  if grep -qF -- "$3" "$2"; then passes=$((passes + 1)); else echo "FAIL $1: '$3' not in $2"; sed 's/^/  /' "$2" | head -5; fails=$((fails + 1)); fi
+}
+
+check simulate-cal 0 "$bin" simulate --scenario paper --samples 4096 --seed 1 --out "$tmp/cal.csv"
+check simulate-val 0 "$bin" simulate --scenario paper --samples 4096 --seed 2 --out "$tmp/val.csv"
+check calibrate 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs.hex" --json "$tmp/cal.json"
+expect_text regs-words "$tmp/regs.hex" "atan(2^-15)"
+check estimate-fixed 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json" --out "$tmp/angles.csv"
+check estimate-float 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine float --json "$tmp/fl.json"
+for f in engine samples error_deg uncorrected_error_deg rms max_abs mean; do expect_text "json-$f" "$tmp/fx.json" "\"$f\""; done
+# The paper's budget: corrected RMS <= 0.55 deg and max <= 2.4 deg, checked from the JSON.
+/usr/bin/python3 - "$tmp/fx.json" "$tmp/fl.json" <<'PY' || { echo "FAIL accuracy"; fails=$((fails + 1)); }
+import json, sys
+for path in sys.argv[1:]:
+    j = json.load(open(path))
+    e, u = j["error_deg"], j["uncorrected_error_deg"]
+    assert e["rms"] <= 0.55 and e["max_abs"] <= 2.4, (path, e)
+    assert abs(u["rms"] - 8.54) < 0.05 and abs(u["mean"] + 6.94) < 0.05, (path, u)
+PY
+expect_text angles-header "$tmp/angles.csv" "index,angle_rad,uncorrected_rad,region,flags,theta_ref,error_deg"
+check higher-degree 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs5.hex" --degree 5 --regions 8
+
+# Bad usage and bad input: exit 2 with a message naming the problem.
+check no-args 2 "$bin"
+check unknown-sub 2 "$bin" frobnicate
+check missing-regs 2 "$bin" estimate --in "$tmp/val.csv"
+check bad-engine 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine quantum
+expect_text bad-engine-msg "$tmp/err" "quantum"
+check bad-degree 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --degree 9
+check bad-regions 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --regions 6
+check missing-file 2 "$bin" calibrate --in "$tmp/nope.csv" --out "$tmp/x.hex"
+printf 'theta_ref,c1,c2,c3,c4\n0,1,2,3\n' >"$tmp/ragged.csv"
+check ragged 2 "$bin" calibrate --in "$tmp/ragged.csv" --out "$tmp/x.hex"
+expect_text ragged-msg "$tmp/err" "ragged.csv:2"
+head -n 2000 "$tmp/cal.csv" >"$tmp/short.csv"
+check partial-turn 2 "$bin" calibrate --in "$tmp/short.csv" --out "$tmp/x.hex"
+expect_text partial-turn-msg "$tmp/err" "sectors"
+sed 's/^0*1ffff/zz/' "$tmp/regs.hex" | sed '30s/^[0-9a-f]*/xyz/' >"$tmp/bad.hex"
+check bad-image 2 "$bin" estimate --regs "$tmp/bad.hex" --in "$tmp/val.csv"
+expect_text bad-image-msg "$tmp/err" "bad.hex:30"
+check help 0 "$bin" estimate --help
+
+echo "$passes passed, $fails failed"
+[ "$fails" -eq 0 ]
