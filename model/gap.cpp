@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+#include "gap.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "error_stats.hpp"
+#include "errors.hpp"
+#include "float_model.hpp"
+
+namespace acore {
+
+GapModel build_gap_model(const Recording& sim, int periodicity, int fourier_order) {
+  GapModel m;
+  m.periodicity = periodicity;
+  m.sensor = fit_sensor(sim, fourier_order, periodicity);
+  // Calibrate on the noise-free model over one uniform turn, so the trajectory of the simulation
+  // does not weigh the fit.
+  Recording grid;
+  const size_t n = 4096;
+  for (size_t k = 0; k < n; ++k) grid.theta_ref.push_back(2 * M_PI * k / (n * periodicity));
+  grid = m.sensor.resample(grid);
+  CalOptions opt;
+  opt.periodicity = periodicity;
+  m.est = calibrate(grid, opt);
+  return m;
+}
+
+namespace {
+std::vector<double> float_errors(const GapModel& m, const Recording& rec) {
+  std::vector<double> e(rec.size());
+  for (size_t i = 0; i < rec.size(); ++i)
+    e[i] = wrap_deg((float_estimate(rec.d13(i), rec.d24(i), m.est).angle - m.periodicity * rec.theta_ref[i]) *
+                    180.0 / M_PI);
+  return e;
+}
+
+double mean_sq(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x * x;
+  return v.empty() ? 0.0 : s / v.size();
+}
+}  // namespace
+
+StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted) {
+  if (rec.size() != predicted.size()) throw InputError("gap: recording and prediction differ in length");
+  StageSeries s;
+  s.err_deg = float_errors(m, rec);
+  s.model_err_deg = float_errors(m, predicted);
+  const double sd = m.sensor.diff_noise_sigma();
+  s.g.resize(rec.size());
+  s.noise_var.resize(rec.size());
+  double nv = 0;
+  for (size_t i = 0; i < rec.size(); ++i) {
+    s.g[i] = wrap_deg(s.err_deg[i] - s.model_err_deg[i]);
+    const double th = rec.theta_ref[i];
+    double g13, g24;
+    if (m.sensor.channels == 4) {
+      g13 = m.sensor.derivative(0, th) - m.sensor.derivative(2, th);
+      g24 = m.sensor.derivative(1, th) - m.sensor.derivative(3, th);
+    } else {
+      g13 = m.sensor.derivative(0, th);
+      g24 = m.sensor.derivative(1, th);
+    }
+    // Angle noise in electrical degrees: the estimator's angle is p*theta.
+    const double var_mech = sd * sd / std::max(1e-30, g13 * g13 + g24 * g24);
+    s.noise_var[i] = var_mech * std::pow(m.periodicity * 180.0 / M_PI, 2);
+    nv += s.noise_var[i];
+  }
+  nv /= std::max<size_t>(1, rec.size());
+  s.noise_deg = std::sqrt(nv);
+  s.raw_rms_deg = std::sqrt(mean_sq(s.g));
+  s.gap_deg = std::sqrt(std::max(0.0, mean_sq(s.g) - nv));
+  return s;
+}
+
+std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording& rec, const Recording& pred,
+                                              const StageSeries& s) {
+  std::vector<StageDivergence> out;
+  const size_t n = rec.size();
+  const double threshold = 1.0 + 6.0 / std::sqrt(static_cast<double>(std::max<size_t>(n, 1))) + 0.05;
+  auto ratio = [&](auto&& diff, double sigma) {
+    double ss = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const double d = diff(i);
+      ss += d * d;
+    }
+    return std::sqrt(ss / std::max<size_t>(n, 1)) / std::max(sigma, 1e-12);
+  };
+  auto finish = [&](StageDivergence d) {
+    for (double r : d.ratio) d.diverges = d.diverges || r > threshold;
+    out.push_back(std::move(d));
+  };
+  // Noise floors: a small absolute floor keeps noise-free simulations from dividing by zero.
+  const double floor = 1e-6;
+  StageDivergence raw{"raw", {}, {}, false};
+  for (int c = 0; c < rec.channels; ++c) {
+    raw.signals.push_back(rec.channels == 4 ? fmt::format("c{}", c + 1) : (c ? "cos" : "sin"));
+    raw.ratio.push_back(ratio([&](size_t i) { return rec.ch[c][i] - pred.ch[c][i]; },
+                              std::max(floor, m.sensor.noise_sigma[c])));
+  }
+  finish(raw);
+  const double sd = std::max(floor, m.sensor.diff_noise_sigma());
+  finish({"prefilter",
+          {"d13", "d24"},
+          {ratio([&](size_t i) { return rec.d13(i) - pred.d13(i); }, sd),
+           ratio([&](size_t i) { return rec.d24(i) - pred.d24(i); }, sd)},
+          false});
+  finish({"scaling",
+          {"s13", "s24"},
+          {ratio([&](size_t i) { return (rec.d13(i) - pred.d13(i)) / m.est.amp[0]; }, sd / m.est.amp[0]),
+           ratio([&](size_t i) { return (rec.d24(i) - pred.d24(i)) / m.est.amp[1]; }, sd / m.est.amp[1])},
+          false});
+  std::vector<double> y13(n), y24(n), p13(n), p24(n);
+  for (size_t i = 0; i < n; ++i) {
+    const FloatSample a = float_estimate(rec.d13(i), rec.d24(i), m.est);
+    const FloatSample b = float_estimate(pred.d13(i), pred.d24(i), m.est);
+    y13[i] = a.y13 - b.y13;
+    y24[i] = a.y24 - b.y24;
+  }
+  finish({"correction",
+          {"y13", "y24"},
+          {ratio([&](size_t i) { return y13[i]; }, sd / m.est.amp[0]),
+           ratio([&](size_t i) { return y24[i]; }, sd / m.est.amp[1])},
+          false});
+  finish({"angle", {"angle"}, {ratio([&](size_t i) { return s.g[i]; }, std::max(floor, s.noise_deg))}, false});
+  return out;
+}
+
+std::vector<double> angular_velocity(const Recording& rec) {
+  const size_t n = rec.size();
+  std::vector<double> w(n, 0.0);
+  if (n < 2) return w;
+  for (size_t i = 0; i < n; ++i) {
+    const size_t a = i == 0 ? 0 : i - 1, b = i + 1 == n ? n - 1 : i + 1;
+    const double dt = rec.has_t() ? rec.t[b] - rec.t[a] : static_cast<double>(b - a);
+    w[i] = dt != 0 ? (rec.theta_ref[b] - rec.theta_ref[a]) / dt : 0.0;
+  }
+  return w;
+}
+
+std::vector<DomainScore> gap_domains(const Recording& rec, const std::vector<double>& g, int p) {
+  const size_t n = rec.size();
+  const Eigen::Map<const Eigen::VectorXd> y(g.data(), static_cast<Eigen::Index>(n));
+  const double mean = y.mean();
+  const double tss = (y.array() - mean).square().sum();
+  std::vector<DomainScore> out;
+  if (n < 64 || tss <= 0) return out;
+  const std::vector<double> w = angular_velocity(rec);
+  double wmax = 0, tmin = 1e300, tmax = -1e300;
+  for (double v : w) wmax = std::max(wmax, std::fabs(v));
+  if (rec.has_temp())
+    for (double v : rec.temp) tmin = std::min(tmin, v), tmax = std::max(tmax, v);
+  // Each domain: a factor f_i (1 for angle) times the angle harmonics 0..H.
+  auto score = [&](const std::string& name, auto&& factor, int harmonics) {
+    const int cols = 2 * harmonics + 1 + (name == "angle" ? 0 : 1);
+    Eigen::MatrixXd X(n, cols);
+    for (size_t i = 0; i < n; ++i) {
+      const double f = factor(i), e = p * rec.theta_ref[i];
+      int c = 0;
+      if (name != "angle") X(i, c++) = 1.0;  // intercept, so a constant offset is no evidence
+      X(i, c++) = f;
+      for (int h = 1; h <= harmonics; ++h) {
+        X(i, c++) = f * std::cos(h * e);
+        X(i, c++) = f * std::sin(h * e);
+      }
+    }
+    const Eigen::VectorXd beta = X.colPivHouseholderQr().solve(y);
+    const double rss = (y - X * beta).squaredNorm();
+    double r2 = 1.0 - rss / tss;
+    r2 = 1.0 - (1.0 - r2) * (n - 1.0) / std::max(1.0, n - 1.0 - cols);  // adjusted R^2
+    out.push_back({name, r2});
+  };
+  score("angle", [](size_t) { return 1.0; }, 8);
+  if (wmax > 0) {
+    score("speed", [&](size_t i) { return w[i] / wmax; }, 4);
+    score("direction", [&](size_t i) { return w[i] >= 0 ? 1.0 : -1.0; }, 4);
+  }
+  if (rec.has_temp() && tmax > tmin)
+    score("time_temperature", [&](size_t i) { return (rec.temp[i] - tmin) / (tmax - tmin); }, 4);
+  else if (rec.has_t())
+    score("time_temperature", [&](size_t i) { return rec.t[i] / std::max(1e-12, rec.t.back()); }, 4);
+  {
+    std::vector<double> mag(n);
+    double mmax = 0;
+    for (size_t i = 0; i < n; ++i) {
+      mag[i] = std::hypot(rec.d13(i), rec.d24(i));
+      mmax = std::max(mmax, mag[i]);
+    }
+    score("signal_level", [&](size_t i) { return mag[i] / std::max(1e-12, mmax); }, 4);
+  }
+  return out;
+}
+
+}  // namespace acore
