@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <random>
 
 #include "error_stats.hpp"
 #include "errors.hpp"
@@ -29,6 +30,8 @@ GapModel build_gap_model(const Recording& sim, int periodicity, int fourier_orde
 }
 
 namespace {
+constexpr int kNoiseDraws = 4;
+
 std::vector<double> float_errors(const GapModel& m, const Recording& rec) {
   std::vector<double> e(rec.size());
   for (size_t i = 0; i < rec.size(); ++i)
@@ -44,35 +47,110 @@ double mean_sq(const std::vector<double>& v) {
 }
 }  // namespace
 
-StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted) {
+GapBasis make_gap_basis(const Recording& rec) {
+  constexpr int kOrders = 16;
+  const size_t n = rec.size();
+  const std::vector<double> w = angular_velocity(rec);
+  double wmax = 0, tmin = 1e300, tmax = -1e300;
+  for (double v : w) wmax = std::max(wmax, std::fabs(v));
+  if (rec.has_temp())
+    for (double v : rec.temp) tmin = std::min(tmin, v), tmax = std::max(tmax, v);
+  bool reverses = false;
+  for (size_t i = 1; i < n; ++i) reverses = reverses || ((w[i] >= 0) != (w[0] >= 0));
+  std::vector<std::vector<double>> factors = {std::vector<double>(n, 1.0)};
+  if (wmax > 0) {
+    std::vector<double> f(n);
+    for (size_t i = 0; i < n; ++i) f[i] = w[i] / wmax;
+    factors.push_back(f);
+  }
+  if (reverses) {
+    std::vector<double> f(n);
+    for (size_t i = 0; i < n; ++i) f[i] = w[i] >= 0 ? 1.0 : -1.0;
+    factors.push_back(f);
+  }
+  if (rec.has_temp() && tmax > tmin) {
+    std::vector<double> f(n);
+    for (size_t i = 0; i < n; ++i) f[i] = (rec.temp[i] - tmin) / (tmax - tmin) - 0.5;
+    factors.push_back(f);
+  }
+  const int per = 2 * kOrders + 1;
+  GapBasis b;
+  b.X.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(per * factors.size()));
+  for (size_t i = 0; i < n; ++i) {
+    const double th = rec.theta_ref[i];
+    for (size_t f = 0; f < factors.size(); ++f) {
+      const double v = factors[f][i];
+      const Eigen::Index c0 = static_cast<Eigen::Index>(f * per);
+      b.X(i, c0) = v;
+      for (int k = 1; k <= kOrders; ++k) {
+        b.X(i, c0 + 2 * k - 1) = v * std::cos(k * th);
+        b.X(i, c0 + 2 * k) = v * std::sin(k * th);
+      }
+    }
+  }
+  // A whisker of ridge keeps collinear factors (constant speed, say) solvable.
+  Eigen::MatrixXd G = b.X.transpose() * b.X;
+  G.diagonal().array() += 1e-9 * G.diagonal().maxCoeff() + 1e-12;
+  b.gram.compute(G);
+  return b;
+}
+
+StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted, double extra_sigma,
+                    const GapBasis* basis) {
   if (rec.size() != predicted.size()) throw InputError("gap: recording and prediction differ in length");
   StageSeries s;
   s.err_deg = float_errors(m, rec);
   s.model_err_deg = float_errors(m, predicted);
-  const double sd = m.sensor.diff_noise_sigma();
+  // c1 - c3 carries two channels' extra noise; a two-channel sin or cos one.
+  const double extra_var = (m.sensor.channels == 4 ? 2.0 : 1.0) * extra_sigma * extra_sigma;
+  const double sd = std::sqrt(m.sensor.diff_noise_sigma() * m.sensor.diff_noise_sigma() + extra_var);
   s.g.resize(rec.size());
   s.noise_var.resize(rec.size());
+  std::mt19937_64 rng(12345);
+  std::normal_distribution<double> unit(0.0, 1.0);
   double nv = 0;
   for (size_t i = 0; i < rec.size(); ++i) {
     s.g[i] = wrap_deg(s.err_deg[i] - s.model_err_deg[i]);
-    const double th = rec.theta_ref[i];
-    double g13, g24;
-    if (m.sensor.channels == 4) {
-      g13 = m.sensor.derivative(0, th) - m.sensor.derivative(2, th);
-      g24 = m.sensor.derivative(1, th) - m.sensor.derivative(3, th);
-    } else {
-      g13 = m.sensor.derivative(0, th);
-      g24 = m.sensor.derivative(1, th);
+    // The angle noise the simulation's noise level causes, through the estimator itself (region
+    // switches included): Monte-Carlo draws of differential noise on the prediction, fixed seed.
+    const double p13 = predicted.d13(i), p24 = predicted.d24(i);
+    const double a0 = float_estimate(p13, p24, m.est).angle;
+    double acc = 0;
+    for (int k = 0; k < kNoiseDraws; ++k) {
+      const double a = float_estimate(p13 + sd * unit(rng), p24 + sd * unit(rng), m.est).angle;
+      acc += std::pow(std::remainder(a - a0, 2 * M_PI), 2);
     }
-    // Angle noise in electrical degrees: the estimator's angle is p*theta.
-    const double var_mech = sd * sd / std::max(1e-30, g13 * g13 + g24 * g24);
-    s.noise_var[i] = var_mech * std::pow(m.periodicity * 180.0 / M_PI, 2);
+    s.noise_var[i] = acc / kNoiseDraws * std::pow(180.0 / M_PI, 2);
     nv += s.noise_var[i];
   }
-  nv /= std::max<size_t>(1, rec.size());
+  const double n = static_cast<double>(std::max<size_t>(1, rec.size()));
+  nv /= n;
   s.noise_deg = std::sqrt(nv);
   s.raw_rms_deg = std::sqrt(mean_sq(s.g));
-  s.gap_deg = std::sqrt(std::max(0.0, mean_sq(s.g) - nv));
+  GapBasis local;
+  if (!basis) {
+    local = make_gap_basis(rec);
+    basis = &local;
+  }
+  const Eigen::Map<const Eigen::VectorXd> g(s.g.data(), static_cast<Eigen::Index>(s.g.size()));
+  const Eigen::VectorXd beta = basis->gram.solve(basis->X.transpose() * g);
+  const Eigen::VectorXd fit = basis->X * beta;
+  s.g_systematic.assign(fit.data(), fit.data() + fit.size());
+  const double cols = static_cast<double>(basis->X.cols());
+  const double sys2 = fit.squaredNorm() / n - cols / n * nv;
+  // Excess noise: the residual's variance above the expected, with its standard error.
+  double sum = 0, sum2 = 0;
+  for (size_t i = 0; i < s.g.size(); ++i) {
+    const double r = s.g[i] - fit(static_cast<Eigen::Index>(i));
+    const double d = r * r - s.noise_var[i];
+    sum += d;
+    sum2 += d * d;
+  }
+  const double exc2 = sum / n;
+  const double se = std::sqrt(std::max(0.0, sum2 / n - exc2 * exc2) / n);
+  s.systematic_deg = std::sqrt(std::max(0.0, sys2));
+  s.excess_noise_deg = exc2 > 4 * se ? std::sqrt(exc2) : 0.0;
+  s.gap_deg = std::hypot(s.systematic_deg, s.excess_noise_deg);
   return s;
 }
 

@@ -4,10 +4,17 @@
 // sample by sample at the real recording's angles, stage by stage.
 //
 //   g_i   = wrap(e_real,i - e_model,i)       angle-error difference, degrees
-//   gap   = sqrt(max(0, mean(g^2) - mean(sigma_theta,i^2)))
-// where sigma_theta,i = sigma_d / |dv/dtheta| at sample i is the angle noise the simulation's own
-// noise level sigma_d causes (the Cramér–Rao term), so fresh noise alone gives a gap near 0.
+//   g     = X beta + r                       least squares on the gap basis X: angle harmonics
+//                                            1..16 times {1, speed, direction, temperature}
+//   sys^2 = mean((X beta)^2) - (cols/N) mean(sigma_i^2)        the systematic part, noise removed
+//   exc^2 = mean(r^2) - mean(sigma_i^2), kept only when 4 standard errors above 0 (extra noise)
+//   gap   = sqrt(max(0, sys^2) + max(0, exc^2))
+// where sigma_i^2 is the angle-noise variance the simulation's own noise level causes at sample i,
+// through the estimator itself (region switches included; Monte-Carlo, fixed seed). Fresh noise
+// alone gives a gap near 0; the projection keeps the rare large errors of region switches (noise
+// near a region boundary) from swamping a small systematic gap.
 #pragma once
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
 
@@ -35,10 +42,23 @@ struct StageSeries {
   double gap_deg = 0;                 // see above
   double raw_rms_deg = 0;             // RMS of g, noise included
   double noise_deg = 0;               // sqrt(mean(noise_var))
+  double systematic_deg = 0;          // sqrt(max(0, sys^2))
+  double excess_noise_deg = 0;        // sqrt(max(0, exc^2)) when significant
+  std::vector<double> g_systematic;   // X beta: the smooth part of g, for plots
 };
 
+// The gap basis of one recording, factorized once (it depends on the samples only).
+struct GapBasis {
+  Eigen::MatrixXd X;
+  Eigen::LDLT<Eigen::MatrixXd> gram;
+};
+GapBasis make_gap_basis(const Recording& rec);
+
 // `predicted` is what the model (possibly with an effect added) says `rec` should be; same size.
-StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted);
+// extra_sigma: white noise per channel that the prediction carries beyond the simulation's
+// (the excess_noise effect); it raises the noise term instead of adding random numbers.
+StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted, double extra_sigma = 0,
+                    const GapBasis* basis = nullptr);
 
 // Where the recordings part: per stage, the RMS difference over its noise level (1 = noise only).
 struct StageDivergence {

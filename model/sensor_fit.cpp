@@ -36,8 +36,8 @@ Recording SensorFit::resample(const Recording& like) const {
   r.temp = like.temp;
   r.meta = like.meta;
   for (int c = 0; c < channels; ++c) {
-    r.ch[c].resize(like.size());
-    for (size_t i = 0; i < like.size(); ++i) r.ch[c][i] = value(c, like.theta_ref[i]);
+    r.ch[c].resize(like.theta_ref.size());
+    for (size_t i = 0; i < like.theta_ref.size(); ++i) r.ch[c][i] = value(c, like.theta_ref[i]);
   }
   return r;
 }

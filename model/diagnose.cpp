@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "errors.hpp"
+
+namespace acore {
+
+namespace {
+
+constexpr size_t kMinSamples = 256;
+
+int meta_periodicity(const Recording& r) {
+  const auto it = r.meta.find("p");
+  if (it == r.meta.end()) return 0;
+  try {
+    return std::max(1, std::stoi(it->second));
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+void check_recording(const Recording& r, const std::string& what) {
+  if (!r.has_theta()) throw InputError(what + ": no theta_ref column (the gap needs the reference angle)");
+  if (r.size() < kMinSamples)
+    throw InputError(fmt::format("{}: {} samples, at least {} needed", what, r.size(), kMinSamples));
+  double lo = 1e300, hi = -1e300;
+  for (double t : r.theta_ref) lo = std::min(lo, t), hi = std::max(hi, t);
+  // Wrapped or unwrapped: either way a turn must be covered, checked by 10-degree sectors.
+  std::vector<int> sector(36, 0);
+  for (double t : r.theta_ref) {
+    double e = std::fmod(t, 2 * M_PI);
+    if (e < 0) e += 2 * M_PI;
+    ++sector[std::min(35, static_cast<int>(e / (2 * M_PI) * 36))];
+  }
+  const long covered = std::count_if(sector.begin(), sector.end(), [](int k) { return k > 0; });
+  if (covered < 36)
+    throw InputError(fmt::format("{}: theta_ref covers only {} of the 36 ten-degree sectors of a turn; "
+                                 "at least one full turn is needed", what, covered));
+}
+
+// Amplitude of the gap's mechanical orders 1..max by least squares (non-uniform angles allowed).
+std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::vector<double>& g, int max_order) {
+  const size_t n = r.size();
+  Eigen::MatrixXd X(n, 2 * max_order + 1);
+  for (size_t i = 0; i < n; ++i) {
+    X(i, 0) = 1;
+    for (int k = 1; k <= max_order; ++k) {
+      X(i, 2 * k - 1) = std::cos(k * r.theta_ref[i]);
+      X(i, 2 * k) = std::sin(k * r.theta_ref[i]);
+    }
+  }
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(n));
+  const Eigen::VectorXd b = X.colPivHouseholderQr().solve(y);
+  std::vector<std::pair<int, double>> out;
+  for (int k = 1; k <= max_order; ++k) out.push_back({k, std::hypot(b(2 * k - 1), b(2 * k))});
+  return out;
+}
+
+// First-order signal-domain causes of an angle-error order k (Kuntz: a signal harmonic n gives
+// angle-error orders n +- p; offsets give p, amplitude/phase mismatch 2p).
+std::vector<std::string> causes_of(int k, int p) {
+  std::vector<std::string> c;
+  if (k == p) c.push_back("offset (signal order 0)");
+  if (k == 2 * p) c.push_back("amplitude or phase mismatch (signal order p)");
+  if (k == 1 && p != 1) c.push_back("eccentricity (mechanical order 1)");
+  if (k == 1 && p == 1) c.push_back("eccentricity or offset");
+  for (int n : {k - p, k + p})
+    if (n >= 2) c.push_back(fmt::format("signal harmonic of order {}", n));
+  return c;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording* holdout, const DiagnoseOptions& opt) {
+  check_recording(sim, "--sim");
+  check_recording(real, "--real");
+  if (holdout) check_recording(*holdout, "--holdout");
+  if (sim.channels != real.channels || (holdout && holdout->channels != real.channels))
+    throw InputError(fmt::format("channel sets differ: --sim has {} channels, --real {}{}", sim.channels,
+                                 real.channels, holdout ? fmt::format(", --holdout {}", holdout->channels) : ""));
+  Diagnosis d;
+  d.periodicity = std::max({1, meta_periodicity(sim), meta_periodicity(real)});
+  const GapModel m = build_gap_model(sim, d.periodicity, opt.fourier_order);
+  const FitProblem fp = make_fit_problem(m, real);
+  d.before = compare(m, real, fp.predicted, 0, &fp.basis);
+
+  // Where: the first stage that diverges beyond noise, and the signals involved there.
+  d.stages = stage_divergence(m, real, fp.predicted, d.before);
+  d.where_stage = "none";
+  for (const auto& st : d.stages)
+    if (st.diverges) {
+      d.where_stage = st.stage;
+      const double top = *std::max_element(st.ratio.begin(), st.ratio.end());
+      for (size_t k = 0; k < st.signals.size(); ++k)
+        if (st.ratio[k] > 1.0 + 0.25 * (top - 1.0)) d.where_channels.push_back(st.signals[k]);
+      break;
+    }
+  d.domains = gap_domains(real, d.before.g, d.periodicity);
+  // Angle unless another domain explains clearly more; "random" when nothing explains much.
+  d.domain = "random";
+  double best = 0.2, angle_r2 = -1;
+  for (const auto& s : d.domains)
+    if (s.domain == "angle") angle_r2 = s.r2;
+  if (angle_r2 > best) d.domain = "angle", best = angle_r2;
+  for (const auto& s : d.domains)
+    if (s.domain != "angle" && s.r2 > best + 0.1) d.domain = s.domain, best = s.r2;
+  {
+    const auto orders = gap_orders(real, d.before.g, 12);
+    double peak = 0;
+    for (const auto& o : orders) peak = std::max(peak, o.second);
+    for (const auto& [k, a] : orders)
+      if (a > 0.1 * peak && a > 1e-4) d.harmonics.push_back({k, a, causes_of(k, d.periodicity)});
+    std::sort(d.harmonics.begin(), d.harmonics.end(),
+              [](const GapHarmonic& a, const GapHarmonic& b) { return a.amplitude_deg > b.amplitude_deg; });
+  }
+
+  // Which: every effect fitted and scored.
+  const double before2 = d.before.gap_deg * d.before.gap_deg;
+  auto evaluate = [&](const Recording& base, const EffectCandidate& c, const Recording& rec, const GapModel& gm,
+                      const FitProblem& f, double extra0) {
+    double extra = 0;
+    const Recording pred = predict_effect(f, base, c, &extra);
+    (void)rec;
+    return compare(gm, *f.real, pred, std::hypot(extra, extra0), &f.basis);
+  };
+  for (const std::string& e : fittable_effects()) {
+    RankedEffect r;
+    r.cand = fit_effect(fp, fp.predicted, e);
+    if (!std::isfinite(r.cand.bic) || r.cand.bic >= 1e299) continue;
+    const StageSeries after = evaluate(fp.predicted, r.cand, real, m, fp, 0);
+    r.after_deg = after.gap_deg;
+    r.explained = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
+    d.ranking.push_back(r);
+  }
+  std::sort(d.ranking.begin(), d.ranking.end(),
+            [](const RankedEffect& a, const RankedEffect& b) { return a.cand.delta_bic < b.cand.delta_bic; });
+
+  // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
+  // Is there a gap at all? The systematic part must stand out of what noise leaves in the projection
+  // (cols/N of the noise variance, here required 3x over), or the excess noise must be significant.
+  const double n = static_cast<double>(real.size());
+  const double cols = static_cast<double>(fp.basis.X.cols());
+  const double noise_in_projection = std::sqrt(cols / n) * d.before.noise_deg;
+  const bool significant = d.before.gap_deg > 1e-3 &&
+                           (d.before.systematic_deg > 3 * noise_in_projection || d.before.excess_noise_deg > 0);
+  const RankedEffect* top = d.ranking.empty() ? nullptr : &d.ranking.front();
+  if (!significant) {
+    d.verdict = "no_gap";
+  } else if (top && top->explained >= opt.explained_min && top->cand.delta_bic < -10) {
+    d.verdict = "explained";
+  } else {
+    d.verdict = "unexplained";
+  }
+
+  // A second effect when the first leaves a clear remainder.
+  if (significant && opt.try_pairs && top && top->explained < 0.9 && top->cand.delta_bic < -10) {
+    double extra1 = 0;
+    const Recording base1 = predict_effect(fp, fp.predicted, top->cand, &extra1);
+    double best_expl = top->explained;
+    for (const std::string& e : fittable_effects()) {
+      if (e == top->cand.effect) continue;
+      RankedEffect r;
+      r.cand = fit_effect(fp, base1, e);
+      if (!std::isfinite(r.cand.bic) || r.cand.bic >= 1e299 || r.cand.delta_bic > -10) continue;
+      const StageSeries after = evaluate(base1, r.cand, real, m, fp, extra1);
+      const double expl = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
+      if (expl > best_expl + 0.1) {
+        best_expl = expl;
+        r.after_deg = after.gap_deg;
+        r.explained = expl;
+        d.combination = {*top, r};
+        d.combination_after_deg = after.gap_deg;
+        d.combination_explained = expl;
+      }
+    }
+    if (!d.combination.empty() && d.verdict == "unexplained" && d.combination_explained >= opt.explained_min)
+      d.verdict = "explained";
+  }
+
+  // How far it shrinks: the chosen effect(s) added to the simulation, on real and holdout.
+  auto apply_chosen = [&](const FitProblem& f, const GapModel& gm) {
+    double extra = 0;
+    Recording pred = f.predicted;
+    if (d.verdict == "explained") {
+      const std::vector<RankedEffect> chosen = d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination;
+      for (const auto& r : chosen) {
+        double e = 0;
+        pred = predict_effect(f, pred, r.cand, &e);
+        extra = std::hypot(extra, e);
+      }
+    }
+    return compare(gm, *f.real, pred, extra, &f.basis);
+  };
+  d.after = apply_chosen(fp, m);
+  if (holdout) {
+    const FitProblem fh = make_fit_problem(m, *holdout);
+    d.hold_before = compare(m, *holdout, fh.predicted, 0, &fh.basis);
+    d.hold_after = apply_chosen(fh, m);
+  }
+  return d;
+}
+
+nlohmann::json Diagnosis::to_json() const {
+  using nlohmann::json;
+  auto params_json = [](const EffectCandidate& c) {
+    json p = json::object();
+    for (const auto& [k, v] : c.params) p[k] = v;
+    return p;
+  };
+  json j;
+  j["verdict"] = verdict;
+  j["periodicity"] = periodicity;
+  j["gap"] = {{"before_deg", before.gap_deg}, {"after_deg", after.gap_deg}, {"noise_deg", before.noise_deg},
+              {"raw_rms_before_deg", before.raw_rms_deg}};
+  if (hold_before)
+    j["holdout"] = {{"before_deg", hold_before->gap_deg}, {"after_deg", hold_after->gap_deg}};
+  else
+    j["holdout"] = nullptr;
+  json harm = json::array();
+  for (const auto& h : harmonics) harm.push_back({{"order", h.order}, {"amplitude_deg", h.amplitude_deg}, {"causes", h.causes}});
+  json dom = json::object();
+  for (const auto& s : domains) dom[s.domain] = s.r2;
+  json st = json::array();
+  for (const auto& s : stages) {
+    json r = json::object();
+    for (size_t k = 0; k < s.signals.size(); ++k) r[s.signals[k]] = s.ratio[k];
+    st.push_back({{"stage", s.stage}, {"diverges", s.diverges}, {"rms_over_noise", r}});
+  }
+  j["where"] = {{"stage", where_stage}, {"domain", domain}, {"channels", where_channels},
+                {"angle_harmonics", harm}, {"domain_r2", dom}, {"stages", st}};
+  json rank = json::array();
+  if (verdict != "explained")
+    rank.push_back({{"effect", "unexplained"}, {"params", json::object()}, {"explained", 0.0},
+                    {"after_deg", before.gap_deg}});
+  for (const auto& r : ranking)
+    rank.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained},
+                    {"after_deg", r.after_deg}, {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}});
+  j["ranking"] = rank;
+  if (!combination.empty()) {
+    json c = json::array();
+    for (const auto& r : combination) c.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}});
+    j["combination"] = {{"effects", c}, {"explained", combination_explained}, {"after_deg", combination_after_deg}};
+  }
+  return j;
+}
+
+}  // namespace acore

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// Sim-to-real gap diagnosis (DESIGN 3.3 `diagnose`, 3.4 effects): where the gap lies, which
+// unmodelled effect causes it, how far it shrinks once that effect is added to the simulation,
+// checked on a holdout recording the fit never saw.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "effect_fit.hpp"
+#include "gap.hpp"
+
+namespace acore {
+
+struct DiagnoseOptions {
+  int fourier_order = 12;     // harmonics of the static sensor model fitted to the simulation
+  bool try_pairs = true;      // combinations of two effects when one leaves a clear remainder
+  double explained_min = 0.5; // the best effect must explain this share of gap^2 to be named
+};
+
+struct RankedEffect {
+  EffectCandidate cand;
+  double explained = 0;  // 1 - gap_after^2 / gap_before^2 on the real recording
+  double after_deg = 0;  // gap after adding the effect
+};
+
+struct GapHarmonic {
+  int order;                        // mechanical order of the gap g(theta)
+  double amplitude_deg;
+  std::vector<std::string> causes;  // likely signal-domain causes
+};
+
+struct Diagnosis {
+  std::string verdict;  // "explained", "unexplained" or "no_gap"
+  StageSeries before, after;
+  std::optional<StageSeries> hold_before, hold_after;
+  std::vector<StageDivergence> stages;
+  std::string where_stage;
+  std::vector<std::string> where_channels;
+  std::vector<DomainScore> domains;
+  std::string domain;
+  std::vector<GapHarmonic> harmonics;
+  std::vector<RankedEffect> ranking;  // best first, by information criterion
+  std::vector<RankedEffect> combination;  // the best pair when it beats the best single effect
+  double combination_after_deg = 0, combination_explained = 0;
+  int periodicity = 1;
+  nlohmann::json to_json() const;  // DESIGN 3.3 fields and more
+};
+
+// Throws InputError for recordings that cannot be compared (channel sets differ, no theta_ref,
+// too few samples, less than a turn).
+Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording* holdout,
+                   const DiagnoseOptions& opt = DiagnoseOptions{});
+
+}  // namespace acore

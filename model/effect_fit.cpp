@@ -1,0 +1,501 @@
+// SPDX-License-Identifier: MIT
+#include "effect_fit.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "errors.hpp"
+
+namespace acore {
+
+namespace {
+
+constexpr double kTempRef = 25.0;
+
+// Per-channel columns of one parameter: col[c][i] = d channel_c(i) / d parameter.
+using Column = std::vector<std::vector<double>>;
+
+int nsignals(const Recording& r) { return r.channels == 4 ? 4 : 2; }
+
+// The noise-decoupled signals of a channel vector (see the header).
+inline void to_signals(const Recording& r, size_t i, const std::function<double(int, size_t)>& ch, double* s) {
+  if (r.channels == 4) {
+    s[0] = ch(0, i) - ch(2, i);
+    s[1] = ch(1, i) - ch(3, i);
+    s[2] = 0.5 * (ch(0, i) + ch(2, i));
+    s[3] = 0.5 * (ch(1, i) + ch(3, i));
+  } else {
+    s[0] = ch(0, i);
+    s[1] = ch(1, i);
+  }
+}
+
+double sq(double v) { return v * v; }
+
+// Weighted least squares over signals: returns phi and -2 log L of the fit.
+std::pair<Eigen::VectorXd, double> solve_linear(const FitProblem& fp, const Recording& base,
+                                                const std::vector<Column>& cols) {
+  const Recording& real = *fp.real;
+  const size_t n = real.size();
+  const int S = nsignals(real);
+  const int k = static_cast<int>(cols.size());
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(n) * S, k);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(n) * S);
+  double s[4], t[4];
+  for (size_t i = 0; i < n; ++i) {
+    to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - base.ch[c][j]; }, s);
+    for (int q = 0; q < S; ++q) b(i * S + q) = s[q] / fp.signal_sigma[q];
+    for (int p = 0; p < k; ++p) {
+      to_signals(real, i, [&](int c, size_t j) { return cols[p][c].empty() ? 0.0 : cols[p][c][j]; }, t);
+      for (int q = 0; q < S; ++q) A(i * S + q, p) = t[q] / fp.signal_sigma[q];
+    }
+  }
+  const Eigen::VectorXd phi = A.colPivHouseholderQr().solve(b);
+  return {phi, (b - A * phi).squaredNorm()};
+}
+
+// Channel c of the model evaluated at shifted mechanical angles, minus at the true ones.
+std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function<double(size_t)>& delta) {
+  const Recording& real = *fp.real;
+  std::vector<double> v(real.size());
+  for (size_t i = 0; i < real.size(); ++i) {
+    const double th = real.theta_ref[i];
+    v[i] = fp.model->sensor.value(c, th + delta(i)) - fp.model->sensor.value(c, th);
+  }
+  return v;
+}
+
+Recording add_columns(const Recording& base, const std::vector<std::vector<double>>& add) {
+  Recording r = base;
+  for (int c = 0; c < base.channels; ++c)
+    if (!add[c].empty())
+      for (size_t i = 0; i < base.size(); ++i) r.ch[c][i] += add[c][i];
+  return r;
+}
+
+// Index of a channel around the circle (its 90-degree position): c1..c4 -> 0..3; sin, cos -> 0, 1.
+int position(int c) { return c; }
+
+}  // namespace
+
+const std::vector<std::string>& fittable_effects() {
+  static const std::vector<std::string> names = {
+      "offset",       "gain_mismatch", "phase_error", "harmonic",     "eccentricity",  "channel_skew",
+      "common_delay", "drift",         "quantization", "saturation", "excess_noise", "hysteresis"};
+  return names;
+}
+
+FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
+  FitProblem fp;
+  fp.model = &m;
+  fp.real = &real;
+  fp.predicted = m.sensor.resample(real);
+  fp.omega = angular_velocity(real);
+  fp.basis = make_gap_basis(real);
+  if (real.has_temp())
+    for (double t : real.temp) fp.dtemp.push_back(t - kTempRef);
+  fp.deriv.resize(real.channels);
+  for (int c = 0; c < real.channels; ++c) {
+    fp.deriv[c].resize(real.size());
+    for (size_t i = 0; i < real.size(); ++i) fp.deriv[c][i] = m.sensor.derivative(c, real.theta_ref[i]);
+  }
+  // Noise per signal from the simulation's fit residual statistics.
+  const auto& sg = m.sensor.noise_sigma;
+  const double floor = 1e-5 * std::max(std::fabs(m.est.amp[0]), std::fabs(m.est.amp[1]));
+  if (real.channels == 4) {
+    const auto& rho = m.sensor.noise_corr;
+    const double v13 = sq(sg[0]) + sq(sg[2]) - 2 * rho[0] * sg[0] * sg[2];
+    const double v24 = sq(sg[1]) + sq(sg[3]) - 2 * rho[1] * sg[1] * sg[3];
+    const double w13 = 0.25 * (sq(sg[0]) + sq(sg[2]) + 2 * rho[0] * sg[0] * sg[2]);
+    const double w24 = 0.25 * (sq(sg[1]) + sq(sg[3]) + 2 * rho[1] * sg[1] * sg[3]);
+    for (double v : {v13, v24, w13, w24}) fp.signal_sigma.push_back(std::max(floor, std::sqrt(std::max(0.0, v))));
+  } else {
+    fp.signal_sigma = {std::max(floor, sg[0]), std::max(floor, sg[1])};
+  }
+  return fp;
+}
+
+double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double noise_scale) {
+  const Recording& real = *fp.real;
+  const int S = nsignals(real);
+  double s[4], total = 0;
+  for (size_t i = 0; i < real.size(); ++i) {
+    to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - pred.ch[c][j]; }, s);
+    for (int q = 0; q < S; ++q) total += sq(s[q] / (fp.signal_sigma[q] * noise_scale));
+  }
+  return total + 2.0 * S * real.size() * std::log(noise_scale);
+}
+
+namespace {
+
+struct Fitted {
+  ParamList params;
+  Recording prediction;
+  double noise_scale = 1.0;
+  int k = 0;
+};
+
+std::string chan_name(const Recording& r, int c) {
+  return r.channels == 4 ? fmt::format("c{}", c + 1) : (c ? "cos" : "sin");
+}
+
+Fitted fit_offset(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (int c = 0; c < r.channels; ++c) {
+    Column col(r.channels);
+    col[c].assign(r.size(), 1.0);
+    cols.push_back(col);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  std::vector<std::vector<double>> add(r.channels);
+  for (int c = 0; c < r.channels; ++c) {
+    f.params.push_back({"offset_" + chan_name(r, c), phi(c)});
+    add[c].assign(r.size(), phi(c));
+  }
+  f.prediction = add_columns(base, add);
+  f.k = r.channels;
+  return f;
+}
+
+Fitted fit_gain(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (int c = 0; c < r.channels; ++c) {
+    Column col(r.channels);
+    col[c] = base.ch[c];
+    cols.push_back(col);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  f.prediction = base;
+  for (int c = 0; c < r.channels; ++c) {
+    f.params.push_back({"gain_" + chan_name(r, c), 1.0 + phi(c)});
+    for (auto& v : f.prediction.ch[c]) v *= 1.0 + phi(c);
+  }
+  f.k = r.channels;
+  return f;
+}
+
+// Angle-shift effects: channel c sees theta + delta_c(i) with delta linear in the parameters.
+// basis[p](c, i) is d delta_c(i) / d phi_p; the fit is linearized, the prediction exact.
+Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
+                       const std::vector<std::function<double(int, size_t)>>& basis) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (const auto& b : basis) {
+    Column col(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      col[c].resize(r.size());
+      for (size_t i = 0; i < r.size(); ++i) col[c][i] = fp.deriv[c][i] * b(c, i);
+    }
+    cols.push_back(col);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  std::vector<std::vector<double>> add(r.channels);
+  for (int c = 0; c < r.channels; ++c)
+    add[c] = angle_shift(fp, c, [&](size_t i) {
+      double d = 0;
+      for (size_t p = 0; p < basis.size(); ++p) d += phi(static_cast<Eigen::Index>(p)) * basis[p](c, i);
+      return d;
+    });
+  f.prediction = add_columns(base, add);
+  for (size_t p = 0; p < basis.size(); ++p) f.params.push_back({"", phi(static_cast<Eigen::Index>(p))});
+  f.k = static_cast<int>(basis.size());
+  return f;
+}
+
+bool sine_pair(const Recording& r, int c) { return r.channels == 4 ? (c == 0 || c == 2) : c == 0; }
+
+Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  Fitted best;
+  double best_l = 1e300;
+  for (int n = 2; n <= 9; ++n) {
+    Column cc(r.channels), cs(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      cc[c].resize(r.size());
+      cs[c].resize(r.size());
+      for (size_t i = 0; i < r.size(); ++i) {
+        const double a = n * (p * r.theta_ref[i] + position(c) * M_PI / 2);
+        cc[c][i] = std::cos(a);
+        cs[c][i] = std::sin(a);
+      }
+    }
+    const auto [phi, l] = solve_linear(fp, base, {cc, cs});
+    if (l < best_l) {
+      best_l = l;
+      best = Fitted{};
+      // amplitude * sin(a + phase) = amplitude cos(phase) sin a + amplitude sin(phase) cos a
+      const double amp = std::hypot(phi(0), phi(1)), phase = std::atan2(phi(0), phi(1));
+      best.params = {{"order", n}, {"amplitude", amp}, {"phase_rad", phase}};
+      std::vector<std::vector<double>> add(r.channels);
+      for (int c = 0; c < r.channels; ++c) {
+        add[c].resize(r.size());
+        for (size_t i = 0; i < r.size(); ++i) add[c][i] = phi(0) * cc[c][i] + phi(1) * cs[c][i];
+      }
+      best.prediction = add_columns(base, add);
+      best.k = 3;  // order, amplitude, phase
+    }
+  }
+  return best;
+}
+
+Fitted fit_drift(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (int c = 0; c < r.channels; ++c) {
+    Column co(r.channels), cg(r.channels);
+    co[c] = fp.dtemp;
+    cg[c].resize(r.size());
+    for (size_t i = 0; i < r.size(); ++i) cg[c][i] = fp.dtemp[i] * base.ch[c][i];
+    cols.push_back(co);
+    cols.push_back(cg);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  f.prediction = base;
+  for (int c = 0; c < r.channels; ++c) {
+    const double ko = phi(2 * c), kg = phi(2 * c + 1);
+    f.params.push_back({"offset_per_C_" + chan_name(r, c), ko});
+    f.params.push_back({"gain_per_C_" + chan_name(r, c), kg});
+    for (size_t i = 0; i < r.size(); ++i)
+      f.prediction.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
+  }
+  f.k = 2 * r.channels;
+  return f;
+}
+
+// ADC step from the real data: the median gap between neighbouring distinct values.
+Fitted fit_quantization(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<double> steps;
+  double peak = 0;
+  for (int c = 0; c < r.channels; ++c) {
+    std::vector<double> v = r.ch[c];
+    for (double x : v) peak = std::max(peak, std::fabs(x));
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    for (size_t i = 1; i < v.size(); ++i) steps.push_back(v[i] - v[i - 1]);
+  }
+  Fitted f;
+  f.prediction = base;
+  f.k = 2;
+  if (steps.empty()) return f;
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double step = steps[steps.size() / 2];
+  // Full scale: the smallest power of two at or above the peak (an ADC range); bits from the step.
+  const double full_scale = std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-12)))));
+  const double bits = std::log2(2.0 * full_scale / step);
+  f.params = {{"bits", std::round(bits)}, {"full_scale", full_scale}, {"step", step}};
+  for (int c = 0; c < r.channels; ++c)
+    for (auto& v : f.prediction.ch[c]) v = std::nearbyint(v / step) * step;
+  return f;
+}
+
+Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  double peak_model = 0;
+  for (int c = 0; c < r.channels; ++c)
+    for (double v : base.ch[c]) peak_model = std::max(peak_model, std::fabs(v));
+  auto clip = [&](double level) {
+    Recording p = base;
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : p.ch[c]) v = std::clamp(v, -level, level);
+    return p;
+  };
+  double best_level = peak_model, best_l = neg2_log_likelihood(fp, base);
+  for (int k = 0; k <= 80; ++k) {
+    const double level = peak_model * (0.4 + 0.6 * k / 80.0);
+    const double l = neg2_log_likelihood(fp, clip(level));
+    if (l < best_l) best_l = l, best_level = level;
+  }
+  // Refine around the best grid point.
+  double lo = best_level - 0.0075 * peak_model, hi = best_level + 0.0075 * peak_model;
+  for (int it = 0; it < 30; ++it) {
+    const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+    if (neg2_log_likelihood(fp, clip(a)) < neg2_log_likelihood(fp, clip(b))) hi = b; else lo = a;
+  }
+  const double level = 0.5 * (lo + hi);
+  Fitted f;
+  f.params = {{"level", level}};
+  f.prediction = clip(level);
+  f.k = 1;
+  return f;
+}
+
+Fitted fit_excess_noise(const FitProblem& fp, const Recording& base) {
+  // Extra white noise sigma_e on each channel: d signals gain 2 sigma_e^2, m signals sigma_e^2/2.
+  const Recording& r = *fp.real;
+  const int S = nsignals(r);
+  std::vector<double> rss(S, 0.0);
+  double s[4];
+  for (size_t i = 0; i < r.size(); ++i) {
+    to_signals(r, i, [&](int c, size_t j) { return r.ch[c][j] - base.ch[c][j]; }, s);
+    for (int q = 0; q < S; ++q) rss[q] += s[q] * s[q];
+  }
+  const double n = static_cast<double>(r.size());
+  auto weight = [&](int q) { return r.channels == 4 ? (q < 2 ? 2.0 : 0.5) : 1.0; };
+  auto nll = [&](double var_e) {
+    double t = 0;
+    for (int q = 0; q < S; ++q) {
+      const double v = sq(fp.signal_sigma[q]) + weight(q) * var_e;
+      t += rss[q] / v + n * std::log(v / sq(fp.signal_sigma[q]));
+    }
+    return t;
+  };
+  double lo = 0, hi = 0;
+  for (int q = 0; q < S; ++q) hi = std::max(hi, rss[q] / n / weight(q));
+  hi = std::max(hi, 1e-30);
+  for (int it = 0; it < 100; ++it) {
+    const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+    if (nll(a) < nll(b)) hi = b; else lo = a;
+  }
+  Fitted f;
+  const double var_e = 0.5 * (lo + hi);
+  f.params = {{"sigma", std::sqrt(var_e)}};
+  f.prediction = base;
+  f.k = 1;
+  f.noise_scale = -1;  // marks a noise effect: scored by nll below
+  f.params.push_back({"_nll", nll(var_e)});
+  return f;
+}
+
+}  // namespace
+
+double EffectCandidate::param(const std::string& name) const {
+  for (const auto& [k, v] : params)
+    if (k == name) return v;
+  throw std::out_of_range("effect " + effect + " has no parameter " + name);
+}
+
+Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
+                         double* extra_sigma) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  const std::string& e = cand.effect;
+  if (extra_sigma) *extra_sigma = 0;
+  Recording out = base;
+  auto shift = [&](const std::function<double(int, size_t)>& delta) {
+    for (int c = 0; c < r.channels; ++c) {
+      const auto add = angle_shift(fp, c, [&](size_t i) { return delta(c, i); });
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += add[i];
+    }
+  };
+  if (e == "offset") {
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v += cand.param("offset_" + chan_name(r, c));
+  } else if (e == "gain_mismatch") {
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v *= cand.param("gain_" + chan_name(r, c));
+  } else if (e == "phase_error") {
+    const double d = cand.param("delta_rad") / p;
+    shift([&](int c, size_t) { return sine_pair(r, c) ? d : 0.0; });
+  } else if (e == "harmonic") {
+    const int n = static_cast<int>(cand.param("order"));
+    const double amp = cand.param("amplitude"), ph = cand.param("phase_rad");
+    for (int c = 0; c < r.channels; ++c)
+      for (size_t i = 0; i < r.size(); ++i)
+        out.ch[c][i] += amp * std::sin(n * (p * r.theta_ref[i] + position(c) * M_PI / 2) + ph);
+  } else if (e == "eccentricity") {
+    const double eps = cand.param("epsilon_rad"), phi0 = cand.param("phi0_rad");
+    shift([&](int, size_t i) { return eps * std::sin(r.theta_ref[i] - phi0); });
+  } else if (e == "channel_skew") {
+    const double tau = cand.param("tau_s");
+    shift([&](int c, size_t i) { return fp.omega[i] * position(c) * tau; });
+  } else if (e == "common_delay") {
+    const double tau = cand.param("tau_s");
+    shift([&](int, size_t i) { return -fp.omega[i] * tau; });
+  } else if (e == "hysteresis") {
+    const double h = cand.param("h_rad");
+    shift([&](int, size_t i) { return fp.omega[i] >= 0 ? h : -h; });
+  } else if (e == "drift") {
+    if (fp.dtemp.empty()) return out;
+    for (int c = 0; c < r.channels; ++c) {
+      const double ko = cand.param("offset_per_C_" + chan_name(r, c)), kg = cand.param("gain_per_C_" + chan_name(r, c));
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
+    }
+  } else if (e == "quantization") {
+    const double step = cand.param("step");
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v = std::nearbyint(v / step) * step;
+  } else if (e == "saturation") {
+    const double level = cand.param("level");
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v = std::clamp(v, -level, level);
+  } else if (e == "excess_noise") {
+    if (extra_sigma) *extra_sigma = cand.param("sigma");
+  } else {
+    throw InputError("unknown effect '" + e + "'");
+  }
+  return out;
+}
+
+EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  Fitted f;
+  if (effect == "offset") {
+    f = fit_offset(fp, base);
+  } else if (effect == "gain_mismatch") {
+    f = fit_gain(fp, base);
+  } else if (effect == "phase_error") {
+    // The sine pair sees the electrical angle + delta: mechanical shift delta / p.
+    f = fit_angle_shift(fp, base, {[&](int c, size_t) { return sine_pair(r, c) ? 1.0 / p : 0.0; }});
+    f.params = {{"delta_rad", f.params[0].second}};
+  } else if (effect == "harmonic") {
+    f = fit_harmonic(fp, base);
+  } else if (effect == "eccentricity") {
+    // theta + eps sin(theta - phi0) = theta + u sin(theta) - v cos(theta), u = eps cos phi0, v = eps sin phi0
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return std::sin(r.theta_ref[i]); },
+                                   [&](int, size_t i) { return -std::cos(r.theta_ref[i]); }});
+    const double u = f.params[0].second, v = f.params[1].second;
+    f.params = {{"epsilon_rad", std::hypot(u, v)}, {"phi0_rad", std::atan2(v, u)}};
+  } else if (effect == "channel_skew") {
+    // Channel at position c is sampled at t + c tau: theta + omega c tau.
+    f = fit_angle_shift(fp, base, {[&](int c, size_t i) { return fp.omega[i] * position(c); }});
+    f.params = {{"tau_s", f.params[0].second}};
+  } else if (effect == "common_delay") {
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }});
+    f.params = {{"tau_s", f.params[0].second}};
+  } else if (effect == "hysteresis") {
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }});
+    f.params = {{"h_rad", f.params[0].second}};
+  } else if (effect == "drift") {
+    if (fp.dtemp.empty()) {
+      EffectCandidate none{effect, {}, 0, 1e300, 1e300, 1e300};
+      return none;  // no temperature column: drift cannot be observed
+    }
+    f = fit_drift(fp, base);
+  } else if (effect == "quantization") {
+    f = fit_quantization(fp, base);
+  } else if (effect == "saturation") {
+    f = fit_saturation(fp, base);
+  } else if (effect == "excess_noise") {
+    f = fit_excess_noise(fp, base);
+  } else {
+    throw InputError("unknown effect '" + effect + "'");
+  }
+  EffectCandidate cand;
+  cand.effect = effect;
+  cand.k = f.k;
+  if (f.noise_scale < 0) {
+    cand.neg2logl = f.params.back().second;
+    f.params.pop_back();
+  }
+  cand.params = f.params;
+  if (f.noise_scale >= 0) cand.neg2logl = neg2_log_likelihood(fp, predict_effect(fp, base, cand, nullptr));
+  const double n = static_cast<double>(r.size()) * nsignals(r);
+  cand.bic = cand.neg2logl + cand.k * std::log(n);
+  cand.delta_bic = cand.bic - neg2_log_likelihood(fp, base);
+  return cand;
+}
+
+}  // namespace acore

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// Fitting the effects of DESIGN 3.4 to the difference between a real recording and the static
+// sensor model (gap.hpp), by maximum likelihood under the simulation's own noise level.
+//
+// The residual r = real - model is compared on "signals" whose noise is nearly independent:
+// four-channel: d13 = c1 - c3, d24 = c2 - c4, m13 = (c1 + c3)/2, m24 = (c2 + c4)/2 (common-mode noise
+// lives in m, so it cannot hide an effect on d); two-channel: sin, cos. Each signal s has the noise
+// sigma_s the simulation shows. For a deterministic effect with parameters phi,
+//   -2 log L = sum_s sum_i (r_s,i - J_s,i phi)^2 / sigma_s^2          (Gaussian, known sigma)
+// linear (or linearized about no effect) in phi, so least squares with Eigen solves it. Effects that
+// are not linear (quantization, saturation) are fitted by a search over their parameter; excess
+// noise by its variance. Each is scored by the Bayesian information criterion
+//   BIC = -2 log L + k ln N,   compared to the model without any effect.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gap.hpp"
+
+namespace acore {
+
+using ParamList = std::vector<std::pair<std::string, double>>;
+
+struct EffectCandidate {
+  double param(const std::string& name) const;  // throws std::out_of_range when absent
+
+  std::string effect;  // DESIGN 3.4 name
+  ParamList params;    // in the simulator's parametrization (model/effects.hpp)
+  int k = 0;           // number of fitted parameters
+  double neg2logl = 0;
+  double bic = 0;
+  double delta_bic = 0;  // bic - bic of "no effect": negative is evidence for the effect
+};
+
+// The residual problem: real and model channels at the real recording's samples.
+struct FitProblem {
+  const GapModel* model = nullptr;
+  const Recording* real = nullptr;
+  Recording predicted;              // model channels at the real samples
+  std::vector<double> omega;        // angular velocity, rad/s (or rad/sample without t)
+  std::vector<double> dtemp;        // temp - 25 C (empty without temp)
+  std::vector<std::vector<double>> deriv;  // d channel / d theta (mechanical), per channel
+  std::vector<double> signal_sigma;        // noise per signal (see above)
+  GapBasis basis;                          // for compare() on this recording
+};
+
+FitProblem make_fit_problem(const GapModel& m, const Recording& real);
+
+// -2 log L of a candidate prediction of the real channels (per-signal sigma scaled by noise_scale).
+double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction, double noise_scale = 1.0);
+
+// Fits one effect (DESIGN 3.4 name) on top of `base` (the model prediction, possibly already
+// carrying another effect). Throws InputError for an unknown name.
+EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect);
+
+// The prediction of `fp.real`'s channels with the effect added to `base` (the model prediction at
+// the same samples, possibly carrying another effect), from the candidate's parameters alone: this
+// is how a fitted effect is carried to a holdout recording without refitting. For excess_noise the
+// channels are unchanged and the extra noise is returned in *extra_sigma (per channel).
+Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
+                         double* extra_sigma);
+
+// The effect names fit_effect knows, in DESIGN 3.4 order (without "unexplained").
+const std::vector<std::string>& fittable_effects();
+
+}  // namespace acore
