@@ -11,5 +11,6 @@ void add_demo(CLI::App& app);
 void add_simulate(CLI::App& app);
 void add_calibrate(CLI::App& app);
 void add_estimate(CLI::App& app);
+void add_diagnose(CLI::App& app);
 
 }  // namespace acore::cli
