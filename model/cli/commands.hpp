@@ -12,5 +12,6 @@ void add_simulate(CLI::App& app);
 void add_calibrate(CLI::App& app);
 void add_estimate(CLI::App& app);
 void add_diagnose(CLI::App& app);
+void add_harmonics(CLI::App& app);
 
 }  // namespace acore::cli

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   acore::cli::add_calibrate(app);
   acore::cli::add_estimate(app);
   acore::cli::add_diagnose(app);
+  acore::cli::add_harmonics(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
