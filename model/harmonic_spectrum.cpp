@@ -11,6 +11,10 @@
 
 namespace acore {
 
+namespace {
+constexpr double kHalfPi = 1.57079632679489661923;
+}
+
 std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta, const std::vector<double>& err_deg,
                                            int max_order) {
   if (theta.size() != err_deg.size())
@@ -45,7 +49,7 @@ std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta, con
         max_order, lmax / std::max(lmin, 1e-300)));
   const Eigen::VectorXd c = ata.ldlt().solve(aty);
   std::vector<OrderAmplitude> out(max_order + 1);
-  out[0] = {0, std::fabs(c(0)), c(0) >= 0 ? M_PI / 2 : -M_PI / 2, c(0), 0};
+  out[0] = {0, std::fabs(c(0)), c(0) >= 0 ? kHalfPi : -kHalfPi, c(0), 0};
   for (int k = 1; k <= max_order; ++k) {
     const double a = c(2 * k - 1), b = c(2 * k);
     // a cos + b sin = H sin(k theta + phase) with H cos(phase) = b, H sin(phase) = a.

@@ -13,7 +13,7 @@
 // Everything below (predictions, bounds) works on that disturbance list.
 //
 // Worked example (the paper's Eq. 33, tests/data/kuntz_eq33.json): p = 2, terms
-// (3, 0.05, pi/8, 0.02, pi/7) and (9, 0.075, 0, 0.09, pi/4): max |dphi_p| = 7.76 deg, dominant
+// (3, 0.05, pi/8, 0.02, pi/7) and (9, 0.075, 0, 0.09, pi/4): max |dphi_p| = 7.755 deg, dominant
 // error orders 1, 5, 7, 11 (= n -+ p), minor orders 2, 4, 8, 10, 14, 16 (= 2p +- n +- m).
 #pragma once
 #include <complex>
