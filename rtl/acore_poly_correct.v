@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// acore_poly_correct: stage 4, polynomial correction of one curve (paper Eq. 6,
+// model/poly_correct.cpp): y = s - P_region(x), Horner's scheme on the adder/shifter multiplier,
+// unrolled into DEGREE pipelined steps so one sample enters per clock:
+//   acc_n = a_n << ACC_G                                                ACC_F = COEF_F + ACC_G
+//   acc_j = saturate(shift_add_mul(acc_{j+1}, x, S_W signed, S_F) + (a_j << ACC_G), ACC_W)
+//   y     = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W)
+// The coefficients a_j of the sample's region are picked from the register file bus at the step
+// that uses them (the region travels with the sample).
+//
+//   step m = 0..DEGREE-1 (j = DEGREE-1-m): ML clocks of adder tree + 1 clock add/saturate
+//   then 1 clock for y.  LATENCY = DEGREE * (ML + 1) + 1, ML = clog2(S_W)
+`resetall
+`default_nettype none
+
+module acore_poly_correct #(
+  parameter integer REG_W = 18,
+  // Curve width, signed, S_F fraction bits.
+  parameter integer S_W = 18,
+  parameter integer S_F = 16,
+  // Polynomial degree n.
+  parameter integer DEGREE = 3,
+  // 4 or 8 regions.
+  parameter integer REGIONS = 4,
+  // Fraction bits of a coefficient (REG_W-bit signed word).
+  parameter integer COEF_F = 15,
+  // Guard fraction bits and integer bits (incl. sign) of the Horner accumulator.
+  parameter integer ACC_G = 4,
+  parameter integer ACC_I = 6,
+  // Which curve's coefficients: 0 = sine curve c13, 1 = cosine curve c24.
+  parameter integer CURVE = 0,
+  // Derived, do not override.
+  parameter integer RG_W = $clog2(REGIONS),
+  parameter integer NCOEF = 2 * REGIONS * (DEGREE + 1)
+) (
+  input  wire                   clk_i,
+  input  wire                   en_i,
+  // Polynomial argument and the curve to correct.
+  input  wire [S_W-1:0]         x_i,
+  input  wire [S_W-1:0]         s_i,
+  input  wire [RG_W-1:0]        region_i,
+  // Register words 4.. of the map: [region][curve][power], word 0 in the low bits.
+  input  wire [NCOEF*REG_W-1:0] coef_i,
+  // Corrected curve and "some step saturated".
+  output wire [S_W-1:0]         y_o,
+  output wire                   ovf_o
+);
+
+  // Derived, do not override.
+  localparam integer ACC_F = COEF_F + ACC_G;
+  localparam integer ACC_W = ACC_F + ACC_I;
+  localparam integer ML = $clog2(S_W);
+  localparam integer LATENCY = DEGREE * (ML + 1) + 1;
+  localparam integer P_W = ACC_W + ((S_W > S_F) ? (S_W - S_F) : 0) + 1;
+  localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
+  localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
+  localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
+
+  initial begin
+    if (ACC_F < S_F) $error("acore_poly_correct: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
+    if (ACC_I < REG_W - COEF_F + 1) $error("acore_poly_correct: ACC_I=%0d too small (instance %m)", ACC_I);
+    if (DEGREE < 1) $error("acore_poly_correct: DEGREE=%0d must be >= 1 (instance %m)", DEGREE);
+    if (NCOEF != 2 * REGIONS * (DEGREE + 1)) $error("acore_poly_correct: NCOEF mismatch (instance %m)");
+  end
+
+  // Per step m: inputs of the step (accumulator, argument, curve, region, overflow so far).
+  wire [ACC_W-1:0] acc [0:DEGREE];
+  wire [S_W-1:0]   xs  [0:DEGREE];
+  wire [S_W-1:0]   ss  [0:DEGREE];
+  wire [RG_W-1:0]  rs  [0:DEGREE];
+  wire             ov  [0:DEGREE];
+
+  // Coefficient of x^j for region r of this curve, sign-extended and shifted to ACC_F fraction bits.
+  function automatic [ACC_W-1:0] coef_acc(input [NCOEF*REG_W-1:0] bus, input [RG_W-1:0] r, input integer j);
+    reg [REG_W-1:0] w;
+    integer k;
+    begin
+      w = {REG_W{1'b0}};
+      for (k = 0; k < REGIONS; k = k + 1)
+        if (r == k[RG_W-1:0]) w = bus[((k * 2 + CURVE) * (DEGREE + 1) + j) * REG_W +: REG_W];
+      coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
+    end
+  endfunction
+
+  assign acc[0] = coef_acc(coef_i, region_i, DEGREE);
+  assign xs[0]  = x_i;
+  assign ss[0]  = s_i;
+  assign rs[0]  = region_i;
+  assign ov[0]  = 1'b0;
+
+  genvar m;
+  generate
+    for (m = 0; m < DEGREE; m = m + 1) begin : g_step
+      wire [P_W-1:0] prod;
+      acore_shift_add_mul #(
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(S_F), .P_W(P_W)
+      ) u_mul (
+        .clk_i(clk_i), .en_i(en_i), .a_i(acc[m]), .b_i(xs[m]), .p_o(prod)
+      );
+      // Sideband beside the adder tree: the next step needs them one clock after the product.
+      wire [RG_W-1:0] r_d;
+      wire            ov_d;
+      acore_delay #(.W(RG_W + 1), .DEPTH(ML)) u_dr (
+        .clk_i(clk_i), .en_i(en_i), .d_i({rs[m], ov[m]}), .q_o({r_d, ov_d}));
+      acore_delay #(.W(2 * S_W), .DEPTH(ML + 1)) u_dxs (
+        .clk_i(clk_i), .en_i(en_i), .d_i({xs[m], ss[m]}), .q_o({xs[m+1], ss[m+1]}));
+
+      wire [ACC_W-1:0] a_j = coef_acc(coef_i, r_d, DEGREE - 1 - m);
+      wire [P_W:0] sum = {prod[P_W-1], prod} + {{(P_W+1-ACC_W){a_j[ACC_W-1]}}, a_j};
+      wire [ACC_W-1:0] sum_sat;
+      wire sum_ovf;
+      acore_saturate #(.IN_W(P_W + 1), .OUT_W(ACC_W)) u_sat (.d_i(sum), .q_o(sum_sat), .ovf_o(sum_ovf));
+
+      reg [ACC_W-1:0] acc_q;
+      reg [RG_W-1:0]  r_q;
+      reg             ov_q;
+      always @(posedge clk_i) begin
+        if (en_i) begin
+          acc_q <= sum_sat;
+          r_q   <= r_d;
+          ov_q  <= ov_d | sum_ovf;
+        end
+      end
+      assign acc[m+1] = acc_q;
+      assign rs[m+1]  = r_q;
+      assign ov[m+1]  = ov_q;
+    end
+  endgenerate
+
+  // y = saturate(s - round_shr(acc_0, RN), S_W)
+  wire [ACC_W:0] acc_ext = {acc[DEGREE][ACC_W-1], acc[DEGREE]};
+  wire [ACC_W:0] acc_rnd;
+  generate
+    if (RN > 0) begin : g_rnd
+      assign acc_rnd = acc_ext + ({{ACC_W{1'b0}}, 1'b1} << (RN - 1));
+    end else begin : g_nornd
+      assign acc_rnd = acc_ext;
+    end
+  endgenerate
+  wire [R_W-1:0] p_r = acc_rnd[ACC_W:RN];
+  wire [S_W-1:0] s_last = ss[DEGREE];
+  wire [Y_W-1:0] y_full = {{(Y_W-S_W){s_last[S_W-1]}}, s_last} - {{(Y_W-R_W){p_r[R_W-1]}}, p_r};
+  wire [S_W-1:0] y_sat;
+  wire y_ovf;
+  acore_saturate #(.IN_W(Y_W), .OUT_W(S_W)) u_ysat (.d_i(y_full), .q_o(y_sat), .ovf_o(y_ovf));
+
+  reg [S_W-1:0] y_q;
+  reg ovf_q;
+  always @(posedge clk_i) begin
+    if (en_i) begin
+      y_q   <= y_sat;
+      ovf_q <= ov[DEGREE] | y_ovf;
+    end
+  end
+  assign y_o   = y_q;
+  assign ovf_o = ovf_q;
+
+endmodule
+
+`resetall

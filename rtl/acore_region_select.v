@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// acore_region_select: stage 3, domain selection (model/region_select.hpp). The most linear curve
+// is the one nearer its zero crossing (smaller magnitude); it becomes the polynomial argument x:
+//
+//   |s13| <= |s24|, s24 >= 0 -> region 0 (around   0 deg), x = s13
+//   |s13| >  |s24|, s13 >= 0 -> region 1 (around  90 deg), x = s24
+//   |s13| <= |s24|, s24 <  0 -> region 2 (around 180 deg), x = s13
+//   |s13| >  |s24|, s13 <  0 -> region 3 (around 270 deg), x = s24
+//
+// Ties go to the sine curve. REGIONS = 8 halves each region at its zero crossing:
+// region8 = 2 * region4 + (x >= 0). The scaled curves pass through for the correction.
+// Latency LATENCY = 1 clock.
+`resetall
+`default_nettype none
+
+module acore_region_select #(
+  // Curve width, signed.
+  parameter integer S_W = 18,
+  // 4 or 8 regions.
+  parameter integer REGIONS = 4,
+  // Derived, do not override: region index width.
+  parameter integer RG_W = $clog2(REGIONS)
+) (
+  input  wire            clk_i,
+  input  wire            en_i,
+  input  wire [S_W-1:0]  s13_i,
+  input  wire [S_W-1:0]  s24_i,
+  output reg  [RG_W-1:0] region_o,
+  // Polynomial argument.
+  output reg  [S_W-1:0]  x_o,
+  output reg  [S_W-1:0]  s13_o,
+  output reg  [S_W-1:0]  s24_o
+);
+
+  localparam integer LATENCY = 1;
+
+  initial begin
+    if (REGIONS != 4 && REGIONS != 8) $error("acore_region_select: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
+    if (RG_W != $clog2(REGIONS)) $error("acore_region_select: RG_W must be clog2(REGIONS) (instance %m)");
+  end
+
+  // Magnitudes as unsigned S_W-bit numbers (|-2^(S_W-1)| = 2^(S_W-1) still fits).
+  wire [S_W-1:0] a13 = s13_i[S_W-1] ? ({S_W{1'b0}} - s13_i) : s13_i;
+  wire [S_W-1:0] a24 = s24_i[S_W-1] ? ({S_W{1'b0}} - s24_i) : s24_i;
+  wire use13 = (a13 <= a24);
+  wire [1:0] r4 = use13 ? {s24_i[S_W-1], 1'b0} : {s13_i[S_W-1], 1'b1};
+  wire [S_W-1:0] x = use13 ? s13_i : s24_i;
+
+  wire [RG_W-1:0] region;
+  generate
+    if (REGIONS == 8) begin : g_r8
+      assign region = {r4, ~x[S_W-1]};
+    end else begin : g_r4
+      assign region = r4;
+    end
+  endgenerate
+
+  always @(posedge clk_i) begin
+    if (en_i) begin
+      region_o <= region;
+      x_o      <= x;
+      s13_o    <= s13_i;
+      s24_o    <= s24_i;
+    end
+  end
+
+endmodule
+
+`resetall

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// acore_shift_add_mul: the adder/shifter multiplier of model/fixed_point.hpp shift_add_mul():
+//   p = sum over bits j of b of  b[j] ? (a >>> (RSHIFT - j)) : 0      (a << (j - RSHIFT) if j > RSHIFT)
+// every partial product truncated (floor) on its own; with B_SIGNED the top bit of b weighs
+// -2^(B_W-1), so its partial product is subtracted. No multiplier: B_W partial products (AND
+// gates) summed by a binary adder tree with a register after every level.
+//
+//   cycle 0: a_i, b_i -> partial products -> level-1 adders -> reg
+//   cycle 1..LATENCY-1: one tree level per clock; p_o valid LATENCY advancing clocks after a_i/b_i
+//
+// Sums are computed modulo 2^P_W: intermediate wrap-around is harmless as long as the exact result
+// fits P_W bits, which the elaboration check enforces.
+`resetall
+`default_nettype none
+
+module acore_shift_add_mul #(
+  // Width of a, signed.
+  parameter integer A_W = 18,
+  // Width of b.
+  parameter integer B_W = 18,
+  // 1: b is two's complement; 0: b is unsigned.
+  parameter integer B_SIGNED = 0,
+  // Right shift of the product (fraction bits of b).
+  parameter integer RSHIFT = 9,
+  // Width of the product, signed; must hold the exact result.
+  parameter integer P_W = 30
+) (
+  input  wire           clk_i,
+  input  wire           en_i,
+  input  wire [A_W-1:0] a_i,
+  input  wire [B_W-1:0] b_i,
+  output wire [P_W-1:0] p_o
+);
+
+  // Derived, do not override: tree levels = pipeline latency.
+  localparam integer LEVELS = (B_W > 1) ? $clog2(B_W) : 1;
+  localparam integer LATENCY = LEVELS;
+  // Bits the exact product can need: |a| * 2^(B_W - RSHIFT) plus floor slack, plus sign.
+  localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
+
+  initial begin
+    if (P_W < NEED_W)
+      $error("acore_shift_add_mul: P_W=%0d cannot hold the product (need %0d) (instance %m)", P_W, NEED_W);
+    if (B_W < 2) $error("acore_shift_add_mul: B_W=%0d must be >= 2 (instance %m)", B_W);
+  end
+
+  // Entries per level: level l holds ceil(B_W / 2^l) partial sums; unused slots are zero.
+  wire [B_W*P_W-1:0] lvl [0:LEVELS];
+
+  genvar l, k;
+  generate
+    // Level 0: partial products, each a floor-shifted copy of a, gated by one bit of b.
+    for (k = 0; k < B_W; k = k + 1) begin : g_pp
+      wire [P_W-1:0] shifted;
+      if (k > RSHIFT) begin : g_left
+        wire [P_W-1:0] ext = {{(P_W-A_W){a_i[A_W-1]}}, a_i};
+        assign shifted = ext << (k - RSHIFT);
+      end else if (RSHIFT - k < A_W) begin : g_right
+        assign shifted = {{(P_W-A_W+RSHIFT-k){a_i[A_W-1]}}, a_i[A_W-1:RSHIFT-k]};
+      end else begin : g_sign
+        assign shifted = {P_W{a_i[A_W-1]}};
+      end
+      assign lvl[0][k*P_W +: P_W] = shifted & {P_W{b_i[k]}};
+    end
+
+    for (l = 1; l <= LEVELS; l = l + 1) begin : g_lvl
+      localparam integer N_PREV = (B_W + (1 << (l - 1)) - 1) >> (l - 1);
+      localparam integer N_THIS = (B_W + (1 << l) - 1) >> l;
+      for (k = 0; k < B_W; k = k + 1) begin : g_node
+        if (k < N_THIS) begin : g_used
+          reg [P_W-1:0] sum_q;
+          wire [P_W-1:0] lhs = lvl[l-1][(2*k)*P_W +: P_W];
+          if (2 * k + 1 < N_PREV) begin : g_pair
+            wire [P_W-1:0] rhs = lvl[l-1][(2*k+1)*P_W +: P_W];
+            // The signed top bit of b sits at index B_W-1 of level 0: subtract it.
+            if (l == 1 && B_SIGNED != 0 && 2 * k + 1 == B_W - 1) begin : g_sub
+              always @(posedge clk_i) if (en_i) sum_q <= lhs - rhs;
+            end else begin : g_add
+              always @(posedge clk_i) if (en_i) sum_q <= lhs + rhs;
+            end
+          end else begin : g_single
+            if (l == 1 && B_SIGNED != 0 && 2 * k == B_W - 1) begin : g_neg
+              always @(posedge clk_i) if (en_i) sum_q <= {P_W{1'b0}} - lhs;
+            end else begin : g_pass
+              always @(posedge clk_i) if (en_i) sum_q <= lhs;
+            end
+          end
+          assign lvl[l][k*P_W +: P_W] = sum_q;
+        end else begin : g_unused
+          assign lvl[l][k*P_W +: P_W] = {P_W{1'b0}};
+        end
+      end
+    end
+  endgenerate
+
+  assign p_o = lvl[LEVELS][P_W-1:0];
+
+endmodule
+
+`resetall

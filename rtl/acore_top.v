@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit).
+//
+//   c1..c4 -> prefilter -> scaler x2 -> region_select -> poly_correct x2 -> cordic -> angle, flags
+//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i
+//
+// Streaming: a sample is taken when in_valid_i && in_ready_o and comes out LATENCY accepted-or-
+// advancing clocks later on out_valid_o. The pipeline stalls as a whole when the output is held
+// (out_valid_o && !out_ready_i), so in_ready_o = !stall and throughput is one sample per clock
+// while out_ready_i is high; bubbles travel through with their valid bit low.
+//
+//   clk        _|~|_|~|_|~|_|~|_|~|_|~|_
+//   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !(out_valid_o && !out_ready_i)
+//   c*_i        | A | B | C | D | E |
+//   out_valid_o  ... LATENCY clocks later: | A | B | C | ...
+//
+// Only the valid flops are reset (rst_i synchronous, active high); data flops are not, and every
+// output is forced to zero while out_valid_o is low, so no unknown ever leaves the core.
+// Flags: ovf_o = saturation in any stage; los_o = magnitude < mag_lo_i (loss of signal);
+// dos_o = magnitude > mag_hi_i (degradation / saturation of signal). The magnitude is the CORDIC's
+// X_K >>> CORDIC_G, the corrected vector length (1.0 = 2^S_F) times the CORDIC gain (1.6468).
+`resetall
+`default_nettype none
+
+module acore_top #(
+  // Channel code width, signed.
+  parameter integer IN_W = 16,
+  // Register word width.
+  parameter integer REG_W = 18,
+  // Scaled/corrected curve width (signed) and its fraction bits.
+  parameter integer S_W = 18,
+  parameter integer S_F = 16,
+  // Extra scale of the amplitude reciprocal, and guard bits of the scaling product.
+  parameter integer R_SHIFT = 13,
+  parameter integer SCALE_G = 4,
+  // Polynomial degree and number of regions (4 or 8).
+  parameter integer DEGREE = 3,
+  parameter integer REGIONS = 4,
+  // Coefficient fraction bits; Horner accumulator guard and integer bits.
+  parameter integer COEF_F = 15,
+  parameter integer ACC_G = 4,
+  parameter integer ACC_I = 6,
+  // CORDIC iterations (= stages), guard bits, angle accumulator width, output angle width.
+  parameter integer K = 16,
+  parameter integer CORDIC_G = 3,
+  parameter integer Z_W = 20,
+  parameter integer ANGLE_W = 16,
+  // $readmemh register image for the power-up contents ("" = none).
+  parameter INIT_FILE = "",
+  // Derived, do not override.
+  parameter integer RG_W = $clog2(REGIONS),
+  parameter integer WORDS = 4 + 2 * REGIONS * (DEGREE + 1) + K,
+  parameter integer ADDR_W = $clog2(WORDS),
+  parameter integer MAG_W = S_W + 2
+) (
+  input  wire               clk_i,
+  input  wire               rst_i,
+  // Register file host port (synchronous write, read-back one clock after the address).
+  input  wire [ADDR_W-1:0]  reg_addr_i,
+  input  wire [REG_W-1:0]   reg_wdata_i,
+  input  wire               reg_we_i,
+  output wire [REG_W-1:0]   reg_rdata_o,
+  // Status window on the magnitude (unsigned).
+  input  wire [MAG_W-1:0]   mag_lo_i,
+  input  wire [MAG_W-1:0]   mag_hi_i,
+  // Input stream: four channel codes (two-channel sensors: c3 = c4 = 0).
+  input  wire               in_valid_i,
+  output wire               in_ready_o,
+  input  wire [IN_W-1:0]    c1_i,
+  input  wire [IN_W-1:0]    c2_i,
+  input  wire [IN_W-1:0]    c3_i,
+  input  wire [IN_W-1:0]    c4_i,
+  // Output stream.
+  output wire               out_valid_o,
+  input  wire               out_ready_i,
+  // Angle, unsigned, one turn = 2^ANGLE_W.
+  output wire [ANGLE_W-1:0] angle_o,
+  output wire [RG_W-1:0]    region_o,
+  output wire               ovf_o,
+  output wire               los_o,
+  output wire               dos_o
+);
+
+  // Derived, do not override: stage latencies (each module documents its own) and the total.
+  localparam integer D_W = IN_W + 1;
+  localparam integer PRE_LATENCY = 1;
+  localparam integer SCALER_LATENCY = $clog2(REG_W) + 2;
+  localparam integer REGION_LATENCY = 1;
+  localparam integer POLY_LATENCY = DEGREE * ($clog2(S_W) + 1) + 1;
+  localparam integer CORDIC_LATENCY = 1 + K + 1;
+  localparam integer OUT_LATENCY = 1;
+  localparam integer LATENCY /*verilator public*/ = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
+                               CORDIC_LATENCY + OUT_LATENCY;
+  localparam integer NCOEF = 2 * REGIONS * (DEGREE + 1);
+
+  initial begin
+    if (IN_W < 8 || IN_W > 24) $error("acore_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
+    if (REG_W < D_W + 1 || REG_W > 30) $error("acore_top: REG_W=%0d must be IN_W+2..30 (instance %m)", REG_W);
+    if (S_W < S_F + 2 || S_W > 30) $error("acore_top: S_W=%0d must be S_F+2..30 (instance %m)", S_W);
+    if (REGIONS != 4 && REGIONS != 8) $error("acore_top: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
+    if (DEGREE < 1 || DEGREE > 7) $error("acore_top: DEGREE=%0d must be 1..7 (instance %m)", DEGREE);
+    if (K < 4 || K > 24) $error("acore_top: K=%0d must be 4..24 (instance %m)", K);
+    if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
+    if (WORDS != 4 + NCOEF + K || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
+  end
+
+  // ---- handshake: one enable for the whole pipeline ----
+  reg  [LATENCY-1:0] vld_q;
+  wire stall = vld_q[LATENCY-1] & ~out_ready_i;
+  wire en = ~stall;
+  assign in_ready_o = en;
+  always @(posedge clk_i) begin
+    if (rst_i) vld_q <= {LATENCY{1'b0}};
+    else if (en) vld_q <= {vld_q[LATENCY-2:0], in_valid_i};
+  end
+
+  // ---- register file ----
+  wire [WORDS*REG_W-1:0] words;
+  acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
+    .clk_i(clk_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
+    .rdata_o(reg_rdata_o), .words_o(words));
+  wire [REG_W-1:0] off13 = words[0*REG_W +: REG_W];
+  wire [REG_W-1:0] off24 = words[1*REG_W +: REG_W];
+  wire [REG_W-1:0] rcp13 = words[2*REG_W +: REG_W];
+  wire [REG_W-1:0] rcp24 = words[3*REG_W +: REG_W];
+  wire [NCOEF*REG_W-1:0] coef = words[4*REG_W +: NCOEF*REG_W];
+  wire [K*REG_W-1:0] atan = words[(4+NCOEF)*REG_W +: K*REG_W];
+
+  // ---- 1: pre-filter ----
+  wire [D_W-1:0] d13, d24;
+  acore_prefilter #(.IN_W(IN_W)) u_pre (
+    .clk_i(clk_i), .en_i(en), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
+    .d13_o(d13), .d24_o(d24));
+
+  // ---- 2: scaling ----
+  wire [S_W-1:0] s13, s24;
+  wire sc_ovf13, sc_ovf24;
+  acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc13 (
+    .clk_i(clk_i), .en_i(en), .d_i(d13), .offset_i(off13), .recip_i(rcp13), .s_o(s13), .ovf_o(sc_ovf13));
+  acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc24 (
+    .clk_i(clk_i), .en_i(en), .d_i(d24), .offset_i(off24), .recip_i(rcp24), .s_o(s24), .ovf_o(sc_ovf24));
+
+  // ---- 3: domain selection ----
+  wire [RG_W-1:0] region;
+  wire [S_W-1:0] x, s13_r, s24_r;
+  acore_region_select #(.S_W(S_W), .REGIONS(REGIONS)) u_rs (
+    .clk_i(clk_i), .en_i(en), .s13_i(s13), .s24_i(s24),
+    .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
+
+  // ---- 4: polynomial correction ----
+  wire [S_W-1:0] y13, y24;
+  wire pc_ovf13, pc_ovf24;
+  acore_poly_correct #(
+    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
+    .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0)
+  ) u_pc13 (
+    .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s13_r), .region_i(region), .coef_i(coef),
+    .y_o(y13), .ovf_o(pc_ovf13));
+  acore_poly_correct #(
+    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
+    .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1)
+  ) u_pc24 (
+    .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s24_r), .region_i(region), .coef_i(coef),
+    .y_o(y24), .ovf_o(pc_ovf24));
+
+  // ---- 5: CORDIC, x = corrected cosine curve, y = corrected sine curve ----
+  wire [ANGLE_W-1:0] angle;
+  wire [MAG_W-1:0] mag;
+  acore_cordic #(
+    .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .NORM(0)
+  ) u_cordic (
+    .clk_i(clk_i), .en_i(en), .x_i(y24), .y_i(y13), .atan_i(atan), .angle_o(angle), .mag_o(mag));
+
+  // ---- sideband: scaler overflow, region and correction overflow, aligned to the CORDIC output ----
+  wire sc_ovf_d, pc_ovf_d;
+  wire [RG_W-1:0] region_d;
+  acore_delay #(.W(1), .DEPTH(REGION_LATENCY + POLY_LATENCY + CORDIC_LATENCY)) u_d_scovf (
+    .clk_i(clk_i), .en_i(en), .d_i(sc_ovf13 | sc_ovf24), .q_o(sc_ovf_d));
+  acore_delay #(.W(RG_W), .DEPTH(POLY_LATENCY + CORDIC_LATENCY)) u_d_region (
+    .clk_i(clk_i), .en_i(en), .d_i(region), .q_o(region_d));
+  acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY)) u_d_pcovf (
+    .clk_i(clk_i), .en_i(en), .d_i(pc_ovf13 | pc_ovf24), .q_o(pc_ovf_d));
+
+  // ---- output register: status window compare ----
+  reg [ANGLE_W-1:0] angle_q;
+  reg [RG_W-1:0] region_q;
+  reg ovf_q, los_q, dos_q;
+  always @(posedge clk_i) begin
+    if (en) begin
+      angle_q  <= angle;
+      region_q <= region_d;
+      ovf_q    <= sc_ovf_d | pc_ovf_d;
+      los_q    <= mag < mag_lo_i;
+      dos_q    <= mag > mag_hi_i;
+    end
+  end
+
+  assign out_valid_o = vld_q[LATENCY-1];
+  assign angle_o  = angle_q & {ANGLE_W{out_valid_o}};
+  assign region_o = region_q & {RG_W{out_valid_o}};
+  assign ovf_o    = ovf_q & out_valid_o;
+  assign los_o    = los_q & out_valid_o;
+  assign dos_o    = dos_q & out_valid_o;
+
+endmodule
+
+`resetall

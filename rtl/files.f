@@ -1,0 +1,10 @@
+acore_delay.v
+acore_saturate.v
+acore_shift_add_mul.v
+acore_coef_regfile.v
+acore_prefilter.v
+acore_scaler.v
+acore_region_select.v
+acore_poly_correct.v
+acore_cordic.v
+acore_top.v

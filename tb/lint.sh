@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# verilator --lint-only -Wall over rtl/: every module in rtl/files.f as the top (default
+# parameters), the top with the waivers of rtl/verilator.vlt, and the named non-default
+# configurations (8 regions, degree 5, the 16-bit normalizing CORDIC of synth/). Exit 1 on any warning.
+set -euo pipefail
+root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
+cd "$root/rtl"
+mapfile -t files < <(grep -v '^#' files.f | grep '\.v$')
+fail=0
+run() {
+  local name=$1; shift
+  if out=$(verilator --lint-only -Wall verilator.vlt "${files[@]}" "$@" 2>&1); then
+    echo "lint ok:   $name"
+  else
+    echo "lint FAIL: $name"; echo "$out"; fail=1
+  fi
+}
+for f in "${files[@]}"; do
+  m=$(basename "$f" .v)
+  run "$m" --top-module "$m"
+done
+run "acore_top REGIONS=8 DEGREE=5" --top-module acore_top -GREGIONS=8 -GDEGREE=5
+run "acore_cordic 16-bit NORM" --top-module acore_cordic -GIN_W=16 -GG=4 -GZ_W=22 -GK=18 -GAT_W=20 -GNORM=1
+exit $fail

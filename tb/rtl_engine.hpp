@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// The Verilated RTL (rtl/acore_top.v, default configuration) as an engine beside the float and
+// bit-accurate models: run_rtl() loads a register image through the register write port, streams
+// the samples with optional random input gaps and output backpressure, and returns one FixedSample
+// per input (angle, region, ovf, los, dos; the model-only fields stay zero).
+// RtlHarness is the pin-level driver underneath, for testbenches (reset mid-stream, reprogramming).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "fixed_model.hpp"
+#include "regimage.hpp"
+
+namespace acore {
+
+struct RtlRunOptions {
+  uint64_t seed = 1;          // random stream for gaps and backpressure
+  double backpressure = 0.0;  // probability that out_ready is low in a clock
+  double gaps = 0.0;          // probability that in_valid is low in a clock (an input gap)
+  std::string trace;          // FST waveform file; empty = no tracing (no overhead)
+  std::optional<StatusWindow> window;  // mag_lo/mag_hi; default StatusWindow::defaults(cfg)
+};
+
+// Throws InputError when the image's configuration is not the one the RTL was built with.
+std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelCodes>& in,
+                                 const RtlRunOptions& opt);
+
+// The configuration the Verilated model was built with (the RTL defaults).
+DatapathConfig rtl_config();
+
+class RtlHarness {
+ public:
+  // trace: FST file ("" = none). rand_reset: Verilated::randReset mode for the initial state
+  // (2 = random, proving that outputs are valid-gated).
+  explicit RtlHarness(const std::string& trace = "", int rand_reset = 2, uint64_t seed = 1);
+  ~RtlHarness();
+  RtlHarness(const RtlHarness&) = delete;
+  RtlHarness& operator=(const RtlHarness&) = delete;
+
+  // rst_i high for `cycles` clocks (inputs idle), then low.
+  void reset(int cycles = 2);
+  // Writes every word through the register port (one word per clock), then reads all back and
+  // throws CheckFailed on a read-back difference.
+  void load(const RegImage& img);
+  uint64_t read_reg(int addr);
+  void set_window(const StatusWindow& w);
+
+  // Pin-level access: drive inputs, advance one clock, sample outputs (after the edge).
+  void drive(bool in_valid, const ChannelCodes& c, bool out_ready);
+  void tick();
+  void set_reset(bool rst);
+  bool in_ready() const;
+  bool out_valid() const;
+  FixedSample output() const;  // angle, region, ovf, los, dos of the current output pins
+  // True when every data output is zero (they are forced to zero while out_valid is low).
+  bool outputs_zero() const;
+  uint64_t cycles() const;
+
+  // Streams `in` with random gaps/backpressure from rng and collects every output in order.
+  std::vector<FixedSample> stream(const std::vector<ChannelCodes>& in, double gaps, double backpressure,
+                                  std::mt19937_64& rng);
+  // The pipeline latency: LATENCY of rtl/acore_top.v (Verilator public parameter).
+  static int latency();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace acore
