@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
   acore::cli::add_estimate(app);
   acore::cli::add_diagnose(app);
   acore::cli::add_harmonics(app);
+#ifdef ACORE_WITH_RTL
+  acore::cli::add_cosim(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
