@@ -2,9 +2,10 @@
 // acore_cordic: stage 5, pipelined CORDIC arctangent in vectoring mode over the full circle
 // (model/cordic.cpp, bit for bit). angle = atan2(y, x), one turn = 2^ANGLE_W.
 //
-//   NORM=1: x, y <<= L, L = IN_W-2 - msb(|x| | |y|) when positive     (2 clocks)
+//   NORM=1: x, y <<= L, L = IN_W-2 - msb(|x| | |y|) when positive
 //   X = x << G, Y = y << G                               XY_W = IN_W + 2 + G bits
-//   pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = 2^(Z_W-1); else Z = 0   (1 clock)
+//   pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = 2^(Z_W-1); else Z = 0
+//                                      (1 clock; 2 clocks with NORM=1, merged with the shift)
 //   stage i = 0..K-1, s = (Y < 0):                        (1 clock each, reads x_q[i])
 //       X += (Y >>> i) ^ {s}  + s        i.e. X += s ? -(Y>>>i) : (Y>>>i)
 //       Y += (X >>> i) ^ {~s} + ~s       i.e. Y -= s ? -(X>>>i) : (X>>>i)
@@ -13,7 +14,8 @@
 // Each stage register is fed by exactly one adder per word: the conditional negation is the XOR
 // and the carry-in of the same adder, written as one (W+1)-bit add whose bit 0 makes the carry.
 // atan_i = round(atan(2^-i) / 2pi * 2^Z_W) comes in on a bus (the register file's last K words).
-// X never goes negative and |(X, Y)| grows by the CORDIC gain (< 1.65), so XY_W cannot overflow.
+// X never goes negative and |(X, Y)| grows by the CORDIC gain (< 1.65), so XY_W cannot overflow;
+// Y shrinks stage by stage and is computed on fewer bits in the later stages (see below).
 `resetall
 `default_nettype none
 
@@ -49,8 +51,8 @@ module acore_cordic #(
 );
 
   // Derived, do not override.
-  localparam integer NL = (NORM != 0) ? 2 : 0;
-  localparam integer LATENCY = NL + 1 + K + 1;
+  localparam integer PRE = (NORM != 0) ? 2 : 1;  // normalization + pre-rotation clocks
+  localparam integer LATENCY = PRE + K + 1;
   localparam integer DROP = Z_W - ANGLE_W;
 
   initial begin
@@ -60,15 +62,31 @@ module acore_cordic #(
     if (XY_W != IN_W + 2 + G || MAG_W != IN_W + 2) $error("acore_cordic: XY_W/MAG_W are derived (instance %m)");
   end
 
-  // ---- optional normalization ----
-  wire [IN_W-1:0] xn, yn;
+  // ---- normalization (optional) and quadrant pre-rotation -> x_q[0], y_q[0], z_q[0] ----
+  // X never goes negative and stays below 2^(XY_W-1) (|x| <= 2^(IN_W-1), gain < 2.33 with the
+  // 45-degree pre-rotation), so it is kept without a sign bit. Y converges: entering stage i its
+  // angle is within sum_{k>=i} atan(2^-k) < 2^(1-i) rad, so |Y_i| < 2^(XY_W - i) and Y_i fits
+  // YW(i) = min(XY_W, XY_W + 2 - i) signed bits (a 2x margin over the bound, which also covers the
+  // truncation of at most one LSB per stage). Each stage computes only YW(i+1) bits of Y (the adds
+  // are exact modulo 2^YW and the true value fits) and stores them sign-extended; synthesis merges
+  // the duplicated sign flops. tests/test_cordic16.cpp checks the margin on sweeps of both configs.
+  reg [XY_W-2:0] x_q [0:K];
+  reg [XY_W-1:0] y_q [0:K-1];
+  reg [Z_W-1:0]  z_q [0:K];
+
   generate
     if (NORM != 0) begin : g_norm
+      // Clock 1: |x|, |y|, the pre-rotated y (-y when x < 0) and the shift
+      // L = IN_W-2 - msb(|x| | |y|) when positive. Clock 2: shift; X = |x| << L, Y = +-y << L.
+      // Shifting before or after the pre-rotation is the same (no overflow: msb lands at IN_W-2).
       localparam integer SH_W = $clog2(IN_W);
-      wire [IN_W-1:0] ax = x_i[IN_W-1] ? ({IN_W{1'b0}} - x_i) : x_i;
+      wire sx = x_i[IN_W-1];
+      wire [IN_W-1:0] ax = sx ? ({IN_W{1'b0}} - x_i) : x_i;
       wire [IN_W-1:0] ay = y_i[IN_W-1] ? ({IN_W{1'b0}} - y_i) : y_i;
+      wire [IN_W:0] y_ext = {y_i[IN_W-1], y_i};
+      wire [IN_W:0] yr = sx ? ({(IN_W+1){1'b0}} - y_ext) : y_ext;
       wire [IN_W-1:0] mag = ax | ay;
-      // L = IN_W-2 - msb(mag) if positive: the highest set bit wins.
+      // The highest set bit wins.
       reg [SH_W-1:0] sh;
       integer b, l;
       always @* begin
@@ -79,61 +97,70 @@ module acore_cordic #(
         end
         if (mag[IN_W-1] | mag[IN_W-2]) sh = {SH_W{1'b0}};
       end
-      reg [IN_W-1:0] x_n0_q, y_n0_q, x_n1_q, y_n1_q;
+      reg [IN_W-1:0] ax_q;
+      reg [IN_W:0]   yr_q;
       reg [SH_W-1:0] sh_q;
+      reg            sx_q;
       always @(posedge clk_i) begin
         if (en_i) begin
-          x_n0_q <= x_i;
-          y_n0_q <= y_i;
-          sh_q   <= sh;
-          x_n1_q <= x_n0_q << sh_q;
-          y_n1_q <= y_n0_q << sh_q;
+          ax_q <= ax;
+          yr_q <= yr;
+          sh_q <= sh;
+          sx_q <= sx;
         end
       end
-      assign xn = x_n1_q;
-      assign yn = y_n1_q;
-    end else begin : g_nonorm
-      assign xn = x_i;
-      assign yn = y_i;
+      wire [IN_W-1:0] ax_sh = ax_q << sh_q;
+      wire [IN_W:0]   yr_sh = yr_q << sh_q;
+      always @(posedge clk_i) begin
+        if (en_i) begin
+          x_q[0] <= {1'b0, ax_sh, {G{1'b0}}};
+          y_q[0] <= {yr_sh[IN_W], yr_sh, {G{1'b0}}};
+          z_q[0] <= {sx_q, {(Z_W-1){1'b0}}};
+        end
+      end
+    end else begin : g_prerot
+      // One clock: X < 0 -> (X, Y) = (-X, -Y), Z = half a turn.
+      wire [XY_W-1:0] x0 = {{2{x_i[IN_W-1]}}, x_i, {G{1'b0}}};
+      wire [XY_W-1:0] y0 = {{2{y_i[IN_W-1]}}, y_i, {G{1'b0}}};
+      wire neg0 = x_i[IN_W-1];
+      wire [XY_W-1:0] x0_abs = neg0 ? ({XY_W{1'b0}} - x0) : x0;
+      always @(posedge clk_i) begin
+        if (en_i) begin
+          x_q[0] <= x0_abs[XY_W-2:0];
+          y_q[0] <= neg0 ? ({XY_W{1'b0}} - y0) : y0;
+          z_q[0] <= {neg0, {(Z_W-1){1'b0}}};
+        end
+      end
     end
   endgenerate
-
-  // ---- quadrant pre-rotation and the K stages ----
-  reg [XY_W-1:0] x_q [0:K];
-  reg [XY_W-1:0] y_q [0:K-1];
-  reg [Z_W-1:0]  z_q [0:K];
-
-  wire [XY_W-1:0] x0 = {{2{xn[IN_W-1]}}, xn, {G{1'b0}}};
-  wire [XY_W-1:0] y0 = {{2{yn[IN_W-1]}}, yn, {G{1'b0}}};
-  wire neg0 = xn[IN_W-1];
-  always @(posedge clk_i) begin
-    if (en_i) begin
-      x_q[0] <= neg0 ? ({XY_W{1'b0}} - x0) : x0;
-      y_q[0] <= neg0 ? ({XY_W{1'b0}} - y0) : y0;
-      z_q[0] <= {neg0, {(Z_W-1){1'b0}}};
-    end
-  end
 
   genvar i;
   generate
     for (i = 0; i < K; i = i + 1) begin : g_stage
+      // s = (Y < 0): the rotation direction.
       wire s = y_q[i][XY_W-1];
-      wire [XY_W-1:0] ys = $signed(y_q[i]) >>> i;
+      wire [XY_W-1:0] ys_full = $signed(y_q[i]) >>> i;
+      wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
       wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[i*AT_W +: AT_W]};
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
-      wire [XY_W:0] x_sum = {x_q[i], 1'b1} + {ys ^ {XY_W{s}}, s};
-      wire [Z_W:0]  z_sum = {z_q[i], 1'b1} + {at ^ {Z_W{s}}, s};
+      // X += s ? -(Y>>>i) : (Y>>>i), i.e. X + ((Y>>>i) ^ {s}) + s.
+      wire [XY_W-1:0] x_sum = {x_q[i], 1'b1} + {ys ^ {(XY_W-1){s}}, s};
+      wire [Z_W:0]    z_sum = {z_q[i], 1'b1} + {at ^ {Z_W{s}}, s};
       always @(posedge clk_i) begin
         if (en_i) begin
-          x_q[i+1] <= x_sum[XY_W:1];
+          x_q[i+1] <= x_sum[XY_W-1:1];
           z_q[i+1] <= z_sum[Z_W:1];
         end
       end
-      // The last stage's Y is never read.
+      // Y -= s ? -(X>>i) : (X>>i), i.e. Y + ((X>>i) ^ {~s}) + ~s, on YWN bits. The last stage's Y
+      // is never read.
       if (i < K - 1) begin : g_y
-        wire [XY_W-1:0] xs = $signed(x_q[i]) >>> i;
-        wire [XY_W:0] y_sum = {y_q[i], 1'b1} + {xs ^ {XY_W{~s}}, ~s};
-        always @(posedge clk_i) if (en_i) y_q[i+1] <= y_sum[XY_W:1];
+        localparam integer YWN = (i + 1 <= 2) ? XY_W : XY_W + 1 - i;
+        wire [XY_W-1:0] xs_full = {1'b0, x_q[i] >> i};
+        wire [YWN-1:0]  xs = xs_full[YWN-1:0];
+        wire [YWN-1:0]  yl = y_q[i][YWN-1:0];
+        wire [YWN:0]    y_sum = {yl, 1'b1} + {xs ^ {YWN{~s}}, ~s};
+        always @(posedge clk_i) if (en_i) y_q[i+1] <= {{(XY_W-YWN){y_sum[YWN]}}, y_sum[YWN:1]};
       end
     end
   endgenerate
@@ -148,11 +175,11 @@ module acore_cordic #(
       assign z_rnd = z_k;
     end
   endgenerate
-  wire [XY_W-1:0] x_k = x_q[K];
+  wire [XY_W-2:0] x_k = x_q[K];
   always @(posedge clk_i) begin
     if (en_i) begin
       angle_o <= z_rnd[Z_W-1:DROP];
-      mag_o   <= x_k[XY_W-1:G];
+      mag_o   <= {1'b0, x_k[XY_W-2:G]};
     end
   end
 

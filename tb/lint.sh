@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # verilator --lint-only -Wall over rtl/: every module in rtl/files.f as the top (default
 # parameters), the top with the waivers of rtl/verilator.vlt, and the named non-default
-# configurations (8 regions, degree 5, the 16-bit normalizing CORDIC of synth/). Exit 1 on any warning.
+# configurations (8 regions, degree 5, the 16-bit normalizing CORDIC of rtl/cordic16.cfg). Exit 1 on any warning.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root/rtl"
@@ -21,5 +21,6 @@ for f in "${files[@]}"; do
   run "$m" --top-module "$m"
 done
 run "acore_top REGIONS=8 DEGREE=5" --top-module acore_top -GREGIONS=8 -GDEGREE=5
-run "acore_cordic 16-bit NORM" --top-module acore_cordic -GIN_W=16 -GG=4 -GZ_W=22 -GK=18 -GAT_W=20 -GNORM=1
+mapfile -t c16 < <(grep -E '^[A-Z_]+=' cordic16.cfg | sed 's/^/-G/')
+run "acore_cordic cordic16.cfg" --top-module acore_cordic "${c16[@]}"
 exit $fail
