@@ -5,8 +5,8 @@
 //   NORM=1: x, y <<= L, L = IN_W-2 - msb(|x| | |y|) when positive
 //   X = x << G, Y = y << G                               XY_W = IN_W + 2 + G bits
 //   pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = 2^(Z_W-1); else Z = 0
-//                                      (1 clock; 2 clocks with NORM=1, merged with the shift)
-//   stage i = 0..K-1, s = (Y < 0):                        (1 clock each, reads x_q[i])
+//                                      (1 clock; 5 clocks with NORM=1, merged with the shift)
+//   stage i = 0..K-1, s = (Y < 0):          (1 clock each, 2 with SPLIT=1, reads x_q[i])
 //       X += (Y >>> i) ^ {s}  + s        i.e. X += s ? -(Y>>>i) : (Y>>>i)
 //       Y += (X >>> i) ^ {~s} + ~s       i.e. Y -= s ? -(X>>>i) : (X>>>i)
 //       Z += atan_i ^ {s} + s             (mod 2^Z_W)
@@ -34,6 +34,9 @@ module acore_cordic #(
   parameter integer AT_W = 18,
   // 1: leading-bit normalization so short vectors keep full angle precision.
   parameter integer NORM = 0,
+  // 1: two clocks per stage, the operand XOR (conditional negation) registered before the adder,
+  // so the clock period is one carry chain (for Fmax on iCE40); 0: one clock per stage.
+  parameter integer SPLIT = 0,
   // Derived, do not override.
   parameter integer XY_W = IN_W + 2 + G,
   parameter integer MAG_W = IN_W + 2
@@ -51,8 +54,8 @@ module acore_cordic #(
 );
 
   // Derived, do not override.
-  localparam integer PRE = (NORM != 0) ? 2 : 1;  // normalization + pre-rotation clocks
-  localparam integer LATENCY = PRE + K + 1;
+  localparam integer PRE = (NORM != 0) ? 5 : 1;  // normalization + pre-rotation clocks
+  localparam integer LATENCY = PRE + K * (SPLIT + 1) + 1;
   localparam integer DROP = Z_W - ANGLE_W;
 
   initial begin
@@ -76,46 +79,68 @@ module acore_cordic #(
 
   generate
     if (NORM != 0) begin : g_norm
-      // Clock 1: |x|, |y|, the pre-rotated y (-y when x < 0) and the shift
-      // L = IN_W-2 - msb(|x| | |y|) when positive. Clock 2: shift; X = |x| << L, Y = +-y << L.
-      // Shifting before or after the pre-rotation is the same (no overflow: msb lands at IN_W-2).
+      // Clock 1: |x|, |y| and the pre-rotated y (-y when x < 0). Clock 2: m = |x| | |y|.
+      // Clock 3: per 4-bit group of m, "any bit set" and the highest set bit in it. Clock 4: the
+      // shift L = IN_W-2 - msb(m) when positive (else 0). Clock 5: X = |x| << L, Y = +-y << L.
+      // Each clock is one or two LUT levels deep. Shifting before or after the pre-rotation is the
+      // same (no overflow: the msb lands at IN_W-2).
       localparam integer SH_W = $clog2(IN_W);
+      localparam integer NG = (IN_W + 3) / 4;  // 4-bit groups of m
       wire sx = x_i[IN_W-1];
       wire [IN_W-1:0] ax = sx ? ({IN_W{1'b0}} - x_i) : x_i;
       wire [IN_W-1:0] ay = y_i[IN_W-1] ? ({IN_W{1'b0}} - y_i) : y_i;
       wire [IN_W:0] y_ext = {y_i[IN_W-1], y_i};
       wire [IN_W:0] yr = sx ? ({(IN_W+1){1'b0}} - y_ext) : y_ext;
-      wire [IN_W-1:0] mag = ax | ay;
-      // The highest set bit wins.
-      reg [SH_W-1:0] sh;
-      integer b, l;
-      always @* begin
-        sh = {SH_W{1'b0}};
-        for (b = 0; b < IN_W - 2; b = b + 1) begin
-          l = IN_W - 2 - b;
-          if (mag[b]) sh = l[SH_W-1:0];
-        end
-        if (mag[IN_W-1] | mag[IN_W-2]) sh = {SH_W{1'b0}};
-      end
-      reg [IN_W-1:0] ax_q;
-      reg [IN_W:0]   yr_q;
+      // Pipeline of the vector beside the shift computation: index 0 = clock 1 ... 3 = clock 4.
+      reg [IN_W-1:0] ax_q [0:3];
+      reg [IN_W:0]   yr_q [0:3];
+      reg            sx_q [0:3];
+      reg [IN_W-1:0] ay_q;
+      reg [4*NG-1:0] m_q;
+      reg [NG-1:0]   any_q;
+      reg [2*NG-1:0] hi_q;
       reg [SH_W-1:0] sh_q;
-      reg            sx_q;
+      wire [4*NG-1:0] m = {{(4*NG-IN_W){1'b0}}, ax_q[0] | ay_q};
+      reg [NG-1:0]   any_d;
+      reg [2*NG-1:0] hi_d;
+      reg [SH_W-1:0] sh_d;
+      integer g, k, msb;
+      always @* begin
+        for (g = 0; g < NG; g = g + 1) begin
+          any_d[g] = |m_q[4*g +: 4];
+          hi_d[2*g +: 2] = m_q[4*g+3] ? 2'd3 : m_q[4*g+2] ? 2'd2 : m_q[4*g+1] ? 2'd1 : 2'd0;
+        end
+        // The highest group with a set bit gives msb(m); L = IN_W-2 - msb when positive.
+        msb = -1;
+        for (g = 0; g < NG; g = g + 1)
+          if (any_q[g]) msb = 4 * g + {30'd0, hi_q[2*g +: 2]};
+        k = (msb >= 0 && msb < IN_W - 2) ? (IN_W - 2 - msb) : 0;
+        sh_d = k[SH_W-1:0];
+      end
       always @(posedge clk_i) begin
         if (en_i) begin
-          ax_q <= ax;
-          yr_q <= yr;
-          sh_q <= sh;
-          sx_q <= sx;
+          ax_q[0] <= ax;
+          ay_q    <= ay;
+          yr_q[0] <= yr;
+          sx_q[0] <= sx;
+          for (k = 1; k < 4; k = k + 1) begin
+            ax_q[k] <= ax_q[k-1];
+            yr_q[k] <= yr_q[k-1];
+            sx_q[k] <= sx_q[k-1];
+          end
+          m_q   <= m;
+          any_q <= any_d;
+          hi_q  <= hi_d;
+          sh_q  <= sh_d;
         end
       end
-      wire [IN_W-1:0] ax_sh = ax_q << sh_q;
-      wire [IN_W:0]   yr_sh = yr_q << sh_q;
+      wire [IN_W-1:0] ax_sh = ax_q[3] << sh_q;
+      wire [IN_W:0]   yr_sh = yr_q[3] << sh_q;
       always @(posedge clk_i) begin
         if (en_i) begin
           x_q[0] <= {1'b0, ax_sh, {G{1'b0}}};
           y_q[0] <= {yr_sh[IN_W], yr_sh, {G{1'b0}}};
-          z_q[0] <= {sx_q, {(Z_W-1){1'b0}}};
+          z_q[0] <= {sx_q[3], {(Z_W-1){1'b0}}};
         end
       end
     end else begin : g_prerot
@@ -142,10 +167,38 @@ module acore_cordic #(
       wire [XY_W-1:0] ys_full = $signed(y_q[i]) >>> i;
       wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
       wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[i*AT_W +: AT_W]};
+      // Adder inputs a + b + c: X += s ? -(Y>>>i) : (Y>>>i) is X + ((Y>>>i) ^ {s}) + s.
+      wire [XY_W-2:0] x_a, x_b;
+      wire [Z_W-1:0]  z_a, z_b;
+      wire            sc;  // s as seen by the adders
+      if (SPLIT != 0) begin : g_split
+        reg [XY_W-2:0] x_a_q, x_b_q;
+        reg [Z_W-1:0]  z_a_q, z_b_q;
+        reg            s_q;
+        always @(posedge clk_i) begin
+          if (en_i) begin
+            x_a_q <= x_q[i];
+            x_b_q <= ys ^ {(XY_W-1){s}};
+            z_a_q <= z_q[i];
+            z_b_q <= at ^ {Z_W{s}};
+            s_q   <= s;
+          end
+        end
+        assign x_a = x_a_q;
+        assign x_b = x_b_q;
+        assign z_a = z_a_q;
+        assign z_b = z_b_q;
+        assign sc  = s_q;
+      end else begin : g_direct
+        assign x_a = x_q[i];
+        assign x_b = ys ^ {(XY_W-1){s}};
+        assign z_a = z_q[i];
+        assign z_b = at ^ {Z_W{s}};
+        assign sc  = s;
+      end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
-      // X += s ? -(Y>>>i) : (Y>>>i), i.e. X + ((Y>>>i) ^ {s}) + s.
-      wire [XY_W-1:0] x_sum = {x_q[i], 1'b1} + {ys ^ {(XY_W-1){s}}, s};
-      wire [Z_W:0]    z_sum = {z_q[i], 1'b1} + {at ^ {Z_W{s}}, s};
+      wire [XY_W-1:0] x_sum = {x_a, 1'b1} + {x_b, sc};
+      wire [Z_W:0]    z_sum = {z_a, 1'b1} + {z_b, sc};
       always @(posedge clk_i) begin
         if (en_i) begin
           x_q[i+1] <= x_sum[XY_W-1:1];
@@ -158,8 +211,22 @@ module acore_cordic #(
         localparam integer YWN = (i + 1 <= 2) ? XY_W : XY_W + 1 - i;
         wire [XY_W-1:0] xs_full = {1'b0, x_q[i] >> i};
         wire [YWN-1:0]  xs = xs_full[YWN-1:0];
-        wire [YWN-1:0]  yl = y_q[i][YWN-1:0];
-        wire [YWN:0]    y_sum = {yl, 1'b1} + {xs ^ {YWN{~s}}, ~s};
+        wire [YWN-1:0]  y_a, y_b;
+        if (SPLIT != 0) begin : g_split
+          reg [YWN-1:0] y_a_q, y_b_q;
+          always @(posedge clk_i) begin
+            if (en_i) begin
+              y_a_q <= y_q[i][YWN-1:0];
+              y_b_q <= xs ^ {YWN{~s}};
+            end
+          end
+          assign y_a = y_a_q;
+          assign y_b = y_b_q;
+        end else begin : g_direct
+          assign y_a = y_q[i][YWN-1:0];
+          assign y_b = xs ^ {YWN{~s}};
+        end
+        wire [YWN:0] y_sum = {y_a, 1'b1} + {y_b, ~sc};
         always @(posedge clk_i) if (en_i) y_q[i+1] <= {{(XY_W-YWN){y_sum[YWN]}}, y_sum[YWN:1]};
       end
     end
