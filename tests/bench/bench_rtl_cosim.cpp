@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Verilated RTL throughput (samples per wall second, one core, tracing off): the RTL engine alone
+// (run_rtl: register load + stream), the RTL at random stalls, and RTL + bit-accurate model compare
+// (what `anglecore cosim` does). Run: build/tests/bench/bench_rtl_cosim --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include "calibration.hpp"
+#include "estimator.hpp"
+#include "fixed_model.hpp"
+#include "paper_signals.hpp"
+#include "rtl_engine.hpp"
+
+namespace {
+
+struct Setup {
+  acore::RegImage img;
+  std::vector<acore::ChannelCodes> in;
+  Setup() {
+    const acore::Recording cal = acore::test::paper_recording(4000, true);
+    img = acore::quantize(acore::calibrate(cal, acore::CalOptions{}), acore::DatapathConfig{},
+                          acore::choose_in_scale(cal, 16));
+    in = acore::to_codes(acore::test::paper_recording(200000, true), img.in_scale, 16);
+  }
+};
+
+const Setup& setup() {
+  static const Setup s;
+  return s;
+}
+
+void BM_RtlEngine(benchmark::State& state) {
+  const Setup& s = setup();
+  acore::RtlRunOptions opt;
+  opt.backpressure = opt.gaps = static_cast<double>(state.range(0)) / 100.0;
+  for (auto _ : state) benchmark::DoNotOptimize(acore::run_rtl(s.img, s.in, opt));
+  state.counters["samples/s"] =
+      benchmark::Counter(static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_RtlEngine)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond);
+
+void BM_CosimCompare(benchmark::State& state) {
+  const Setup& s = setup();
+  const acore::FixedModel model(s.img);
+  size_t bad = 0;
+  for (auto _ : state) {
+    const auto rtl = acore::run_rtl(s.img, s.in, acore::RtlRunOptions{});
+    for (size_t i = 0; i < s.in.size(); ++i) bad += !(rtl[i] == model.step(s.in[i]));
+  }
+  if (bad) state.SkipWithError("RTL and model differ");
+  state.counters["samples/s"] =
+      benchmark::Counter(static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_CosimCompare)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
