@@ -80,17 +80,23 @@ module acore_cordic #(
   generate
     if (NORM != 0) begin : g_norm
       // Clock 1: |x|, |y| and the pre-rotated y (-y when x < 0). Clock 2: m = |x| | |y|.
-      // Clock 3: per 4-bit group of m, "any bit set" and the highest set bit in it. Clock 4: the
-      // shift L = IN_W-2 - msb(m) when positive (else 0). Clock 5: X = |x| << L, Y = +-y << L.
+      // Clock 3: per 4-bit group of m, "any bit set" and the shift L = IN_W-2 - msb (when positive,
+      // else 0) that its highest set bit would give. Clock 4: L of the highest non-empty group. Clock 5: X = |x| << L, Y = +-y << L.
       // Each clock is one or two LUT levels deep. Shifting before or after the pre-rotation is the
       // same (no overflow: the msb lands at IN_W-2).
       localparam integer SH_W = $clog2(IN_W);
       localparam integer NG = (IN_W + 3) / 4;  // 4-bit groups of m
       wire sx = x_i[IN_W-1];
-      wire [IN_W-1:0] ax = sx ? ({IN_W{1'b0}} - x_i) : x_i;
-      wire [IN_W-1:0] ay = y_i[IN_W-1] ? ({IN_W{1'b0}} - y_i) : y_i;
-      wire [IN_W:0] y_ext = {y_i[IN_W-1], y_i};
-      wire [IN_W:0] yr = sx ? ({(IN_W+1){1'b0}} - y_ext) : y_ext;
+      wire sy = y_i[IN_W-1];
+      // Conditional negation as (v ^ {s}) + s, one adder each (bit 0 of the wider add makes the
+      // carry-in, as in the stages).
+      wire [IN_W:0]   ax_sum = {x_i ^ {IN_W{sx}}, 1'b1} + {{IN_W{1'b0}}, sx};
+      wire [IN_W:0]   ay_sum = {y_i ^ {IN_W{sy}}, 1'b1} + {{IN_W{1'b0}}, sy};
+      wire [IN_W:0]   y_ext = {sy, y_i};
+      wire [IN_W+1:0] yr_sum = {y_ext ^ {(IN_W+1){sx}}, 1'b1} + {{(IN_W+1){1'b0}}, sx};
+      wire [IN_W-1:0] ax = ax_sum[IN_W:1];
+      wire [IN_W-1:0] ay = ay_sum[IN_W:1];
+      wire [IN_W:0]   yr = yr_sum[IN_W+1:1];
       // Pipeline of the vector beside the shift computation: index 0 = clock 1 ... 3 = clock 4.
       reg [IN_W-1:0] ax_q [0:3];
       reg [IN_W:0]   yr_q [0:3];
@@ -98,24 +104,35 @@ module acore_cordic #(
       reg [IN_W-1:0] ay_q;
       reg [4*NG-1:0] m_q;
       reg [NG-1:0]   any_q;
-      reg [2*NG-1:0] hi_q;
+      reg [SH_W*NG-1:0] cand_q;
       reg [SH_W-1:0] sh_q;
       wire [4*NG-1:0] m = {{(4*NG-IN_W){1'b0}}, ax_q[0] | ay_q};
+      // The shift group g asks for if its highest set bit is the msb of m: a function of the
+      // group's 4 bits (one LUT level per output bit).
+      function automatic [SH_W-1:0] cand_of(input integer g, input [3:0] bits);
+        integer b, msb, l;
+        begin
+          cand_of = {SH_W{1'b0}};
+          for (b = 0; b < 4; b = b + 1) begin
+            msb = 4 * g + b;
+            l = (msb < IN_W - 2) ? (IN_W - 2 - msb) : 0;
+            if (bits[b]) cand_of = l[SH_W-1:0];
+          end
+        end
+      endfunction
       reg [NG-1:0]   any_d;
-      reg [2*NG-1:0] hi_d;
+      reg [SH_W*NG-1:0] cand_d;
       reg [SH_W-1:0] sh_d;
-      integer g, k, msb;
+      integer g, j;
       always @* begin
         for (g = 0; g < NG; g = g + 1) begin
           any_d[g] = |m_q[4*g +: 4];
-          hi_d[2*g +: 2] = m_q[4*g+3] ? 2'd3 : m_q[4*g+2] ? 2'd2 : m_q[4*g+1] ? 2'd1 : 2'd0;
+          cand_d[SH_W*g +: SH_W] = cand_of(g, m_q[4*g +: 4]);
         end
-        // The highest group with a set bit gives msb(m); L = IN_W-2 - msb when positive.
-        msb = -1;
+        // The highest group with a set bit holds the msb of m (no bit set: no shift).
+        sh_d = {SH_W{1'b0}};
         for (g = 0; g < NG; g = g + 1)
-          if (any_q[g]) msb = 4 * g + {30'd0, hi_q[2*g +: 2]};
-        k = (msb >= 0 && msb < IN_W - 2) ? (IN_W - 2 - msb) : 0;
-        sh_d = k[SH_W-1:0];
+          if (any_q[g]) sh_d = cand_q[SH_W*g +: SH_W];
       end
       always @(posedge clk_i) begin
         if (en_i) begin
@@ -123,15 +140,15 @@ module acore_cordic #(
           ay_q    <= ay;
           yr_q[0] <= yr;
           sx_q[0] <= sx;
-          for (k = 1; k < 4; k = k + 1) begin
-            ax_q[k] <= ax_q[k-1];
-            yr_q[k] <= yr_q[k-1];
-            sx_q[k] <= sx_q[k-1];
+          for (j = 1; j < 4; j = j + 1) begin
+            ax_q[j] <= ax_q[j-1];
+            yr_q[j] <= yr_q[j-1];
+            sx_q[j] <= sx_q[j-1];
           end
-          m_q   <= m;
-          any_q <= any_d;
-          hi_q  <= hi_d;
-          sh_q  <= sh_d;
+          m_q    <= m;
+          any_q  <= any_d;
+          cand_q <= cand_d;
+          sh_q   <= sh_d;
         end
       end
       wire [IN_W-1:0] ax_sh = ax_q[3] << sh_q;
@@ -170,35 +187,45 @@ module acore_cordic #(
       // Adder inputs a + b + c: X += s ? -(Y>>>i) : (Y>>>i) is X + ((Y>>>i) ^ {s}) + s.
       wire [XY_W-2:0] x_a, x_b;
       wire [Z_W-1:0]  z_a, z_b;
-      wire            sc;  // s as seen by the adders
+      wire            sc_x, sc_z, nsc_y;  // s (and ~s) as seen by the adders' carry-ins
       if (SPLIT != 0) begin : g_split
         reg [XY_W-2:0] x_a_q, x_b_q;
         reg [Z_W-1:0]  z_a_q, z_b_q;
-        reg            s_q;
+        // One copy of s per adder (kept apart by synthesis) so each carry-in is a short net
+        // next to its own chain; the Y adder gets ~s straight from a flop.
+        (* keep *) reg s_x_q;
+        (* keep *) reg s_z_q;
+        (* keep *) reg ns_y_q;
         always @(posedge clk_i) begin
           if (en_i) begin
-            x_a_q <= x_q[i];
-            x_b_q <= ys ^ {(XY_W-1){s}};
-            z_a_q <= z_q[i];
-            z_b_q <= at ^ {Z_W{s}};
-            s_q   <= s;
+            x_a_q  <= x_q[i];
+            x_b_q  <= ys ^ {(XY_W-1){s}};
+            z_a_q  <= z_q[i];
+            z_b_q  <= at ^ {Z_W{s}};
+            s_x_q  <= s;
+            s_z_q  <= s;
+            ns_y_q <= ~s;
           end
         end
-        assign x_a = x_a_q;
-        assign x_b = x_b_q;
-        assign z_a = z_a_q;
-        assign z_b = z_b_q;
-        assign sc  = s_q;
+        assign x_a  = x_a_q;
+        assign x_b  = x_b_q;
+        assign z_a  = z_a_q;
+        assign z_b  = z_b_q;
+        assign sc_x = s_x_q;
+        assign sc_z = s_z_q;
+        assign nsc_y = ns_y_q;
       end else begin : g_direct
-        assign x_a = x_q[i];
-        assign x_b = ys ^ {(XY_W-1){s}};
-        assign z_a = z_q[i];
-        assign z_b = at ^ {Z_W{s}};
-        assign sc  = s;
+        assign x_a  = x_q[i];
+        assign x_b  = ys ^ {(XY_W-1){s}};
+        assign z_a  = z_q[i];
+        assign z_b  = at ^ {Z_W{s}};
+        assign sc_x = s;
+        assign sc_z = s;
+        assign nsc_y = ~s;
       end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
-      wire [XY_W-1:0] x_sum = {x_a, 1'b1} + {x_b, sc};
-      wire [Z_W:0]    z_sum = {z_a, 1'b1} + {z_b, sc};
+      wire [XY_W-1:0] x_sum = {x_a, 1'b1} + {x_b, sc_x};
+      wire [Z_W:0]    z_sum = {z_a, 1'b1} + {z_b, sc_z};
       always @(posedge clk_i) begin
         if (en_i) begin
           x_q[i+1] <= x_sum[XY_W-1:1];
@@ -226,7 +253,7 @@ module acore_cordic #(
           assign y_a = y_q[i][YWN-1:0];
           assign y_b = xs ^ {YWN{~s}};
         end
-        wire [YWN:0] y_sum = {y_a, 1'b1} + {y_b, ~sc};
+        wire [YWN:0] y_sum = {y_a, 1'b1} + {y_b, nsc_y};
         always @(posedge clk_i) if (en_i) y_q[i+1] <= {{(XY_W-YWN){y_sum[YWN]}}, y_sum[YWN:1]};
       end
     end

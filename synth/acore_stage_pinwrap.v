@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// Pin wrappers for place and route of the top's stages one at a time: the default acore_top needs
+// about 10k LUT4, more than an iCE40 HX8K has (7680 logic cells), so its clock rate on that device
+// is measured per stage (every path of the top is inside one stage or a register-to-register hop
+// between stages). Each wrapper loads the stage's inputs (data and register-file words) through a
+// serial shift register (sdi_i, shift_i), registers the enable, and puts the outputs on pins.
+`resetall
+`default_nettype none
+
+module acore_scaler_pinwrap (
+  input  wire        clk_i,
+  input  wire        sdi_i,
+  input  wire        shift_i,
+  input  wire        en_i,
+  output wire [17:0] s_o,
+  output wire        ovf_o
+);
+  localparam integer SR_W = 17 + 18 + 18;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  acore_scaler u_stage (
+    .clk_i(clk_i), .en_i(en_q), .d_i(sr_q[16:0]), .offset_i(sr_q[34:17]), .recip_i(sr_q[52:35]),
+    .s_o(s_o), .ovf_o(ovf_o));
+endmodule
+
+module acore_poly_pinwrap (
+  input  wire        clk_i,
+  input  wire        sdi_i,
+  input  wire        shift_i,
+  input  wire        en_i,
+  output wire [17:0] y_o,
+  output wire        ovf_o
+);
+  localparam integer NC = 32 * 18;
+  localparam integer SR_W = 18 + 18 + 2 + NC;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  acore_poly_correct u_stage (
+    .clk_i(clk_i), .en_i(en_q), .x_i(sr_q[17:0]), .s_i(sr_q[35:18]), .region_i(sr_q[37:36]),
+    .coef_i(sr_q[38 +: NC]), .y_o(y_o), .ovf_o(ovf_o));
+endmodule
+
+module acore_cordic_top_pinwrap (
+  input  wire        clk_i,
+  input  wire        sdi_i,
+  input  wire        shift_i,
+  input  wire        en_i,
+  output wire [15:0] angle_o,
+  output wire [19:0] mag_o
+);
+  localparam integer SR_W = 18 + 18 + 16 * 18;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  // The top's CORDIC configuration: IN_W = S_W = 18, CORDIC_G = 3, Z_W = 20, K = 16, NORM = 0.
+  acore_cordic #(.IN_W(18), .G(3), .Z_W(20), .ANGLE_W(16), .K(16), .AT_W(18), .NORM(0)) u_stage (
+    .clk_i(clk_i), .en_i(en_q), .x_i(sr_q[17:0]), .y_i(sr_q[35:18]), .atan_i(sr_q[36 +: 16 * 18]),
+    .angle_o(angle_o), .mag_o(mag_o));
+endmodule
+
+`resetall
