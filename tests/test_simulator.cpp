@@ -443,6 +443,24 @@ TEST(Scenario, JsonRoundTrip) {
   }
 }
 
+TEST(Scenario, WithChannelsRemapsPerChannelParameters) {
+  Scenario s = builtin_scenario("ideal");
+  s.effects.push_back(make_effect("offset", {{"offset_c1", 0.1}, {"offset_c2", 0.2}, {"offset_c3", 0.3}}, 4));
+  s.effects.push_back(make_effect("drift", {{"gain_per_C_c2", 1e-3}}, 4));
+  s.effects.push_back(make_effect("phase_error", {{"delta_rad", 0.01}}, 4));
+  const Scenario two = with_channels(s, 2);
+  EXPECT_EQ(two.channels, 2);
+  ASSERT_EQ(two.effects[0].params.size(), 2u);
+  EXPECT_DOUBLE_EQ(two.effects[0].param("offset_sin"), 0.1);
+  EXPECT_DOUBLE_EQ(two.effects[0].param("offset_cos"), 0.2);
+  EXPECT_DOUBLE_EQ(two.effects[1].param("gain_per_C_cos"), 1e-3);
+  EXPECT_DOUBLE_EQ(two.effects[2].param("delta_rad"), 0.01);
+  const Scenario four = with_channels(two, 4);
+  EXPECT_DOUBLE_EQ(four.effects[0].param("offset_c3"), 0.1);
+  EXPECT_DOUBLE_EQ(four.effects[0].param("offset_c4"), 0.2);
+  EXPECT_THROW(with_channels(s, 3), InputError);
+}
+
 std::string json_error(const std::string& text) {
   try {
     Scenario::from_json(nlohmann::json::parse(text), "cfg.json");
