@@ -8,8 +8,9 @@
 // The coefficients a_j of the sample's region are picked from the register file bus at the step
 // that uses them (the region travels with the sample).
 //
-//   step m = 0..DEGREE-1 (j = DEGREE-1-m): ML clocks of adder tree + 1 clock add/saturate
-//   then 1 clock for y.  LATENCY = DEGREE * (ML + 1) + 1, ML = clog2(S_W)
+//   1 clock: a_n of the region; step m = 0..DEGREE-1 (j = DEGREE-1-m): ML clocks of adder tree,
+//   1 clock add, 1 clock saturate; then round, subtract, saturate for y (one carry chain per clock).
+//   LATENCY = 1 + DEGREE * (ML + 2) + 3, ML = clog2(S_W)
 `resetall
 `default_nettype none
 
@@ -50,7 +51,7 @@ module acore_poly_correct #(
   localparam integer ACC_F = COEF_F + ACC_G;
   localparam integer ACC_W = ACC_F + ACC_I;
   localparam integer ML = $clog2(S_W);
-  localparam integer LATENCY = DEGREE * (ML + 1) + 1;
+  localparam integer LATENCY = 1 + DEGREE * (ML + 2) + 3;
   localparam integer P_W = ACC_W + ((S_W > S_F) ? (S_W - S_F) : 0) + 1;
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
@@ -82,43 +83,62 @@ module acore_poly_correct #(
     end
   endfunction
 
-  assign acc[0] = coef_acc(coef_i, region_i, DEGREE);
-  assign xs[0]  = x_i;
-  assign ss[0]  = s_i;
-  assign rs[0]  = region_i;
+  // Clock 0: the leading coefficient of the sample's region, registered with the sample.
+  reg [ACC_W-1:0] acc0_q;
+  reg [S_W-1:0]   x0_q, s0_q;
+  reg [RG_W-1:0]  r0_q;
+  always @(posedge clk_i) begin
+    if (en_i) begin
+      acc0_q <= coef_acc(coef_i, region_i, DEGREE);
+      x0_q   <= x_i;
+      s0_q   <= s_i;
+      r0_q   <= region_i;
+    end
+  end
+  assign acc[0] = acc0_q;
+  assign xs[0]  = x0_q;
+  assign ss[0]  = s0_q;
+  assign rs[0]  = r0_q;
   assign ov[0]  = 1'b0;
 
   genvar m;
   generate
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
+      // ML clocks: acc * x on the adder tree. Beside it the region travels ML-1 clocks, then
+      // picks a_j into a register (so no multiplexer sits in front of the adder).
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(S_F), .P_W(P_W)
       ) u_mul (
         .clk_i(clk_i), .en_i(en_i), .a_i(acc[m]), .b_i(xs[m]), .p_o(prod)
       );
-      // Sideband beside the adder tree: the next step needs them one clock after the product.
-      wire [RG_W-1:0] r_d;
-      wire            ov_d;
-      acore_delay #(.W(RG_W + 1), .DEPTH(ML)) u_dr (
-        .clk_i(clk_i), .en_i(en_i), .d_i({rs[m], ov[m]}), .q_o({r_d, ov_d}));
-      acore_delay #(.W(2 * S_W), .DEPTH(ML + 1)) u_dxs (
+      wire [RG_W-1:0] r_e;
+      wire            ov_e;
+      acore_delay #(.W(RG_W + 1), .DEPTH(ML - 1)) u_dr (
+        .clk_i(clk_i), .en_i(en_i), .d_i({rs[m], ov[m]}), .q_o({r_e, ov_e}));
+      acore_delay #(.W(2 * S_W), .DEPTH(ML + 2)) u_dxs (
         .clk_i(clk_i), .en_i(en_i), .d_i({xs[m], ss[m]}), .q_o({xs[m+1], ss[m+1]}));
-
-      wire [ACC_W-1:0] a_j = coef_acc(coef_i, r_d, DEGREE - 1 - m);
-      wire [P_W:0] sum = {prod[P_W-1], prod} + {{(P_W+1-ACC_W){a_j[ACC_W-1]}}, a_j};
+      reg [ACC_W-1:0] a_j_q;
+      reg [RG_W-1:0]  r_d_q, r_s_q, r_q;
+      reg             ov_d_q, ov_s_q, ov_q;
+      reg [P_W:0]     sum_q;
+      reg [ACC_W-1:0] acc_q;
+      // Clock ML+1: prod + a_j. Clock ML+2: saturate to ACC_W.
+      wire [P_W:0] sum = {prod[P_W-1], prod} + {{(P_W+1-ACC_W){a_j_q[ACC_W-1]}}, a_j_q};
       wire [ACC_W-1:0] sum_sat;
       wire sum_ovf;
-      acore_saturate #(.IN_W(P_W + 1), .OUT_W(ACC_W)) u_sat (.d_i(sum), .q_o(sum_sat), .ovf_o(sum_ovf));
-
-      reg [ACC_W-1:0] acc_q;
-      reg [RG_W-1:0]  r_q;
-      reg             ov_q;
+      acore_saturate #(.IN_W(P_W + 1), .OUT_W(ACC_W)) u_sat (.d_i(sum_q), .q_o(sum_sat), .ovf_o(sum_ovf));
       always @(posedge clk_i) begin
         if (en_i) begin
-          acc_q <= sum_sat;
-          r_q   <= r_d;
-          ov_q  <= ov_d | sum_ovf;
+          a_j_q  <= coef_acc(coef_i, r_e, DEGREE - 1 - m);
+          r_d_q  <= r_e;
+          ov_d_q <= ov_e;
+          sum_q  <= sum;
+          r_s_q  <= r_d_q;
+          ov_s_q <= ov_d_q;
+          acc_q  <= sum_sat;
+          r_q    <= r_s_q;
+          ov_q   <= ov_s_q | sum_ovf;
         end
       end
       assign acc[m+1] = acc_q;
@@ -127,7 +147,7 @@ module acore_poly_correct #(
     end
   endgenerate
 
-  // y = saturate(s - round_shr(acc_0, RN), S_W)
+  // y = saturate(s - round_shr(acc_0, RN), S_W): round, subtract, saturate, one clock each.
   wire [ACC_W:0] acc_ext = {acc[DEGREE][ACC_W-1], acc[DEGREE]};
   wire [ACC_W:0] acc_rnd;
   generate
@@ -137,19 +157,29 @@ module acore_poly_correct #(
       assign acc_rnd = acc_ext;
     end
   endgenerate
-  wire [R_W-1:0] p_r = acc_rnd[ACC_W:RN];
-  wire [S_W-1:0] s_last = ss[DEGREE];
-  wire [Y_W-1:0] y_full = {{(Y_W-S_W){s_last[S_W-1]}}, s_last} - {{(Y_W-R_W){p_r[R_W-1]}}, p_r};
+  reg [R_W-1:0] p_r_q;
+  reg [S_W-1:0] s_r_q;
+  reg           ov_r_q, ov_y_q;
+  reg [Y_W-1:0] y_full_q;
+  always @(posedge clk_i) begin
+    if (en_i) begin
+      p_r_q    <= acc_rnd[ACC_W:RN];
+      s_r_q    <= ss[DEGREE];
+      ov_r_q   <= ov[DEGREE];
+      y_full_q <= {{(Y_W-S_W){s_r_q[S_W-1]}}, s_r_q} - {{(Y_W-R_W){p_r_q[R_W-1]}}, p_r_q};
+      ov_y_q   <= ov_r_q;
+    end
+  end
   wire [S_W-1:0] y_sat;
   wire y_ovf;
-  acore_saturate #(.IN_W(Y_W), .OUT_W(S_W)) u_ysat (.d_i(y_full), .q_o(y_sat), .ovf_o(y_ovf));
+  acore_saturate #(.IN_W(Y_W), .OUT_W(S_W)) u_ysat (.d_i(y_full_q), .q_o(y_sat), .ovf_o(y_ovf));
 
   reg [S_W-1:0] y_q;
   reg ovf_q;
   always @(posedge clk_i) begin
     if (en_i) begin
       y_q   <= y_sat;
-      ovf_q <= ov[DEGREE] | y_ovf;
+      ovf_q <= ov_y_q | y_ovf;
     end
   end
   assign y_o   = y_q;

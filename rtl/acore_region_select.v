@@ -9,7 +9,7 @@
 //
 // Ties go to the sine curve. REGIONS = 8 halves each region at its zero crossing:
 // region8 = 2 * region4 + (x >= 0). The scaled curves pass through for the correction.
-// Latency LATENCY = 1 clock.
+// Latency LATENCY = 2 clocks (magnitudes, then compare and select).
 `resetall
 `default_nettype none
 
@@ -32,19 +32,27 @@ module acore_region_select #(
   output reg  [S_W-1:0]  s24_o
 );
 
-  localparam integer LATENCY = 1;
+  localparam integer LATENCY = 2;
 
   initial begin
     if (REGIONS != 4 && REGIONS != 8) $error("acore_region_select: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
     if (RG_W != $clog2(REGIONS)) $error("acore_region_select: RG_W must be clog2(REGIONS) (instance %m)");
   end
 
-  // Magnitudes as unsigned S_W-bit numbers (|-2^(S_W-1)| = 2^(S_W-1) still fits).
-  wire [S_W-1:0] a13 = s13_i[S_W-1] ? ({S_W{1'b0}} - s13_i) : s13_i;
-  wire [S_W-1:0] a24 = s24_i[S_W-1] ? ({S_W{1'b0}} - s24_i) : s24_i;
-  wire use13 = (a13 <= a24);
-  wire [1:0] r4 = use13 ? {s24_i[S_W-1], 1'b0} : {s13_i[S_W-1], 1'b1};
-  wire [S_W-1:0] x = use13 ? s13_i : s24_i;
+  // Clock 1: magnitudes as unsigned S_W-bit numbers (|-2^(S_W-1)| = 2^(S_W-1) still fits).
+  // Clock 2: compare and select. One carry chain per clock.
+  reg [S_W-1:0] a13_q, a24_q, s13_q, s24_q;
+  always @(posedge clk_i) begin
+    if (en_i) begin
+      a13_q <= s13_i[S_W-1] ? ({S_W{1'b0}} - s13_i) : s13_i;
+      a24_q <= s24_i[S_W-1] ? ({S_W{1'b0}} - s24_i) : s24_i;
+      s13_q <= s13_i;
+      s24_q <= s24_i;
+    end
+  end
+  wire use13 = (a13_q <= a24_q);
+  wire [1:0] r4 = use13 ? {s24_q[S_W-1], 1'b0} : {s13_q[S_W-1], 1'b1};
+  wire [S_W-1:0] x = use13 ? s13_q : s24_q;
 
   wire [RG_W-1:0] region;
   generate
@@ -59,8 +67,8 @@ module acore_region_select #(
     if (en_i) begin
       region_o <= region;
       x_o      <= x;
-      s13_o    <= s13_i;
-      s24_o    <= s24_i;
+      s13_o    <= s13_q;
+      s24_o    <= s24_q;
     end
   end
 

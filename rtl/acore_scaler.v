@@ -6,7 +6,8 @@
 // R = round(2^(S_F + R_SHIFT) / A) is the amplitude reciprocal from the register file.
 // Example (defaults): d = 8192, O = 0, R = 2^29 / 8192 = 65536 -> s = 65536 (1.0).
 //
-//   clk  0: t_q            1..L: adder tree (L = clog2(REG_W))        L+1: s_o, ovf_o
+//   clk 0: t_q   1..L: adder tree (L = clog2(REG_W))   L+1: rounded   L+2: saturated s_o, ovf_o
+// (LATENCY = L + 3; one carry chain per clock)
 `resetall
 `default_nettype none
 
@@ -40,7 +41,7 @@ module acore_scaler #(
   localparam integer RS = R_SHIFT - SCALE_G;
   localparam integer P_W = T_W + ((REG_W > RS) ? (REG_W - RS) : 0) + 1;
   localparam integer MUL_LATENCY = $clog2(REG_W);
-  localparam integer LATENCY = MUL_LATENCY + 2;
+  localparam integer LATENCY = MUL_LATENCY + 3;
 
   initial begin
     if (SCALE_G < 0 || SCALE_G > R_SHIFT)
@@ -60,7 +61,8 @@ module acore_scaler #(
     .clk_i(clk_i), .en_i(en_i), .a_i(t_q), .b_i(recip_i), .p_o(p)
   );
 
-  // Round half up: add half an LSB of the kept part, then drop SCALE_G bits (one adder).
+  // Round half up: add half an LSB of the kept part, then drop SCALE_G bits (one adder, its own
+  // clock), then saturate (its own clock).
   wire [P_W:0] p_ext = {p[P_W-1], p};
   wire [P_W:0] p_rnd;
   generate
@@ -70,11 +72,12 @@ module acore_scaler #(
       assign p_rnd = p_ext;
     end
   endgenerate
-  wire [P_W-SCALE_G:0] p_sh = p_rnd[P_W:SCALE_G];
+  reg [P_W-SCALE_G:0] p_sh_q;
+  always @(posedge clk_i) if (en_i) p_sh_q <= p_rnd[P_W:SCALE_G];
 
   wire [S_W-1:0] s_d;
   wire ovf_d;
-  acore_saturate #(.IN_W(P_W + 1 - SCALE_G), .OUT_W(S_W)) u_sat (.d_i(p_sh), .q_o(s_d), .ovf_o(ovf_d));
+  acore_saturate #(.IN_W(P_W + 1 - SCALE_G), .OUT_W(S_W)) u_sat (.d_i(p_sh_q), .q_o(s_d), .ovf_o(ovf_d));
 
   reg [S_W-1:0] s_q;
   reg ovf_q;

@@ -84,9 +84,9 @@ module acore_top #(
   // Derived, do not override: stage latencies (each module documents its own) and the total.
   localparam integer D_W = IN_W + 1;
   localparam integer PRE_LATENCY = 1;
-  localparam integer SCALER_LATENCY = $clog2(REG_W) + 2;
-  localparam integer REGION_LATENCY = 1;
-  localparam integer POLY_LATENCY = DEGREE * ($clog2(S_W) + 1) + 1;
+  localparam integer SCALER_LATENCY = $clog2(REG_W) + 3;
+  localparam integer REGION_LATENCY = 2;
+  localparam integer POLY_LATENCY = 1 + DEGREE * ($clog2(S_W) + 2) + 3;
   localparam integer CORDIC_LATENCY = 1 + K + 1;
   localparam integer OUT_LATENCY = 1;
   localparam integer LATENCY /*verilator public*/ = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +

@@ -48,6 +48,7 @@ TOP[top_pnr]=acore_top_pinwrap;     READ[top_pnr]="$rtl_reads"$'\n'"read_verilog
 stage_reads="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_stage_pinwrap.v"
 TOP[scaler_pnr]=acore_scaler_pinwrap;      READ[scaler_pnr]="$stage_reads"
 TOP[poly_pnr]=acore_poly_pinwrap;          READ[poly_pnr]="$stage_reads"
+TOP[region_pnr]=acore_region_pinwrap;      READ[region_pnr]="$stage_reads"
 TOP[cordic_top_pnr]=acore_cordic_top_pinwrap; READ[cordic_top_pnr]="$stage_reads"
 TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $root/rtl/acore_cordic.v $syn/acore_cordic16.v"
 c16_chparam="chparam"
@@ -79,7 +80,7 @@ for d in top cordic16 cordic16_bus; do tasks+=("run_yosys generic $d" "run_yosys
 for d in top cordic16 cordic16_bus; do tasks+=("run_yosys ice40 $d"); done
 export -f run_yosys run_pnr
 # ice40 netlists for place and route first (nextpnr needs them), then everything else in parallel.
-pnr_designs=(cordic16 top_pnr scaler_pnr poly_pnr cordic_top_pnr)
+pnr_designs=(cordic16 top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr)
 for d in "${pnr_designs[@]}"; do run_yosys ice40 "$d"; done
 running=0
 for d in "${pnr_designs[@]}"; do

@@ -27,6 +27,28 @@ module acore_scaler_pinwrap (
     .s_o(s_o), .ovf_o(ovf_o));
 endmodule
 
+module acore_region_pinwrap (
+  input  wire        clk_i,
+  input  wire        sdi_i,
+  input  wire        shift_i,
+  input  wire        en_i,
+  output wire [1:0]  region_o,
+  output wire [17:0] x_o,
+  output wire [17:0] s13_o,
+  output wire [17:0] s24_o
+);
+  localparam integer SR_W = 2 * 18;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  acore_region_select u_stage (
+    .clk_i(clk_i), .en_i(en_q), .s13_i(sr_q[17:0]), .s24_i(sr_q[35:18]), .region_o(region_o), .x_o(x_o),
+    .s13_o(s13_o), .s24_o(s24_o));
+endmodule
+
 module acore_poly_pinwrap (
   input  wire        clk_i,
   input  wire        sdi_i,
