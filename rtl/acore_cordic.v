@@ -13,7 +13,7 @@
 //   angle = round_shr(Z, Z_W - ANGLE_W) mod 2^ANGLE_W;  mag = X_K >>> G   (1 clock)
 // Each stage register is fed by exactly one adder per word: the conditional negation is the XOR
 // and the carry-in of the same adder, written as one (W+1)-bit add whose bit 0 makes the carry.
-// atan_i = round(atan(2^-i) / 2pi * 2^Z_W) comes in on a bus (the register file's last K words).
+// atan_i = round(atan(2^-i) / 2pi 2^Z_W) comes in on a bus (the register file's last K words).
 // X never goes negative and |(X, Y)| grows by the CORDIC gain (< 1.65), so XY_W cannot overflow;
 // Y shrinks stage by stage and is computed on fewer bits in the later stages (see below).
 `resetall
@@ -41,21 +41,34 @@ module acore_cordic #(
   parameter integer XY_W = IN_W + 2 + G,
   parameter integer MAG_W = IN_W + 2
 ) (
-  input  wire               clk_i,
-  input  wire               en_i,
-  // Cosine-like input x and sine-like input y.
-  input  wire [IN_W-1:0]    x_i,
-  input  wire [IN_W-1:0]    y_i,
-  // atan_i for i = 0..K-1, word i at bits [i*AT_W +: AT_W].
-  input  wire [K*AT_W-1:0]  atan_i,
-  output reg  [ANGLE_W-1:0] angle_o,
-  // X_K >>> G: vector length times the CORDIC gain, never negative.
-  output reg  [MAG_W-1:0]   mag_o
+  clk_i, en_i, x_i, y_i, atan_i, angle_o, mag_o
 );
 
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
+  function integer co_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      co_cmul = 0;
+      for (n = 0; n < b; n = n + 1) co_cmul = co_cmul + a;
+    end
+  endfunction
+
   // Derived, do not override.
+  localparam integer AT_BUS_W = co_cmul(K, AT_W);
   localparam integer PRE = (NORM != 0) ? 5 : 1;  // normalization + pre-rotation clocks
-  localparam integer LATENCY = PRE + K * (SPLIT + 1) + 1;
+  localparam integer LATENCY = PRE + co_cmul(K, SPLIT + 1) + 1;
+
+  input  wire                clk_i;
+  input  wire                en_i;
+  // Cosine-like input x and sine-like input y.
+  input  wire [IN_W-1:0]     x_i;
+  input  wire [IN_W-1:0]     y_i;
+  // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
+  input  wire [AT_BUS_W-1:0] atan_i;
+  output reg  [ANGLE_W-1:0]  angle_o;
+  // X_K >>> G: vector length times the CORDIC gain, never negative.
+  output reg  [MAG_W-1:0]    mag_o;
   localparam integer DROP = Z_W - ANGLE_W;
 
   initial begin
@@ -102,11 +115,11 @@ module acore_cordic #(
       reg [IN_W:0]   yr_q [0:3];
       reg            sx_q [0:3];
       reg [IN_W-1:0] ay_q;
-      reg [4*NG-1:0] m_q;
+      reg [(NG<<2)-1:0] m_q;
       reg [NG-1:0]   any_q;
-      reg [SH_W*NG-1:0] cand_q;
+      reg [co_cmul(SH_W, NG)-1:0] cand_q;
       reg [SH_W-1:0] sh_q;
-      wire [4*NG-1:0] m = {{(4*NG-IN_W){1'b0}}, ax_q[0] | ay_q};
+      wire [(NG<<2)-1:0] m = {{((NG<<2)-IN_W){1'b0}}, ax_q[0] | ay_q};
       // The shift group g asks for if its highest set bit is the msb of m: a function of the
       // group's 4 bits (one LUT level per output bit).
       function automatic [SH_W-1:0] cand_of(input integer g, input [3:0] bits);
@@ -114,25 +127,25 @@ module acore_cordic #(
         begin
           cand_of = {SH_W{1'b0}};
           for (b = 0; b < 4; b = b + 1) begin
-            msb = 4 * g + b;
+            msb = (g << 2) + b;
             l = (msb < IN_W - 2) ? (IN_W - 2 - msb) : 0;
             if (bits[b]) cand_of = l[SH_W-1:0];
           end
         end
       endfunction
       reg [NG-1:0]   any_d;
-      reg [SH_W*NG-1:0] cand_d;
+      reg [co_cmul(SH_W, NG)-1:0] cand_d;
       reg [SH_W-1:0] sh_d;
       integer g, j;
-      always @* begin
+      always @(m_q or any_q or cand_q) begin
         for (g = 0; g < NG; g = g + 1) begin
-          any_d[g] = |m_q[4*g +: 4];
-          cand_d[SH_W*g +: SH_W] = cand_of(g, m_q[4*g +: 4]);
+          any_d[g] = |m_q[(g<<2) +: 4];
+          cand_d[co_cmul(SH_W, g) +: SH_W] = cand_of(g, m_q[(g<<2) +: 4]);
         end
         // The highest group with a set bit holds the msb of m (no bit set: no shift).
         sh_d = {SH_W{1'b0}};
         for (g = 0; g < NG; g = g + 1)
-          if (any_q[g]) sh_d = cand_q[SH_W*g +: SH_W];
+          if (any_q[g]) sh_d = cand_q[co_cmul(SH_W, g) +: SH_W];
       end
       always @(posedge clk_i) begin
         if (en_i) begin
@@ -183,7 +196,7 @@ module acore_cordic #(
       wire s = y_q[i][XY_W-1];
       wire [XY_W-1:0] ys_full = $signed(y_q[i]) >>> i;
       wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
-      wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[i*AT_W +: AT_W]};
+      wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[co_cmul(i, AT_W) +: AT_W]};
       // Adder inputs a + b + c: X += s ? -(Y>>>i) : (Y>>>i) is X + ((Y>>>i) ^ {s}) + s.
       wire [XY_W-2:0] x_a, x_b;
       wire [Z_W-1:0]  z_a, z_b;
@@ -191,11 +204,8 @@ module acore_cordic #(
       if (SPLIT != 0) begin : g_split
         reg [XY_W-2:0] x_a_q, x_b_q;
         reg [Z_W-1:0]  z_a_q, z_b_q;
-        // One copy of s per adder (kept apart by synthesis) so each carry-in is a short net
-        // next to its own chain; the Y adder gets ~s straight from a flop.
-        (* keep *) reg s_x_q;
-        (* keep *) reg s_z_q;
-        (* keep *) reg ns_y_q;
+        // Copies of s for the carry-ins (the Y adder gets ~s straight from a flop).
+        reg s_x_q, s_z_q, ns_y_q;
         always @(posedge clk_i) begin
           if (en_i) begin
             x_a_q  <= x_q[i];

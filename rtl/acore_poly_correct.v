@@ -10,7 +10,7 @@
 //
 //   1 clock: a_n of the region; step m = 0..DEGREE-1 (j = DEGREE-1-m): ML clocks of adder tree,
 //   1 clock add, 1 clock saturate; then round, subtract, saturate for y (one carry chain per clock).
-//   LATENCY = 1 + DEGREE * (ML + 2) + 3, ML = clog2(S_W)
+//   LATENCY = 1 + DEGREE (ML + 2) + 3, ML = clog2(S_W)
 `resetall
 `default_nettype none
 
@@ -31,27 +31,42 @@ module acore_poly_correct #(
   // Which curve's coefficients: 0 = sine curve c13, 1 = cosine curve c24.
   parameter integer CURVE = 0,
   // Derived, do not override.
-  parameter integer RG_W = $clog2(REGIONS),
-  parameter integer NCOEF = 2 * REGIONS * (DEGREE + 1)
+  parameter integer RG_W = $clog2(REGIONS)
 ) (
-  input  wire                   clk_i,
-  input  wire                   en_i,
-  // Polynomial argument and the curve to correct.
-  input  wire [S_W-1:0]         x_i,
-  input  wire [S_W-1:0]         s_i,
-  input  wire [RG_W-1:0]        region_i,
-  // Register words 4.. of the map: [region][curve][power], word 0 in the low bits.
-  input  wire [NCOEF*REG_W-1:0] coef_i,
-  // Corrected curve and "some step saturated".
-  output wire [S_W-1:0]         y_o,
-  output wire                   ovf_o
+  clk_i, en_i, x_i, s_i, region_i, coef_i, y_o, ovf_o
 );
+
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
+  function integer pc_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      pc_cmul = 0;
+      for (n = 0; n < b; n = n + 1) pc_cmul = pc_cmul + a;
+    end
+  endfunction
+
+  // Derived, do not override: coefficient words (2 curves, REGIONS regions, DEGREE+1 powers).
+  localparam integer NCOEF = pc_cmul(REGIONS << 1, DEGREE + 1);
+  localparam integer COEF_BUS_W = pc_cmul(NCOEF, REG_W);
+
+  input  wire                  clk_i;
+  input  wire                  en_i;
+  // Polynomial argument and the curve to correct.
+  input  wire [S_W-1:0]        x_i;
+  input  wire [S_W-1:0]        s_i;
+  input  wire [RG_W-1:0]       region_i;
+  // Register words 4.. of the map: [region][curve][power], word 0 in the low bits.
+  input  wire [COEF_BUS_W-1:0] coef_i;
+  // Corrected curve and "some step saturated".
+  output wire [S_W-1:0]        y_o;
+  output wire                  ovf_o;
 
   // Derived, do not override.
   localparam integer ACC_F = COEF_F + ACC_G;
   localparam integer ACC_W = ACC_F + ACC_I;
   localparam integer ML = $clog2(S_W);
-  localparam integer LATENCY = 1 + DEGREE * (ML + 2) + 3;
+  localparam integer LATENCY = 1 + pc_cmul(DEGREE, ML + 2) + 3;
   localparam integer P_W = ACC_W + ((S_W > S_F) ? (S_W - S_F) : 0) + 1;
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
@@ -61,7 +76,6 @@ module acore_poly_correct #(
     if (ACC_F < S_F) $error("acore_poly_correct: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
     if (ACC_I < REG_W - COEF_F + 1) $error("acore_poly_correct: ACC_I=%0d too small (instance %m)", ACC_I);
     if (DEGREE < 1) $error("acore_poly_correct: DEGREE=%0d must be >= 1 (instance %m)", DEGREE);
-    if (NCOEF != 2 * REGIONS * (DEGREE + 1)) $error("acore_poly_correct: NCOEF mismatch (instance %m)");
   end
 
   // Per step m: inputs of the step (accumulator, argument, curve, region, overflow so far).
@@ -72,13 +86,13 @@ module acore_poly_correct #(
   wire             ov  [0:DEGREE];
 
   // Coefficient of x^j for region r of this curve, sign-extended and shifted to ACC_F fraction bits.
-  function automatic [ACC_W-1:0] coef_acc(input [NCOEF*REG_W-1:0] bus, input [RG_W-1:0] r, input integer j);
+  function automatic [ACC_W-1:0] coef_acc(input [COEF_BUS_W-1:0] bus, input [RG_W-1:0] r, input integer j);
     reg [REG_W-1:0] w;
     integer k;
     begin
       w = {REG_W{1'b0}};
       for (k = 0; k < REGIONS; k = k + 1)
-        if (r == k[RG_W-1:0]) w = bus[((k * 2 + CURVE) * (DEGREE + 1) + j) * REG_W +: REG_W];
+        if (r == k[RG_W-1:0]) w = bus[pc_cmul(pc_cmul((k << 1) + CURVE, DEGREE + 1) + j, REG_W) +: REG_W];
       coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
     end
   endfunction
@@ -104,7 +118,7 @@ module acore_poly_correct #(
   genvar m;
   generate
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
-      // ML clocks: acc * x on the adder tree. Beside it the region travels ML-1 clocks, then
+      // ML clocks: acc times x on the adder tree. Beside it the region travels ML-1 clocks, then
       // picks a_j into a register (so no multiplexer sits in front of the adder).
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
@@ -116,7 +130,7 @@ module acore_poly_correct #(
       wire            ov_e;
       acore_delay #(.W(RG_W + 1), .DEPTH(ML - 1)) u_dr (
         .clk_i(clk_i), .en_i(en_i), .d_i({rs[m], ov[m]}), .q_o({r_e, ov_e}));
-      acore_delay #(.W(2 * S_W), .DEPTH(ML + 2)) u_dxs (
+      acore_delay #(.W(S_W << 1), .DEPTH(ML + 2)) u_dxs (
         .clk_i(clk_i), .en_i(en_i), .d_i({xs[m], ss[m]}), .q_o({xs[m+1], ss[m+1]}));
       reg [ACC_W-1:0] a_j_q;
       reg [RG_W-1:0]  r_d_q, r_s_q, r_q;

@@ -8,7 +8,7 @@
 //   |s13| >  |s24|, s13 <  0 -> region 3 (around 270 deg), x = s24
 //
 // Ties go to the sine curve. REGIONS = 8 halves each region at its zero crossing:
-// region8 = 2 * region4 + (x >= 0). The scaled curves pass through for the correction.
+// region8 = 2 region4 + (x >= 0), i.e. {region4, x >= 0}. The scaled curves pass through for the correction.
 // Latency LATENCY = 2 clocks (magnitudes, then compare and select).
 `resetall
 `default_nettype none

@@ -32,10 +32,20 @@ module acore_shift_add_mul #(
   output wire [P_W-1:0] p_o
 );
 
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
+  function integer sam_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      sam_cmul = 0;
+      for (n = 0; n < b; n = n + 1) sam_cmul = sam_cmul + a;
+    end
+  endfunction
+
   // Derived, do not override: tree levels = pipeline latency.
   localparam integer LEVELS = (B_W > 1) ? $clog2(B_W) : 1;
   localparam integer LATENCY = LEVELS;
-  // Bits the exact product can need: |a| * 2^(B_W - RSHIFT) plus floor slack, plus sign.
+  // Bits the exact product can need: |a| 2^(B_W - RSHIFT) plus floor slack, plus sign.
   localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
 
   initial begin
@@ -45,7 +55,8 @@ module acore_shift_add_mul #(
   end
 
   // Entries per level: level l holds ceil(B_W / 2^l) partial sums; unused slots are zero.
-  wire [B_W*P_W-1:0] lvl [0:LEVELS];
+  localparam integer LVL_W = sam_cmul(B_W, P_W);
+  wire [LVL_W-1:0] lvl [0:LEVELS];
 
   genvar l, k;
   generate
@@ -60,7 +71,7 @@ module acore_shift_add_mul #(
       end else begin : g_sign
         assign shifted = {P_W{a_i[A_W-1]}};
       end
-      assign lvl[0][k*P_W +: P_W] = shifted & {P_W{b_i[k]}};
+      assign lvl[0][sam_cmul(k, P_W) +: P_W] = shifted & {P_W{b_i[k]}};
     end
 
     for (l = 1; l <= LEVELS; l = l + 1) begin : g_lvl
@@ -69,25 +80,25 @@ module acore_shift_add_mul #(
       for (k = 0; k < B_W; k = k + 1) begin : g_node
         if (k < N_THIS) begin : g_used
           reg [P_W-1:0] sum_q;
-          wire [P_W-1:0] lhs = lvl[l-1][(2*k)*P_W +: P_W];
-          if (2 * k + 1 < N_PREV) begin : g_pair
-            wire [P_W-1:0] rhs = lvl[l-1][(2*k+1)*P_W +: P_W];
+          wire [P_W-1:0] lhs = lvl[l-1][sam_cmul(k << 1, P_W) +: P_W];
+          if ((k << 1) + 1 < N_PREV) begin : g_pair
+            wire [P_W-1:0] rhs = lvl[l-1][sam_cmul((k << 1) + 1, P_W) +: P_W];
             // The signed top bit of b sits at index B_W-1 of level 0: subtract it.
-            if (l == 1 && B_SIGNED != 0 && 2 * k + 1 == B_W - 1) begin : g_sub
+            if (l == 1 && B_SIGNED != 0 && (k << 1) + 1 == B_W - 1) begin : g_sub
               always @(posedge clk_i) if (en_i) sum_q <= lhs - rhs;
             end else begin : g_add
               always @(posedge clk_i) if (en_i) sum_q <= lhs + rhs;
             end
           end else begin : g_single
-            if (l == 1 && B_SIGNED != 0 && 2 * k == B_W - 1) begin : g_neg
+            if (l == 1 && B_SIGNED != 0 && (k << 1) == B_W - 1) begin : g_neg
               always @(posedge clk_i) if (en_i) sum_q <= {P_W{1'b0}} - lhs;
             end else begin : g_pass
               always @(posedge clk_i) if (en_i) sum_q <= lhs;
             end
           end
-          assign lvl[l][k*P_W +: P_W] = sum_q;
+          assign lvl[l][sam_cmul(k, P_W) +: P_W] = sum_q;
         end else begin : g_unused
-          assign lvl[l][k*P_W +: P_W] = {P_W{1'b0}};
+          assign lvl[l][sam_cmul(k, P_W) +: P_W] = {P_W{1'b0}};
         end
       end
     end

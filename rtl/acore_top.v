@@ -11,7 +11,7 @@
 //
 //   clk        _|~|_|~|_|~|_|~|_|~|_|~|_
 //   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !(out_valid_o && !out_ready_i)
-//   c*_i        | A | B | C | D | E |
+//   c1..c4_i    | A | B | C | D | E |
 //   out_valid_o  ... LATENCY clocks later: | A | B | C | ...
 //
 // Only the valid flops are reset (rst_i synchronous, active high); data flops are not, and every
@@ -49,7 +49,8 @@ module acore_top #(
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer WORDS = 4 + 2 * REGIONS * (DEGREE + 1) + K,
+  // 4 + 2 REGIONS (DEGREE + 1) + K (REGIONS is a power of two, so the product is a shift).
+  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K,
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
 ) (
@@ -81,17 +82,27 @@ module acore_top #(
   output wire               dos_o
 );
 
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
+  function integer top_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      top_cmul = 0;
+      for (n = 0; n < b; n = n + 1) top_cmul = top_cmul + a;
+    end
+  endfunction
+
   // Derived, do not override: stage latencies (each module documents its own) and the total.
   localparam integer D_W = IN_W + 1;
   localparam integer PRE_LATENCY = 1;
   localparam integer SCALER_LATENCY = $clog2(REG_W) + 3;
   localparam integer REGION_LATENCY = 2;
-  localparam integer POLY_LATENCY = 1 + DEGREE * ($clog2(S_W) + 2) + 3;
+  localparam integer POLY_LATENCY = 1 + top_cmul(DEGREE, $clog2(S_W) + 2) + 3;
   localparam integer CORDIC_LATENCY = 1 + K + 1;
   localparam integer OUT_LATENCY = 1;
-  localparam integer LATENCY /*verilator public*/ = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
+  localparam integer LATENCY = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
                                CORDIC_LATENCY + OUT_LATENCY;
-  localparam integer NCOEF = 2 * REGIONS * (DEGREE + 1);
+  localparam integer NCOEF = top_cmul(REGIONS << 1, DEGREE + 1);
 
   initial begin
     if (IN_W < 8 || IN_W > 24) $error("acore_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
@@ -115,16 +126,16 @@ module acore_top #(
   end
 
   // ---- register file ----
-  wire [WORDS*REG_W-1:0] words;
+  wire [top_cmul(WORDS, REG_W)-1:0] words;
   acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
     .clk_i(clk_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .words_o(words));
-  wire [REG_W-1:0] off13 = words[0*REG_W +: REG_W];
-  wire [REG_W-1:0] off24 = words[1*REG_W +: REG_W];
-  wire [REG_W-1:0] rcp13 = words[2*REG_W +: REG_W];
-  wire [REG_W-1:0] rcp24 = words[3*REG_W +: REG_W];
-  wire [NCOEF*REG_W-1:0] coef = words[4*REG_W +: NCOEF*REG_W];
-  wire [K*REG_W-1:0] atan = words[(4+NCOEF)*REG_W +: K*REG_W];
+  wire [REG_W-1:0] off13 = words[0 +: REG_W];
+  wire [REG_W-1:0] off24 = words[REG_W +: REG_W];
+  wire [REG_W-1:0] rcp13 = words[(REG_W << 1) +: REG_W];
+  wire [REG_W-1:0] rcp24 = words[top_cmul(3, REG_W) +: REG_W];
+  wire [top_cmul(NCOEF, REG_W)-1:0] coef = words[(REG_W << 2) +: top_cmul(NCOEF, REG_W)];
+  wire [top_cmul(K, REG_W)-1:0] atan = words[top_cmul(4 + NCOEF, REG_W) +: top_cmul(K, REG_W)];
 
   // ---- 1: pre-filter ----
   wire [D_W-1:0] d13, d24;
