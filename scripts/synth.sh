@@ -13,7 +13,7 @@ syn=$root/synth
 build=$syn/build
 rep=$syn/reports
 mkdir -p "$build" "$rep"
-rm -f "$rep"/*.txt "$rep"/*.log "$rep"/summary.md  # no stale reports
+rm -f "$rep"/generic_*.txt "$rep"/ice40_*.txt "$rep"/xilinx_*.txt "$rep"/*.log "$rep"/summary.md  # no stale reports
 freq=150  # nextpnr target clock, MHz (Fmax is reported whether or not it is met)
 
 # The 16-bit CORDIC configuration and its arctangent table (model/cordic.cpp cordic_atan_table:
