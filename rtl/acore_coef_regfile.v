@@ -65,7 +65,8 @@ module acore_coef_regfile #(
   genvar a;
   generate
     for (a = 0; a < WORDS; a = a + 1) begin : g_word
-      assign words_o[rf_cmul(a, REG_W) +: REG_W] = mem_q[a];
+      localparam integer OFF = rf_cmul(a, REG_W);
+      assign words_o[OFF +: REG_W] = mem_q[a];
     end
   endgenerate
 

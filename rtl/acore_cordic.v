@@ -117,7 +117,8 @@ module acore_cordic #(
       reg [IN_W-1:0] ay_q;
       reg [(NG<<2)-1:0] m_q;
       reg [NG-1:0]   any_q;
-      reg [co_cmul(SH_W, NG)-1:0] cand_q;
+      localparam integer CAND_W = co_cmul(SH_W, NG);
+      reg [CAND_W-1:0] cand_q;
       reg [SH_W-1:0] sh_q;
       wire [(NG<<2)-1:0] m = {{((NG<<2)-IN_W){1'b0}}, ax_q[0] | ay_q};
       // The shift group g asks for if its highest set bit is the msb of m: a function of the
@@ -133,20 +134,28 @@ module acore_cordic #(
           end
         end
       endfunction
-      reg [NG-1:0]   any_d;
-      reg [co_cmul(SH_W, NG)-1:0] cand_d;
-      reg [SH_W-1:0] sh_d;
-      integer g, j;
-      always @(m_q or any_q or cand_q) begin
-        for (g = 0; g < NG; g = g + 1) begin
-          any_d[g] = |m_q[(g<<2) +: 4];
-          cand_d[co_cmul(SH_W, g) +: SH_W] = cand_of(g, m_q[(g<<2) +: 4]);
-        end
-        // The highest group with a set bit holds the msb of m (no bit set: no shift).
-        sh_d = {SH_W{1'b0}};
-        for (g = 0; g < NG; g = g + 1)
-          if (any_q[g]) sh_d = cand_q[co_cmul(SH_W, g) +: SH_W];
+      wire [NG-1:0]  any_d;
+      wire [CAND_W-1:0] cand_d;
+      genvar gg;
+      for (gg = 0; gg < NG; gg = gg + 1) begin : g_grp
+        localparam integer OFF = co_cmul(SH_W, gg);
+        assign any_d[gg] = |m_q[(gg << 2) +: 4];
+        assign cand_d[OFF +: SH_W] = cand_of(gg, m_q[(gg << 2) +: 4]);
       end
+      // The highest non-empty group holds the msb of m (none: no shift).
+      function automatic [SH_W-1:0] pick(input [NG-1:0] any, input [CAND_W-1:0] cand);
+        integer g, off;
+        begin
+          pick = {SH_W{1'b0}};
+          off = 0;
+          for (g = 0; g < NG; g = g + 1) begin
+            if (any[g]) pick = cand[off +: SH_W];
+            off = off + SH_W;
+          end
+        end
+      endfunction
+      wire [SH_W-1:0] sh_d = pick(any_q, cand_q);
+      integer j;
       always @(posedge clk_i) begin
         if (en_i) begin
           ax_q[0] <= ax;
@@ -196,7 +205,8 @@ module acore_cordic #(
       wire s = y_q[i][XY_W-1];
       wire [XY_W-1:0] ys_full = $signed(y_q[i]) >>> i;
       wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
-      wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[co_cmul(i, AT_W) +: AT_W]};
+      localparam integer AT_OFF = co_cmul(i, AT_W);
+      wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[AT_OFF +: AT_W]};
       // Adder inputs a + b + c: X += s ? -(Y>>>i) : (Y>>>i) is X + ((Y>>>i) ^ {s}) + s.
       wire [XY_W-2:0] x_a, x_b;
       wire [Z_W-1:0]  z_a, z_b;

@@ -85,25 +85,32 @@ module acore_poly_correct #(
   wire [RG_W-1:0]  rs  [0:DEGREE];
   wire             ov  [0:DEGREE];
 
-  // Coefficient of x^j for region r of this curve, sign-extended and shifted to ACC_F fraction bits.
-  function automatic [ACC_W-1:0] coef_acc(input [COEF_BUS_W-1:0] bus, input [RG_W-1:0] r, input integer j);
+  // Coefficient of x^j for region r of this curve, sign-extended and shifted to ACC_F fraction
+  // bits. base = bit offset of region 0's word for x^j; region k's word is k STRIDE bits higher.
+  localparam integer STRIDE = pc_cmul(pc_cmul(2, DEGREE + 1), REG_W);
+  function automatic [ACC_W-1:0] coef_acc(input [COEF_BUS_W-1:0] bus, input [RG_W-1:0] r,
+                                          input integer base);
     reg [REG_W-1:0] w;
-    integer k;
+    integer k, off;
     begin
       w = {REG_W{1'b0}};
-      for (k = 0; k < REGIONS; k = k + 1)
-        if (r == k[RG_W-1:0]) w = bus[pc_cmul(pc_cmul((k << 1) + CURVE, DEGREE + 1) + j, REG_W) +: REG_W];
+      off = base;
+      for (k = 0; k < REGIONS; k = k + 1) begin
+        if (r == k[RG_W-1:0]) w = bus[off +: REG_W];
+        off = off + STRIDE;
+      end
       coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
     end
   endfunction
 
   // Clock 0: the leading coefficient of the sample's region, registered with the sample.
+  localparam integer BASE_N = pc_cmul(pc_cmul(CURVE, DEGREE + 1) + DEGREE, REG_W);
   reg [ACC_W-1:0] acc0_q;
   reg [S_W-1:0]   x0_q, s0_q;
   reg [RG_W-1:0]  r0_q;
   always @(posedge clk_i) begin
     if (en_i) begin
-      acc0_q <= coef_acc(coef_i, region_i, DEGREE);
+      acc0_q <= coef_acc(coef_i, region_i, BASE_N);
       x0_q   <= x_i;
       s0_q   <= s_i;
       r0_q   <= region_i;
@@ -120,6 +127,7 @@ module acore_poly_correct #(
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
       // ML clocks: acc times x on the adder tree. Beside it the region travels ML-1 clocks, then
       // picks a_j into a register (so no multiplexer sits in front of the adder).
+      localparam integer BASE_J = pc_cmul(pc_cmul(CURVE, DEGREE + 1) + DEGREE - 1 - m, REG_W);
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(S_F), .P_W(P_W)
@@ -144,7 +152,7 @@ module acore_poly_correct #(
       acore_saturate #(.IN_W(P_W + 1), .OUT_W(ACC_W)) u_sat (.d_i(sum_q), .q_o(sum_sat), .ovf_o(sum_ovf));
       always @(posedge clk_i) begin
         if (en_i) begin
-          a_j_q  <= coef_acc(coef_i, r_e, DEGREE - 1 - m);
+          a_j_q  <= coef_acc(coef_i, r_e, BASE_J);
           r_d_q  <= r_e;
           ov_d_q <= ov_e;
           sum_q  <= sum;

@@ -71,18 +71,22 @@ module acore_shift_add_mul #(
       end else begin : g_sign
         assign shifted = {P_W{a_i[A_W-1]}};
       end
-      assign lvl[0][sam_cmul(k, P_W) +: P_W] = shifted & {P_W{b_i[k]}};
+      localparam integer OFF = sam_cmul(k, P_W);
+      assign lvl[0][OFF +: P_W] = shifted & {P_W{b_i[k]}};
     end
 
     for (l = 1; l <= LEVELS; l = l + 1) begin : g_lvl
       localparam integer N_PREV = (B_W + (1 << (l - 1)) - 1) >> (l - 1);
       localparam integer N_THIS = (B_W + (1 << l) - 1) >> l;
       for (k = 0; k < B_W; k = k + 1) begin : g_node
+        localparam integer OFF = sam_cmul(k, P_W);
+        localparam integer OFF_L = sam_cmul(k << 1, P_W);
+        localparam integer OFF_R = sam_cmul((k << 1) + 1, P_W);
         if (k < N_THIS) begin : g_used
           reg [P_W-1:0] sum_q;
-          wire [P_W-1:0] lhs = lvl[l-1][sam_cmul(k << 1, P_W) +: P_W];
+          wire [P_W-1:0] lhs = lvl[l-1][OFF_L +: P_W];
           if ((k << 1) + 1 < N_PREV) begin : g_pair
-            wire [P_W-1:0] rhs = lvl[l-1][sam_cmul((k << 1) + 1, P_W) +: P_W];
+            wire [P_W-1:0] rhs = lvl[l-1][OFF_R +: P_W];
             // The signed top bit of b sits at index B_W-1 of level 0: subtract it.
             if (l == 1 && B_SIGNED != 0 && (k << 1) + 1 == B_W - 1) begin : g_sub
               always @(posedge clk_i) if (en_i) sum_q <= lhs - rhs;
@@ -96,9 +100,9 @@ module acore_shift_add_mul #(
               always @(posedge clk_i) if (en_i) sum_q <= lhs;
             end
           end
-          assign lvl[l][sam_cmul(k, P_W) +: P_W] = sum_q;
+          assign lvl[l][OFF +: P_W] = sum_q;
         end else begin : g_unused
-          assign lvl[l][sam_cmul(k, P_W) +: P_W] = {P_W{1'b0}};
+          assign lvl[l][OFF +: P_W] = {P_W{1'b0}};
         end
       end
     end

@@ -126,16 +126,21 @@ module acore_top #(
   end
 
   // ---- register file ----
-  wire [top_cmul(WORDS, REG_W)-1:0] words;
+  localparam integer BUS_W = top_cmul(WORDS, REG_W);
+  localparam integer COEF_BUS_W = top_cmul(NCOEF, REG_W);
+  localparam integer AT_BUS_W = top_cmul(K, REG_W);
+  localparam integer OFF_RCP24 = top_cmul(3, REG_W);
+  localparam integer OFF_ATAN = top_cmul(4 + NCOEF, REG_W);
+  wire [BUS_W-1:0] words;
   acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
     .clk_i(clk_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .words_o(words));
   wire [REG_W-1:0] off13 = words[0 +: REG_W];
   wire [REG_W-1:0] off24 = words[REG_W +: REG_W];
   wire [REG_W-1:0] rcp13 = words[(REG_W << 1) +: REG_W];
-  wire [REG_W-1:0] rcp24 = words[top_cmul(3, REG_W) +: REG_W];
-  wire [top_cmul(NCOEF, REG_W)-1:0] coef = words[(REG_W << 2) +: top_cmul(NCOEF, REG_W)];
-  wire [top_cmul(K, REG_W)-1:0] atan = words[top_cmul(4 + NCOEF, REG_W) +: top_cmul(K, REG_W)];
+  wire [REG_W-1:0] rcp24 = words[OFF_RCP24 +: REG_W];
+  wire [COEF_BUS_W-1:0] coef = words[(REG_W << 2) +: COEF_BUS_W];
+  wire [AT_BUS_W-1:0] atan = words[OFF_ATAN +: AT_BUS_W];
 
   // ---- 1: pre-filter ----
   wire [D_W-1:0] d13, d24;
