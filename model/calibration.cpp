@@ -138,6 +138,20 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
   return img;
 }
 
+RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale) {
+  for (;;) {
+    try {
+      return quantize(coef, cfg, in_scale);
+    } catch (const InputError& e) {
+      if (cfg.coef_f <= 8 || std::string(e.what()).find("polynomial coefficient") == std::string::npos) throw;
+      const int acc_f = cfg.acc_f();
+      --cfg.coef_f;
+      cfg.acc_guard = acc_f - cfg.coef_f;
+      cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
+    }
+  }
+}
+
 FloatCoefficients dequantize(const RegImage& img) {
   const DatapathConfig& cfg = img.cfg;
   FloatCoefficients fc;

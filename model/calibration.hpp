@@ -41,6 +41,10 @@ double choose_in_scale(const Recording& rec, int in_w);
 // Throws InputError naming the register when a value does not fit its field.
 RegImage quantize(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
 
+// quantize(), but when a coefficient does not fit, trade coefficient fraction bits for range (down
+// to 8) while the Horner accumulator keeps its fraction bits; the image header records the result.
+RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
+
 // The real values a register image stands for (so the float engine can run from an image).
 FloatCoefficients dequantize(const RegImage& img);
 

@@ -18,6 +18,7 @@ struct CalibrateArgs {
   std::string in, out, json;
   int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, p = 0;
   double in_scale = 0;
+  bool coef_f_given = false;
 };
 
 void run_calibrate(const CalibrateArgs& a) {
@@ -36,7 +37,8 @@ void run_calibrate(const CalibrateArgs& a) {
   cfg.validate();
   const FloatCoefficients fc = calibrate(rec, opt);
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
-  RegImage img = quantize(fc, cfg, in_scale);
+  RegImage img = a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
+  cfg = img.cfg;
   img.provenance.push_back(fmt::format("command=anglecore calibrate --in {} --degree {} --regions {} "
                                        "--iterations {}", a.in, a.degree, a.regions, a.iterations));
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
@@ -71,14 +73,19 @@ void add_calibrate(CLI::App& app) {
   c->add_option("--degree", args->degree, "Polynomial degree n")->check(CLI::Range(1, 7));
   c->add_option("--regions", args->regions, "Correction regions (4 or 8)")->check(CLI::IsMember({4, 8}));
   c->add_option("--iterations", args->iterations, "CORDIC iterations k")->check(CLI::Range(4, 24));
-  c->add_option("--coef-frac", args->coef_f, "Fraction bits of a polynomial coefficient")->check(CLI::Range(1, 17));
+  c->add_option("--coef-frac", args->coef_f, "Fraction bits of a polynomial coefficient (default 15, lowered "
+                                             "automatically when a coefficient needs more range)")
+      ->check(CLI::Range(1, 17));
   c->add_option("--angle-w", args->angle_w, "Output angle width in bits")->check(CLI::Range(8, 20));
   c->add_option("--in-scale", args->in_scale, "Input codes per recording unit (default: automatic power of two)")
       ->check(CLI::PositiveNumber);
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
-  c->callback([args] { run_calibrate(*args); });
+  c->callback([args, c] {
+    args->coef_f_given = c->count("--coef-frac") > 0;
+    run_calibrate(*args);
+  });
 }
 
 }  // namespace acore::cli

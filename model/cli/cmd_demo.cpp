@@ -56,20 +56,8 @@ ChainRun run_chain(const Recording& cal, const Recording& val, CalOptions opt, D
   ChainRun r;
   r.fc = calibrate(cal, opt);
   const double in_scale = choose_in_scale(cal, cfg.in_w);
-  // Higher degrees can need wider coefficient range: step COEF_F down until the image fits.
-  for (;;) {
-    try {
-      r.img = quantize(r.fc, cfg, in_scale);
-      break;
-    } catch (const InputError&) {
-      if (cfg.coef_f <= 8) throw;
-      // Trade coefficient fraction bits for range; the accumulator keeps its fraction bits.
-      const int acc_f = cfg.acc_f();
-      --cfg.coef_f;
-      cfg.acc_guard = acc_f - cfg.coef_f;
-      cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
-    }
-  }
+  // Higher degrees can need a wider coefficient range (COEF_F stepped down).
+  r.img = quantize_auto_range(r.fc, cfg, in_scale);
   r.fl = run_float(val, r.fc);
   r.fx = run_fixed(val, r.img);
   r.e_unc = angle_error_deg(r.fx.uncorrected, val.theta_ref);
