@@ -5,24 +5,8 @@
 set -u
 bin=$1
 src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-passes=0
-check() {  # check NAME EXPECTED_STATUS COMMAND...
-  local name=$1 want=$2
-  shift 2
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL $name: exit $got, expected $want"; sed 's/^/  /' "$tmp/err" | head -5; fails=$((fails + 1))
-  else
-    passes=$((passes + 1))
-  fi
-}
-expect_text() {  # expect_text NAME FILE TEXT
-  if grep -qF -- "$3" "$2"; then passes=$((passes + 1)); else echo "FAIL $1: '$3' not in $2"; sed 's/^/  /' "$2" | head -5; fails=$((fails + 1)); fi
-}
+# shellcheck source=lib_cli.sh
+source "$(dirname "$0")/lib_cli.sh"
 
 check simulate-cal 0 "$bin" simulate --scenario paper --samples 4096 --seed 1 --out "$tmp/cal.csv"
 check simulate-val 0 "$bin" simulate --scenario paper --samples 4096 --seed 2 --out "$tmp/val.csv"

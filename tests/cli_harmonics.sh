@@ -6,24 +6,8 @@
 set -u
 bin=$1
 src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-passes=0
-check() {  # check NAME EXPECTED_STATUS COMMAND...
-  local name=$1 want=$2
-  shift 2
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL $name: exit $got, expected $want"; sed 's/^/  /' "$tmp/err" | head -5; fails=$((fails + 1))
-  else
-    passes=$((passes + 1))
-  fi
-}
-expect_text() {  # expect_text NAME FILE TEXT
-  if grep -qF -- "$3" "$2"; then passes=$((passes + 1)); else echo "FAIL $1: '$3' not in $2"; sed 's/^/  /' "$2" | head -5; fails=$((fails + 1)); fi
-}
+# shellcheck source=lib_cli.sh
+source "$(dirname "$0")/lib_cli.sh"
 spec="$src/tests/data/kuntz_eq33.json"
 
 check help 0 "$bin" harmonics --help
