@@ -21,12 +21,7 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
     throw InputError(fmt::format("calibration needs at least {} samples, the recording has {}",
                                  8 * terms * opt.regions, n));
   // The fit must see the whole electrical turn: every 10-degree sector of p * theta_ref.
-  std::vector<int> sector(36, 0);
-  for (double th : rec.theta_ref) {
-    const double e = std::fmod(opt.periodicity * th, 2 * M_PI);
-    ++sector[std::min(35, static_cast<int>((e < 0 ? e + 2 * M_PI : e) / (2 * M_PI) * 36))];
-  }
-  const long covered = std::count_if(sector.begin(), sector.end(), [](int k) { return k > 0; });
+  const int covered = turn_sectors_covered(rec.theta_ref, opt.periodicity);
   if (covered < 36)
     throw InputError(fmt::format("calibration: theta_ref covers only {} of the 36 ten-degree sectors "
                                  "of a turn; record at least one full turn", covered));

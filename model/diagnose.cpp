@@ -29,16 +29,8 @@ void check_recording(const Recording& r, const std::string& what) {
   if (!r.has_theta()) throw InputError(what + ": no theta_ref column (the gap needs the reference angle)");
   if (r.size() < kMinSamples)
     throw InputError(fmt::format("{}: {} samples, at least {} needed", what, r.size(), kMinSamples));
-  double lo = 1e300, hi = -1e300;
-  for (double t : r.theta_ref) lo = std::min(lo, t), hi = std::max(hi, t);
   // Wrapped or unwrapped: either way a turn must be covered, checked by 10-degree sectors.
-  std::vector<int> sector(36, 0);
-  for (double t : r.theta_ref) {
-    double e = std::fmod(t, 2 * M_PI);
-    if (e < 0) e += 2 * M_PI;
-    ++sector[std::min(35, static_cast<int>(e / (2 * M_PI) * 36))];
-  }
-  const long covered = std::count_if(sector.begin(), sector.end(), [](int k) { return k > 0; });
+  const int covered = turn_sectors_covered(r.theta_ref);
   if (covered < 36)
     throw InputError(fmt::format("{}: theta_ref covers only {} of the 36 ten-degree sectors of a turn; "
                                  "at least one full turn is needed", what, covered));

@@ -69,14 +69,6 @@ std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function
   return v;
 }
 
-Recording add_columns(const Recording& base, const std::vector<std::vector<double>>& add) {
-  Recording r = base;
-  for (int c = 0; c < base.channels; ++c)
-    if (!add[c].empty())
-      for (size_t i = 0; i < base.size(); ++i) r.ch[c][i] += add[c][i];
-  return r;
-}
-
 // Index of a channel around the circle (its 90-degree position): c1..c4 -> 0..3; sin, cos -> 0, 1.
 int position(int c) { return c; }
 
@@ -132,10 +124,11 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double n
 
 namespace {
 
+// A fitted effect's parameters; its prediction comes from predict_effect(), the one place that
+// applies an effect, so fitting and carrying the effect to a holdout cannot disagree.
 struct Fitted {
   ParamList params;
-  Recording prediction;
-  double noise_scale = 1.0;
+  double noise_scale = 1.0;  // < 0 marks a noise effect, scored by its own likelihood
   int k = 0;
 };
 
@@ -153,12 +146,7 @@ Fitted fit_offset(const FitProblem& fp, const Recording& base) {
   }
   const auto [phi, _] = solve_linear(fp, base, cols);
   Fitted f;
-  std::vector<std::vector<double>> add(r.channels);
-  for (int c = 0; c < r.channels; ++c) {
-    f.params.push_back({"offset_" + chan_name(r, c), phi(c)});
-    add[c].assign(r.size(), phi(c));
-  }
-  f.prediction = add_columns(base, add);
+  for (int c = 0; c < r.channels; ++c) f.params.push_back({"offset_" + chan_name(r, c), phi(c)});
   f.k = r.channels;
   return f;
 }
@@ -173,17 +161,13 @@ Fitted fit_gain(const FitProblem& fp, const Recording& base) {
   }
   const auto [phi, _] = solve_linear(fp, base, cols);
   Fitted f;
-  f.prediction = base;
-  for (int c = 0; c < r.channels; ++c) {
-    f.params.push_back({"gain_" + chan_name(r, c), 1.0 + phi(c)});
-    for (auto& v : f.prediction.ch[c]) v *= 1.0 + phi(c);
-  }
+  for (int c = 0; c < r.channels; ++c) f.params.push_back({"gain_" + chan_name(r, c), 1.0 + phi(c)});
   f.k = r.channels;
   return f;
 }
 
 // Angle-shift effects: channel c sees theta + delta_c(i) with delta linear in the parameters.
-// basis[p](c, i) is d delta_c(i) / d phi_p; the fit is linearized, the prediction exact.
+// basis[p](c, i) is d delta_c(i) / d phi_p; the fit is linearized (predict_effect is exact).
 Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
                        const std::vector<std::function<double(int, size_t)>>& basis) {
   const Recording& r = *fp.real;
@@ -198,14 +182,6 @@ Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
   }
   const auto [phi, _] = solve_linear(fp, base, cols);
   Fitted f;
-  std::vector<std::vector<double>> add(r.channels);
-  for (int c = 0; c < r.channels; ++c)
-    add[c] = angle_shift(fp, c, [&](size_t i) {
-      double d = 0;
-      for (size_t p = 0; p < basis.size(); ++p) d += phi(static_cast<Eigen::Index>(p)) * basis[p](c, i);
-      return d;
-    });
-  f.prediction = add_columns(base, add);
   for (size_t p = 0; p < basis.size(); ++p) f.params.push_back({"", phi(static_cast<Eigen::Index>(p))});
   f.k = static_cast<int>(basis.size());
   return f;
@@ -236,12 +212,6 @@ Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
       // amplitude * sin(a + phase) = amplitude cos(phase) sin a + amplitude sin(phase) cos a
       const double amp = std::hypot(phi(0), phi(1)), phase = std::atan2(phi(0), phi(1));
       best.params = {{"order", n}, {"amplitude", amp}, {"phase_rad", phase}};
-      std::vector<std::vector<double>> add(r.channels);
-      for (int c = 0; c < r.channels; ++c) {
-        add[c].resize(r.size());
-        for (size_t i = 0; i < r.size(); ++i) add[c][i] = phi(0) * cc[c][i] + phi(1) * cs[c][i];
-      }
-      best.prediction = add_columns(base, add);
       best.k = 3;  // order, amplitude, phase
     }
   }
@@ -261,20 +231,16 @@ Fitted fit_drift(const FitProblem& fp, const Recording& base) {
   }
   const auto [phi, _] = solve_linear(fp, base, cols);
   Fitted f;
-  f.prediction = base;
   for (int c = 0; c < r.channels; ++c) {
-    const double ko = phi(2 * c), kg = phi(2 * c + 1);
-    f.params.push_back({"offset_per_C_" + chan_name(r, c), ko});
-    f.params.push_back({"gain_per_C_" + chan_name(r, c), kg});
-    for (size_t i = 0; i < r.size(); ++i)
-      f.prediction.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
+    f.params.push_back({"offset_per_C_" + chan_name(r, c), phi(2 * c)});
+    f.params.push_back({"gain_per_C_" + chan_name(r, c), phi(2 * c + 1)});
   }
   f.k = 2 * r.channels;
   return f;
 }
 
 // ADC step from the real data: the median gap between neighbouring distinct values.
-Fitted fit_quantization(const FitProblem& fp, const Recording& base) {
+Fitted fit_quantization(const FitProblem& fp) {
   const Recording& r = *fp.real;
   std::vector<double> steps;
   double peak = 0;
@@ -286,7 +252,6 @@ Fitted fit_quantization(const FitProblem& fp, const Recording& base) {
     for (size_t i = 1; i < v.size(); ++i) steps.push_back(v[i] - v[i - 1]);
   }
   Fitted f;
-  f.prediction = base;
   f.k = 2;
   if (steps.empty()) return f;
   std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
@@ -295,8 +260,6 @@ Fitted fit_quantization(const FitProblem& fp, const Recording& base) {
   const double full_scale = std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-12)))));
   const double bits = std::log2(2.0 * full_scale / step);
   f.params = {{"bits", std::round(bits)}, {"full_scale", full_scale}, {"step", step}};
-  for (int c = 0; c < r.channels; ++c)
-    for (auto& v : f.prediction.ch[c]) v = std::nearbyint(v / step) * step;
   return f;
 }
 
@@ -326,7 +289,6 @@ Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
   const double level = 0.5 * (lo + hi);
   Fitted f;
   f.params = {{"level", level}};
-  f.prediction = clip(level);
   f.k = 1;
   return f;
 }
@@ -361,7 +323,6 @@ Fitted fit_excess_noise(const FitProblem& fp, const Recording& base) {
   Fitted f;
   const double var_e = 0.5 * (lo + hi);
   f.params = {{"sigma", std::sqrt(var_e)}};
-  f.prediction = base;
   f.k = 1;
   f.noise_scale = -1;  // marks a noise effect: scored by nll below
   f.params.push_back({"_nll", nll(var_e)});
@@ -475,7 +436,7 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
     }
     f = fit_drift(fp, base);
   } else if (effect == "quantization") {
-    f = fit_quantization(fp, base);
+    f = fit_quantization(fp);
   } else if (effect == "saturation") {
     f = fit_saturation(fp, base);
   } else if (effect == "excess_noise") {

@@ -72,6 +72,16 @@ void Recording::check_consistent(const std::string& what) const {
   check(temp, "temp");
 }
 
+int turn_sectors_covered(const std::vector<double>& theta, int periodicity) {
+  std::array<bool, 36> seen{};
+  for (double th : theta) {
+    double e = std::fmod(periodicity * th, 2 * M_PI);
+    if (e < 0) e += 2 * M_PI;
+    seen[std::min(35, static_cast<int>(e / (2 * M_PI) * 36))] = true;
+  }
+  return static_cast<int>(std::count(seen.begin(), seen.end(), true));
+}
+
 Recording parse_recording(const std::string& text, const std::string& name) {
   Recording rec;
   const std::string_view all(text);

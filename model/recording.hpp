@@ -30,6 +30,10 @@ struct Recording {
   void check_consistent(const std::string& what) const;
 };
 
+// How many of the 36 ten-degree sectors of one turn of p * theta (wrapped) hold a sample: 36 means
+// the angles cover a full (electrical) turn. Used wherever a fit needs the whole circle.
+int turn_sectors_covered(const std::vector<double>& theta, int periodicity = 1);
+
 // Reads a recording; throws InputError "FILE:LINE: column 'NAME': ..." on any defect.
 Recording read_recording(const std::string& path);
 // Parses recording text; `name` is used in error messages in place of a path.

@@ -58,13 +58,7 @@ SensorFit fit_sensor(const Recording& rec, int order, int periodicity) {
   const int terms = 2 * order + 1;
   if (n < static_cast<size_t>(4 * terms))
     throw InputError(fmt::format("sensor model: {} samples, at least {} needed", n, 4 * terms));
-  std::vector<int> sector(36, 0);
-  for (double th : rec.theta_ref) {
-    double e = std::fmod(periodicity * th, 2 * M_PI);
-    if (e < 0) e += 2 * M_PI;
-    ++sector[std::min(35, static_cast<int>(e / (2 * M_PI) * 36))];
-  }
-  const long covered = std::count_if(sector.begin(), sector.end(), [](int k) { return k > 0; });
+  const int covered = turn_sectors_covered(rec.theta_ref, periodicity);
   if (covered < 36)
     throw InputError(fmt::format("the recording covers only {} of the 36 ten-degree sectors of a turn: "
                                  "at least one full turn is needed", covered));
