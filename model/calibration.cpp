@@ -9,9 +9,37 @@
 
 #include "cordic.hpp"
 #include "errors.hpp"
+#include "float_model.hpp"
+#include "fourier_correct.hpp"
 #include "region_select.hpp"
 
 namespace acore {
+
+namespace {
+
+// Least squares of the float chain's remaining angle error against the Fourier basis in its angle.
+std::vector<double> fit_fourier(const Recording& rec, const FloatCoefficients& fc, const CalOptions& opt) {
+  const int cols = 2 * opt.fourier_k + 1;
+  const size_t n = rec.size();
+  if (n < static_cast<size_t>(4 * cols))
+    throw InputError(fmt::format("calibration: a {}-harmonic Fourier correction needs at least {} samples, the "
+                                 "recording has {}", opt.fourier_k, 4 * cols, n));
+  Eigen::MatrixXd basis(n, cols);
+  Eigen::VectorXd err(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double theta = float_estimate(rec.d13(i), rec.d24(i), fc).angle;
+    basis(i, 0) = 1.0;
+    for (int k = 1; k <= opt.fourier_k; ++k) {
+      basis(i, 2 * k - 1) = std::cos(k * theta);
+      basis(i, 2 * k) = std::sin(k * theta);
+    }
+    err(i) = std::remainder(theta - opt.periodicity * rec.theta_ref[i], 2 * M_PI);
+  }
+  const Eigen::VectorXd sol = basis.colPivHouseholderQr().solve(err);
+  return std::vector<double>(sol.data(), sol.data() + cols);
+}
+
+}  // namespace
 
 FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
   if (!rec.has_theta()) throw InputError("calibration needs a theta_ref column");
@@ -72,8 +100,9 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
     }
     const Eigen::MatrixXd sol = V.colPivHouseholderQr().solve(rhs);
     for (int c = 0; c < 2; ++c)
-      for (int j = 0; j < terms; ++j) fc.coef(r, c, j) = sol(j, c);
+      for (int j = 0; j < terms; ++j) fc.coef(r, c, j) = opt.fourier_only ? 0.0 : sol(j, c);
   }
+  if (opt.fourier_k > 0) fc.fourier = fit_fourier(rec, fc, opt);
   return fc;
 }
 
@@ -89,6 +118,7 @@ double choose_in_scale(const Recording& rec, int in_w) {
 RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_scale) {
   cfg.degree = fc.degree;
   cfg.regions = fc.regions;
+  cfg.fourier_k = fc.fourier_k();
   cfg.validate();
   RegImage img;
   img.cfg = cfg;
@@ -130,6 +160,18 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
       }
   const auto table = cordic_atan_table(cfg.z_w, cfg.iterations);
   for (int i = 0; i < cfg.iterations; ++i) img.set_unsigned(cfg.addr_atan(i), table[i]);
+  // Fourier words: turns with fourier_coef_f fraction bits; harmonics divided by the rotation gain.
+  const double gain = fourier_gain(cfg);
+  for (int j = 0; j < cfg.fourier_words(); ++j) {
+    const double turns = fc.fourier[j] / (2 * M_PI) / (j == 0 ? 1.0 : gain);
+    try {
+      img.set_signed(cfg.addr_fourier(j), std::llround(std::ldexp(turns, cfg.fourier_coef_f)));
+    } catch (const InputError&) {
+      throw InputError(fmt::format("fourier coefficient {} = {:.4f} deg exceeds the range of fourier_coef_f={} "
+                                   "(+-{:.4f} deg)", j, fc.fourier[j] * 180 / M_PI, cfg.fourier_coef_f,
+                                   std::ldexp(360.0, cfg.reg_w - 1 - cfg.fourier_coef_f)));
+    }
+  }
   return img;
 }
 
@@ -138,6 +180,10 @@ RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, 
     try {
       return quantize(coef, cfg, in_scale);
     } catch (const InputError& e) {
+      if (std::string(e.what()).find("fourier coefficient") != std::string::npos && cfg.fourier_coef_f >= cfg.reg_w) {
+        --cfg.fourier_coef_f;
+        continue;
+      }
       if (cfg.coef_f <= 8 || std::string(e.what()).find("polynomial coefficient") == std::string::npos) throw;
       const int acc_f = cfg.acc_f();
       --cfg.coef_f;
@@ -162,6 +208,10 @@ FloatCoefficients dequantize(const RegImage& img) {
     for (int c = 0; c < 2; ++c)
       for (int j = 0; j <= cfg.degree; ++j)
         fc.coef(r, c, j) = std::ldexp(static_cast<double>(img.poly(r, c, j)), -cfg.coef_f);
+  const double gain = fourier_gain(cfg);
+  for (int j = 0; j < cfg.fourier_words(); ++j)
+    fc.fourier.push_back(2 * M_PI * (j == 0 ? 1.0 : gain) *
+                         std::ldexp(static_cast<double>(img.fourier(j)), -cfg.fourier_coef_f));
   return fc;
 }
 

@@ -20,6 +20,10 @@ struct FloatCoefficients {
   double offset[2] = {0, 0};  // O13, O24 in recording units
   double amp[2] = {1, 1};     // A13, A24 in recording units
   std::vector<double> poly;   // [region][curve][power], curve 0 = c13, 1 = c24
+  // Angle-domain Fourier correction after the CORDIC: [a_0, a_1, b_1, ..., a_K, b_K] in radians of
+  // electrical angle, in the estimated angle (model/fourier_correct.hpp); empty = off.
+  std::vector<double> fourier;
+  int fourier_k() const { return fourier.empty() ? 0 : static_cast<int>(fourier.size() / 2); }
   double& coef(int r, int c, int j) { return poly[(r * 2 + c) * (degree + 1) + j]; }
   double coef(int r, int c, int j) const { return poly[(r * 2 + c) * (degree + 1) + j]; }
 };
@@ -28,9 +32,16 @@ struct CalOptions {
   int degree = 3;
   int regions = 4;
   int periodicity = 1;  // electrical periods per turn: the reference is sin/cos(p theta_ref)
+  int fourier_k = 0;    // harmonics of the Fourier correction fitted after the polynomial; 0 = none
+  // Fit no polynomial (its words stay zero, so the polynomial stage passes the curves through
+  // unchanged) and let the Fourier correction do all the work.
+  bool fourier_only = false;
 };
 
 // Throws InputError when the recording has no theta_ref or too few samples in a region.
+// With opt.fourier_k > 0, after the polynomial: least squares of the remaining angle error
+// (float estimate - p theta_ref, wrapped) against 1, cos k theta, sin k theta (k = 1..K) of the
+// float estimate theta.
 FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt);
 
 // The "ADC" gain: the largest power of two that maps the recording's largest |channel| to at most
@@ -42,7 +53,8 @@ double choose_in_scale(const Recording& rec, int in_w);
 RegImage quantize(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
 
 // quantize(), but when a coefficient does not fit, trade coefficient fraction bits for range (down
-// to 8) while the Horner accumulator keeps its fraction bits; the image header records the result.
+// to 8) while the Horner accumulator keeps its fraction bits; likewise a Fourier coefficient lowers
+// fourier_coef_f (down to reg_w - 1). The image header records the result.
 RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
 
 // The real values a register image stands for (so the float engine can run from an image).

@@ -29,14 +29,29 @@ void DatapathConfig::validate() const {
        fmt::format("z_w={} must be angle_w={}..reg_w+2={} (atan(1) must fit a word)", z_w, angle_w,
                    reg_w + 2));
   need(angle_w >= 8 && angle_w <= 24, fmt::format("angle_w={} must be 8..24", angle_w));
+  need(fourier_k >= 0 && fourier_k <= 31, fmt::format("fourier_k={} must be 0..31", fourier_k));
+  if (fourier_k == 0) return;
+  need(fourier_iterations >= 4 && fourier_iterations <= iterations,
+       fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
+                   fourier_iterations, iterations));
+  need(fourier_guard >= 0 && fourier_guard <= 8, fmt::format("fourier_guard={} must be 0..8", fourier_guard));
+  need(fourier_f() > angle_w && fourier_f() <= 40,
+       fmt::format("fourier_coef_f+fourier_guard={} must be angle_w+1={}..40", fourier_f(), angle_w + 1));
+  need(fourier_coef_f >= reg_w - 1,
+       fmt::format("fourier_coef_f={} must be >= reg_w-1={} (a coefficient is less than half a turn)",
+                   fourier_coef_f, reg_w - 1));
 }
 
 std::string DatapathConfig::describe() const {
+  std::string fourier;
+  if (fourier_k > 0)
+    fourier = fmt::format(" fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_guard={}", fourier_k,
+                          fourier_iterations, fourier_coef_f, fourier_guard);
   return fmt::format(
       "in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} coef_f={} "
-      "acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}",
+      "acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}{}",
       in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions, coef_f, acc_guard, acc_int,
-      iterations, cordic_guard, z_w, angle_w);
+      iterations, cordic_guard, z_w, angle_w, fourier);
 }
 
 }  // namespace acore

@@ -28,6 +28,12 @@ struct DatapathConfig {
   int cordic_guard = 3;  // CORDIC_G: guard fraction bits of the CORDIC x/y registers
   int z_w = 20;          // Z_W: CORDIC angle accumulator width, one turn = 2^Z_W
   int angle_w = 16;      // ANGLE_W: output angle width, unsigned, one turn = 2^ANGLE_W
+  // --- angle-domain Fourier correction after the CORDIC (model/fourier_correct.hpp) ---
+  // angle_out = theta - Delta(theta), Delta = a_0 + sum_k a_k cos k theta + b_k sin k theta.
+  int fourier_k = 0;             // FOURIER_K: harmonics K; 0 = stage off (no words, no header keys)
+  int fourier_iterations = 12;   // FOURIER_M: rotation-CORDIC stages per harmonic (<= iterations)
+  int fourier_coef_f = 22;       // FOURIER_CF: coefficient fraction bits, in turns (word * 2^-CF turn)
+  int fourier_guard = 4;         // FOURIER_G: guard fraction bits of the rotation x/y registers
 
   // Derived, do not set.
   int d_w() const { return in_w + 1; }                 // D_W: c1 - c3
@@ -36,8 +42,11 @@ struct DatapathConfig {
   int acc_w() const { return acc_f() + acc_int; }      // ACC_W
   int coef_per_curve() const { return degree + 1; }
   int poly_words() const { return 2 * regions * (degree + 1); }
-  int words() const { return 4 + poly_words() + iterations; }
+  int fourier_words() const { return fourier_k > 0 ? 2 * fourier_k + 1 : 0; }
+  int words() const { return 4 + poly_words() + iterations + fourier_words(); }
   int xy_w() const { return s_w + 2 + cordic_guard; }  // XY_W: CORDIC x/y (gain 1.65 * sqrt 2)
+  int fourier_f() const { return fourier_coef_f + fourier_guard; }  // FOURIER_F: Delta fraction bits (turns)
+  int fourier_xy_w() const { return reg_w + 2 + fourier_guard; }    // FOURIER_XY_W: rotation x/y
 
   // Register map (DESIGN 3.2). curve 0 = sine curve c13, 1 = cosine curve c24.
   int addr_offset(int curve) const { return curve; }
@@ -46,10 +55,13 @@ struct DatapathConfig {
     return 4 + 2 * (degree + 1) * region + (degree + 1) * curve + power;
   }
   int addr_atan(int i) const { return 4 + poly_words() + i; }
+  // Fourier words after the CORDIC constants: j = 0: a_0; j = 2k-1, 2k: a_k, b_k (k = 1..K).
+  int addr_fourier(int j) const { return 4 + poly_words() + iterations + j; }
 
   // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
   void validate() const;
-  std::string describe() const;  // "degree=3 regions=4 iterations=16 ..." for headers and logs
+  // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0).
+  std::string describe() const;
 };
 
 }  // namespace acore

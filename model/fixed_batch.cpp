@@ -9,6 +9,7 @@
 
 #include "fixed_model.hpp"
 #include "fixed_point.hpp"
+#include "fourier_correct.hpp"
 #include "region_select.hpp"
 
 namespace acore {
@@ -230,6 +231,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
                  angle, mag);
     output_chunk(angle, mag, region, ovf, m, window_.mag_lo, window_.mag_hi, out + base);
   }
+  if (cfg.fourier_k > 0)
+    for (size_t i = 0; i < n; ++i) out[i].angle = fourier_correct(out[i].angle, fourier_.data(), atan_.data(), cfg);
 }
 
 }  // namespace acore

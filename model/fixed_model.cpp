@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fixed_point.hpp"
+#include "fourier_correct.hpp"
 #include "poly_correct.hpp"
 #include "prefilter.hpp"
 #include "region_select.hpp"
@@ -38,6 +39,7 @@ FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), wi
     for (int c = 0; c < 2; ++c)
       for (int j = 0; j <= cfg.degree; ++j) coef_.push_back(img_.poly(r, c, j));
   for (int i = 0; i < cfg.iterations; ++i) atan_.push_back(img_.atan(i));
+  for (int j = 0; j < cfg.fourier_words(); ++j) fourier_.push_back(img_.fourier(j));
 }
 
 CordicConfig FixedModel::cordic_config() const {
@@ -72,7 +74,8 @@ FixedSample FixedModel::step(const ChannelCodes& c) const {
   out.y24 = poly_correct(out.s24, rc.x, coef + cfg.degree + 1, cfg, &out.ovf);
   const CordicConfig cc = cordic_config();
   const CordicResult r = cordic_vector(out.y24, out.y13, cc, atan_.data());
-  out.angle = r.angle;
+  out.cordic_angle = r.angle;
+  out.angle = cfg.fourier_k > 0 ? fourier_correct(r.angle, fourier_.data(), atan_.data(), cfg) : r.angle;
   out.magnitude = r.magnitude;
   out.los = r.magnitude < window_.mag_lo;
   out.dos = r.magnitude > window_.mag_hi;

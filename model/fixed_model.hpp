@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The bit-accurate model of the whole chain: pre-filter -> scaler -> region select -> polynomial
-// correction -> CORDIC, exactly the RTL's widths and roundings (rtl/acore_top.v), one sample at a time.
+// correction -> CORDIC (-> Fourier correction when fourier_k > 0), exactly the RTL's widths and
+// roundings (rtl/acore_top.v), one sample at a time.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -31,6 +32,7 @@ struct FixedSample {
   int64_t y13 = 0, y24 = 0;  // corrected curves (Q2.16)
   int64_t magnitude = 0;     // CORDIC X_K >>> G
   uint32_t uncorrected_angle = 0;  // CORDIC of (s24, s13): the chain without correction
+  uint32_t cordic_angle = 0;       // CORDIC of (y24, y13): the angle before the Fourier correction
   bool operator==(const FixedSample& o) const;  // the RTL-visible fields: angle, region, flags
 };
 
@@ -52,7 +54,8 @@ class FixedModel {
   FixedSample step(const ChannelCodes& c) const;
   // The same chain over many samples at once (model/fixed_batch.cpp): structure-of-arrays int32
   // loops the compiler vectorizes, bit-identical to step() in the RTL-visible outputs
-  // (tests/test_fixed_batch.cpp). Falls back to step() for configurations wider than 32 bits.
+  // (tests/test_fixed_batch.cpp). Falls back to step() for configurations wider than 32 bits; the
+  // Fourier stage (it only reads the angle) runs per sample after the vectorized chain.
   void run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const;
   bool batch_fits_int32() const;
   const RegImage& image() const { return img_; }
@@ -65,6 +68,7 @@ class FixedModel {
   StatusWindow window_;
   std::vector<int64_t> coef_;   // sign-extended polynomial words, [region][curve][power]
   std::vector<int64_t> atan_;   // CORDIC constants
+  std::vector<int64_t> fourier_;  // sign-extended Fourier words (empty when fourier_k = 0)
 };
 
 }  // namespace acore

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "fourier_correct.hpp"
 #include "region_select.hpp"
 
 namespace acore {
@@ -26,6 +27,11 @@ FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc) 
   o.y13 = o.s13 - horner(fc, o.region, 0, x);
   o.y24 = o.s24 - horner(fc, o.region, 1, x);
   o.angle = wrap_turn(std::atan2(o.y13, o.y24));
+  o.cordic_angle = o.angle;
+  if (!fc.fourier.empty()) {
+    o.angle = std::fmod(o.angle - fourier_series(o.angle, fc.fourier), 2 * M_PI);
+    if (o.angle < 0) o.angle += 2 * M_PI;
+  }
   o.uncorrected = wrap_turn(std::atan2(o.s13, o.s24));
   return o;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The estimator in double precision: the algorithm's ideal, same stages as the bit-accurate model
-// (pre-filter, scaling, domain selection, polynomial correction, atan2 in place of the CORDIC).
+// (pre-filter, scaling, domain selection, polynomial correction, atan2 in place of the CORDIC, and
+// the optional Fourier correction angle - Delta(angle)).
 #pragma once
 #include "calibration.hpp"
 
@@ -8,6 +9,7 @@ namespace acore {
 
 struct FloatSample {
   double angle;        // corrected electrical angle, rad in [0, 2 pi)
+  double cordic_angle;  // atan2 of the corrected curves (the angle before the Fourier correction)
   double uncorrected;  // atan2 of the scaled curves, rad in [0, 2 pi)
   int region;
   double s13, s24;  // scaled curves

@@ -10,6 +10,7 @@
 
 #include "errors.hpp"
 #include "fixed_point.hpp"
+#include "fourier_correct.hpp"
 
 namespace acore {
 
@@ -29,6 +30,15 @@ std::map<std::string, int DatapathConfig::*> config_fields() {
           {"angle_w", &DatapathConfig::angle_w}};
 }
 
+// The Fourier stage's keys: written only when fourier_k > 0, so images without the stage keep
+// their exact text.
+std::map<std::string, int DatapathConfig::*> fourier_fields() {
+  return {{"fourier_k", &DatapathConfig::fourier_k},
+          {"fourier_iterations", &DatapathConfig::fourier_iterations},
+          {"fourier_coef_f", &DatapathConfig::fourier_coef_f},
+          {"fourier_guard", &DatapathConfig::fourier_guard}};
+}
+
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
   if (b == std::string::npos) return "";
@@ -44,6 +54,7 @@ int64_t RegImage::poly(int r, int c, int j) const {
   return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
 }
 int64_t RegImage::atan(int i) const { return static_cast<int64_t>(words.at(cfg.addr_atan(i))); }
+int64_t RegImage::fourier(int j) const { return fx::sext(words.at(cfg.addr_fourier(j)), cfg.reg_w); }
 
 void RegImage::set_signed(int addr, int64_t value) {
   if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))
@@ -61,7 +72,8 @@ void RegImage::set_unsigned(int addr, int64_t value) {
 
 RegImage parse_regimage(const std::string& text, const std::string& name) {
   RegImage img;
-  const auto fields = config_fields();
+  auto fields = config_fields();
+  fields.merge(fourier_fields());
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -134,6 +146,8 @@ std::string format_regimage(const RegImage& img) {
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
   for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  if (c.fourier_k > 0)
+    for (const auto& [key, field] : fourier_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
   const int digits = (c.reg_w + 3) / 4;
   auto line = [&](int addr, const std::string& what) {
     out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
@@ -151,6 +165,15 @@ std::string format_regimage(const RegImage& img) {
   for (int i = 0; i < c.iterations; ++i)
     line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,
                                      std::ldexp(static_cast<double>(img.atan(i)), -c.z_w) * 360.0));
+  const double gain = c.fourier_k > 0 ? fourier_gain(c) : 1.0;
+  for (int j = 0; j < c.fourier_words(); ++j) {
+    const double deg = std::ldexp(static_cast<double>(img.fourier(j)), -c.fourier_coef_f) * 360.0;
+    if (j == 0)
+      line(c.addr_fourier(j), fmt::format("fourier a_0 = {:+.6f} deg", deg));
+    else
+      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)", j % 2 ? "a" : "b",
+                                          (j + 1) / 2, deg * gain));
+  }
   return out;
 }
 

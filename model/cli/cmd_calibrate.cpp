@@ -17,8 +17,9 @@ namespace {
 struct CalibrateArgs {
   std::string in, out, json;
   int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, p = 0;
+  int fourier = 0, fourier_iterations = DatapathConfig{}.fourier_iterations, fourier_guard = DatapathConfig{}.fourier_guard;
   double in_scale = 0;
-  bool coef_f_given = false;
+  bool coef_f_given = false, fourier_only = false;
 };
 
 void run_calibrate(const CalibrateArgs& a) {
@@ -27,7 +28,13 @@ void run_calibrate(const CalibrateArgs& a) {
   opt.degree = a.degree;
   opt.regions = a.regions;
   opt.periodicity = a.p ? a.p : recording_periodicity(rec, a.in);
+  opt.fourier_k = a.fourier;
+  opt.fourier_only = a.fourier_only;
+  if (a.fourier_only && a.fourier == 0) throw InputError("calibrate: --fourier-only needs --fourier K (K >= 1)");
   DatapathConfig cfg;
+  cfg.fourier_k = a.fourier;
+  cfg.fourier_iterations = a.fourier_iterations;
+  cfg.fourier_guard = a.fourier_guard;
   cfg.degree = a.degree;
   cfg.regions = a.regions;
   cfg.iterations = a.iterations;
@@ -39,8 +46,12 @@ void run_calibrate(const CalibrateArgs& a) {
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
   RegImage img = a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
   cfg = img.cfg;
+  std::string fourier_args;
+  if (a.fourier > 0)
+    fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}{}", a.fourier,
+                               a.fourier_iterations, a.fourier_guard, a.fourier_only ? " --fourier-only" : "");
   img.provenance.push_back(fmt::format("command=anglecore calibrate --in {} --degree {} --regions {} "
-                                       "--iterations {}", a.in, a.degree, a.regions, a.iterations));
+                                       "--iterations {}{}", a.in, a.degree, a.regions, a.iterations, fourier_args));
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
   write_regimage(img, a.out);
 
@@ -59,6 +70,8 @@ void run_calibrate(const CalibrateArgs& a) {
                       {"iterations", cfg.iterations}, {"in_scale", in_scale},
                       {"offset", {fc.offset[0], fc.offset[1]}}, {"amplitude", {fc.amp[0], fc.amp[1]}},
                       {"poly", fc.poly},
+                      {"fourier_k", cfg.fourier_k},
+                      {"fourier", fc.fourier},
                       {"fit_error_deg", {{"float", stats_json(sf)}, {"fixed", stats_json(sx)},
                                          {"uncorrected", stats_json(su)}}}};
   write_json(a.json, j);
@@ -81,6 +94,16 @@ void add_calibrate(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
+  c->add_option("--fourier", args->fourier, "Harmonics K of the angle-domain Fourier correction after the CORDIC "
+                                            "(default 0: off); 2K+1 more words")
+      ->check(CLI::Range(0, 31));
+  c->add_option("--fourier-iterations", args->fourier_iterations,
+                "Rotation-CORDIC stages per harmonic of the Fourier correction (<= --iterations)")
+      ->check(CLI::Range(4, 24));
+  c->add_option("--fourier-guard", args->fourier_guard, "Guard fraction bits of the Fourier rotations")
+      ->check(CLI::Range(0, 8));
+  c->add_flag("--fourier-only", args->fourier_only,
+              "Fit no polynomial (its words stay zero: the curves pass unchanged) and only the Fourier correction");
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
     args->coef_f_given = c->count("--coef-frac") > 0;

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+#include "cordic_rotate.hpp"
+
+#include <cmath>
+
+namespace acore {
+
+RotateResult cordic_rotate(int64_t x, int64_t y, int64_t z, int stages, const int64_t* atan_table) {
+  for (int i = 0; i < stages; ++i) {
+    const int64_t xs = x >> i, ys = y >> i;
+    if (z >= 0) {
+      x += ys;
+      y -= xs;
+      z -= atan_table[i];
+    } else {
+      x -= ys;
+      y += xs;
+      z += atan_table[i];
+    }
+  }
+  return {x, y};
+}
+
+double cordic_rotate_gain(int stages) {
+  double g = 1.0;
+  for (int i = 0; i < stages; ++i) g *= std::sqrt(1.0 + std::ldexp(1.0, -2 * i));
+  return g;
+}
+
+}  // namespace acore

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Rotation-mode CORDIC: turns a vector clockwise by a given angle, the building block of the
+// Fourier correction (model/fourier_correct.hpp). Mirrors rtl/acore_cordic_rotate.v:
+//
+//   z_0 = z  (Z_W units, one turn = 2^Z_W, |z| <= 1/8 turn after the quadrant pre-rotation)
+//   stage i = 0..M-1:  d = (z_i >= 0)
+//       X += d ? (Y >>> i) : -(Y >>> i)
+//       Y -= d ? (X >>> i) : -(X >>> i)      (X, Y of the previous stage)
+//       z -= d ? atan_i : -atan_i
+//   result: X_M, Y_M = G_M * (x, y) turned clockwise by z, up to the residual angle z_M
+//           (|z_M| <= atan(2^-(M-1)) plus the table rounding) and one floor per stage and word;
+//           G_M = prod_{i<M} sqrt(1 + 2^-2i) (1.6468 for M >= 8).
+// atan_i = round(atan(2^-i) / 2pi * 2^Z_W), the CORDIC constants of the register file.
+#pragma once
+#include <cstdint>
+
+namespace acore {
+
+struct RotateResult {
+  int64_t x, y;
+};
+
+RotateResult cordic_rotate(int64_t x, int64_t y, int64_t z, int stages, const int64_t* atan_table);
+
+// G_M, the gain of M stages.
+double cordic_rotate_gain(int stages);
+
+}  // namespace acore
