@@ -34,6 +34,7 @@ void DatapathConfig::validate() const {
   need(fourier_iterations >= 4 && fourier_iterations <= iterations,
        fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
                    fourier_iterations, iterations));
+  need(z_w > angle_w, fmt::format("the Fourier correction needs z_w={} > angle_w={}", z_w, angle_w));
   need(fourier_guard >= 0 && fourier_guard <= 8, fmt::format("fourier_guard={} must be 0..8", fourier_guard));
   need(fourier_f() > angle_w && fourier_f() <= 40,
        fmt::format("fourier_coef_f+fourier_guard={} must be angle_w+1={}..40", fourier_f(), angle_w + 1));

@@ -23,7 +23,7 @@ int64_t fourier_harmonic(int k, uint32_t theta, int64_t a, int64_t b, const int6
     default: break;
   }
   const int64_t z = phi * (int64_t{1} << (cfg.z_w - A));
-  return cordic_rotate(x0, y0, z, cfg.fourier_iterations, atan_table).x;
+  return cordic_rotate(x0, y0, z, cfg.fourier_iterations, cfg.z_w, atan_table).x;
 }
 
 int64_t fourier_delta(uint32_t theta, const int64_t* coef, const int64_t* atan_table, const DatapathConfig& cfg) {

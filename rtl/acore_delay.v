@@ -22,13 +22,12 @@ module acore_delay #(
     if (DEPTH == 0) begin : g_wire
       assign q_o = d_i;
     end else begin : g_regs
+      // One always block per stage (a generate loop, so any DEPTH elaborates without a loop).
       reg [W-1:0] q_q [0:DEPTH-1];
-      integer i;
-      always @(posedge clk_i) begin
-        if (en_i) begin
-          q_q[0] <= d_i;
-          for (i = 1; i < DEPTH; i = i + 1) q_q[i] <= q_q[i-1];
-        end
+      always @(posedge clk_i) if (en_i) q_q[0] <= d_i;
+      genvar i;
+      for (i = 1; i < DEPTH; i = i + 1) begin : g_stage
+        always @(posedge clk_i) if (en_i) q_q[i] <= q_q[i-1];
       end
       assign q_o = q_q[DEPTH-1];
     end

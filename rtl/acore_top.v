@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit).
 //
-//   c1..c4 -> prefilter -> scaler x2 -> region_select -> poly_correct x2 -> cordic -> angle, flags
-//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i
+//   c1..c4 -> prefilter -> scaler x2 -> region_select -> poly_correct x2 -> cordic -> [fourier] -> angle, flags
+//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k
+//
+// The Fourier correction (acore_fourier_correct.v) is generated only when FOURIER_K > 0; with
+// FOURIER_K = 0 (the default) the top is the chain without it, word for word and clock for clock.
 //
 // Streaming: a sample is taken when in_valid_i && in_ready_o and comes out LATENCY accepted-or-
 // advancing clocks later on out_valid_o. The pipeline stalls as a whole when the output is held
@@ -45,12 +48,20 @@ module acore_top #(
   parameter integer CORDIC_G = 3,
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
+  // Angle-domain Fourier correction after the CORDIC: harmonics (0 = none), rotation stages per
+  // harmonic (<= K), coefficient fraction bits (turns), guard bits of the rotations.
+  parameter integer FOURIER_K = 0,
+  parameter integer FOURIER_M = 12,
+  parameter integer FOURIER_CF = 22,
+  parameter integer FOURIER_G = 4,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
-  // 4 + 2 REGIONS (DEGREE + 1) + K (REGIONS is a power of two, so the product is a shift).
-  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K,
+  // 4 + 2 REGIONS (DEGREE + 1) + K (REGIONS is a power of two, so the product is a shift),
+  // plus 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0.
+  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K +
+                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
 ) (
@@ -99,10 +110,15 @@ module acore_top #(
   localparam integer REGION_LATENCY = 2;
   localparam integer POLY_LATENCY = 1 + top_cmul(DEGREE, $clog2(S_W) + 2) + 3;
   localparam integer CORDIC_LATENCY = 1 + K + 1;
+  // acore_fourier_correct: clog2(KB) + 1 + FOURIER_M + clog2(FOURIER_K + 1) + 1, KB = bits of K.
+  localparam integer FOURIER_KB = ($clog2(FOURIER_K + 1) > 2) ? $clog2(FOURIER_K + 1) : 2;
+  localparam integer FOURIER_LATENCY = (FOURIER_K > 0) ?
+      $clog2(FOURIER_KB) + 1 + FOURIER_M + $clog2(FOURIER_K + 1) + 1 : 0;
   localparam integer OUT_LATENCY = 1;
   localparam integer LATENCY = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
-                               CORDIC_LATENCY + OUT_LATENCY;
+                               CORDIC_LATENCY + FOURIER_LATENCY + OUT_LATENCY;
   localparam integer NCOEF = top_cmul(REGIONS << 1, DEGREE + 1);
+  localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
 
   initial begin
     if (IN_W < 8 || IN_W > 24) $error("acore_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
@@ -112,7 +128,13 @@ module acore_top #(
     if (DEGREE < 1 || DEGREE > 7) $error("acore_top: DEGREE=%0d must be 1..7 (instance %m)", DEGREE);
     if (K < 4 || K > 24) $error("acore_top: K=%0d must be 4..24 (instance %m)", K);
     if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
-    if (WORDS != 4 + NCOEF + K || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
+    if (FOURIER_K < 0 || FOURIER_K > 31) $error("acore_top: FOURIER_K=%0d must be 0..31 (instance %m)", FOURIER_K);
+    if (FOURIER_K > 0 && (FOURIER_M < 4 || FOURIER_M > K))
+      $error("acore_top: FOURIER_M=%0d must be 4..K (instance %m)", FOURIER_M);
+    if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 ||
+                          FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
+      $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
+    if (WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
   end
 
   // ---- handshake: one enable for the whole pipeline ----
@@ -187,14 +209,37 @@ module acore_top #(
   ) u_cordic (
     .clk_i(clk_i), .en_i(en), .x_i(y24), .y_i(y13), .atan_i(atan), .angle_o(angle), .mag_o(mag));
 
-  // ---- sideband: scaler overflow, region and correction overflow, aligned to the CORDIC output ----
+  // ---- 6 (optional): Fourier correction of the angle ----
+  wire [ANGLE_W-1:0] angle_c;
+  wire [MAG_W-1:0] mag_c;
+  generate
+    if (FOURIER_K > 0) begin : g_fourier
+      localparam integer OFF_FOURIER = top_cmul(4 + NCOEF + K, REG_W);
+      localparam integer FOURIER_BUS_W = top_cmul(NFOURIER, REG_W);
+      localparam integer FOURIER_AT_W = top_cmul(FOURIER_M, REG_W);
+      acore_fourier_correct #(
+        .ANGLE_W(ANGLE_W), .REG_W(REG_W), .Z_W(Z_W), .K(FOURIER_K), .M(FOURIER_M), .CF(FOURIER_CF),
+        .G(FOURIER_G), .AT_W(REG_W)
+      ) u_fourier (
+        .clk_i(clk_i), .en_i(en), .angle_i(angle), .coef_i(words[OFF_FOURIER +: FOURIER_BUS_W]),
+        .atan_i(atan[FOURIER_AT_W-1:0]), .angle_o(angle_c));
+      // The magnitude travels beside the correction.
+      acore_delay #(.W(MAG_W), .DEPTH(FOURIER_LATENCY)) u_d_mag (
+        .clk_i(clk_i), .en_i(en), .d_i(mag), .q_o(mag_c));
+    end else begin : g_no_fourier
+      assign angle_c = angle;
+      assign mag_c = mag;
+    end
+  endgenerate
+
+  // ---- sideband: scaler overflow, region and correction overflow, aligned to the angle ----
   wire sc_ovf_d, pc_ovf_d;
   wire [RG_W-1:0] region_d;
-  acore_delay #(.W(1), .DEPTH(REGION_LATENCY + POLY_LATENCY + CORDIC_LATENCY)) u_d_scovf (
+  acore_delay #(.W(1), .DEPTH(REGION_LATENCY + POLY_LATENCY + CORDIC_LATENCY + FOURIER_LATENCY)) u_d_scovf (
     .clk_i(clk_i), .en_i(en), .d_i(sc_ovf13 | sc_ovf24), .q_o(sc_ovf_d));
-  acore_delay #(.W(RG_W), .DEPTH(POLY_LATENCY + CORDIC_LATENCY)) u_d_region (
+  acore_delay #(.W(RG_W), .DEPTH(POLY_LATENCY + CORDIC_LATENCY + FOURIER_LATENCY)) u_d_region (
     .clk_i(clk_i), .en_i(en), .d_i(region), .q_o(region_d));
-  acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY)) u_d_pcovf (
+  acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY + FOURIER_LATENCY)) u_d_pcovf (
     .clk_i(clk_i), .en_i(en), .d_i(pc_ovf13 | pc_ovf24), .q_o(pc_ovf_d));
 
   // ---- output register: status window compare ----
@@ -203,11 +248,11 @@ module acore_top #(
   reg ovf_q, los_q, dos_q;
   always @(posedge clk_i) begin
     if (en) begin
-      angle_q  <= angle;
+      angle_q  <= angle_c;
       region_q <= region_d;
       ovf_q    <= sc_ovf_d | pc_ovf_d;
-      los_q    <= mag < mag_lo_i;
-      dos_q    <= mag > mag_hi_i;
+      los_q    <= mag_c < mag_lo_i;
+      dos_q    <= mag_c > mag_hi_i;
     end
   end
 

@@ -7,4 +7,7 @@ acore_scaler.v
 acore_region_select.v
 acore_poly_correct.v
 acore_cordic.v
+acore_cordic_rotate.v
+acore_adder_tree.v
+acore_fourier_correct.v
 acore_top.v

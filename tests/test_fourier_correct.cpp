@@ -68,11 +68,11 @@ TEST(CordicRotate, TurnsClockwiseByTheAngleTimesTheGain) {
   const auto atan = cordic_atan_table(zw, m);
   const double g = cordic_rotate_gain(m);
   std::mt19937_64 rng(7);
-  std::uniform_int_distribution<int64_t> v(-(1 << 21), (1 << 21) - 1), z(-(1 << (zw - 3)), 1 << (zw - 3));
+  std::uniform_int_distribution<int64_t> v(-(1 << 21), (1 << 21) - 1), z(-(1 << (zw - 3)), (1 << (zw - 3)) - 1);
   double worst = 0;
   for (int n = 0; n < 20000; ++n) {
     const int64_t x = v(rng), y = v(rng), a = z(rng);
-    const RotateResult r = cordic_rotate(x, y, a, m, atan.data());
+    const RotateResult r = cordic_rotate(x, y, a, m, zw, atan.data());
     const double ang = 2 * M_PI * std::ldexp(static_cast<double>(a), -zw);
     const double ex = g * (x * std::cos(ang) + y * std::sin(ang)), ey = g * (y * std::cos(ang) - x * std::sin(ang));
     const double len = std::hypot(static_cast<double>(x), static_cast<double>(y));
@@ -82,6 +82,30 @@ TEST(CordicRotate, TurnsClockwiseByTheAngleTimesTheGain) {
   }
   EXPECT_LE(worst, 1.0);
   EXPECT_GT(worst, 0.05) << "the budget is not loose by orders of magnitude";
+}
+
+TEST(CordicRotate, AngleResidualFitsItsTrimmedWidthForEveryStartAngle) {
+  // The z path in plain int64 over every start angle of the pre-rotated range [-1/8, 1/8) turn:
+  // entering stage i it must fit cordic_rotate_z_width(Z_W, i) signed bits (the RTL's trimmed z).
+  for (int zw : {20, 22}) {
+    const int m = 16;
+    const auto atan = cordic_atan_table(zw, m);
+    std::vector<int64_t> lo(m, 0), hi(m, 0);
+    for (int64_t z0 = -(int64_t{1} << (zw - 3)); z0 < (int64_t{1} << (zw - 3)); ++z0) {
+      int64_t z = z0;
+      for (int i = 0; i < m; ++i) {
+        lo[i] = std::min(lo[i], z);
+        hi[i] = std::max(hi[i], z);
+        z += z >= 0 ? -atan[i] : atan[i];
+      }
+    }
+    for (int i = 0; i < m; ++i) {
+      const int64_t half = int64_t{1} << (cordic_rotate_z_width(zw, i) - 1);
+      EXPECT_GE(lo[i], -half) << "Z_W=" << zw << " stage " << i;
+      EXPECT_LT(hi[i], half) << "Z_W=" << zw << " stage " << i;
+      if (i >= 3) EXPECT_LT(std::max(-lo[i], hi[i]), half * 3 / 4) << "the 1.5x margin, stage " << i;
+    }
+  }
 }
 
 TEST(FourierCorrect, RandomFullRangeWordsStayInsideTheBudgetAtEveryAngle) {

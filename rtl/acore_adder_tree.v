@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// acore_adder_tree: the sum of N signed W-bit terms modulo 2^W, a binary tree of adders with a
+// register after every level (one carry chain per clock). Used where the sum's value is only
+// needed modulo 2^W (angles: modulo one turn) or provably fits W bits.
+//
+//   terms_i = {t_{N-1}, ..., t_1, t_0} (t_0 in the low bits) -> sum_o = (t_0 + ... + t_{N-1}) mod 2^W
+//   LATENCY = clog2(N) advancing clocks
+`resetall
+`default_nettype none
+
+module acore_adder_tree #(
+  // Number of terms, >= 2.
+  parameter integer N = 4,
+  // Width of a term and of the sum.
+  parameter integer W = 16
+) (
+  clk_i, en_i, terms_i, sum_o
+);
+
+  // Constant product by repeated addition, for widths and offsets at elaboration only.
+  function integer at_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      at_cmul = 0;
+      for (n = 0; n < b; n = n + 1) at_cmul = at_cmul + a;
+    end
+  endfunction
+
+  // Derived, do not override.
+  localparam integer LEVELS = $clog2(N);
+  localparam integer LATENCY = LEVELS;
+  localparam integer BUS_W = at_cmul(N, W);
+
+  input  wire             clk_i;
+  // Pipeline advance (the whole pipeline stalls together).
+  input  wire             en_i;
+  input  wire [BUS_W-1:0] terms_i;
+  output wire [W-1:0]     sum_o;
+
+  initial begin
+    if (N < 2) $error("acore_adder_tree: N=%0d must be >= 2 (instance %m)", N);
+  end
+
+  // Level l holds ceil(N / 2^l) partial sums; unused slots are zero.
+  wire [BUS_W-1:0] lvl [0:LEVELS];
+  assign lvl[0] = terms_i;
+
+  genvar l, k;
+  generate
+    for (l = 1; l <= LEVELS; l = l + 1) begin : g_lvl
+      localparam integer N_PREV = (N + (1 << (l - 1)) - 1) >> (l - 1);
+      localparam integer N_THIS = (N + (1 << l) - 1) >> l;
+      for (k = 0; k < N; k = k + 1) begin : g_node
+        localparam integer OFF = at_cmul(k, W);
+        localparam integer OFF_L = at_cmul(k << 1, W);
+        localparam integer OFF_R = at_cmul((k << 1) + 1, W);
+        if (k < N_THIS) begin : g_used
+          reg [W-1:0] sum_q;
+          if ((k << 1) + 1 < N_PREV) begin : g_pair
+            always @(posedge clk_i) if (en_i) sum_q <= lvl[l-1][OFF_L +: W] + lvl[l-1][OFF_R +: W];
+          end else begin : g_single
+            always @(posedge clk_i) if (en_i) sum_q <= lvl[l-1][OFF_L +: W];
+          end
+          assign lvl[l][OFF +: W] = sum_q;
+        end else begin : g_unused
+          assign lvl[l][OFF +: W] = {W{1'b0}};
+        end
+      end
+    end
+  endgenerate
+
+  assign sum_o = lvl[LEVELS][W-1:0];
+
+endmodule
+
+`resetall
