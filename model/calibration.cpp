@@ -9,6 +9,7 @@
 
 #include "cordic.hpp"
 #include "errors.hpp"
+#include "fixed_point.hpp"
 #include "float_model.hpp"
 #include "fourier_correct.hpp"
 #include "region_select.hpp"
@@ -164,13 +165,13 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
   const double gain = fourier_gain(cfg);
   for (int j = 0; j < cfg.fourier_words(); ++j) {
     const double turns = fc.fourier[j] / (2 * M_PI) / (j == 0 ? 1.0 : gain);
-    try {
-      img.set_signed(cfg.addr_fourier(j), std::llround(std::ldexp(turns, cfg.fourier_coef_f)));
-    } catch (const InputError&) {
-      throw InputError(fmt::format("fourier coefficient {} = {:.4f} deg exceeds the range of fourier_coef_f={} "
-                                   "(+-{:.4f} deg)", j, fc.fourier[j] * 180 / M_PI, cfg.fourier_coef_f,
-                                   std::ldexp(360.0, cfg.reg_w - 1 - cfg.fourier_coef_f)));
-    }
+    const long long q = std::llround(std::ldexp(turns, cfg.fourier_coef_f));
+    const int w = j == 0 ? cfg.reg_w : cfg.fourier_word_w;  // a harmonic's word: its low W bits
+    if (q > fx::smax(w) || q < fx::smin(w))
+      throw InputError(fmt::format("fourier coefficient {} = {:.4f} deg exceeds the {}-bit range of "
+                                   "fourier_coef_f={} (+-{:.4f} deg)", j, fc.fourier[j] * 180 / M_PI, w,
+                                   cfg.fourier_coef_f, std::ldexp(360.0, w - 1 - cfg.fourier_coef_f) * (j ? gain : 1)));
+    img.set_signed(cfg.addr_fourier(j), q);
   }
   return img;
 }

@@ -37,6 +37,8 @@ void DatapathConfig::validate() const {
        fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
                    fourier_iterations, iterations));
   need(z_w > angle_w, fmt::format("the Fourier correction needs z_w={} > angle_w={}", z_w, angle_w));
+  need(fourier_word_w >= 8 && fourier_word_w <= reg_w,
+       fmt::format("fourier_word_w={} must be 8..reg_w={}", fourier_word_w, reg_w));
   need(fourier_guard >= 0 && fourier_guard <= 8, fmt::format("fourier_guard={} must be 0..8", fourier_guard));
   need(fourier_f() > angle_w && fourier_f() <= 40,
        fmt::format("fourier_coef_f+fourier_guard={} must be angle_w+1={}..40", fourier_f(), angle_w + 1));
@@ -48,8 +50,8 @@ void DatapathConfig::validate() const {
 std::string DatapathConfig::describe() const {
   std::string fourier;
   if (fourier_k > 0)
-    fourier = fmt::format(" fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_guard={}", fourier_k,
-                          fourier_iterations, fourier_coef_f, fourier_guard);
+    fourier = fmt::format(" fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_word_w={} fourier_guard={}",
+                          fourier_k, fourier_iterations, fourier_coef_f, fourier_word_w, fourier_guard);
   return fmt::format(
       "in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} coef_f={} "
       "acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}{}",
@@ -81,6 +83,7 @@ const std::vector<std::pair<const char*, Field>>& rtl_param_table() {
       {"FOURIER_K", &DatapathConfig::fourier_k},
       {"FOURIER_M", &DatapathConfig::fourier_iterations},
       {"FOURIER_CF", &DatapathConfig::fourier_coef_f},
+      {"FOURIER_W", &DatapathConfig::fourier_word_w},
       {"FOURIER_G", &DatapathConfig::fourier_guard},
   };
   return t;

@@ -35,7 +35,9 @@ struct DatapathConfig {
   int fourier_k = 0;             // FOURIER_K: harmonics K; 0 = stage off (no words, no header keys)
   int fourier_iterations = 12;   // FOURIER_M: rotation-CORDIC stages per harmonic (<= iterations)
   int fourier_coef_f = 22;       // FOURIER_CF: coefficient fraction bits, in turns (word * 2^-CF turn)
-  int fourier_guard = 4;         // FOURIER_G: guard fraction bits of the rotation x/y registers
+  int fourier_word_w = 16;       // FOURIER_W: significant bits of a harmonic's word (signed; the
+                                 // register word's upper bits must repeat its sign); a_0 uses REG_W
+  int fourier_guard = 2;         // FOURIER_G: guard fraction bits of the rotation x/y registers
 
   // Derived, do not set.
   int d_w() const { return in_w + 1; }                 // D_W: c1 - c3
@@ -48,7 +50,7 @@ struct DatapathConfig {
   int words() const { return 4 + poly_words() + iterations + fourier_words(); }
   int xy_w() const { return s_w + 2 + cordic_guard; }  // XY_W: CORDIC x/y (gain 1.65 * sqrt 2)
   int fourier_f() const { return fourier_coef_f + fourier_guard; }  // FOURIER_F: Delta fraction bits (turns)
-  int fourier_xy_w() const { return reg_w + 2 + fourier_guard; }    // FOURIER_XY_W: rotation x/y
+  int fourier_xy_w() const { return fourier_word_w + 2 + fourier_guard; }  // FOURIER_XY_W: rotation x/y
 
   // Register map (DESIGN 3.2). curve 0 = sine curve c13, 1 = cosine curve c24.
   int addr_offset(int curve) const { return curve; }

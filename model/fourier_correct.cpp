@@ -14,7 +14,8 @@ int64_t fourier_harmonic(int k, uint32_t theta, int64_t a, int64_t b, const int6
   const uint64_t u = (static_cast<uint64_t>(k) * theta) & ((uint64_t{1} << A) - 1);
   const int q = static_cast<int>(((u >> (A - 2)) + ((u >> (A - 3)) & 1u)) & 3u);
   const int64_t phi = fx::sext(static_cast<int64_t>(u), A - 2);
-  const int64_t x = a * (int64_t{1} << cfg.fourier_guard), y = b * (int64_t{1} << cfg.fourier_guard);
+  const int64_t x = fx::sext(a, cfg.fourier_word_w) * (int64_t{1} << cfg.fourier_guard);
+  const int64_t y = fx::sext(b, cfg.fourier_word_w) * (int64_t{1} << cfg.fourier_guard);
   int64_t x0 = x, y0 = y;
   switch (q) {
     case 1: x0 = y, y0 = ~x; break;
@@ -56,7 +57,9 @@ double fourier_error_bound_turns(const int64_t* coef, const DatapathConfig& cfg)
   const double lsb = std::ldexp(1.0, -cfg.fourier_f());
   double bound = 0;
   for (int k = 1; k <= cfg.fourier_k; ++k) {
-    const double r = g * std::hypot(static_cast<double>(coef[2 * k - 1]), static_cast<double>(coef[2 * k])) *
+    const double r = g *
+                     std::hypot(static_cast<double>(fx::sext(coef[2 * k - 1], cfg.fourier_word_w)),
+                                static_cast<double>(fx::sext(coef[2 * k], cfg.fourier_word_w))) *
                      std::ldexp(1.0, -cfg.fourier_coef_f);
     bound += r * residual_rad + std::sqrt(2.0) * (m + 1) * g * lsb;
   }

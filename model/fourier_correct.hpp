@@ -15,11 +15,12 @@
 //   D   = ((a_0 << G) + sum_k X_k) mod 2^F          F = FOURIER_F = CF + G fraction bits of a turn
 //   angle_out = round_shr((theta << (F - A)) - D, F - A) mod 2^A
 //
-// Register words (signed REG_W, CF fraction bits of a turn): a_0, then a'_k, b'_k for k = 1..K with
-// a'_k = a_k / G_M, b'_k = b_k / G_M: the calibration divides by the rotation gain G_M, so the
-// CORDIC starts from a gain-compensated vector and needs no scaling multiplier.
-// X, Y are FOURIER_XY_W = REG_W + 2 + G bits: |(x, y)| <= sqrt 2 * 2^(REG_W-1+G) and the rotation
-// grows it by G_M < 1.65, so no register can overflow whatever the words hold.
+// Register words (CF fraction bits of a turn): a_0 (signed REG_W), then a'_k, b'_k for k = 1..K with
+// a'_k = a_k / G_M, b'_k = b_k / G_M, signed FOURIER_W (W) bits (the low W bits of the word; the
+// calibration keeps the rest a sign extension): it divides by the rotation gain G_M, so the CORDIC
+// starts from a gain-compensated vector and needs no scaling multiplier.
+// X, Y are FOURIER_XY_W = W + 2 + G bits: |(x, y)| <= sqrt 2 * 2^(W-1+G) and the rotation grows it
+// by G_M < 1.65, so no register can overflow whatever the words hold.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -28,7 +29,7 @@
 
 namespace acore {
 
-// X_k for one harmonic: coefficient words a, b (sign-extended), theta an A-bit angle.
+// X_k for one harmonic: coefficient words a, b (their low W bits count), theta an A-bit angle.
 int64_t fourier_harmonic(int k, uint32_t theta, int64_t a, int64_t b, const int64_t* atan_table,
                          const DatapathConfig& cfg);
 // D in [0, 2^F): coef = the 2K+1 sign-extended words in register order.

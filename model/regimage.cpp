@@ -36,6 +36,7 @@ std::map<std::string, int DatapathConfig::*> fourier_fields() {
   return {{"fourier_k", &DatapathConfig::fourier_k},
           {"fourier_iterations", &DatapathConfig::fourier_iterations},
           {"fourier_coef_f", &DatapathConfig::fourier_coef_f},
+          {"fourier_word_w", &DatapathConfig::fourier_word_w},
           {"fourier_guard", &DatapathConfig::fourier_guard}};
 }
 
@@ -54,7 +55,9 @@ int64_t RegImage::poly(int r, int c, int j) const {
   return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
 }
 int64_t RegImage::atan(int i) const { return static_cast<int64_t>(words.at(cfg.addr_atan(i))); }
-int64_t RegImage::fourier(int j) const { return fx::sext(words.at(cfg.addr_fourier(j)), cfg.reg_w); }
+int64_t RegImage::fourier(int j) const {
+  return fx::sext(words.at(cfg.addr_fourier(j)), j == 0 ? cfg.reg_w : cfg.fourier_word_w);
+}
 
 void RegImage::set_signed(int addr, int64_t value) {
   if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))

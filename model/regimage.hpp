@@ -22,7 +22,8 @@ struct RegImage {
   int64_t recip(int curve) const;
   int64_t poly(int region, int curve, int power) const;
   int64_t atan(int i) const;
-  int64_t fourier(int j) const;  // Fourier word j: a_0, a'_1, b'_1, ... (signed)
+  // Fourier word j: a_0 (REG_W bits), a'_1, b'_1, ... (their low fourier_word_w bits), signed.
+  int64_t fourier(int j) const;
   void set_signed(int addr, int64_t value);  // throws InputError when value does not fit REG_W
   void set_unsigned(int addr, int64_t value);
 };

@@ -9,15 +9,17 @@
 //   u_k = (k theta) mod 2^A                           shift-add of theta (acore_shift_add_mul)
 //   q = u[A-1:A-2] + u[A-3], phi = u[A-3:0] signed    u = q quarter turns + phi, |phi| <= 1/8 turn
 //   (x, y) = (a'_k, b'_k) << G turned clockwise by q quarter turns, -v as ~v (no adder):
+//            (a'_k, b'_k: the low W bits of their words, signed)
 //            q = 0: (x, y)   1: (y, ~x)   2: (~x, ~y)   3: (~y, x)
 //   X_k = acore_cordic_rotate(x, y, phi << (Z_W - A))  ~= (a_k cos k theta + b_k sin k theta) << G
 //   D   = ((a_0 << G) + sum_k X_k) mod 2^F             F = CF + G fraction bits of a turn
 //   angle_o = round_shr((theta << (F - A)) - D, F - A) mod 2^A
 //
-// The words are a_0 and a'_k = a_k / G_M, b'_k = b_k / G_M (CF fraction bits of a turn): the rotation
-// gain G_M < 1.65 is compensated in the start vector by the calibration, so there is no scaling
-// multiplier. |(x, y)| <= sqrt 2 2^(REG_W-1+G) and the rotation grows it by G_M, below 2.33 2^(REG_W-1+G),
-// so XY_W = REG_W + 2 + G bits hold any register contents. D and the output are modulo a turn.
+// The words are a_0 (REG_W bits) and a'_k = a_k / G_M, b'_k = b_k / G_M (W bits), CF fraction bits of
+// a turn: the rotation gain G_M < 1.65 is compensated in the start vector by the calibration, so
+// there is no scaling multiplier. |(x, y)| <= sqrt 2 2^(W-1+G) and the rotation grows it by G_M,
+// below 2.33 2^(W-1+G), so XY_W = W + 2 + G bits hold any register contents. D and the output are
+// modulo a turn.
 //
 //   clocks: KL (k theta, clog2(KB) adder levels) + 1 (quadrant, start vector) + M (rotation)
 //           + clog2(K+1) (sum) + 1 (round and subtract) = LATENCY
@@ -37,8 +39,10 @@ module acore_fourier_correct #(
   parameter integer M = 12,
   // Coefficient fraction bits, in turns (word * 2^-CF turn).
   parameter integer CF = 22,
+  // Significant bits of a harmonic's word (signed, the low W bits of the REG_W word).
+  parameter integer W = 16,
   // Guard fraction bits of the rotation x/y registers.
-  parameter integer G = 4,
+  parameter integer G = 2,
   // Width of one arctangent word on atan_i.
   parameter integer AT_W = 18
 ) (
@@ -61,7 +65,7 @@ module acore_fourier_correct #(
   localparam integer AT_BUS_W = fc_cmul(M, AT_W);
   localparam integer F = CF + G;                              // fraction bits of D (turns)
   localparam integer S = F - ANGLE_W;                         // rounding shift of the output
-  localparam integer XY_W = REG_W + 2 + G;
+  localparam integer XY_W = W + 2 + G;
   localparam integer KB = ($clog2(K + 1) > 2) ? $clog2(K + 1) : 2;  // bits of the constant k
   localparam integer KL = $clog2(KB);                         // adder levels of k theta
   localparam integer TL = $clog2(K + 1);                      // adder levels of the sum
@@ -83,7 +87,8 @@ module acore_fourier_correct #(
     if (K < 1 || K > 31) $error("acore_fourier_correct: K=%0d must be 1..31 (instance %m)", K);
     if (S < 1) $error("acore_fourier_correct: CF+G=%0d must exceed ANGLE_W=%0d (instance %m)", F, ANGLE_W);
     if (CF < REG_W - 1) $error("acore_fourier_correct: CF=%0d must be >= REG_W-1 (instance %m)", CF);
-    if (Z_W < ANGLE_W || ANGLE_W < 4) $error("acore_fourier_correct: need 4 <= ANGLE_W <= Z_W (instance %m)");
+    if (Z_W <= ANGLE_W || ANGLE_W < 4) $error("acore_fourier_correct: need 4 <= ANGLE_W < Z_W (instance %m)");
+    if (W < 8 || W > REG_W) $error("acore_fourier_correct: W=%0d must be 8..REG_W (instance %m)", W);
   end
 
   // ---- per harmonic: k theta, quadrant and start vector, rotation ----
@@ -111,8 +116,8 @@ module acore_fourier_correct #(
       // Start vector (a'_k, b'_k) << G.
       localparam integer OFF_A = fc_cmul((k << 1) - 1, REG_W);
       localparam integer OFF_B = fc_cmul(k << 1, REG_W);
-      wire [XY_W-1:0] xa = {{2{coef_i[OFF_A + REG_W - 1]}}, coef_i[OFF_A +: REG_W], {G{1'b0}}};
-      wire [XY_W-1:0] yb = {{2{coef_i[OFF_B + REG_W - 1]}}, coef_i[OFF_B +: REG_W], {G{1'b0}}};
+      wire [XY_W-1:0] xa = {{2{coef_i[OFF_A + W - 1]}}, coef_i[OFF_A +: W], {G{1'b0}}};
+      wire [XY_W-1:0] yb = {{2{coef_i[OFF_B + W - 1]}}, coef_i[OFF_B +: W], {G{1'b0}}};
       reg [XY_W-1:0] x0_q, y0_q;
       reg [Z_W-3:0]  z0_q;
       always @(posedge clk_i) begin

@@ -49,11 +49,13 @@ module acore_top #(
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
   // Angle-domain Fourier correction after the CORDIC: harmonics (0 = none), rotation stages per
-  // harmonic (<= K), coefficient fraction bits (turns), guard bits of the rotations.
+  // harmonic (<= K), coefficient fraction bits (turns), significant bits of a harmonic's word, guard
+  // bits of the rotations.
   parameter integer FOURIER_K = 0,
   parameter integer FOURIER_M = 12,
   parameter integer FOURIER_CF = 22,
-  parameter integer FOURIER_G = 4,
+  parameter integer FOURIER_W = 16,
+  parameter integer FOURIER_G = 2,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
@@ -131,9 +133,9 @@ module acore_top #(
     if (FOURIER_K < 0 || FOURIER_K > 31) $error("acore_top: FOURIER_K=%0d must be 0..31 (instance %m)", FOURIER_K);
     if (FOURIER_K > 0 && (FOURIER_M < 4 || FOURIER_M > K))
       $error("acore_top: FOURIER_M=%0d must be 4..K (instance %m)", FOURIER_M);
-    if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 ||
-                          FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
-      $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
+    if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 || FOURIER_W < 8 ||
+                          FOURIER_W > REG_W || FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
+      $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, 8 <= FOURIER_W <= REG_W, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
     if (WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
   end
 
@@ -219,7 +221,7 @@ module acore_top #(
       localparam integer FOURIER_AT_W = top_cmul(FOURIER_M, REG_W);
       acore_fourier_correct #(
         .ANGLE_W(ANGLE_W), .REG_W(REG_W), .Z_W(Z_W), .K(FOURIER_K), .M(FOURIER_M), .CF(FOURIER_CF),
-        .G(FOURIER_G), .AT_W(REG_W)
+        .W(FOURIER_W), .G(FOURIER_G), .AT_W(REG_W)
       ) u_fourier (
         .clk_i(clk_i), .en_i(en), .angle_i(angle), .coef_i(words[OFF_FOURIER +: FOURIER_BUS_W]),
         .atan_i(atan[FOURIER_AT_W-1:0]), .angle_o(angle_c));

@@ -4,16 +4,22 @@
 #   generic `synth` cell counts, `synth_ice40` LUT4/DFF/carry + nextpnr-ice40 Fmax on an HX8K
 #   (ct256), `synth_xilinx` (xc7) LUT/FF/DSP, for the top and for the 16-bit CORDIC alone,
 #   and the summary table synth/reports/summary.md.
-# usage: scripts/synth.sh [-j N]   (runs N Yosys/nextpnr jobs in parallel, default 1)
+# usage: scripts/synth.sh [-j N] [DESIGN ...]   (N Yosys/nextpnr jobs in parallel, default 1; with
+# DESIGNs, e.g. `fourier fourier_pnr`, only those are redone and the other reports are kept)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=1
-[ "${1:-}" = "-j" ] && jobs=${2:-1}
+if [ "${1:-}" = "-j" ]; then jobs=${2:-1}; shift 2; fi
+only=("$@")
 syn=$root/synth
 build=$syn/build
 rep=$syn/reports
 mkdir -p "$build" "$rep"
-rm -f "$rep"/generic_*.txt "$rep"/ice40_*.txt "$rep"/xilinx_*.txt "$rep"/*.log "$rep"/summary.md  # no stale reports
+if [ ${#only[@]} -eq 0 ]; then  # no stale reports
+  rm -f "$rep"/generic_*.txt "$rep"/ice40_*.txt "$rep"/xilinx_*.txt "$rep"/*.log "$rep"/summary.md
+else
+  for d in "${only[@]}"; do rm -f "$rep"/{generic,ice40,xilinx}_"$d".txt "$rep/nextpnr_$d.log"; done
+fi
 freq=150  # nextpnr target clock, MHz (Fmax is reported whether or not it is met)
 
 # The 16-bit CORDIC configuration and its arctangent table (model/cordic.cpp cordic_atan_table:
@@ -54,6 +60,9 @@ TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $r
 c16_chparam="chparam"
 for k in IN_W G Z_W ANGLE_W K AT_W NORM SPLIT; do c16_chparam+=" -set $k ${C16[$k]}"; done
 TOP[cordic16_bus]=acore_cordic;     READ[cordic16_bus]="read_verilog -sv $root/rtl/acore_cordic.v"$'\n'"$c16_chparam acore_cordic"
+# The Fourier correction with 21 harmonics (area), and 4 of them placed in a pin wrapper (Fmax).
+TOP[fourier]=acore_fourier_correct; READ[fourier]="$rtl_reads"$'\n'"chparam -set K 21 -set M 12 acore_fourier_correct"
+TOP[fourier_pnr]=acore_fourier_pinwrap; READ[fourier_pnr]="$stage_reads"
 
 run_yosys() {  # run_yosys FLOW DESIGN
   local flow=$1 d=$2
@@ -75,12 +84,24 @@ run_pnr() {  # run_pnr DESIGN
   echo "nextpnr $d: done"
 }
 
+selected() {  # selected DESIGN: in the DESIGN list of the command line (or no list given)
+  [ ${#only[@]} -eq 0 ] && return 0
+  local o
+  for o in "${only[@]}"; do [ "$o" = "$1" ] && return 0; done
+  return 1
+}
+for d in "${only[@]}"; do [ -n "${TOP[$d]:-}" ] || { echo "synth.sh: unknown design '$d'"; exit 2; }; done
 tasks=()
-for d in top cordic16 cordic16_bus; do tasks+=("run_yosys generic $d" "run_yosys xilinx $d"); done
-for d in top cordic16 cordic16_bus; do tasks+=("run_yosys ice40 $d"); done
+area_designs=()
+for d in top cordic16 cordic16_bus fourier; do selected "$d" && area_designs+=("$d"); done
+for d in "${area_designs[@]}"; do tasks+=("run_yosys generic $d" "run_yosys xilinx $d"); done
+for d in "${area_designs[@]}"; do tasks+=("run_yosys ice40 $d"); done
 export -f run_yosys run_pnr
 # ice40 netlists for place and route first (nextpnr needs them), then everything else in parallel.
-pnr_designs=(cordic16 top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr)
+pnr_designs=()
+for d in cordic16 top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr fourier_pnr; do
+  selected "$d" && pnr_designs+=("$d")
+done
 for d in "${pnr_designs[@]}"; do run_yosys ice40 "$d"; done
 running=0
 for d in "${pnr_designs[@]}"; do

@@ -91,4 +91,34 @@ module acore_cordic_top_pinwrap (
     .angle_o(angle_o), .mag_o(mag_o));
 endmodule
 
+// The Fourier correction (acore_fourier_correct.v) with the top's widths (ANGLE_W 16, REG_W 18,
+// Z_W 20) and FOURIER_M = 12. The full 21-harmonic stage needs more logic cells than an HX8K has, so
+// P&R places K harmonics (default 4): every register-to-register path lies inside one harmonic's
+// pipeline (k theta, start vector, rotation stages), the adder tree or the output subtraction, and
+// each of those is the same for any K but for the tree's depth (one adder per clock regardless).
+module acore_fourier_pinwrap #(
+  // Harmonics placed.
+  parameter integer K = 4
+) (
+  input  wire        clk_i,
+  input  wire        sdi_i,
+  input  wire        shift_i,
+  input  wire        en_i,
+  output wire [15:0] angle_o
+);
+  localparam integer NC = ((K << 1) + 1) * 18;
+  localparam integer SR_W = 16 + NC + 12 * 18;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  acore_fourier_correct #(
+    .ANGLE_W(16), .REG_W(18), .Z_W(20), .K(K), .M(12), .CF(22), .W(16), .G(2), .AT_W(18)
+  ) u_stage (
+    .clk_i(clk_i), .en_i(en_q), .angle_i(sr_q[15:0]), .coef_i(sr_q[16 +: NC]), .atan_i(sr_q[16 + NC +: 12 * 18]),
+    .angle_o(angle_o));
+endmodule
+
 `resetall

@@ -114,9 +114,11 @@ TEST(FourierCorrect, RandomFullRangeWordsStayInsideTheBudgetAtEveryAngle) {
   for (int k : {1, 5, 13}) {
     const DatapathConfig cfg = fourier_config(k);
     std::mt19937_64 rng(100 + k);
-    std::uniform_int_distribution<int64_t> w(-(1 << (cfg.reg_w - 1)), (1 << (cfg.reg_w - 1)) - 1);
     std::vector<int64_t> words(cfg.fourier_words());
-    for (auto& x : words) x = w(rng);
+    for (size_t j = 0; j < words.size(); ++j) {
+      const int w = j == 0 ? cfg.reg_w : cfg.fourier_word_w;  // a_0: REG_W bits, harmonics: W bits
+      words[j] = std::uniform_int_distribution<int64_t>(-(1 << (w - 1)), (1 << (w - 1)) - 1)(rng);
+    }
     const StageError s = sweep_stage(words, cfg);
     EXPECT_GE(s.worst_margin, 0.0) << "K=" << k << " max error " << s.max_deg << " deg";
     // Rounding to ANGLE_W adds half an LSB to the bound (in LSBs: bound * 2^ANGLE_W + 0.5).
