@@ -7,7 +7,8 @@
 
 namespace acore {
 
-RotateResult cordic_rotate(int64_t x, int64_t y, int64_t z, int stages, int z_w, const int64_t* atan_table) {
+RotateResult cordic_rotate(int64_t x, int64_t y, int64_t z, int stages, int z_w,
+                           const int64_t* atan_table) {
   for (int i = 0; i < stages; ++i) {
     z = fx::sext(z, cordic_rotate_z_width(z_w, i));
     const int64_t xs = x >> i, ys = y >> i;

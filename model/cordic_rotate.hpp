@@ -26,7 +26,8 @@ struct RotateResult {
 };
 
 // z: signed, |z| < 2^(Z_W-3). The atan words are REG_W-bit unsigned register words.
-RotateResult cordic_rotate(int64_t x, int64_t y, int64_t z, int stages, int z_w, const int64_t* atan_table);
+RotateResult cordic_rotate(int64_t x, int64_t y, int64_t z, int stages, int z_w,
+                           const int64_t* atan_table);
 
 // ZW(i), the width of z entering stage i (i = 0..M-1).
 inline int cordic_rotate_z_width(int z_w, int i) { return i <= 2 ? z_w - 2 : z_w - i; }
