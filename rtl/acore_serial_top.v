@@ -125,18 +125,21 @@ module acore_serial_top #(
   localparam integer W = st_max(st_max(st_max(P_SC_W, P_H_W), st_max(Y_W, XY_W + 1)),
                                 st_max(st_max(MAG_W + 1, Z_W), st_max(REG_W + 1, S_W + 2)));
   localparam integer MEM_W = st_max(REG_W, S_W);
-  // Shifter range: left up to LS (scaling and Horner partial products, coefficient alignment,
-  // CORDIC guard bits), right up to MAXR (partial products, roundings, CORDIC stages).
-  localparam integer LS = st_max(st_max(REG_W - 1 - RS, S_W - 1 - S_F), st_max(st_max(ACC_G, CORDIC_G), 0));
+  // Shifter range: left up to LS (scaling and Horner partial products, the latter with the
+  // coefficient alignment ACC_G folded in for the first Horner step; CORDIC guard bits), right up
+  // to MAXR (partial products, roundings, CORDIC stages).
+  localparam integer LS = st_max(st_max(REG_W - 1 - RS, S_W - 1 - S_F + ACC_G), CORDIC_G);
   localparam integer MAXR = st_max(st_max(st_max(RS, S_F), st_max(SCALE_G, RN)),
                                    st_max(st_max(DROP, CORDIC_G), K - 1));
   localparam integer SHA_W = $clog2(LS + MAXR + 1);
   localparam integer BI_W = $clog2(st_max(REG_W, S_W));
   localparam integer NCOEF = st_cmul(REGIONS << 1, DEGREE + 1);
 
-  // Clocks per sample: from the accepting clock to out_valid_o, and between accepts (see the
-  // schedule in acore_serial_ctrl.v). The testbench reads it (rtl/verilator.vlt).
-  localparam integer CYCLES = 18 + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 1) + st_cmul(3, K);
+  // Clocks per sample (between two accepts at full rate) and from the accepting clock to
+  // out_valid_o (see the schedule in acore_serial_ctrl.v). The testbench reads both
+  // (rtl/verilator.vlt).
+  localparam integer CYCLES = 22 + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 2) + st_cmul(3, K);
+  localparam integer LATENCY = CYCLES + 1;
 
   initial begin
     if (IN_W < 8 || IN_W > 24) $error("acore_serial_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
@@ -159,10 +162,12 @@ module acore_serial_top #(
   localparam integer DA_W = $clog2(WORDS + 3);
 
   // ---- sequencer ----
-  wire en, dp_read, ram_we, region_we, neg_we, dir_push, dir_pop, los_we, dos_we, out_we;
-  wire a_half, acc_we, t1_we, t2_we, ovf_clr, use13;
+  wire en, dp_read, ram_we;
+  wire a_half, t1_mv, t2_mv, t2_mv_src;
+  wire a_acc, acc_we, t1_we, t2_we, t2_we_u13, ovf_clr, region_we, neg_we;
+  wire los_we, dos_we, out_we;
   wire [2:0] a_sel, b_sel, sub_sel;
-  wire [1:0] q_ext, gate_sel, cin_sel, sat_sel, t1_src, t2_src;
+  wire [1:0] q_ext, gate_sel, t1_mv_src, cin_sel, sat_sel;
   wire [SHA_W-1:0] sh_amt;
   wire [BI_W-1:0] bit_idx;
   wire [DA_W-1:0] raddr, waddr;
@@ -174,13 +179,15 @@ module acore_serial_top #(
   ) u_ctrl (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),
     .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .host_we_i(reg_we_i),
-    .region_i(region), .use13_i(use13), .en_o(en),
+    .region_i(region), .en_o(en),
     .a_sel_o(a_sel), .a_half_o(a_half), .b_sel_o(b_sel), .q_ext_o(q_ext), .sh_amt_o(sh_amt),
-    .gate_sel_o(gate_sel), .bit_idx_o(bit_idx), .sub_sel_o(sub_sel), .cin_sel_o(cin_sel),
-    .sat_sel_o(sat_sel), .acc_we_o(acc_we), .t1_we_o(t1_we), .t1_src_o(t1_src), .t2_we_o(t2_we),
-    .t2_src_o(t2_src), .ovf_clr_o(ovf_clr), .region_we_o(region_we), .neg_we_o(neg_we),
-    .dir_push_o(dir_push), .dir_pop_o(dir_pop), .los_we_o(los_we), .dos_we_o(dos_we),
-    .out_we_o(out_we), .dp_read_o(dp_read), .raddr_o(raddr), .ram_we_o(ram_we), .waddr_o(waddr));
+    .gate_sel_o(gate_sel), .bit_idx_o(bit_idx), .t1_mv_o(t1_mv), .t1_mv_src_o(t1_mv_src),
+    .t2_mv_o(t2_mv), .t2_mv_src_o(t2_mv_src), .sub_sel_o(sub_sel), .cin_sel_o(cin_sel),
+    .a_acc_o(a_acc), .sat_sel_o(sat_sel),
+    .acc_we_o(acc_we), .t1_we_o(t1_we), .t2_we_o(t2_we), .t2_we_u13_o(t2_we_u13),
+    .ovf_clr_o(ovf_clr), .region_we_o(region_we), .neg_we_o(neg_we),
+    .los_we_o(los_we), .dos_we_o(dos_we), .out_we_o(out_we),
+    .dp_read_o(dp_read), .raddr_o(raddr), .ram_we_o(ram_we), .waddr_o(waddr));
 
   // ---- coefficient RAM with the scratch words ----
   wire [MEM_W-1:0] q, wdata;
@@ -197,16 +204,18 @@ module acore_serial_top #(
   wire ovf, los, dos;
   acore_serial_datapath #(
     .IN_W(IN_W), .REG_W(REG_W), .MEM_W(MEM_W), .S_W(S_W), .ACC_W(ACC_W), .Z_W(Z_W),
-    .ANGLE_W(ANGLE_W), .K(K), .REGIONS(REGIONS), .W(W), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W)
+    .ANGLE_W(ANGLE_W), .REGIONS(REGIONS), .W(W), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W)
   ) u_dp (
     .clk_i(clk_i), .en_i(en), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
     .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i), .q_i(q),
     .a_sel_i(a_sel), .a_half_i(a_half), .b_sel_i(b_sel), .q_ext_i(q_ext), .sh_amt_i(sh_amt),
-    .gate_sel_i(gate_sel), .bit_idx_i(bit_idx), .sub_sel_i(sub_sel), .cin_sel_i(cin_sel),
-    .sat_sel_i(sat_sel), .acc_we_i(acc_we), .t1_we_i(t1_we), .t1_src_i(t1_src), .t2_we_i(t2_we),
-    .t2_src_i(t2_src), .ovf_clr_i(ovf_clr), .region_we_i(region_we), .neg_we_i(neg_we),
-    .dir_push_i(dir_push), .dir_pop_i(dir_pop), .los_we_i(los_we), .dos_we_i(dos_we),
-    .out_we_i(out_we), .wdata_o(wdata), .region_o(region), .use13_o(use13),
+    .gate_sel_i(gate_sel), .bit_idx_i(bit_idx), .t1_mv_i(t1_mv), .t1_mv_src_i(t1_mv_src),
+    .t2_mv_i(t2_mv), .t2_mv_src_i(t2_mv_src), .sub_sel_i(sub_sel), .cin_sel_i(cin_sel),
+    .a_acc_i(a_acc), .sat_sel_i(sat_sel),
+    .acc_we_i(acc_we), .t1_we_i(t1_we), .t2_we_i(t2_we), .t2_we_u13_i(t2_we_u13),
+    .ovf_clr_i(ovf_clr), .region_we_i(region_we), .neg_we_i(neg_we),
+    .los_we_i(los_we), .dos_we_i(dos_we), .out_we_i(out_we),
+    .wdata_o(wdata), .region_o(region),
     .angle_o(angle), .out_region_o(out_region), .ovf_o(ovf), .los_o(los), .dos_o(dos));
 
   assign angle_o  = angle & {ANGLE_W{out_valid_o}};

@@ -82,6 +82,7 @@ DatapathConfig rtl_serial_config() {
 }
 
 int RtlSerialHarness::cycles_per_sample() { return static_cast<int>(ACORE_SERIAL_PUB::CYCLES); }
+int RtlSerialHarness::latency() { return static_cast<int>(ACORE_SERIAL_PUB::LATENCY); }
 
 RtlSerialHarness::RtlSerialHarness(const std::string& trace, int rand_reset, uint64_t seed)
     : impl_(new Impl) {

@@ -113,35 +113,36 @@ std::vector<ChannelCodes> paper_codes(const RegImage& img, size_t n) {
 }
 
 TEST(CosimSerial, CyclesIsTheNamedLocalparam) {
-  // The schedule of rtl/acore_serial_ctrl.v, counted state by state: 18 single clocks, the two
-  // scaling products (REG_W each), the two Horner evaluations (DEGREE steps of S_W bits + 1 add),
-  // the CORDIC (2 per iteration for X/Y, 1 for Z).
+  // The schedule of rtl/acore_serial_ctrl.v, counted state by state: 22 single clocks, the two
+  // scaling products (REG_W each), the two Horner evaluations (DEGREE steps of S_W bits, an add and
+  // a wait), the CORDIC (Y, X, Z per iteration). The result comes one clock after the core is idle.
   const DatapathConfig& c = cfg();
-  const int expected = 18 + 2 * c.reg_w + 2 * c.degree * (c.s_w + 1) + 3 * c.iterations;
+  const int expected = 22 + 2 * c.reg_w + 2 * c.degree * (c.s_w + 2) + 3 * c.iterations;
   EXPECT_EQ(RtlSerialHarness::cycles_per_sample(), expected);
-  if (c.describe() == DatapathConfig{}.describe()) EXPECT_EQ(expected, 216);
-  // Measured: accept one sample, count clocks until out_valid.
+  EXPECT_EQ(RtlSerialHarness::latency(), expected + 1);
+  if (c.describe() == DatapathConfig{}.describe()) EXPECT_EQ(expected, 226);
+  // Measured: accept one sample, count clocks until in_ready and out_valid rise.
   RtlSerialHarness h;
   h.reset();
   h.load(identity_image());
   h.drive(true, {1000, 2000, 0, 0}, true);
   ASSERT_TRUE(h.in_ready());
   h.tick();
-  int n = 1;
   h.drive(false, {0, 0, 0, 0}, true);
-  EXPECT_FALSE(h.in_ready());
-  while (!h.out_valid() && n < 100000) {
-    EXPECT_FALSE(h.in_ready()) << n;
+  int ready_at = 0, valid_at = 0;
+  for (int n = 1; n < 100000 && !valid_at; ++n) {
+    if (!ready_at && h.in_ready()) ready_at = n;
+    if (h.out_valid()) valid_at = n;
     h.tick();
-    ++n;
   }
-  EXPECT_EQ(n, RtlSerialHarness::cycles_per_sample());
-  EXPECT_TRUE(h.in_ready());  // idle again in the clock the result appears
+  EXPECT_EQ(ready_at, RtlSerialHarness::cycles_per_sample());
+  EXPECT_EQ(valid_at, RtlSerialHarness::latency());
 }
 
 TEST(CosimSerial, OneSampleEveryCyclesClocks) {
-  // No gaps, no backpressure: sample k is taken at clock k CYCLES, so n samples take n CYCLES + 1
-  // clocks in RtlSerialHarness::stream (the last result is collected before its final tick).
+  // No gaps, no backpressure: sample k is taken at clock k CYCLES and appears LATENCY clocks later,
+  // so n samples take (n-1) CYCLES + LATENCY + 1 clocks in RtlSerialHarness::stream (the last
+  // result is collected before its final tick).
   const RegImage img = identity_image();
   const auto in = paper_codes(img, 300);
   RtlSerialHarness h;
@@ -151,7 +152,8 @@ TEST(CosimSerial, OneSampleEveryCyclesClocks) {
   std::mt19937_64 rng(1);
   const auto out = h.stream(in, 0.0, 0.0, rng);
   EXPECT_EQ(out.size(), in.size());
-  EXPECT_EQ(h.cycles() - start, in.size() * RtlSerialHarness::cycles_per_sample() + 1);
+  EXPECT_EQ(h.cycles() - start,
+            (in.size() - 1) * RtlSerialHarness::cycles_per_sample() + RtlSerialHarness::latency() + 1);
   EXPECT_EQ(mismatches(out, FixedModel(img), in, "identity image"), 0u);
 }
 
@@ -271,7 +273,7 @@ TEST(CosimSerial, HostPortWhileComputing) {
   h.drive_host(0, false, 0);
   EXPECT_EQ(mismatches(out, FixedModel(img), in, "host port while computing"), 0u);
   const uint64_t clocks = h.cycles() - start;
-  const uint64_t ideal = in.size() * RtlSerialHarness::cycles_per_sample();
+  const uint64_t ideal = (in.size() - 1) * RtlSerialHarness::cycles_per_sample() + RtlSerialHarness::latency() + 1;
   EXPECT_GE(clocks, ideal);
   EXPECT_LE(clocks, ideal + writes + 1);
   EXPECT_GT(clocks, ideal);  // some writes met a scratch write
