@@ -4,36 +4,37 @@
 // rtl/acore_top.v and model/fixed_model.cpp (pre-filter, scaling, domain selection, Horner
 // correction, CORDIC, status flags), one sample every CYCLES clocks.
 //
-//   pins c1..c4 --> [ A mux ]--------------------+
-//                   [ B mux ]--> shifter --> gate/negate --> ADDER --> saturate --> ACC, T1, T2
-//                       ^                                                     \--> scratch words
-//   RAM (coefficients + 3 scratch words, one read port) --> Q                 \--> angle, flags
-//   acore_serial_ctrl: one operation per clock (schedule in acore_serial_ctrl.v)
+//   pins c1, mag_lo/hi, Q, T1, T2 --> A_q ----------------------------+
+//   pins c3, Q, T1, T2, ACC --> shifter --> B_q --> gate/negate --> ADDER --> saturate --> ACC
+//                                                                          \--> T1, T2, flags
+//   RAM: coefficients + 3 scratch words (s13, s24, y13), one read port -> Q  <-- scratch writes
+//   acore_serial_ctrl: one operation per clock, each in two stages (schedule in acore_serial_ctrl.v)
 //
-// Besides ACC, T1 and T2 (W bits) the core keeps the sample's small state in flops: region (2-3
-// bits), the x choice, the pre-rotation sign, the CORDIC direction history (K bits), ovf/LOS/DOS,
-// and the output registers; the three S_W-bit intermediates s13, s24 and y13 live in scratch words
-// of the coefficient RAM.
+// Variables live in ACC, T1, T2 (W bits) and the scratch words; A_q and B_q are the pipeline's
+// operand registers (copies, so the adder and the shifter are in different clocks). Besides them
+// the core keeps the sample's small state in flops: region (2-3 bits), the x choice, the
+// pre-rotation sign, ovf/LOS/DOS, and the output registers.
 //
 // Streaming: in_ready_o is high while the core is idle; a sample is taken when in_valid_i &&
-// in_ready_o, in_ready_o drops the next clock and the result appears on out_valid_o exactly CYCLES
-// clocks after the accepting clock; the core is idle (in_ready_o high) in that same clock, so with
-// in_valid_i and out_ready_i high it takes one sample every CYCLES clocks. A result is held until
-// out_ready_i; a finished next sample waits for it (the core stalls in its last clock).
+// in_ready_o, in_ready_o drops the next clock and returns CYCLES clocks after the accepting clock;
+// the result appears on out_valid_o LATENCY = CYCLES + 1 clocks after it. With in_valid_i and
+// out_ready_i high the core takes one sample every CYCLES clocks. A result is held until
+// out_ready_i; the next result waits for it (the core stalls in its last clock, in_ready_o low).
 //
-//   clk         _/‾\_/‾\_/‾\_/‾\_ ... _/‾\_/‾\_/‾\_
-//   in_valid_i  ‾‾‾‾‾‾‾\___________ ...  ‾‾‾‾‾‾‾‾‾‾‾
-//   in_ready_o  ‾‾‾‾‾‾‾\___________ ... _/‾‾‾‾‾\____
-//   c*_i        =X S0  X=========== ...  X S1  X====
-//   out_valid_o ___________________ ... _/‾‾‾‾‾‾‾‾‾‾   (CYCLES clocks after S0 is taken)
-//   angle_o                             =X A0  X====
+//   clk         _/‾\_/‾\_/‾\_/‾\_ ... _/‾\_/‾\_/‾\_/‾\_
+//   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾ ... ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾
+//   in_ready_o  ‾‾‾‾‾‾‾\__________ ... ___/‾‾‾‾‾\_______    (high again CYCLES clocks after S0)
+//   c*_i        =X S0  X========== ... ===X S1  X=======
+//   out_valid_o ___________________ ... _________/‾‾‾‾‾‾   (LATENCY clocks after S0 is taken)
+//   angle_o                                      =X A0 X
 //
 // Register port: the same map and host port as acore_top (synchronous write; read-back one clock
-// after the address). The RAM has one read port: the host reads while the core is idle (in
-// the clock of the address in_ready_o is high); while a sample is computed the datapath owns it and
-// reg_rdata_o reads zero. A host write always happens; in the two clocks a sample writes a scratch
-// word, a simultaneous host write delays the sample by one clock (the ports never collide).
-// Writing coefficients while a sample is in flight gives that sample a mix of old and new words.
+// after the address). The RAM has one read port: the host reads while the core is idle (in_ready_o
+// high in the clock of the address); while a sample is computed the datapath owns it and
+// reg_rdata_o reads zero. A host write always happens at once; in the two clocks a sample writes a
+// scratch word (stage 2 of RND and of the first HY), a simultaneous host write delays the sample by
+// one clock. Writing coefficients while a sample is in flight gives that sample a mix of old and
+// new words.
 //
 // Only control flops are reset (rst_i synchronous, active high); the outputs are forced to zero
 // while out_valid_o is low.
