@@ -5,8 +5,9 @@
 #include "rtl_serial_engine.hpp"
 
 #include <verilated.h>
-#include <type_traits>
 #include <verilated_fst_c.h>
+
+#include <type_traits>
 
 #include ACORE_SERIAL_HDR
 #include ACORE_SERIAL_PUB_HDR
@@ -154,7 +155,8 @@ void RtlSerialHarness::load(const RegImage& img) {
   for (size_t a = 0; a < img.words.size(); ++a) write_reg(static_cast<int>(a), img.words[a]);
   for (size_t a = 0; a < img.words.size(); ++a)
     if (read_reg(static_cast<int>(a)) != img.words[a])
-      throw CheckFailed("serial RTL register " + std::to_string(a) + " read back differs from the image");
+      throw CheckFailed("serial RTL register " + std::to_string(a) +
+                        " read back differs from the image");
 }
 
 uint64_t RtlSerialHarness::read_reg(int addr) {
@@ -211,7 +213,8 @@ std::vector<FixedSample> RtlSerialHarness::stream(const std::vector<ChannelCodes
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const bool random = gaps > 0 || backpressure > 0;
   size_t next = 0;
-  const uint64_t limit = impl_->cycles + 1000 + 100 * (in.size() + 1) * static_cast<uint64_t>(cycles_per_sample());
+  const uint64_t limit =
+      impl_->cycles + 1000 + 100 * (in.size() + 1) * static_cast<uint64_t>(cycles_per_sample());
   while (out.size() < in.size()) {
     const bool valid = next < in.size() && (!random || gaps <= 0 || u(rng) >= gaps);
     const bool ready = !random || backpressure <= 0 || u(rng) >= backpressure;
@@ -227,8 +230,9 @@ std::vector<FixedSample> RtlSerialHarness::stream(const std::vector<ChannelCodes
 std::vector<FixedSample> run_rtl_serial(const RegImage& img, const std::vector<ChannelCodes>& in,
                                         const RtlRunOptions& opt) {
   if (img.cfg.describe() != rtl_serial_config().describe())
-    throw InputError("the serial RTL engine is built for the configuration (" + rtl_serial_config().describe() +
-                     "), the register image has " + img.cfg.describe());
+    throw InputError("the serial RTL engine is built for the configuration (" +
+                     rtl_serial_config().describe() + "), the register image has " +
+                     img.cfg.describe());
   RtlSerialHarness h(opt.trace, 2, opt.seed);
   h.set_window(opt.window ? *opt.window : StatusWindow::defaults(img.cfg));
   h.reset();

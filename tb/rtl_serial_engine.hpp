@@ -62,8 +62,8 @@ class RtlSerialHarness {
   uint64_t cycles() const;
 
   // Streams `in` with random gaps/backpressure from rng and collects every output in order.
-  std::vector<FixedSample> stream(const std::vector<ChannelCodes>& in, double gaps, double backpressure,
-                                  std::mt19937_64& rng);
+  std::vector<FixedSample> stream(const std::vector<ChannelCodes>& in, double gaps,
+                                  double backpressure, std::mt19937_64& rng);
   // Clocks per sample (CYCLES) and from the accepting clock to out_valid (LATENCY) of
   // rtl/acore_serial_top.v (Verilator public parameters).
   static int cycles_per_sample();

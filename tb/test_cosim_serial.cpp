@@ -25,7 +25,8 @@ namespace {
 
 std::string show(const FixedSample& s) {
   char b[96];
-  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf, s.los, s.dos);
+  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf,
+                s.los, s.dos);
   return b;
 }
 
@@ -38,9 +39,9 @@ size_t mismatches(const std::vector<FixedSample>& rtl, const FixedModel& model,
     const FixedSample m = model.step(in[i]);
     if (!(rtl[i] == m)) {
       if (bad == 0)
-        ADD_FAILURE() << what << ": first mismatch at sample " << i << " (c = " << in[i][0] << ", " << in[i][1]
-                      << ", " << in[i][2] << ", " << in[i][3] << "): rtl " << show(rtl[i]) << ", model "
-                      << show(m);
+        ADD_FAILURE() << what << ": first mismatch at sample " << i << " (c = " << in[i][0] << ", "
+                      << in[i][1] << ", " << in[i][2] << ", " << in[i][3] << "): rtl "
+                      << show(rtl[i]) << ", model " << show(m);
       ++bad;
     }
   }
@@ -152,8 +153,8 @@ TEST(CosimSerial, OneSampleEveryCyclesClocks) {
   std::mt19937_64 rng(1);
   const auto out = h.stream(in, 0.0, 0.0, rng);
   EXPECT_EQ(out.size(), in.size());
-  EXPECT_EQ(h.cycles() - start,
-            (in.size() - 1) * RtlSerialHarness::cycles_per_sample() + RtlSerialHarness::latency() + 1);
+  EXPECT_EQ(h.cycles() - start, (in.size() - 1) * RtlSerialHarness::cycles_per_sample() +
+                                    RtlSerialHarness::latency() + 1);
   EXPECT_EQ(mismatches(out, FixedModel(img), in, "identity image"), 0u);
 }
 
@@ -273,7 +274,8 @@ TEST(CosimSerial, HostPortWhileComputing) {
   h.drive_host(0, false, 0);
   EXPECT_EQ(mismatches(out, FixedModel(img), in, "host port while computing"), 0u);
   const uint64_t clocks = h.cycles() - start;
-  const uint64_t ideal = (in.size() - 1) * RtlSerialHarness::cycles_per_sample() + RtlSerialHarness::latency() + 1;
+  const uint64_t ideal =
+      (in.size() - 1) * RtlSerialHarness::cycles_per_sample() + RtlSerialHarness::latency() + 1;
   EXPECT_GE(clocks, ideal);
   EXPECT_LE(clocks, ideal + writes + 1);
   EXPECT_GT(clocks, ideal);  // some writes met a scratch write

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `anglecore cosim`: the Verilated RTL against the bit-accurate model, sample by sample (DESIGN 3.3).
+// `anglecore cosim`: the Verilated RTL against the bit-accurate model, sample by sample
+// (DESIGN 3.3).
 // --engine rtl (default) runs the pipelined top, rtl-serial the serial core. Built only with the
 // RTL (ACORE_WITH_RTL); exit 1 on any mismatch.
 #ifdef ACORE_WITH_RTL
@@ -59,9 +60,10 @@ void run_cosim(const CosimArgs& a) {
                             {"mismatches", bad},
                             {"first_mismatch", first},
                             {"engine", engine_name(engine)}};
-  std::cout << fmt::format("cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", codes.size(),
-                           bad, engine == Engine::Rtl ? "RTL" : "serial RTL",
-                           a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
+  std::cout << fmt::format(
+      "cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", codes.size(), bad,
+      engine == Engine::Rtl ? "RTL" : "serial RTL",
+      a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
   if (!a.trace.empty()) std::cout << "waveform: " << a.trace << "\n";
   write_json(a.json, j);
   if (bad) throw CheckFailed(fmt::format("{} of {} samples differ; first at index {}", bad, codes.size(),

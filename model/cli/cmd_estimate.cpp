@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `anglecore estimate`: run one engine (float, fixed, rtl, rtl-serial) on a recording and report the
-// error.
+// `anglecore estimate`: run one engine (float, fixed, rtl, rtl-serial) on a recording and report
+// the error.
 #include <fmt/format.h>
 
 #include <fstream>

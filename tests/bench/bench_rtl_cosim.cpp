@@ -2,7 +2,8 @@
 // Verilated RTL throughput (samples per wall second, one core, tracing off): the RTL engine alone
 // (run_rtl: register load + stream), the RTL at random stalls, and RTL + bit-accurate model compare
 // (what `anglecore cosim` does); the same for the serial core (run_rtl_serial, 226 clocks a sample,
-// on the first 20000 samples). Run: build/tests/bench/bench_rtl_cosim --benchmark_counters_tabular=true
+// on the first 20000 samples). Run: build/tests/bench/bench_rtl_cosim
+// --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include "calibration.hpp"
@@ -54,17 +55,21 @@ void BM_CosimCompare(benchmark::State& state) {
 }
 BENCHMARK(BM_CosimCompare)->Unit(benchmark::kMillisecond);
 
-std::vector<acore::ChannelCodes> serial_inputs() { return {setup().in.begin(), setup().in.begin() + 20000}; }
+std::vector<acore::ChannelCodes> serial_inputs() {
+  return {setup().in.begin(), setup().in.begin() + 20000};
+}
 
 void BM_RtlSerialEngine(benchmark::State& state) {
   const Setup& s = setup();
   const auto in = serial_inputs();
-  for (auto _ : state) benchmark::DoNotOptimize(acore::run_rtl_serial(s.img, in, acore::RtlRunOptions{}));
-  state.counters["samples/s"] =
-      benchmark::Counter(static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
-  state.counters["clocks/s"] = benchmark::Counter(
-      static_cast<double>(in.size()) * acore::RtlSerialHarness::cycles_per_sample() * state.iterations(),
-      benchmark::Counter::kIsRate);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(acore::run_rtl_serial(s.img, in, acore::RtlRunOptions{}));
+  state.counters["samples/s"] = benchmark::Counter(
+      static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["clocks/s"] =
+      benchmark::Counter(static_cast<double>(in.size()) *
+                             acore::RtlSerialHarness::cycles_per_sample() * state.iterations(),
+                         benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RtlSerialEngine)->Unit(benchmark::kMillisecond);
 
@@ -78,8 +83,8 @@ void BM_SerialCosimCompare(benchmark::State& state) {
     for (size_t i = 0; i < in.size(); ++i) bad += !(rtl[i] == model.step(in[i]));
   }
   if (bad) state.SkipWithError("serial RTL and model differ");
-  state.counters["samples/s"] =
-      benchmark::Counter(static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["samples/s"] = benchmark::Counter(
+      static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SerialCosimCompare)->Unit(benchmark::kMillisecond);
 
