@@ -53,9 +53,12 @@
 `default_nettype none
 
 module acore_serial_ctrl #(
+  // Register word width (bits of the amplitude reciprocal R the scaling scans).
   parameter integer REG_W = 18,
+  // Curve width and fraction bits (bits of x the Horner steps scan; their shifts).
   parameter integer S_W = 18,
   parameter integer S_F = 16,
+  // Polynomial degree, regions (4 or 8), CORDIC iterations.
   parameter integer DEGREE = 3,
   parameter integer REGIONS = 4,
   parameter integer K = 16,

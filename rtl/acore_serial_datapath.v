@@ -26,14 +26,17 @@
 `default_nettype none
 
 module acore_serial_datapath #(
+  // Channel code width, register word width, RAM word width (max(REG_W, S_W)).
   parameter integer IN_W = 16,
   parameter integer REG_W = 18,
-  // RAM word width (max(REG_W, S_W)).
   parameter integer MEM_W = 18,
+  // Curve width (S_W saturation) and Horner accumulator width (ACC_W saturation).
   parameter integer S_W = 18,
   parameter integer ACC_W = 25,
+  // CORDIC angle accumulator width (half a turn = 2^(Z_W-1)) and output angle width.
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
+  // 4 or 8 regions.
   parameter integer REGIONS = 4,
   // Datapath width, left shift range of the shifter, shift amount and bit index widths.
   parameter integer W = 29,
