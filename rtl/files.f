@@ -8,3 +8,7 @@ acore_region_select.v
 acore_poly_correct.v
 acore_cordic.v
 acore_top.v
+acore_serial_ram.v
+acore_serial_datapath.v
+acore_serial_ctrl.v
+acore_serial_top.v

@@ -33,6 +33,7 @@ check unknown-sub 2 "$bin" frobnicate
 check missing-regs 2 "$bin" estimate --in "$tmp/val.csv"
 check bad-engine 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine quantum
 expect_text bad-engine-msg "$tmp/err" "quantum"
+expect_text bad-engine-choices "$tmp/err" "rtl-serial"
 check bad-degree 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --degree 9
 check bad-regions 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --regions 6
 check missing-file 2 "$bin" calibrate --in "$tmp/nope.csv" --out "$tmp/x.hex"
