@@ -6,5 +6,6 @@ acore_prefilter.v
 acore_scaler.v
 acore_region_select.v
 acore_poly_correct.v
+acore_poly2d_correct.v
 acore_cordic.v
 acore_top.v
