@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+
 #include "errors.hpp"
 
 namespace acore {
@@ -84,6 +86,68 @@ std::string DatapathConfig::describe() const {
       "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}",
       correction_name(correction), in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions,
       xcenter, coef_f, acc_guard, acc_int, iterations, cordic_guard, z_w, angle_w);
+}
+
+namespace {
+// RTL parameter name -> field. One table, so the model, the named configurations (rtl/configs.txt)
+// and the synthesis sweep cannot disagree on a name.
+using Field = int DatapathConfig::*;
+const std::vector<std::pair<const char*, Field>>& rtl_param_table() {
+  static const std::vector<std::pair<const char*, Field>> t = {
+      {"IN_W", &DatapathConfig::in_w},
+      {"REG_W", &DatapathConfig::reg_w},
+      {"S_W", &DatapathConfig::s_w},
+      {"S_F", &DatapathConfig::s_f},
+      {"R_SHIFT", &DatapathConfig::r_shift},
+      {"SCALE_G", &DatapathConfig::scale_guard},
+      {"DEGREE", &DatapathConfig::degree},
+      {"REGIONS", &DatapathConfig::regions},
+      {"COEF_F", &DatapathConfig::coef_f},
+      {"ACC_G", &DatapathConfig::acc_guard},
+      {"ACC_I", &DatapathConfig::acc_int},
+      {"K", &DatapathConfig::iterations},
+      {"CORDIC_G", &DatapathConfig::cordic_guard},
+      {"Z_W", &DatapathConfig::z_w},
+      {"ANGLE_W", &DatapathConfig::angle_w},
+  };
+  return t;
+}
+}  // namespace
+
+std::vector<std::pair<std::string, int>> DatapathConfig::rtl_params() const {
+  std::vector<std::pair<std::string, int>> v;
+  for (const auto& [name, field] : rtl_param_table()) v.emplace_back(name, this->*field);
+  return v;
+}
+
+DatapathConfig DatapathConfig::with_rtl_params(const std::string& overrides) const {
+  DatapathConfig c = *this;
+  std::istringstream in(overrides);
+  std::string tok;
+  while (in >> tok) {
+    const auto eq = tok.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == tok.size())
+      throw InputError(fmt::format("RTL parameter '{}': expected NAME=value", tok));
+    const std::string name = tok.substr(0, eq), value = tok.substr(eq + 1);
+    Field field = nullptr;
+    for (const auto& [n, f] : rtl_param_table())
+      if (name == n) field = f;
+    if (!field) {
+      std::string known;
+      for (const auto& [n, f] : rtl_param_table()) known += std::string(known.empty() ? "" : ", ") + n;
+      throw InputError(fmt::format("RTL parameter '{}' is unknown (known: {})", name, known));
+    }
+    size_t used = 0;
+    int v = 0;
+    try {
+      v = std::stoi(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != value.size()) throw InputError(fmt::format("RTL parameter {}: '{}' is not an integer", name, value));
+    c.*field = v;
+  }
+  return c;
 }
 
 }  // namespace acore

@@ -4,6 +4,8 @@
 // README's "Fixed-point contract" section documents the same numbers.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace acore {
 
@@ -69,6 +71,13 @@ struct DatapathConfig {
   // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
   void validate() const;
   std::string describe() const;  // "degree=3 regions=4 iterations=16 ..." for headers and logs
+
+  // Every field as its RTL parameter (name in upper case as in rtl/acore_top.v, value), in the
+  // order of the top's parameter list.
+  std::vector<std::pair<std::string, int>> rtl_params() const;
+  // A copy with RTL parameter overrides applied, e.g. "DEGREE=5 REGIONS=8" (a named configuration
+  // line of rtl/configs.txt). Throws InputError naming an unknown parameter or a malformed token.
+  DatapathConfig with_rtl_params(const std::string& overrides) const;
 };
 
 // The default configuration with the CORDIC sized for an ANGLE_W-bit output (README "CORDIC width

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # verilator --lint-only -Wall over rtl/: every module in rtl/files.f as the top (default
-# parameters), the top with the waivers of rtl/verilator.vlt, and the named non-default
-# configurations (8 regions, degree 5, the 16-bit normalizing CORDIC of rtl/cordic16.cfg). Exit 1 on any warning.
+# parameters), with the waivers of rtl/verilator.vlt; the top in every named configuration of
+# rtl/configs.txt; the 16-bit normalizing CORDIC of rtl/cordic16.cfg. Exit 1 on any warning.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root/rtl"
@@ -20,7 +20,11 @@ for f in "${files[@]}"; do
   m=$(basename "$f" .v)
   run "$m" --top-module "$m"
 done
-run "acore_top REGIONS=8 DEGREE=5" --top-module acore_top -GREGIONS=8 -GDEGREE=5
+while read -r name params; do
+  gargs=()
+  for p in $params; do gargs+=("-G$p"); done
+  run "acore_top config $name" --top-module acore_top "${gargs[@]}"
+done < <(grep -E '^[a-z]' configs.txt)
 mapfile -t c16 < <(grep -E '^[A-Z_]+=' cordic16.cfg | sed 's/^/-G/')
 run "acore_cordic cordic16.cfg" --top-module acore_cordic "${c16[@]}"
 exit $fail

@@ -4,45 +4,70 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
-#include "Vacore_top.h"
-#include "Vacore_top_acore_top.h"
 #include "errors.hpp"
+#include "rtl_builds.hpp"
 
 namespace acore {
 
+
+namespace {
+std::string available_builds() {
+  std::string s;
+  for (const RtlBuild& b : rtl_builds()) s += "\n  " + b.name + ": " + b.config().describe();
+  return s;
+}
+}  // namespace
+
+const RtlBuild& rtl_build_for(const DatapathConfig& cfg) {
+  for (const RtlBuild& b : rtl_builds())
+    if (b.config().describe() == cfg.describe()) return b;
+  throw InputError("no Verilated build of the RTL has the configuration " + cfg.describe() +
+                   "; add it to rtl/configs.txt and rebuild. Available:" + available_builds());
+}
+
+const RtlBuild& rtl_build_named(const std::string& name) {
+  for (const RtlBuild& b : rtl_builds())
+    if (b.name == name) return b;
+  throw InputError("no Verilated build of the RTL is named '" + name + "'. Available:" + available_builds());
+}
+
 struct RtlHarness::Impl {
   std::unique_ptr<VerilatedContext> ctx;
-  std::unique_ptr<Vacore_top> top;
+  std::unique_ptr<RtlPins> top;
   std::unique_ptr<VerilatedFstC> tfp;
   uint64_t cycles = 0;
-  DatapathConfig cfg = rtl_config();
+  DatapathConfig cfg;
+  int latency = 0;
   void eval() {
     top->eval();
     if (tfp) tfp->dump(ctx->time());
   }
 };
 
-DatapathConfig rtl_config() { return DatapathConfig{}; }
+int RtlHarness::latency() const { return impl_->latency; }
+const DatapathConfig& RtlHarness::config() const { return impl_->cfg; }
 
-int RtlHarness::latency() { return static_cast<int>(Vacore_top_acore_top::LATENCY); }
-
-RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed) : impl_(new Impl) {
+RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed, const DatapathConfig& cfg)
+    : impl_(new Impl) {
+  const RtlBuild& build = rtl_build_for(cfg);
+  impl_->cfg = cfg;
+  impl_->latency = build.latency;
   impl_->ctx = std::make_unique<VerilatedContext>();
   impl_->ctx->randReset(rand_reset);
   impl_->ctx->randSeed(static_cast<int>(seed & 0x7fffffff));
   if (!trace.empty()) impl_->ctx->traceEverOn(true);
-  impl_->top = std::make_unique<Vacore_top>(impl_->ctx.get(), "acore_top");
+  impl_->top = build.make(impl_->ctx.get(), "acore_top");
   if (!trace.empty()) {
     impl_->tfp = std::make_unique<VerilatedFstC>();
-    impl_->top->trace(impl_->tfp.get(), 99);
+    impl_->top->trace(impl_->tfp.get());
     impl_->tfp->open(trace.c_str());
   }
-  Vacore_top& t = *impl_->top;
-  t.clk_i = 0;
-  t.rst_i = 0;
-  t.reg_we_i = 0;
-  t.in_valid_i = 0;
-  t.out_ready_i = 1;
+  RtlPins& t = *impl_->top;
+  t.set_clk(false);
+  t.set_rst(false);
+  t.set_reg(0, 0, false);
+  t.set_in(false, {0, 0, 0, 0}, 0);
+  t.set_out_ready(true);
   set_window(StatusWindow::defaults(impl_->cfg));
   impl_->eval();
 }
@@ -54,10 +79,10 @@ RtlHarness::~RtlHarness() {
 
 void RtlHarness::tick() {
   Impl& m = *impl_;
-  m.top->clk_i = 1;
+  m.top->set_clk(true);
   m.ctx->timeInc(1);
   m.eval();
-  m.top->clk_i = 0;
+  m.top->set_clk(false);
   m.ctx->timeInc(1);
   m.eval();
   ++m.cycles;
@@ -66,7 +91,7 @@ void RtlHarness::tick() {
 uint64_t RtlHarness::cycles() const { return impl_->cycles; }
 
 void RtlHarness::set_reset(bool rst) {
-  impl_->top->rst_i = rst;
+  impl_->top->set_rst(rst);
   impl_->eval();
 }
 
@@ -78,66 +103,49 @@ void RtlHarness::reset(int cycles) {
 }
 
 void RtlHarness::load(const RegImage& img) {
-  Vacore_top& t = *impl_->top;
+  RtlPins& t = *impl_->top;
   for (size_t a = 0; a < img.words.size(); ++a) {
-    t.reg_addr_i = static_cast<CData>(a);
-    t.reg_wdata_i = static_cast<IData>(img.words[a]);
-    t.reg_we_i = 1;
+    t.set_reg(static_cast<uint32_t>(a), img.words[a], true);
     impl_->eval();
     tick();
   }
-  t.reg_we_i = 0;
+  t.set_reg(0, 0, false);
   for (size_t a = 0; a < img.words.size(); ++a)
     if (read_reg(static_cast<int>(a)) != img.words[a])
       throw CheckFailed("RTL register " + std::to_string(a) + " read back differs from the image");
 }
 
 uint64_t RtlHarness::read_reg(int addr) {
-  Vacore_top& t = *impl_->top;
-  t.reg_we_i = 0;
-  t.reg_addr_i = static_cast<CData>(addr);
+  RtlPins& t = *impl_->top;
+  t.set_reg(static_cast<uint32_t>(addr), 0, false);
   impl_->eval();
   tick();
-  return t.reg_rdata_o;
+  return t.reg_rdata();
 }
 
 void RtlHarness::set_window(const StatusWindow& w) {
   const int64_t max = (int64_t{1} << (impl_->cfg.s_w + 2)) - 1;
   if (w.mag_lo < 0 || w.mag_hi < 0 || w.mag_lo > max || w.mag_hi > max)
     throw InputError("status window outside the RTL's unsigned MAG_W-bit ports");
-  impl_->top->mag_lo_i = static_cast<IData>(w.mag_lo);
-  impl_->top->mag_hi_i = static_cast<IData>(w.mag_hi);
+  impl_->top->set_window(static_cast<uint64_t>(w.mag_lo), static_cast<uint64_t>(w.mag_hi));
 }
 
 void RtlHarness::drive(bool in_valid, const ChannelCodes& c, bool out_ready) {
-  Vacore_top& t = *impl_->top;
-  const uint32_t mask = (uint32_t{1} << impl_->cfg.in_w) - 1;
-  t.in_valid_i = in_valid;
-  t.c1_i = static_cast<SData>(static_cast<uint32_t>(c[0]) & mask);
-  t.c2_i = static_cast<SData>(static_cast<uint32_t>(c[1]) & mask);
-  t.c3_i = static_cast<SData>(static_cast<uint32_t>(c[2]) & mask);
-  t.c4_i = static_cast<SData>(static_cast<uint32_t>(c[3]) & mask);
-  t.out_ready_i = out_ready;
+  RtlPins& t = *impl_->top;
+  const uint32_t mask = static_cast<uint32_t>((uint64_t{1} << impl_->cfg.in_w) - 1);
+  t.set_in(in_valid, c, mask);
+  t.set_out_ready(out_ready);
   t.eval();  // settle in_ready_o, which depends on out_ready_i
 }
 
-bool RtlHarness::in_ready() const { return impl_->top->in_ready_o; }
-bool RtlHarness::out_valid() const { return impl_->top->out_valid_o; }
+bool RtlHarness::in_ready() const { return impl_->top->in_ready(); }
+bool RtlHarness::out_valid() const { return impl_->top->out_valid(); }
 
-FixedSample RtlHarness::output() const {
-  const Vacore_top& t = *impl_->top;
-  FixedSample s;
-  s.angle = t.angle_o;
-  s.region = t.region_o;
-  s.ovf = t.ovf_o;
-  s.los = t.los_o;
-  s.dos = t.dos_o;
-  return s;
-}
+FixedSample RtlHarness::output() const { return impl_->top->output(); }
 
 bool RtlHarness::outputs_zero() const {
-  const Vacore_top& t = *impl_->top;
-  return t.angle_o == 0 && t.region_o == 0 && !t.ovf_o && !t.los_o && !t.dos_o;
+  const FixedSample s = impl_->top->output();
+  return s.angle == 0 && s.region == 0 && !s.ovf && !s.los && !s.dos;
 }
 
 std::vector<FixedSample> RtlHarness::stream(const std::vector<ChannelCodes>& in, double gaps,
@@ -162,10 +170,7 @@ std::vector<FixedSample> RtlHarness::stream(const std::vector<ChannelCodes>& in,
 
 std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelCodes>& in,
                                  const RtlRunOptions& opt) {
-  if (img.cfg.describe() != rtl_config().describe())
-    throw InputError("the RTL engine is built for the default configuration (" + rtl_config().describe() +
-                     "), the register image has " + img.cfg.describe());
-  RtlHarness h(opt.trace, 2, opt.seed);
+  RtlHarness h(opt.trace, 2, opt.seed, img.cfg);
   h.set_window(opt.window ? *opt.window : StatusWindow::defaults(img.cfg));
   h.reset();
   h.load(img);

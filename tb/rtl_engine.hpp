@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The Verilated RTL (rtl/acore_top.v, default configuration) as an engine beside the float and
-// bit-accurate models: run_rtl() loads a register image through the register write port, streams
-// the samples with optional random input gaps and output backpressure, and returns one FixedSample
-// per input (angle, region, ovf, los, dos; the model-only fields stay zero).
+// The Verilated RTL (rtl/acore_top.v) as an engine beside the float and bit-accurate models:
+// run_rtl() picks the build of the register image's configuration (rtl/configs.txt, see
+// rtl_builds.hpp), loads the image through the register write port, streams the samples with
+// optional random input gaps and output backpressure, and returns one FixedSample per input
+// (angle, region, ovf, los, dos; the model-only fields stay zero).
 // RtlHarness is the pin-level driver underneath, for testbenches (reset mid-stream, reprogramming).
 #pragma once
 #include <cstdint>
@@ -25,18 +26,17 @@ struct RtlRunOptions {
   std::optional<StatusWindow> window;  // mag_lo/mag_hi; default StatusWindow::defaults(cfg)
 };
 
-// Throws InputError when the image's configuration is not the one the RTL was built with.
+// Throws InputError when no Verilated build has the image's configuration.
 std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelCodes>& in,
                                  const RtlRunOptions& opt);
-
-// The configuration the Verilated model was built with (the RTL defaults).
-DatapathConfig rtl_config();
 
 class RtlHarness {
  public:
   // trace: FST file ("" = none). rand_reset: Verilated::randReset mode for the initial state
-  // (2 = random, proving that outputs are valid-gated).
-  explicit RtlHarness(const std::string& trace = "", int rand_reset = 2, uint64_t seed = 1);
+  // (2 = random, proving that outputs are valid-gated). cfg: which build (rtl_build_for; throws
+  // InputError when none has it).
+  explicit RtlHarness(const std::string& trace = "", int rand_reset = 2, uint64_t seed = 1,
+                      const DatapathConfig& cfg = DatapathConfig{});
   ~RtlHarness();
   RtlHarness(const RtlHarness&) = delete;
   RtlHarness& operator=(const RtlHarness&) = delete;
@@ -63,8 +63,9 @@ class RtlHarness {
   // Streams `in` with random gaps/backpressure from rng and collects every output in order.
   std::vector<FixedSample> stream(const std::vector<ChannelCodes>& in, double gaps, double backpressure,
                                   std::mt19937_64& rng);
-  // The pipeline latency: LATENCY of rtl/acore_top.v (Verilator public parameter).
-  static int latency();
+  // The pipeline latency: LATENCY of this build of rtl/acore_top.v (Verilator public parameter).
+  int latency() const;
+  const DatapathConfig& config() const;
 
  private:
   struct Impl;

@@ -116,8 +116,8 @@ TEST(Cosim, LatencyIsTheNamedLocalparam) {
     h.tick();
     ++n;
   }
-  EXPECT_EQ(n, RtlHarness::latency());
-  EXPECT_EQ(RtlHarness::latency(), 55);  // 1 + 8 + 2 + 25 + 18 + 1 at the defaults
+  EXPECT_EQ(n, h.latency());
+  EXPECT_EQ(h.latency(), 55);  // 1 + 8 + 2 + 25 + 18 + 1 at the defaults
 }
 
 TEST(Cosim, OneSamplePerClock) {
@@ -131,7 +131,7 @@ TEST(Cosim, OneSamplePerClock) {
   std::mt19937_64 rng(1);
   const auto out = h.stream(in, 0.0, 0.0, rng);
   EXPECT_EQ(out.size(), in.size());
-  EXPECT_EQ(h.cycles() - start, in.size() + RtlHarness::latency());
+  EXPECT_EQ(h.cycles() - start, in.size() + h.latency());
 }
 
 TEST(Cosim, PaperScenarioMillionSamples) {
