@@ -18,7 +18,7 @@ int parse_correction(const std::string& name);  // throws InputError
 
 // poly2d: the second argument v is the other curve's distance from the region's centre +-1, read
 // by the multiplier as 2^kVShift v (a shift of its partial products), so that its range
-// (|v| <~ 0.35 on real sensors) is close to x's and the coefficients stay in Q3.15.
+// (|v| <= 0.35 on the paper scenario) is close to x's and the coefficients stay in Q3.15.
 constexpr int kVShift = 2;
 
 struct DatapathConfig {

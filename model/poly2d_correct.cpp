@@ -16,7 +16,7 @@ int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathCon
   const int64_t g = int64_t{1} << cfg.acc_guard;
   const int v_shift = cfg.s_f - kVShift;
   // Q_i(v) for every power i of x (the RTL computes them side by side).
-  int64_t q[4];
+  int64_t q[4] = {0, 0, 0, 0};  // d <= 3
   for (int i = 0; i <= d; ++i) {
     int64_t acc = coef[cfg.term2d(i, d - i)] * g;
     for (int j = d - i - 1; j >= 0; --j) {

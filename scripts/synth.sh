@@ -4,16 +4,22 @@
 #   generic `synth` cell counts, `synth_ice40` LUT4/DFF/carry + nextpnr-ice40 Fmax on an HX8K
 #   (ct256), `synth_xilinx` (xc7) LUT/FF/DSP, for the top and for the 16-bit CORDIC alone,
 #   and the summary table synth/reports/summary.md.
-# usage: scripts/synth.sh [-j N]   (runs N Yosys/nextpnr jobs in parallel, default 1)
+# usage: scripts/synth.sh [-j N] [DESIGN...]   (N Yosys/nextpnr jobs in parallel, default 1; with
+# DESIGNs, e.g. poly2d_pnr, only those are redone and the summary rebuilt from all reports)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=1
-[ "${1:-}" = "-j" ] && jobs=${2:-1}
+if [ "${1:-}" = "-j" ]; then jobs=${2:-1}; shift 2; fi
+only=("$@")
 syn=$root/synth
 build=$syn/build
 rep=$syn/reports
 mkdir -p "$build" "$rep"
-rm -f "$rep"/generic_*.txt "$rep"/ice40_*.txt "$rep"/xilinx_*.txt "$rep"/*.log "$rep"/summary.md  # no stale reports
+if [ ${#only[@]} -eq 0 ]; then
+  rm -f "$rep"/generic_*.txt "$rep"/ice40_*.txt "$rep"/xilinx_*.txt "$rep"/*.log "$rep"/summary.md  # no stale reports
+else
+  for d in "${only[@]}"; do rm -f "$rep"/{generic,ice40,xilinx}_"$d".txt "$rep"/nextpnr_"$d".log; done
+fi
 freq=150  # nextpnr target clock, MHz (Fmax is reported whether or not it is met)
 
 # The 16-bit CORDIC configuration and its arctangent table (model/cordic.cpp cordic_atan_table:
@@ -48,6 +54,7 @@ TOP[top_pnr]=acore_top_pinwrap;     READ[top_pnr]="$rtl_reads"$'\n'"read_verilog
 stage_reads="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_stage_pinwrap.v"
 TOP[scaler_pnr]=acore_scaler_pinwrap;      READ[scaler_pnr]="$stage_reads"
 TOP[poly_pnr]=acore_poly_pinwrap;          READ[poly_pnr]="$stage_reads"
+TOP[poly2d_pnr]=acore_poly2d_pinwrap;      READ[poly2d_pnr]="$stage_reads"
 TOP[region_pnr]=acore_region_pinwrap;      READ[region_pnr]="$stage_reads"
 TOP[cordic_top_pnr]=acore_cordic_top_pinwrap; READ[cordic_top_pnr]="$stage_reads"
 TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $root/rtl/acore_cordic.v $syn/acore_cordic16.v"
@@ -75,22 +82,31 @@ run_pnr() {  # run_pnr DESIGN
   echo "nextpnr $d: done"
 }
 
+selected() {  # selected DESIGN: true when no design list was given or DESIGN is in it
+  [ ${#only[@]} -eq 0 ] && return 0
+  local d
+  for d in "${only[@]}"; do [ "$d" = "$1" ] && return 0; done
+  return 1
+}
 tasks=()
-for d in top cordic16 cordic16_bus; do tasks+=("run_yosys generic $d" "run_yosys xilinx $d"); done
-for d in top cordic16 cordic16_bus; do tasks+=("run_yosys ice40 $d"); done
+for d in top cordic16 cordic16_bus; do selected "$d" && tasks+=("run_yosys generic $d" "run_yosys xilinx $d"); done
+for d in top cordic16 cordic16_bus; do selected "$d" && tasks+=("run_yosys ice40 $d"); done
 export -f run_yosys run_pnr
 # ice40 netlists for place and route first (nextpnr needs them), then everything else in parallel.
-pnr_designs=(cordic16 top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr)
-for d in "${pnr_designs[@]}"; do run_yosys ice40 "$d"; done
+pnr_designs=()
+for d in cordic16 top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr cordic_top_pnr; do
+  selected "$d" && pnr_designs+=("$d")
+done
+for d in ${pnr_designs[@]+"${pnr_designs[@]}"}; do run_yosys ice40 "$d"; done
 running=0
-for d in "${pnr_designs[@]}"; do
+for d in ${pnr_designs[@]+"${pnr_designs[@]}"}; do
   run_pnr "$d" &
   running=$((running + 1))
   if [ "$running" -ge "$jobs" ]; then wait -n; running=$((running - 1)); fi
 done
 wait
 running=0
-for t in "${tasks[@]}"; do
+for t in ${tasks[@]+"${tasks[@]}"}; do
   $t &
   running=$((running + 1))
   if [ "$running" -ge "$jobs" ]; then wait -n; running=$((running - 1)); fi
