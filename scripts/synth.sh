@@ -55,6 +55,7 @@ stage_reads="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_stage_pinwrap.v"
 TOP[scaler_pnr]=acore_scaler_pinwrap;      READ[scaler_pnr]="$stage_reads"
 TOP[poly_pnr]=acore_poly_pinwrap;          READ[poly_pnr]="$stage_reads"
 TOP[poly2d_pnr]=acore_poly2d_pinwrap;      READ[poly2d_pnr]="$stage_reads"
+TOP[poly2d1_pnr]=acore_poly2d_pinwrap;     READ[poly2d1_pnr]="$stage_reads"$'\n'"chparam -set DEGREE 1 acore_poly2d_pinwrap"
 TOP[region_pnr]=acore_region_pinwrap;      READ[region_pnr]="$stage_reads"
 TOP[cordic_top_pnr]=acore_cordic_top_pinwrap; READ[cordic_top_pnr]="$stage_reads"
 TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $root/rtl/acore_cordic.v $syn/acore_cordic16.v"
@@ -94,7 +95,7 @@ for d in top cordic16 cordic16_bus; do selected "$d" && tasks+=("run_yosys ice40
 export -f run_yosys run_pnr
 # ice40 netlists for place and route first (nextpnr needs them), then everything else in parallel.
 pnr_designs=()
-for d in cordic16 top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr cordic_top_pnr; do
+for d in cordic16 top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr; do
   selected "$d" && pnr_designs+=("$d")
 done
 for d in ${pnr_designs[@]+"${pnr_designs[@]}"}; do run_yosys ice40 "$d"; done
