@@ -27,7 +27,9 @@ double correction_u(double x, int xcenter) {
   return 2 * (x >= 0 ? x - 0.375 : x + 0.375);
 }
 
-double correction_v(double y_other) { return std::ldexp(y_other >= 0 ? y_other - 1 : y_other + 1, kVShift); }
+double correction_v(double y_other) {
+  return std::ldexp(y_other >= 0 ? y_other - 1 : y_other + 1, kVShift);
+}
 
 void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out) {
   const double u = correction_u(x, shape.xcenter);
@@ -81,8 +83,10 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
   // The fit must see the whole electrical turn: every 10-degree sector of p * theta_ref.
   const int covered = turn_sectors_covered(rec.theta_ref, opt.periodicity);
   if (covered < 36)
-    throw InputError(fmt::format("calibration: theta_ref covers only {} of the 36 ten-degree sectors "
-                                 "of a turn; record at least one full turn", covered));
+    throw InputError(
+        fmt::format("calibration: theta_ref covers only {} of the 36 ten-degree sectors "
+                    "of a turn; record at least one full turn",
+                    covered));
   fc.poly.assign(static_cast<size_t>(opt.regions) * 2 * terms, 0.0);
 
   // Scaling: offset = mean, amplitude = sqrt(2/N sum (c - O)^2)  (Eq. 4).
@@ -185,8 +189,8 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
           throw InputError(fmt::format(
               "polynomial coefficient region {} curve {} {}^{} = {:.4f} exceeds the Q{}.{} range: "
               "lower --coef-frac",
-              r, c ? "c24" : "c13", cfg.correction == kPoly2d ? "term" : "x", j, v, cfg.reg_w - cfg.coef_f,
-              cfg.coef_f));
+              r, c ? "c24" : "c13", cfg.correction == kPoly2d ? "term" : "x", j, v,
+              cfg.reg_w - cfg.coef_f, cfg.coef_f));
         }
       }
   const auto table = cordic_atan_table(cfg.z_w, cfg.iterations);

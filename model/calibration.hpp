@@ -44,7 +44,8 @@ double correction_v(double y_other);
 // Every term's basis value at (x, y_other) in the register map's order (1-D: u^j; 2-D: u^i v^j).
 void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out);
 // P_region,curve(x, y_other) in double, by (nested) Horner like the datapath.
-double correction_poly(const FloatCoefficients& fc, int region, int curve, double x, double y_other);
+double correction_poly(const FloatCoefficients& fc, int region, int curve, double x,
+                       double y_other);
 
 // Throws InputError when the recording has no theta_ref or too few samples in a region.
 FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt);

@@ -35,7 +35,7 @@ struct DatapathConfig {
   int correction = 0;  // CORRECTION: kPoly (1-D in x), kPoly2d (2-D in x and v), kNone (no words)
   int degree = 3;      // DEGREE: polynomial degree n (poly: 1..7), total degree d (poly2d: 1..3)
   int regions = 4;     // REGIONS: 4 or 8
-  int xcenter = 0;     // XCENTER (8 regions only): the argument is u = 2 (x -+ 3/8), centred in its half
+  int xcenter = 0;     // XCENTER (8 regions): polynomials in u = 2 (x -+ 3/8)
   int coef_f = 15;    // COEF_F: fraction bits of a polynomial coefficient (REG_W wide, signed)
   int acc_guard = 4;  // ACC_G: guard fraction bits of the Horner accumulator
   int acc_int = 6;    // ACC_I: integer bits (incl. sign) of the Horner accumulator
@@ -81,10 +81,10 @@ struct DatapathConfig {
 };
 
 // The default configuration with the CORDIC sized for an ANGLE_W-bit output (README "CORDIC width
-// options"): 8..16 -> K=16, CORDIC_G=3, Z_W=20, REG_W=18 (the paper's point); 18 -> K=18, G=4, Z_W=22,
-// REG_W=20; 20 -> K=20, G=5, Z_W=24, REG_W=22. atan(2^0) = 2^(Z_W-3) needs a Z_W-2-bit word, so the
-// wider angles widen every register word; COEF_F grows with REG_W (the coefficients stay Q3.x).
-// Throws InputError for other widths.
+// options"): 8..16 -> K=16, CORDIC_G=3, Z_W=20, REG_W=18 (the paper's point); 18 -> K=18, G=4,
+// Z_W=22, REG_W=20; 20 -> K=20, G=5, Z_W=24, REG_W=22. atan(2^0) = 2^(Z_W-3) needs a Z_W-2-bit
+// word, so the wider angles widen every register word; COEF_F grows with REG_W (the coefficients
+// stay Q3.x). Throws InputError for other widths.
 DatapathConfig cordic_width_preset(int angle_w);
 
 }  // namespace acore

@@ -226,8 +226,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
     if (cfg.correction == kPoly) {
       gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
       mask_chunk(x, m, cfg.s_w, mask_store.data());
-      poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w, cfg.s_f,
-                 cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
+      poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w,
+                 cfg.s_f, cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
     } else {  // kNone: the scaled curves go straight to the CORDIC
       std::copy(s13, s13 + m, y13);
       std::copy(s24, s24 + m, y24);

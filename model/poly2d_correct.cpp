@@ -11,7 +11,8 @@ int64_t poly2d_v(int64_t y_other, const DatapathConfig& cfg) {
   return y_other >= 0 ? y_other - one : y_other + one;
 }
 
-int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathConfig& cfg, bool* ovf) {
+int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathConfig& cfg,
+                    bool* ovf) {
   const int d = cfg.degree;
   const int64_t g = int64_t{1} << cfg.acc_guard;
   const int v_shift = cfg.s_f - kVShift;
@@ -28,12 +29,13 @@ int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathCon
   const PolyArg a = poly_argument(x, cfg);
   int64_t acc = q[d];
   for (int i = d - 1; i >= 0; --i)
-    acc = fx::saturate(fx::shift_add_mul(acc, a.u, cfg.s_w, true, a.shift) + q[i], cfg.acc_w(), ovf);
+    acc =
+        fx::saturate(fx::shift_add_mul(acc, a.u, cfg.s_w, true, a.shift) + q[i], cfg.acc_w(), ovf);
   return acc;
 }
 
-int64_t poly2d_correct(int64_t s, int64_t x, int64_t v, const int64_t* coef, const DatapathConfig& cfg,
-                       bool* ovf) {
+int64_t poly2d_correct(int64_t s, int64_t x, int64_t v, const int64_t* coef,
+                       const DatapathConfig& cfg, bool* ovf) {
   return poly_subtract(s, poly2d_eval(x, v, coef, cfg, ovf), cfg, ovf);
 }
 

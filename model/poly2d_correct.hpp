@@ -9,7 +9,8 @@
 // Mirrors rtl/acore_poly2d_correct.v. Nested Horner, every product on the adder/shifter multiplier
 // with each partial product floored on its own (fixed_point.hpp shift_add_mul):
 //   inner, for every power i of x:  Q_i(v) = sum_j a_ij v^j, j = 0..d-i
-//     q = a_{i,d-i} << ACC_G;  q = saturate(shift_add_mul(q, v, S_W, V_SH) + (a_ij << ACC_G), ACC_W)
+//     q = a_{i,d-i} << ACC_G
+//     q = saturate(shift_add_mul(q, v, S_W, V_SH) + (a_ij << ACC_G), ACC_W)
 //   outer:  acc = Q_d;  acc = saturate(shift_add_mul(acc, u, S_W, U_SH) + Q_i, ACC_W), i = d-1..0
 //   y = saturate(s - round_shr(acc, ACC_F - S_F), S_W)
 // u, U_SH as in poly_correct.hpp (x itself unless XCENTER). Coefficient words in the order of
@@ -23,8 +24,9 @@ namespace acore {
 
 int64_t poly2d_v(int64_t y_other, const DatapathConfig& cfg);
 // coef[term2d(i, j)] = a_ij (sign-extended REG_W-bit words, COEF_F fraction bits). Returns acc_0.
-int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathConfig& cfg, bool* ovf);
-int64_t poly2d_correct(int64_t s, int64_t x, int64_t v, const int64_t* coef, const DatapathConfig& cfg,
-                       bool* ovf);
+int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathConfig& cfg,
+                    bool* ovf);
+int64_t poly2d_correct(int64_t s, int64_t x, int64_t v, const int64_t* coef,
+                       const DatapathConfig& cfg, bool* ovf);
 
 }  // namespace acore

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// Stage 4, polynomial correction (paper Eq. 6): y = s - P(x), P of degree n by Horner's scheme on the
-// adder/shifter multiplier. Mirrors rtl/acore_poly_correct.v:
+// Stage 4, polynomial correction (paper Eq. 6): y = s - P(x), P of degree n by Horner's scheme on
+// the adder/shifter multiplier. Mirrors rtl/acore_poly_correct.v:
 //   acc_n = a_n << ACC_G                                              ACC_F = COEF_F + ACC_G
 //   acc_j = saturate(shift_add_mul(acc_{j+1}, u, S_W signed, U_SH) + (a_j << ACC_G), ACC_W)
 //   y     = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W)
 // with the argument u = x, U_SH = S_F (XCENTER = 0, the paper's), or with XCENTER = 1 (8 regions)
 //   u = x - (x >= 0 ? 3/8 : -3/8),  U_SH = S_F - 1     (exact: moving towards zero cannot overflow)
-// i.e. the polynomial is in 2 (x -+ 3/8), centred in its half region and spanning about [-0.75, 0.7]:
-// at degree 7 the raw-x coefficients reach 200 (and need COEF_F = 9), the centred ones stay < 1.2.
+// i.e. the polynomial is in 2 (x -+ 3/8), centred in its half region and spanning about [-0.75,
+// 0.7]: at degree 7 the raw-x coefficients reach 200 (and need COEF_F = 9), the centred ones stay
+// < 1.2.
 #pragma once
 #include <cstdint>
 

@@ -19,14 +19,21 @@ uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
 
 // Header keys and the config field each sets.
 std::map<std::string, int DatapathConfig::*> config_fields() {
-  return {{"in_w", &DatapathConfig::in_w},         {"reg_w", &DatapathConfig::reg_w},
-          {"s_w", &DatapathConfig::s_w},           {"s_f", &DatapathConfig::s_f},
-          {"r_shift", &DatapathConfig::r_shift},   {"scale_guard", &DatapathConfig::scale_guard},
-          {"degree", &DatapathConfig::degree},     {"regions", &DatapathConfig::regions},
+  return {{"in_w", &DatapathConfig::in_w},
+          {"reg_w", &DatapathConfig::reg_w},
+          {"s_w", &DatapathConfig::s_w},
+          {"s_f", &DatapathConfig::s_f},
+          {"r_shift", &DatapathConfig::r_shift},
+          {"scale_guard", &DatapathConfig::scale_guard},
+          {"degree", &DatapathConfig::degree},
+          {"regions", &DatapathConfig::regions},
           {"xcenter", &DatapathConfig::xcenter},
-          {"coef_f", &DatapathConfig::coef_f},     {"acc_guard", &DatapathConfig::acc_guard},
-          {"acc_int", &DatapathConfig::acc_int},   {"iterations", &DatapathConfig::iterations},
-          {"cordic_guard", &DatapathConfig::cordic_guard}, {"z_w", &DatapathConfig::z_w},
+          {"coef_f", &DatapathConfig::coef_f},
+          {"acc_guard", &DatapathConfig::acc_guard},
+          {"acc_int", &DatapathConfig::acc_int},
+          {"iterations", &DatapathConfig::iterations},
+          {"cordic_guard", &DatapathConfig::cordic_guard},
+          {"z_w", &DatapathConfig::z_w},
           {"angle_w", &DatapathConfig::angle_w}};
 }
 
@@ -157,8 +164,9 @@ std::string format_regimage(const RegImage& img) {
           for (int i = 0; i <= c.degree; ++i)
             for (int j = 0; i + j <= c.degree; ++j)
               if (c.term2d(i, j) == t) term = fmt::format("{}^{} v^{}", x_name, i, j);
-        line(c.addr_poly(r, k, t), fmt::format("region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
-                                               std::ldexp(static_cast<double>(img.poly(r, k, t)), -c.coef_f)));
+        line(c.addr_poly(r, k, t),
+             fmt::format("region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
+                         std::ldexp(static_cast<double>(img.poly(r, k, t)), -c.coef_f)));
       }
   for (int i = 0; i < c.iterations; ++i)
     line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,

@@ -53,7 +53,8 @@ Accuracy measure(const CalOptions& o, const DatapathConfig& base) {
   a.fl = error_stats(angle_error_deg(fl.angle, p.val.theta_ref));
   a.fx = error_stats(angle_error_deg(fx.angle, p.val.theta_ref));
   for (size_t i = 0; i < fl.angle.size(); ++i)
-    a.fx_vs_fl_max = std::max(a.fx_vs_fl_max, std::fabs(wrap_deg((fx.angle[i] - fl.angle[i]) * 180 / M_PI)));
+    a.fx_vs_fl_max =
+        std::max(a.fx_vs_fl_max, std::fabs(wrap_deg((fx.angle[i] - fl.angle[i]) * 180 / M_PI)));
   return a;
 }
 
@@ -93,7 +94,8 @@ TEST(Poly2d, NestedHornerMatchesBruteForceDouble) {
       const int terms = cfg.coef_per_curve();
       const double lsb = std::ldexp(1.0, -cfg.acc_f());
       // Products: d(d+1)/2 inner and d outer, each amplified by at most 1.6^(d-1) (|4v| <= 1.6).
-      const double bound = (degree * (degree + 1) / 2 + degree) * cfg.s_w * std::pow(1.6, degree - 1) * lsb;
+      const double bound =
+          (degree * (degree + 1) / 2 + degree) * cfg.s_w * std::pow(1.6, degree - 1) * lsb;
       double worst = 0;
       for (int k = 0; k < 3000; ++k) {
         std::vector<int64_t> coef(terms);
@@ -108,10 +110,11 @@ TEST(Poly2d, NestedHornerMatchesBruteForceDouble) {
         double want = 0;
         for (int i = 0; i <= degree; ++i)
           for (int j = 0; i + j <= degree; ++j)
-            want += std::ldexp(static_cast<double>(coef[cfg.term2d(i, j)]), -cfg.coef_f) * std::pow(ur, i) *
-                    std::pow(vr, j);
+            want += std::ldexp(static_cast<double>(coef[cfg.term2d(i, j)]), -cfg.coef_f) *
+                    std::pow(ur, i) * std::pow(vr, j);
         bool ovf = false;
-        const double got = std::ldexp(static_cast<double>(poly2d_eval(x, v, coef.data(), cfg, &ovf)), -cfg.acc_f());
+        const double got = std::ldexp(
+            static_cast<double>(poly2d_eval(x, v, coef.data(), cfg, &ovf)), -cfg.acc_f());
         ASSERT_FALSE(ovf);
         ASSERT_LE(std::fabs(got - want), bound) << "degree " << degree << " sample " << k;
         worst = std::max(worst, std::fabs(got - want));
@@ -122,11 +125,14 @@ TEST(Poly2d, NestedHornerMatchesBruteForceDouble) {
         fc.regions = 8;
         fc.xcenter = xcenter;
         fc.poly.assign(cfg.poly_words(), 0.0);
-        for (int t = 0; t < terms; ++t) fc.coef(5, 1, t) = std::ldexp(static_cast<double>(coef[t]), -cfg.coef_f);
-        ASSERT_NEAR(correction_poly(fc, 5, 1, xr, std::ldexp(static_cast<double>(y_other), -cfg.s_f)), want, 1e-12);
+        for (int t = 0; t < terms; ++t)
+          fc.coef(5, 1, t) = std::ldexp(static_cast<double>(coef[t]), -cfg.coef_f);
+        ASSERT_NEAR(
+            correction_poly(fc, 5, 1, xr, std::ldexp(static_cast<double>(y_other), -cfg.s_f)), want,
+            1e-12);
       }
-      std::printf("poly2d d=%d xcenter=%d: worst |shift-add - double| %.2f LSB (bound %.1f LSB)\n", degree,
-                  xcenter, worst / lsb, bound / lsb);
+      std::printf("poly2d d=%d xcenter=%d: worst |shift-add - double| %.2f LSB (bound %.1f LSB)\n",
+                  degree, xcenter, worst / lsb, bound / lsb);
     }
 }
 
@@ -160,13 +166,15 @@ TEST(Poly2d, WithoutVTermsEqualsThe1dPolyBitForBit) {
             a.words[c1.addr_poly(r, c, i)] = w;
             b.words[c2.addr_poly(r, c, c2.term2d(i, 0))] = w;
           }
-      for (int i = 0; i < c1.iterations; ++i) a.words[c1.addr_atan(i)] = b.words[c2.addr_atan(i)] = word(rng) >> 3;
+      for (int i = 0; i < c1.iterations; ++i)
+        a.words[c1.addr_atan(i)] = b.words[c2.addr_atan(i)] = word(rng) >> 3;
       const FixedModel ma(a), mb(b);
       std::uniform_int_distribution<int32_t> code(-32768, 32767);
       for (int k = 0; k < 4000; ++k) {
         const ChannelCodes in = {code(rng), code(rng), code(rng), code(rng)};
         const FixedSample sa = ma.step(in), sb = mb.step(in);
-        ASSERT_EQ(sa.y13, sb.y13) << "degree " << degree << " regions " << regions << " sample " << k;
+        ASSERT_EQ(sa.y13, sb.y13) << "degree " << degree << " regions " << regions << " sample "
+                                  << k;
         ASSERT_EQ(sa.y24, sb.y24);
         ASSERT_TRUE(sa == sb);
       }
@@ -187,12 +195,17 @@ TEST(Poly2d, PaperNoiselessCubicMeetsTheTargetIn102Words) {
   base.in_w = 18;
   const Accuracy a = measure(o, base);
   const Accuracy a16 = measure(o, DatapathConfig{});
-  std::printf("poly2d d=3, 4 regions, 18-bit angle and input, %d words: float RMS %.4f max %.4f, bit-accurate RMS "
-              "%.4f max %.4f deg, |bit-accurate - float| <= %.4f deg, COEF_F %d\n",
-              a.img.cfg.words(), a.fl.rms, a.fl.max_abs, a.fx.rms, a.fx.max_abs, a.fx_vs_fl_max, a.img.cfg.coef_f);
-  std::printf("poly2d d=3, 4 regions, 16-bit angle and input, %d words: bit-accurate RMS %.4f max %.4f deg, "
-              "|bit-accurate - float| <= %.4f deg\n",
-              a16.img.cfg.words(), a16.fx.rms, a16.fx.max_abs, a16.fx_vs_fl_max);
+  std::printf(
+      "poly2d d=3, 4 regions, 18-bit angle and input, %d words: float RMS %.4f max %.4f, "
+      "bit-accurate RMS "
+      "%.4f max %.4f deg, |bit-accurate - float| <= %.4f deg, COEF_F %d\n",
+      a.img.cfg.words(), a.fl.rms, a.fl.max_abs, a.fx.rms, a.fx.max_abs, a.fx_vs_fl_max,
+      a.img.cfg.coef_f);
+  std::printf(
+      "poly2d d=3, 4 regions, 16-bit angle and input, %d words: bit-accurate RMS %.4f max %.4f "
+      "deg, "
+      "|bit-accurate - float| <= %.4f deg\n",
+      a16.img.cfg.words(), a16.fx.rms, a16.fx.max_abs, a16.fx_vs_fl_max);
   EXPECT_EQ(a.img.cfg.words(), 4 + 80 + 18);
   EXPECT_EQ(a16.img.cfg.words(), 100);
   EXPECT_NEAR(a.fl.rms, 0.009, 0.0009);
@@ -213,10 +226,11 @@ TEST(PolyXcenter, Degree7In8RegionsKeepsTheFloatAccuracy) {
   const Accuracy raw = measure(o, DatapathConfig{});
   o.xcenter = 1;
   const Accuracy cen = measure(o, DatapathConfig{});
-  std::printf("poly n=7, 8 regions: raw x COEF_F %d bit-accurate RMS %.4f (float %.4f); xcenter COEF_F %d "
-              "bit-accurate RMS %.4f max %.4f (float %.4f / %.4f)\n",
-              raw.img.cfg.coef_f, raw.fx.rms, raw.fl.rms, cen.img.cfg.coef_f, cen.fx.rms, cen.fx.max_abs, cen.fl.rms,
-              cen.fl.max_abs);
+  std::printf(
+      "poly n=7, 8 regions: raw x COEF_F %d bit-accurate RMS %.4f (float %.4f); xcenter COEF_F %d "
+      "bit-accurate RMS %.4f max %.4f (float %.4f / %.4f)\n",
+      raw.img.cfg.coef_f, raw.fx.rms, raw.fl.rms, cen.img.cfg.coef_f, cen.fx.rms, cen.fx.max_abs,
+      cen.fl.rms, cen.fl.max_abs);
   EXPECT_NEAR(cen.fl.rms, raw.fl.rms, 1e-6) << "u = 2(x -+ 3/8) spans the same polynomials";
   EXPECT_EQ(cen.img.cfg.coef_f, 15);
   EXPECT_LE(cen.fx.rms, 1.1 * cen.fl.rms);
@@ -233,21 +247,25 @@ TEST(Modes, BitAccurateTracksFloatInEveryMode) {
     int correction, degree, regions, xcenter;
     bool fits;  // coefficients fit Q3.15
   };
-  std::printf("| mode | degree | regions | words | COEF_F | float RMS | float max | bit-acc. RMS | bit-acc. max | "
-              "max abs(bit-acc. - float) |\n|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const Row r : {Row{kNone, 3, 4, 0, true}, Row{kPoly, 3, 4, 0, true}, Row{kPoly, 5, 4, 0, true},
-                      Row{kPoly, 7, 4, 0, true}, Row{kPoly, 7, 8, 0, false}, Row{kPoly, 7, 8, 1, true},
-                      Row{kPoly2d, 1, 4, 0, true}, Row{kPoly2d, 2, 4, 0, true}, Row{kPoly2d, 3, 4, 0, true},
-                      Row{kPoly2d, 3, 8, 0, false}}) {
+  std::printf(
+      "| mode | degree | regions | words | COEF_F | float RMS | float max | bit-acc. RMS | "
+      "bit-acc. max | "
+      "max abs(bit-acc. - float) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Row r :
+       {Row{kNone, 3, 4, 0, true}, Row{kPoly, 3, 4, 0, true}, Row{kPoly, 5, 4, 0, true},
+        Row{kPoly, 7, 4, 0, true}, Row{kPoly, 7, 8, 0, false}, Row{kPoly, 7, 8, 1, true},
+        Row{kPoly2d, 1, 4, 0, true}, Row{kPoly2d, 2, 4, 0, true}, Row{kPoly2d, 3, 4, 0, true},
+        Row{kPoly2d, 3, 8, 0, false}}) {
     CalOptions o;
     o.correction = r.correction;
     o.degree = r.degree;
     o.regions = r.regions;
     o.xcenter = r.xcenter;
     const Accuracy a = measure(o, DatapathConfig{});
-    std::printf("| %s%s | %d | %d | %d | %d | %.4f | %.4f | %.4f | %.4f | %.4f |\n", correction_name(r.correction),
-                r.xcenter ? " xcenter" : "", r.degree, r.regions, a.img.cfg.words(), a.img.cfg.coef_f, a.fl.rms,
-                a.fl.max_abs, a.fx.rms, a.fx.max_abs, a.fx_vs_fl_max);
+    std::printf("| %s%s | %d | %d | %d | %d | %.4f | %.4f | %.4f | %.4f | %.4f |\n",
+                correction_name(r.correction), r.xcenter ? " xcenter" : "", r.degree, r.regions,
+                a.img.cfg.words(), a.img.cfg.coef_f, a.fl.rms, a.fl.max_abs, a.fx.rms, a.fx.max_abs,
+                a.fx_vs_fl_max);
     if (!r.fits) {
       EXPECT_LT(a.img.cfg.coef_f, 15);
       continue;
@@ -300,8 +318,10 @@ TEST(CordicPresets, WithinTheirBoundAndBelowTheResidual) {
       sq += err * err;
     }
     const double rms_deg = std::sqrt(sq / n) * 360 / full;
-    std::printf("CORDIC %d-bit preset (K=%d G=%d Z_W=%d REG_W=%d): max %.3f LSB, RMS %.3f LSB = %.5f deg, bound %.2f LSB\n",
-                w, c.iterations, c.guard, c.z_w, d.reg_w, worst, std::sqrt(sq / n), rms_deg, bound);
+    std::printf(
+        "CORDIC %d-bit preset (K=%d G=%d Z_W=%d REG_W=%d): max %.3f LSB, RMS %.3f LSB = %.5f deg, "
+        "bound %.2f LSB\n",
+        w, c.iterations, c.guard, c.z_w, d.reg_w, worst, std::sqrt(sq / n), rms_deg, bound);
     EXPECT_LE(worst, bound);
     EXPECT_LT(rms_deg, 0.009 / 4);
   }

@@ -99,7 +99,8 @@ TEST(RegImage, CorrectionModeRoundTripsAndOlderImagesReadAsPoly) {
   EXPECT_EQ(a.words, b.words);
   // An image written before the mode existed has no correction/xcenter keys: the paper's mode.
   std::string old = format_regimage(paper_image());
-  for (const char* key : {"// acore: correction=poly\n", "// acore: xcenter=0\n"}) old.erase(old.find(key), std::string(key).size());
+  for (const char* key : {"// acore: correction=poly\n", "// acore: xcenter=0\n"})
+    old.erase(old.find(key), std::string(key).size());
   const RegImage c = parse_regimage(old, "old.hex");
   EXPECT_EQ(c.cfg.correction, kPoly);
   EXPECT_EQ(c.cfg.xcenter, 0);
