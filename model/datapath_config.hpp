@@ -36,9 +36,9 @@ struct DatapathConfig {
   int degree = 3;      // DEGREE: polynomial degree n (poly: 1..7), total degree d (poly2d: 1..3)
   int regions = 4;     // REGIONS: 4 or 8
   int xcenter = 0;     // XCENTER (8 regions): polynomials in u = 2 (x -+ 3/8)
-  int coef_f = 15;    // COEF_F: fraction bits of a polynomial coefficient (REG_W wide, signed)
-  int acc_guard = 4;  // ACC_G: guard fraction bits of the Horner accumulator
-  int acc_int = 6;    // ACC_I: integer bits (incl. sign) of the Horner accumulator
+  int coef_f = 15;     // COEF_F: fraction bits of a polynomial coefficient (REG_W wide, signed)
+  int acc_guard = 4;   // ACC_G: guard fraction bits of the Horner accumulator
+  int acc_int = 6;     // ACC_I: integer bits (incl. sign) of the Horner accumulator
   // --- CORDIC ---
   int iterations = 16;   // K: CORDIC iterations = pipeline stages
   int cordic_guard = 3;  // CORDIC_G: guard fraction bits of the CORDIC x/y registers
@@ -46,10 +46,10 @@ struct DatapathConfig {
   int angle_w = 16;      // ANGLE_W: output angle width, unsigned, one turn = 2^ANGLE_W
 
   // Derived, do not set.
-  int d_w() const { return in_w + 1; }                 // D_W: c1 - c3
-  int t_w() const { return d_w() + 1; }                // T_W: d - O
-  int acc_f() const { return coef_f + acc_guard; }     // ACC_F
-  int acc_w() const { return acc_f() + acc_int; }      // ACC_W
+  int d_w() const { return in_w + 1; }              // D_W: c1 - c3
+  int t_w() const { return d_w() + 1; }             // T_W: d - O
+  int acc_f() const { return coef_f + acc_guard; }  // ACC_F
+  int acc_w() const { return acc_f() + acc_int; }   // ACC_W
   // Coefficients per region and curve: n + 1 (poly), (d + 1)(d + 2) / 2 (poly2d), 0 (none).
   int coef_per_curve() const;
   int poly_words() const { return 2 * regions * coef_per_curve(); }
