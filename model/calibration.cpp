@@ -212,6 +212,22 @@ RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, 
   }
 }
 
+CalOptions cal_options_for(const DatapathConfig& cfg, int periodicity) {
+  CalOptions opt;
+  opt.correction = cfg.correction;
+  opt.degree = cfg.degree;
+  opt.regions = cfg.regions;
+  opt.xcenter = cfg.xcenter;
+  opt.periodicity = periodicity;
+  return opt;
+}
+
+RegImage calibrate_image(const Recording& rec, const DatapathConfig& cfg, int periodicity, FloatCoefficients* fc) {
+  const FloatCoefficients c = calibrate(rec, cal_options_for(cfg, periodicity));
+  if (fc) *fc = c;
+  return quantize_auto_range(c, cfg, choose_in_scale(rec, cfg.in_w));
+}
+
 FloatCoefficients dequantize(const RegImage& img) {
   const DatapathConfig& cfg = img.cfg;
   FloatCoefficients fc;

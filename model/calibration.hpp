@@ -47,6 +47,9 @@ void correction_basis(const DatapathConfig& shape, double x, double y_other, dou
 double correction_poly(const FloatCoefficients& fc, int region, int curve, double x,
                        double y_other);
 
+// The calibration options a datapath configuration asks for (its correction mode, degree, regions).
+CalOptions cal_options_for(const DatapathConfig& cfg, int periodicity);
+
 // Throws InputError when the recording has no theta_ref or too few samples in a region.
 FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt);
 
@@ -61,6 +64,11 @@ RegImage quantize(const FloatCoefficients& coef, DatapathConfig cfg, double in_s
 // quantize(), but when a coefficient does not fit, trade coefficient fraction bits for range (down
 // to 8) while the Horner accumulator keeps its fraction bits; the image header records the result.
 RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
+
+// calibrate() with cal_options_for(cfg), then quantize_auto_range() at the automatic in_scale: the
+// one-call path of the sweep and the co-sim tests. *fc (optional) receives the float coefficients.
+RegImage calibrate_image(const Recording& rec, const DatapathConfig& cfg, int periodicity,
+                         FloatCoefficients* fc = nullptr);
 
 // The real values a register image stands for (so the float engine can run from an image).
 FloatCoefficients dequantize(const RegImage& img);
