@@ -15,20 +15,37 @@ namespace acore {
 
 // The calibrated estimator in real numbers: what the float model runs.
 struct FloatCoefficients {
+  int correction = kPoly;  // kPoly, kPoly2d, kNone (datapath_config.hpp)
   int degree = 3;
   int regions = 4;
+  int xcenter = 0;
   double offset[2] = {0, 0};  // O13, O24 in recording units
   double amp[2] = {1, 1};     // A13, A24 in recording units
-  std::vector<double> poly;   // [region][curve][power], curve 0 = c13, 1 = c24
-  double& coef(int r, int c, int j) { return poly[(r * 2 + c) * (degree + 1) + j]; }
-  double coef(int r, int c, int j) const { return poly[(r * 2 + c) * (degree + 1) + j]; }
+  std::vector<double> poly;   // [region][curve][term], curve 0 = c13, 1 = c24 (terms as in the map)
+  // The correction's shape (correction, degree, regions, xcenter) as a datapath configuration.
+  DatapathConfig shape() const;
+  int terms() const { return shape().coef_per_curve(); }
+  double& coef(int r, int c, int t) { return poly[(r * 2 + c) * terms() + t]; }
+  double coef(int r, int c, int t) const { return poly[(r * 2 + c) * terms() + t]; }
 };
 
 struct CalOptions {
+  int correction = kPoly;
   int degree = 3;
   int regions = 4;
+  int xcenter = 0;      // 8 regions: fit in u = 2 (x -+ 3/8) (poly_correct.hpp)
   int periodicity = 1;  // electrical periods per turn: the reference is sin/cos(p theta_ref)
 };
+
+// The real-valued arguments of the correction polynomials, as the datapath forms them:
+// u = x, or 2 (x -+ 3/8) with xcenter; v = 2^kVShift (y_other - sign(y_other)) (poly2d).
+double correction_u(double x, int xcenter);
+double correction_v(double y_other);
+// Every term's basis value at (x, y_other) in the register map's order (1-D: u^j; 2-D: u^i v^j).
+void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out);
+// P_region,curve(x, y_other) in double, by (nested) Horner like the datapath.
+double correction_poly(const FloatCoefficients& fc, int region, int curve, double x,
+                       double y_other);
 
 // The calibration options a datapath configuration asks for (its correction mode, degree, regions).
 CalOptions cal_options_for(const DatapathConfig& cfg, int periodicity);

@@ -84,7 +84,12 @@ std::vector<std::string> expand_grid(const nlohmann::json& grid) {
 nlohmann::json default_sweep_grid() {
   return nlohmann::json::parse(R"([
     {"DEGREE": [1, 2, 3, 4, 5, 6, 7], "REGIONS": [4, 8]},
-    {"DEGREE": [3], "K": [12, 14, 18, 20]}
+    {"DEGREE": [3], "K": [12, 14, 18, 20]},
+    {"DEGREE": [5, 6, 7], "REGIONS": [8], "XCENTER": [1]},
+    {"CORRECTION": [1], "DEGREE": [1, 2, 3], "REGIONS": [4, 8]},
+    {"CORRECTION": [1], "DEGREE": [3], "IN_W": [18], "REG_W": [20], "COEF_F": [17], "K": [18],
+     "CORDIC_G": [4], "Z_W": [22], "ANGLE_W": [18]},
+    {"CORRECTION": [2]}
   ])");
 }
 

@@ -6,6 +6,7 @@ acore_prefilter.v
 acore_scaler.v
 acore_region_select.v
 acore_poly_correct.v
+acore_poly2d_correct.v
 acore_cordic.v
 acore_top.v
 acore_serial_ram.v

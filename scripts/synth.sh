@@ -6,8 +6,8 @@
 #   core and the 16-bit CORDIC alone, and the summary table synth/reports/summary.md.
 # usage: scripts/synth.sh [-j N] [-d DESIGN[,DESIGN...]]
 #   -j N  runs N Yosys/nextpnr jobs in parallel (default 1)
-#   -d    only these designs (default all: top top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr
-#         cordic16 cordic16_bus serial serial_pnr); their old reports are replaced, the others kept,
+#   -d    only these designs (default all: top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr
+#         poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial serial_pnr); their old reports are replaced, the others kept,
 #         and the summary is rebuilt from every report present. Example: -d serial,serial_pnr
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -64,12 +64,15 @@ TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $r
 c16_chparam="chparam"
 for k in IN_W G Z_W ANGLE_W K AT_W NORM SPLIT; do c16_chparam+=" -set $k ${C16[$k]}"; done
 TOP[cordic16_bus]=acore_cordic;     READ[cordic16_bus]="read_verilog -sv $root/rtl/acore_cordic.v"$'\n'"$c16_chparam acore_cordic"
+TOP[poly2d_pnr]=acore_poly2d_pinwrap;      READ[poly2d_pnr]="$stage_reads"
+TOP[poly2d1_pnr]=acore_poly2d_pinwrap;     READ[poly2d1_pnr]="$stage_reads"$'\n'"chparam -set DEGREE 1 acore_poly2d_pinwrap"
 TOP[serial]=acore_serial_top;       READ[serial]="$rtl_reads"
 TOP[serial_pnr]=acore_serial_top_pinwrap; READ[serial_pnr]="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_serial_top_pinwrap.v"
 for d in top cordic16 cordic16_bus serial; do FLOWS[$d]="generic xilinx ice40"; done
-for d in top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr serial_pnr; do FLOWS[$d]="ice40 pnr"; done
+for d in top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr serial_pnr; do FLOWS[$d]="ice40 pnr"; done
 FLOWS[cordic16]="generic xilinx ice40 pnr"
-all_designs=(top top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr cordic16 cordic16_bus serial serial_pnr)
+all_designs=(top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial
+  serial_pnr)
 designs=("${all_designs[@]}")
 if [ -n "$only" ]; then
   IFS=',' read -r -a designs <<<"$only"

@@ -15,32 +15,47 @@ namespace acore::cli {
 
 namespace {
 struct CalibrateArgs {
-  std::string in, out, json;
-  int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, p = 0;
+  std::string in, out, json, correction = "poly";
+  int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, in_w = 16, p = 0;
   double in_scale = 0;
-  bool coef_f_given = false;
+  bool coef_f_given = false, iterations_given = false, xcenter = false;
 };
 
 void run_calibrate(const CalibrateArgs& a) {
   const Recording rec = read_recording(a.in);
   CalOptions opt;
+  opt.correction = parse_correction(a.correction);
   opt.degree = a.degree;
   opt.regions = a.regions;
+  opt.xcenter = a.xcenter ? 1 : 0;
   opt.periodicity = a.p ? a.p : recording_periodicity(rec, a.in);
-  DatapathConfig cfg;
+  DatapathConfig cfg = cordic_width_preset(a.angle_w);
+  cfg.correction = opt.correction;
   cfg.degree = a.degree;
   cfg.regions = a.regions;
-  cfg.iterations = a.iterations;
-  cfg.coef_f = a.coef_f;
-  cfg.angle_w = a.angle_w;
-  cfg.z_w = std::max(cfg.z_w, a.angle_w + 4);
+  cfg.xcenter = opt.xcenter;
+  if (a.iterations_given) cfg.iterations = a.iterations;
+  // A wider input needs wider offset words (REG_W >= IN_W + 2); the coefficients keep Q3.x.
+  cfg.in_w = a.in_w;
+  if (const int grow = cfg.in_w + 2 - cfg.reg_w; grow > 0) {
+    cfg.reg_w += grow;
+    cfg.coef_f += grow;
+  }
+  if (a.coef_f_given) {
+    cfg.acc_guard += cfg.coef_f - a.coef_f;  // the accumulator keeps its fraction bits
+    cfg.coef_f = a.coef_f;
+    cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
+  }
   cfg.validate();
   const FloatCoefficients fc = calibrate(rec, opt);
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
   RegImage img = a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
   cfg = img.cfg;
-  img.provenance.push_back(fmt::format("command=anglecore calibrate --in {} --degree {} --regions {} "
-                                       "--iterations {}", a.in, a.degree, a.regions, a.iterations));
+  img.provenance.push_back(
+      fmt::format("command=anglecore calibrate --in {} --correction {} --degree {} "
+                  "--regions {}{} --angle-w {} --in-w {} --iterations {}",
+                  a.in, a.correction, a.degree, a.regions, a.xcenter ? " --xcenter" : "", a.angle_w,
+                  a.in_w, cfg.iterations));
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
   write_regimage(img, a.out);
 
@@ -54,13 +69,22 @@ void run_calibrate(const CalibrateArgs& a) {
                            cfg.describe(), in_scale);
   std::cout << fmt::format("  on the calibration recording: uncorrected RMS {:.3f} deg, corrected RMS "
                            "{:.3f} (float) {:.3f} (fixed) deg\n", su.rms, sf.rms, sx.rms);
-  nlohmann::json j = {{"samples", rec.size()},      {"words", cfg.words()},
-                      {"degree", cfg.degree},       {"regions", cfg.regions},
-                      {"iterations", cfg.iterations}, {"in_scale", in_scale},
-                      {"offset", {fc.offset[0], fc.offset[1]}}, {"amplitude", {fc.amp[0], fc.amp[1]}},
-                      {"poly", fc.poly},
-                      {"fit_error_deg", {{"float", stats_json(sf)}, {"fixed", stats_json(sx)},
-                                         {"uncorrected", stats_json(su)}}}};
+  nlohmann::json j = {
+      {"samples", rec.size()},
+      {"words", cfg.words()},
+      {"correction", correction_name(cfg.correction)},
+      {"xcenter", cfg.xcenter},
+      {"angle_w", cfg.angle_w},
+      {"reg_w", cfg.reg_w},
+      {"degree", cfg.degree},
+      {"regions", cfg.regions},
+      {"iterations", cfg.iterations},
+      {"in_scale", in_scale},
+      {"offset", {fc.offset[0], fc.offset[1]}},
+      {"amplitude", {fc.amp[0], fc.amp[1]}},
+      {"poly", fc.poly},
+      {"fit_error_deg",
+       {{"float", stats_json(sf)}, {"fixed", stats_json(sx)}, {"uncorrected", stats_json(su)}}}};
   write_json(a.json, j);
 }
 }  // namespace
@@ -70,13 +94,31 @@ void add_calibrate(CLI::App& app) {
   CLI::App* c = app.add_subcommand("calibrate", "Fit and quantize the coefficients into a register image");
   c->add_option("--in", args->in, "Calibration recording (CSV with theta_ref)")->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
-  c->add_option("--degree", args->degree, "Polynomial degree n")->check(CLI::Range(1, 7));
+  c->add_option(
+       "--correction", args->correction,
+       "poly (1-D in x, the paper's), poly2d (2-D in x and the other curve), none (no correction)")
+      ->check(CLI::IsMember({"poly", "poly2d", "none"}));
+  c->add_option("--degree", args->degree,
+                "Polynomial degree n (poly: 1..7; poly2d: total degree 1..3)")
+      ->check(CLI::Range(1, 7));
   c->add_option("--regions", args->regions, "Correction regions (4 or 8)")->check(CLI::IsMember({4, 8}));
-  c->add_option("--iterations", args->iterations, "CORDIC iterations k")->check(CLI::Range(4, 24));
+  c->add_flag("--xcenter", args->xcenter,
+              "8 regions: fit in u = 2 (x -+ 3/8), centred in its half region (keeps high-degree "
+              "coefficients in range, so COEF_F stays 15)");
+  c->add_option("--iterations", args->iterations,
+                "CORDIC iterations k (default: the --angle-w preset's)")
+      ->check(CLI::Range(4, 24));
   c->add_option("--coef-frac", args->coef_f, "Fraction bits of a polynomial coefficient (default 15, lowered "
                                              "automatically when a coefficient needs more range)")
       ->check(CLI::Range(1, 17));
-  c->add_option("--angle-w", args->angle_w, "Output angle width in bits")->check(CLI::Range(8, 20));
+  c->add_option(
+       "--angle-w", args->angle_w,
+       "Output angle width: 8..16 (K=16, Z_W=20, REG_W=18), 18 (K=18, Z_W=22, REG_W=20) or 20 "
+       "(K=20, Z_W=24, REG_W=22); see README 'CORDIC width options'")
+      ->check(CLI::Range(8, 20));
+  c->add_option("--in-w", args->in_w,
+                "Input code width IN_W (default 16; REG_W grows to IN_W + 2 if needed)")
+      ->check(CLI::Range(8, 24));
   c->add_option("--in-scale", args->in_scale, "Input codes per recording unit (default: automatic power of two)")
       ->check(CLI::PositiveNumber);
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
@@ -84,6 +126,11 @@ void add_calibrate(CLI::App& app) {
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
     args->coef_f_given = c->count("--coef-frac") > 0;
+    args->iterations_given = c->count("--iterations") > 0;
+    if (args->correction == "poly2d" && args->degree > 3)
+      throw InputError(
+          fmt::format("--degree {}: poly2d takes a total degree of 1..3", args->degree));
+    if (args->xcenter && args->regions != 8) throw InputError("--xcenter needs --regions 8");
     run_calibrate(*args);
   });
 }
