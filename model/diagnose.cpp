@@ -144,6 +144,7 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     return r.cand.effect == "quantization" && r.explained >= opt.explained_min;
   };
   std::sort(d.ranking.begin(), d.ranking.end(), [&](const RankedEffect& a, const RankedEffect& b) {
+    if (a.cand.rejected.empty() != b.cand.rejected.empty()) return a.cand.rejected.empty();
     if (measured(a) != measured(b)) return measured(a);
     return a.cand.delta_bic < b.cand.delta_bic;
   });
@@ -159,14 +160,15 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   const RankedEffect* top = d.ranking.empty() ? nullptr : &d.ranking.front();
   if (!significant) {
     d.verdict = "no_gap";
-  } else if (top && top->explained >= opt.explained_min && top->cand.delta_bic < -10) {
+  } else if (top && top->cand.rejected.empty() && top->explained >= opt.explained_min && top->cand.delta_bic < -10) {
     d.verdict = "explained";
   } else {
     d.verdict = "unexplained";
   }
 
   // A second effect when the first leaves a clear remainder.
-  if (significant && opt.try_pairs && top && top->explained < 0.9 && top->cand.delta_bic < -10) {
+  if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
+      top->cand.delta_bic < -10) {
     double extra1 = 0;
     const Recording base1 = predict_effect(fp, fp.predicted, top->cand, &extra1);
     double best_expl = top->explained;
@@ -174,7 +176,7 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
       if (e == top->cand.effect) continue;
       RankedEffect r;
       r.cand = fit_effect(fp, base1, e, extra1);
-      if (!r.cand.applicable || r.cand.delta_bic > -10) continue;
+      if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
       const StageSeries after = evaluate(base1, r.cand, real, m, fp, extra1);
       const double expl = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
       if (expl > best_expl + 0.1) {
@@ -245,9 +247,12 @@ nlohmann::json Diagnosis::to_json() const {
   if (verdict != "explained")
     rank.push_back({{"effect", "unexplained"}, {"params", json::object()}, {"explained", 0.0},
                     {"after_deg", before.gap_deg}});
-  for (const auto& r : ranking)
-    rank.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained},
-                    {"after_deg", r.after_deg}, {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}});
+  for (const auto& r : ranking) {
+    json e = {{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained},
+              {"after_deg", r.after_deg}, {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}};
+    if (!r.cand.rejected.empty()) e["rejected"] = r.cand.rejected;
+    rank.push_back(e);
+  }
   j["ranking"] = rank;
   if (!combination.empty()) {
     json c = json::array();

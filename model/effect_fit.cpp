@@ -16,6 +16,8 @@ namespace acore {
 namespace {
 
 constexpr double kTempRef = 25.0;
+// excess_noise is rejected when more than this share of its variance is correlated sample to sample.
+constexpr double kWhiteShare = 0.2;
 
 // Per-channel columns of one parameter: col[c][i] = d channel_c(i) / d parameter.
 using Column = std::vector<std::vector<double>>;
@@ -144,6 +146,7 @@ struct Fitted {
   ParamList params;
   int k = 0;
   bool applicable = true;  // false: the recording cannot show this effect (drift without temp, ...)
+  std::string rejected;    // why the effect's own assumptions fail on this recording (empty: they hold)
 };
 
 std::string chan_name(const Recording& r, int c) {
@@ -340,11 +343,15 @@ Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
 Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base_extra) {
   const Recording& r = *fp.real;
   const int S = nsignals(r);
-  std::vector<double> rss(S, 0.0);
-  double s[4];
+  std::vector<double> rss(S, 0.0), lag1(S, 0.0);
+  double s[4], prev[4] = {0, 0, 0, 0};
   for (size_t i = 0; i < r.size(); ++i) {
     to_signals(r, i, [&](int c, size_t j) { return r.ch[c][j] - base.ch[c][j]; }, s);
-    for (int q = 0; q < S; ++q) rss[q] += s[q] * s[q];
+    for (int q = 0; q < S; ++q) {
+      rss[q] += s[q] * s[q];
+      if (i > 0) lag1[q] += s[q] * prev[q];
+      prev[q] = s[q];
+    }
   }
   const double n = static_cast<double>(r.size());
   auto nll = [&](double var_e) {
@@ -365,6 +372,20 @@ Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base
   Fitted f;
   f.params = {{"sigma", std::sqrt(0.5 * (lo + hi))}};
   f.k = 1;
+  // The excess must be white noise (DESIGN 3.4). Its part that is correlated from one sample to the
+  // next (the residual's lag-1 autocovariance; white noise adds none) is anything but noise: a
+  // glitch, a dropout, interference. Pooled over signals in channel units, with the spread white
+  // noise alone would give.
+  double excess = 0, correlated = 0, spread2 = 0;
+  for (int q = 0; q < S; ++q) {
+    const double w = signal_weight(r, q), v = rss[q] / n;
+    excess += (v - sq(fp.signal_sigma[q]) - w * sq(base_extra)) / w;
+    correlated += lag1[q] / std::max(1.0, n - 1) / w;
+    spread2 += sq(v / w) / n;
+  }
+  if (excess > 0 && correlated > kWhiteShare * excess + 4 * std::sqrt(spread2))
+    f.rejected = fmt::format("not white noise: {:.0f} % of the excess variance is correlated from sample to sample",
+                             100 * std::min(1.0, correlated / excess));
   return f;
 }
 
@@ -526,6 +547,7 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
   cand.k = f.k;
   cand.params = f.params;
   cand.applicable = f.applicable;
+  cand.rejected = f.rejected;
   if (!f.applicable) {
     cand.neg2logl = cand.bic = cand.delta_bic = std::numeric_limits<double>::infinity();
     return cand;

@@ -33,6 +33,8 @@ struct EffectCandidate {
   double delta_bic = 0;  // bic - bic of "no effect": negative is evidence for the effect
   bool applicable = true;  // false: the recording cannot show the effect (no temp column for drift,
                            // values on no lattice for quantization); likelihoods are then infinite
+  std::string rejected;    // non-empty: the recording contradicts the effect's own assumptions (excess
+                           // noise that is not white); says how. Such an effect is never named.
 };
 
 // The residual problem: real and model channels at the real recording's samples.
