@@ -61,13 +61,14 @@ std::pair<Eigen::VectorXd, double> solve_linear(const FitProblem& fp, const Reco
   return {phi, (b - A * phi).squaredNorm()};
 }
 
-// Channel c of the model evaluated at shifted mechanical angles, minus at the true ones.
+// Channel c of the model evaluated at shifted mechanical angles, minus at the true ones (which
+// fp.predicted holds).
 std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function<double(size_t)>& delta) {
   const Recording& real = *fp.real;
   std::vector<double> v(real.size());
   for (size_t i = 0; i < real.size(); ++i) {
-    const double th = real.theta_ref[i];
-    v[i] = fp.model->sensor.value(c, th + delta(i)) - fp.model->sensor.value(c, th);
+    const double d = delta(i);
+    v[i] = d == 0 ? 0.0 : fp.model->sensor.value(c, real.theta_ref[i] + d) - fp.predicted.ch[c][i];
   }
   return v;
 }
