@@ -166,6 +166,16 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     d.verdict = "unexplained";
   }
 
+  if (d.verdict == "explained")
+    for (size_t k = 1; k < d.ranking.size(); ++k) {
+      const RankedEffect& r = d.ranking[k];
+      // A lattice settles quantization against excess noise (see the ranking above).
+      const bool settled = top->cand.effect == "quantization" && r.cand.effect == "excess_noise";
+      if (!settled && r.cand.rejected.empty() && r.explained >= opt.explained_min &&
+          r.cand.delta_bic < top->cand.delta_bic + 10)
+        d.ambiguous_with.push_back(r.cand.effect);
+    }
+
   // A second effect when the first leaves a clear remainder.
   if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
       top->cand.delta_bic < -10) {
@@ -254,6 +264,7 @@ nlohmann::json Diagnosis::to_json() const {
     rank.push_back(e);
   }
   j["ranking"] = rank;
+  j["ambiguous_with"] = ambiguous_with;
   if (!combination.empty()) {
     json c = json::array();
     for (const auto& r : combination) c.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}});

@@ -363,6 +363,10 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   r.correct = r.top1 == expected_top1(c.truth);
   if (c.truth == "none") r.confident_wrong = d.verdict == "explained";
   if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
+  r.ambiguous_with = d.ambiguous_with;
+  r.best_explained = d.combination.empty() ? 0.0 : d.combination_explained;
+  for (const auto& e : d.ranking)
+    if (e.cand.rejected.empty()) r.best_explained = std::max(r.best_explained, e.explained);
   r.real_before = d.before.gap_deg;
   r.real_after = d.after.gap_deg;
   r.hold_before = d.hold_before->gap_deg;
@@ -448,6 +452,8 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
     ++s.confusion[index_of(s.rows, r.drawn.truth)][index_of(s.columns, r.top1)];
     correct += r.correct;
     s.confident_wrong += r.confident_wrong;
+    s.ambiguous += !r.ambiguous_with.empty();
+    if (r.drawn.truth == "outside") s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
     if (!r.drawn.effect.effect.empty()) {
       ++effect_cases;
       correct_effects += r.correct;
@@ -462,6 +468,7 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
   s.top1_accuracy = static_cast<double>(correct) / static_cast<double>(s.cases.size());
   s.top1_effects = effect_cases ? static_cast<double>(correct_effects) / effect_cases : 0.0;
   s.median_shrink = median(shrinks);
+  s.min_shrink = shrinks.empty() ? 0.0 : *std::min_element(shrinks.begin(), shrinks.end());
   s.param_median = median(errors);
   s.param_max = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
   return s;
@@ -511,31 +518,36 @@ std::string BenchSummary::text() const {
       t += confusion[r][c] ? fmt::format(" {:>6}", confusion[r][c]) : fmt::format(" {:>6}", ".");
     t += "\n";
   }
-  t += fmt::format("\n{:>14} {:>4} {:>7} {:>7} {:>9} {:>9} {:>8}\n", "truth", "n", "top-1", "shrink", "par med",
-                   "par max", "params");
+  t += fmt::format("\n{:>14} {:>4} {:>7} {:>15} {:>7} {:>9} {:>9} {:>8}\n", "truth", "n", "top-1", "gap deg (med)",
+                   "shrink", "par med", "par max", "params");
   for (const auto& row : rows) {
     int n = 0, ok = 0;
-    std::vector<double> sh, pe;
+    std::vector<double> sh, pe, gap;
     for (const auto& r : cases) {
       if (r.drawn.truth != row) continue;
       ++n;
       ok += r.correct;
       sh.push_back(r.shrink);
+      gap.push_back(r.real_before);
       for (const auto& p : r.params) pe.push_back(p.rel_error);
     }
     const bool effect = row != "none" && row != "outside";
-    t += fmt::format("{:>14} {:>4} {:>6.0f}% {:>7} {:>9} {:>9} {:>8}\n", row, n, n ? 100.0 * ok / n : 0.0,
-                     effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
+    t += fmt::format("{:>14} {:>4} {:>6.0f}% {:>15.3f} {:>7} {:>9} {:>9} {:>8}\n", row, n, n ? 100.0 * ok / n : 0.0,
+                     median(gap), effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
                      pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * median(pe)),
                      pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * *std::max_element(pe.begin(), pe.end())),
                      pe.size());
   }
   t += fmt::format("\ntop-1 correct: {:.1f} % of all {} recordings ({:.1f} % of the effect recordings)\n",
                    100 * top1_accuracy, cases.size(), 100 * top1_effects);
-  t += fmt::format("median holdout shrink (1 - after/before) over the effect recordings: {:.1f} %\n", 100 * median_shrink);
+  t += fmt::format("median holdout shrink (1 - after/before) over the effect recordings: {:.1f} % (lowest {:.1f} %)\n",
+                   100 * median_shrink, 100 * min_shrink);
   t += fmt::format("parameters (strong enough to matter): {} scored, {} within {:.0f} %, median error {:.2f} %, max {:.2f} %\n",
                    params_scored, params_within, 100 * targets.param_rel_max, 100 * param_median, 100 * param_max);
   t += fmt::format("confident wrong answers on none/outside recordings: {}\n", confident_wrong);
+  t += fmt::format("named effects the diagnosis flagged as ambiguous: {}\n", ambiguous);
+  t += fmt::format("outside the vocabulary, the best effect or pair explained at most {:.1f} % of gap^2 (naming needs 90 %)\n",
+                   100 * outside_best_explained);
   double total = 0, worst = 0;
   for (const auto& r : cases) total += r.seconds, worst = std::max(worst, r.seconds);
   t += fmt::format("diagnosis time per recording: mean {:.2f} s, max {:.2f} s (wall {:.1f} s in all)\n",
@@ -553,7 +565,10 @@ nlohmann::json BenchSummary::to_json() const {
   j["top1_accuracy"] = top1_accuracy;
   j["top1_accuracy_effects"] = top1_effects;
   j["median_holdout_shrink"] = median_shrink;
+  j["min_holdout_shrink"] = min_shrink;
   j["confident_wrong"] = confident_wrong;
+  j["ambiguous"] = ambiguous;
+  j["outside_best_explained"] = outside_best_explained;
   j["params"] = {{"scored", params_scored}, {"within", params_within}, {"median_rel_error", param_median},
                  {"max_rel_error", param_max}};
   j["targets"] = {{"top1_min", targets.top1_min}, {"shrink_min", targets.shrink_min},
@@ -578,9 +593,11 @@ nlohmann::json BenchSummary::to_json() const {
     c["top1"] = r.top1;
     c["correct"] = r.correct;
     c["confident_wrong"] = r.confident_wrong;
+    c["ambiguous_with"] = r.ambiguous_with;
     c["gap_deg"] = {{"before", r.real_before}, {"after", r.real_after}};
     c["holdout_deg"] = {{"before", r.hold_before}, {"after", r.hold_after}};
     c["shrink"] = r.shrink;
+    c["best_explained"] = r.best_explained;
     json sc = json::array();
     for (const auto& q : r.params)
       sc.push_back({{"name", q.name}, {"truth", q.truth}, {"fitted", q.fitted}, {"rel_error", q.rel_error}});

@@ -92,8 +92,10 @@ struct BenchCaseResult {
   std::string top1;     // the named effect when explained, else the verdict
   bool correct = false;
   bool confident_wrong = false;  // an effect named (or no_gap) on a none/outside recording
+  std::vector<std::string> ambiguous_with;  // the diagnosis's own doubt (Diagnosis::ambiguous_with)
   double real_before = 0, real_after = 0, hold_before = 0, hold_after = 0;
   double shrink = 0;  // 1 - hold_after / hold_before
+  double best_explained = 0;  // the largest share of gap^2 any acceptable effect or pair explained
   std::vector<BenchParam> params;  // when the right effect is named (top-1)
   double seconds = 0;              // wall time of the diagnosis
 };
@@ -121,8 +123,10 @@ struct BenchSummary {
   std::vector<std::string> columns;  // verdict labels: effects, no_gap, unexplained
   std::vector<std::vector<int>> confusion;  // [row][column]
   double top1_accuracy = 0, top1_effects = 0;  // all cases; effect cases only
-  double median_shrink = 0;
+  double median_shrink = 0, min_shrink = 0;
   int confident_wrong = 0;
+  int ambiguous = 0;  // named effects the diagnosis itself flagged as ambiguous
+  double outside_best_explained = 0;  // the most any effect or pair explained on an outside recording
   int params_scored = 0, params_within = 0;  // scored parameters, those within param_rel_max
   double param_median = 0, param_max = 0;
   double seconds = 0;

@@ -93,6 +93,7 @@ TEST(Diagnose, NamesTheHandMadeEffectAndShrinksTheHoldoutGap) {
     ASSERT_FALSE(d.ranking.empty());
     EXPECT_EQ(d.verdict, "explained") << c.effect;
     EXPECT_EQ(d.ranking.front().cand.effect, c.effect) << d.to_json().dump(1);
+    EXPECT_TRUE(d.ambiguous_with.empty()) << c.effect << ": " << d.to_json()["ambiguous_with"].dump();
     if (d.ranking.front().cand.effect == c.effect)
       EXPECT_NEAR(d.ranking.front().cand.param(c.param), c.value, 0.2 * std::fabs(c.value)) << c.effect;
     ASSERT_TRUE(d.hold_before.has_value());
@@ -173,6 +174,30 @@ TEST(Diagnose, ExcessNoiseIsNamedAndExplained) {
   EXPECT_EQ(d.ranking.front().cand.effect, "excess_noise") << d.to_json().dump(1);
   EXPECT_NEAR(d.ranking.front().cand.param("sigma"), std::sqrt(0.03 * 0.03 - 0.01 * 0.01), 0.003);
   EXPECT_TRUE(d.ranking.front().cand.rejected.empty());
+}
+
+// At one constant speed a common delay is a constant angle lag, which hysteresis (a lag whose sign
+// follows the direction, here always forward) explains just as well: the diagnosis must say so.
+TEST(Diagnose, ConstantSpeedCannotTellDelayFromHysteresis) {
+  const double T = 2.0, turns = 6, tau = 3e-4;
+  Recording real;
+  std::mt19937_64 rng(8);
+  std::normal_distribution<double> noise(0, 0.01);
+  for (size_t k = 0; k < 20000; ++k) {
+    const double t = T * k / 20000, th = 2 * M_PI * turns * t / T, w = 2 * M_PI * turns / T;
+    double v[4];
+    test::paper_channels(th - w * tau, v);
+    for (int c = 0; c < 4; ++c) real.ch[c].push_back(v[c] + noise(rng));
+    real.theta_ref.push_back(th);
+    real.t.push_back(t);
+  }
+  const Diagnosis d = diagnose(sim(), real, nullptr);
+  ASSERT_EQ(d.verdict, "explained") << d.to_json().dump(1);
+  const std::string top = d.ranking.front().cand.effect;
+  ASSERT_TRUE(top == "common_delay" || top == "hysteresis") << top;
+  const std::string other = top == "common_delay" ? "hysteresis" : "common_delay";
+  EXPECT_NE(std::find(d.ambiguous_with.begin(), d.ambiguous_with.end(), other), d.ambiguous_with.end())
+      << d.to_json()["ambiguous_with"].dump();
 }
 
 TEST(Diagnose, BadInputIsRejected) {

@@ -38,6 +38,9 @@ void print_summary(const Diagnosis& d) {
     std::cout << fmt::format("  gap order {:2d}: {:.4f} deg  <- {}\n", d.harmonics[k].order, d.harmonics[k].amplitude_deg,
                              fmt::join(d.harmonics[k].causes, "; "));
   std::cout << fmt::format("verdict: {}\n", d.verdict);
+  if (!d.ambiguous_with.empty())
+    std::cout << fmt::format("  ambiguous: the recording cannot tell {} from {} (record with speed changes and a reversal)\n",
+                             d.ranking.front().cand.effect, fmt::join(d.ambiguous_with, ", "));
   std::cout << fmt::format("  {:<14} {:>10} {:>10} {:>10}  {}\n", "effect", "dBIC", "explained", "after deg", "parameters");
   for (size_t k = 0; k < std::min<size_t>(6, d.ranking.size()); ++k) {
     const auto& r = d.ranking[k];
