@@ -34,8 +34,8 @@ void check_recording(const Recording& r, const std::string& what) {
   for (int c = 0; c < r.channels && !varies; ++c)
     for (double v : r.ch[c]) varies = varies || v != r.ch[c][0];
   if (!varies)
-    throw InputError(fmt::format("{}: every channel ({}) is constant: no sensor signal to diagnose", what,
-                                 r.channels == 4 ? "c1, c2, c3, c4" : "sin, cos"));
+    throw InputError(fmt::format("{}: every channel ({}) is constant: no sensor signal to diagnose",
+                                 what, r.channels == 4 ? "c1, c2, c3, c4" : "sin, cos"));
   // Wrapped or unwrapped: either way a turn must be covered, checked by 10-degree sectors.
   const int covered = turn_sectors_covered(r.theta_ref);
   if (covered < 36)
@@ -160,7 +160,8 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   const RankedEffect* top = d.ranking.empty() ? nullptr : &d.ranking.front();
   if (!significant) {
     d.verdict = "no_gap";
-  } else if (top && top->cand.rejected.empty() && top->explained >= opt.explained_min && top->cand.delta_bic < -10) {
+  } else if (top && top->cand.rejected.empty() && top->explained >= opt.explained_min &&
+             top->cand.delta_bic < -10) {
     d.verdict = "explained";
   } else {
     d.verdict = "unexplained";
@@ -258,8 +259,9 @@ nlohmann::json Diagnosis::to_json() const {
     rank.push_back({{"effect", "unexplained"}, {"params", json::object()}, {"explained", 0.0},
                     {"after_deg", before.gap_deg}});
   for (const auto& r : ranking) {
-    json e = {{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained},
-              {"after_deg", r.after_deg}, {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}};
+    json e = {{"effect", r.cand.effect},       {"params", params_json(r.cand)},
+              {"explained", r.explained},      {"after_deg", r.after_deg},
+              {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}};
     if (!r.cand.rejected.empty()) e["rejected"] = r.cand.rejected;
     rank.push_back(e);
   }

@@ -16,7 +16,8 @@ namespace acore {
 struct DiagnoseOptions {
   int fourier_order = 12;     // harmonics of the static sensor model fitted to the simulation
   bool try_pairs = true;      // combinations of two effects when one leaves a clear remainder
-  double explained_min = 0.9; // the best effect (or pair) must explain this share of gap^2 to be named
+  double explained_min =
+      0.9;  // the best effect (or pair) must explain this share of gap^2 to be named
 };
 
 struct RankedEffect {

@@ -22,9 +22,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
-constexpr double kDuration = 2.0;    // seconds per recording: the sample rate is samples / kDuration
+constexpr double kDuration = 2.0;  // seconds per recording: the sample rate is samples / kDuration
 constexpr double kDriftSpanC = 40.0;  // drift coefficients are drawn as a change over this span
-constexpr double kVisible = 0.01;     // a four-channel draw must move c1 - c3 or c2 - c4 this much (x A)
+constexpr double kVisible =
+    0.01;  // a four-channel draw must move c1 - c3 or c2 - c4 this much (x A)
 
 const std::vector<std::string>& outside_kinds() {
   static const std::vector<std::string> k = {"glitch", "dropout", "modulation", "pickup"};
@@ -77,7 +78,9 @@ void draw_temperature(Draw& d, double out[2]) {
   out[1] = cooling ? a : b;
 }
 
-double top_speed(const Trajectory& t) { return std::max(std::fabs(t.speed_rps), std::fabs(t.speed_end_rps)); }
+double top_speed(const Trajectory& t) {
+  return std::max(std::fabs(t.speed_rps), std::fabs(t.speed_end_rps));
+}
 
 // The time of the ramp's reversal, in seconds.
 double reversal_time(const Trajectory& t) {
@@ -91,7 +94,8 @@ bool pairs_move(int channels, G&& gain, O&& offset) {
   if (channels == 2)
     return std::fabs(offset(0)) >= kVisible || std::fabs(offset(1)) >= kVisible ||
            std::fabs(gain(0) - gain(1)) >= kVisible;
-  return std::fabs(offset(0) - offset(2)) >= kVisible || std::fabs(offset(1) - offset(3)) >= kVisible ||
+  return std::fabs(offset(0) - offset(2)) >= kVisible ||
+         std::fabs(offset(1) - offset(3)) >= kVisible ||
          std::fabs(0.5 * (gain(0) + gain(2)) - 0.5 * (gain(1) + gain(3))) >= kVisible;
 }
 
@@ -105,7 +109,8 @@ Effect draw_effect(Draw& d, const BenchCase& c) {
     do {
       const auto s = d.subset(nch);
       for (int ch = 0; ch < nch; ++ch) o[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
-    } while (!pairs_move(nch, [](int) { return 0.0; }, [&](int ch) { return o[ch]; }));
+    } while (!pairs_move(
+        nch, [](int) { return 0.0; }, [&](int ch) { return o[ch]; }));
     for (int ch = 0; ch < nch; ++ch)
       if (o[ch] != 0) p.push_back({"offset_" + name(ch), o[ch]});
   } else if (e == "gain_mismatch") {
@@ -113,7 +118,8 @@ Effect draw_effect(Draw& d, const BenchCase& c) {
     do {
       const auto s = d.subset(nch);
       for (int ch = 0; ch < nch; ++ch) g[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
-    } while (!pairs_move(nch, [&](int ch) { return g[ch]; }, [](int) { return 0.0; }));
+    } while (!pairs_move(
+        nch, [&](int ch) { return g[ch]; }, [](int) { return 0.0; }));
     for (int ch = 0; ch < nch; ++ch)
       if (g[ch] != 0) p.push_back({"gain_" + name(ch), 1.0 + g[ch]});
   } else if (e == "phase_error") {
@@ -137,7 +143,9 @@ Effect draw_effect(Draw& d, const BenchCase& c) {
         if (what != 1) ko[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
         if (what != 0) kg[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
       }
-    } while (!pairs_move(nch, [&](int ch) { return kg[ch] * kDriftSpanC; }, [&](int ch) { return ko[ch] * kDriftSpanC; }));
+    } while (!pairs_move(
+        nch, [&](int ch) { return kg[ch] * kDriftSpanC; },
+        [&](int ch) { return ko[ch] * kDriftSpanC; }));
     for (int ch = 0; ch < nch; ++ch) {
       if (ko[ch] != 0) p.push_back({"offset_per_C_" + name(ch), ko[ch]});
       if (kg[ch] != 0) p.push_back({"gain_per_C_" + name(ch), kg[ch]});
@@ -181,7 +189,9 @@ ParamList draw_outside(Draw& d, const BenchCase& c) {
   }
   if (k == "pickup") {
     // Mains pick-up on one channel.
-    return {{"channel", d.i(0, c.channels - 1)}, {"amplitude", d.u(0.01, 0.03)}, {"freq_hz", 50},
+    return {{"channel", d.i(0, c.channels - 1)},
+            {"amplitude", d.u(0.01, 0.03)},
+            {"freq_hz", 50},
             {"phase_rad", d.u(-kPi, kPi)}};
   }
   throw InputError("diagnose-bench: unknown outside effect '" + k + "'");
@@ -204,11 +214,14 @@ void apply_outside(const BenchCase& c, Recording& r) {
   } else if (c.outside == "dropout") {
     auto& x = r.ch[static_cast<size_t>(param(p, "channel"))];
     for (int s = 0; s < 3; ++s) {
-      const double t0 = param(p, fmt::format("start{}_s", s)), t1 = t0 + param(p, fmt::format("length{}_s", s));
+      const double t0 = param(p, fmt::format("start{}_s", s)),
+                   t1 = t0 + param(p, fmt::format("length{}_s", s));
       double held = x[0];
       for (size_t i = 0; i < n; ++i) {
-        if (r.t[i] < t0) held = x[i];
-        else if (r.t[i] < t1) x[i] = held;
+        if (r.t[i] < t0)
+          held = x[i];
+        else if (r.t[i] < t1)
+          x[i] = held;
       }
     }
   } else if (c.outside == "modulation") {
@@ -242,8 +255,9 @@ std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
       if (k == name) return given(name) != v;
     return false;
   };
-  if (e.effect == "offset" || e.effect == "drift" || e.effect == "phase_error" || e.effect == "channel_skew" ||
-      e.effect == "common_delay" || e.effect == "excess_noise" || e.effect == "hysteresis") {
+  if (e.effect == "offset" || e.effect == "drift" || e.effect == "phase_error" ||
+      e.effect == "channel_skew" || e.effect == "common_delay" || e.effect == "excess_noise" ||
+      e.effect == "hysteresis") {
     for (const auto& [k, v] : e.params)
       if (drawn(k)) add(k, v, cand.param(k));
   } else if (e.effect == "gain_mismatch") {
@@ -251,9 +265,10 @@ std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
       if (drawn(k)) add(k + " - 1", v - 1, cand.param(k) - 1);
   } else if (e.effect == "harmonic") {
     const std::complex<double> t = std::polar(e.param("amplitude"), e.param("phase_rad"));
-    const std::complex<double> f = cand.param("order") == e.param("order")
-                                       ? std::polar(cand.param("amplitude"), cand.param("phase_rad"))
-                                       : std::complex<double>(0, 0);
+    const std::complex<double> f =
+        cand.param("order") == e.param("order")
+            ? std::polar(cand.param("amplitude"), cand.param("phase_rad"))
+            : std::complex<double>(0, 0);
     out.push_back({fmt::format("order {} a e^(i psi)", e.param("order")), std::abs(t), std::abs(f),
                    std::abs(f - t) / std::abs(t)});
   } else if (e.effect == "eccentricity") {
@@ -261,7 +276,8 @@ std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
     const std::complex<double> f = std::polar(cand.param("epsilon_rad"), cand.param("phi0_rad"));
     out.push_back({"eps e^(i phi0)", std::abs(t), std::abs(f), std::abs(f - t) / std::abs(t)});
   } else if (e.effect == "quantization") {
-    add("step", 2 * e.param("full_scale") / std::ldexp(1.0, static_cast<int>(e.param("bits"))), cand.param("step"));
+    add("step", 2 * e.param("full_scale") / std::ldexp(1.0, static_cast<int>(e.param("bits"))),
+        cand.param("step"));
   } else if (e.effect == "saturation") {
     add("depth 1 - level/P", 1 - e.param("level") / c.peak, 1 - cand.param("level") / c.peak);
   }
@@ -294,7 +310,8 @@ BenchCase draw_bench_case(uint64_t seed, size_t index, const std::string& truth,
   c.channels = channels;
   c.seed = mix(mix(seed) ^ index);
   Draw d(c.seed);
-  // The designer's model: a realistic imperfect sensor (amplitudes, offsets, harmonics 1..5, noise).
+  // The designer's model: a realistic imperfect sensor (amplitudes, offsets, harmonics 1..5,
+  // noise).
   Scenario& m = c.model;
   m.name = "bench";
   m.channels = channels;
@@ -315,7 +332,8 @@ BenchCase draw_bench_case(uint64_t seed, size_t index, const std::string& truth,
   m.trajectory.turns = d.u(2, 5);
   m.trajectory.theta0_rad = d.u(0, 2 * kPi);
   for (int ch = 0; ch < channels; ++ch)
-    for (int k = 0; k < 3600; ++k) c.peak = std::max(c.peak, std::fabs(m.channel_value(ch, 2 * kPi * k / 3600)));
+    for (int k = 0; k < 3600; ++k)
+      c.peak = std::max(c.peak, std::fabs(m.channel_value(ch, 2 * kPi * k / 3600)));
   c.real_traj = draw_ramp(d);
   c.hold_traj = draw_ramp(d);
   draw_temperature(d, c.real_temp);
@@ -359,7 +377,8 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   const Diagnosis d = diagnose(rec.sim, rec.real, &rec.holdout);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.verdict = d.verdict;
-  r.top1 = d.verdict == "explained" && !d.ranking.empty() ? d.ranking.front().cand.effect : d.verdict;
+  r.top1 =
+      d.verdict == "explained" && !d.ranking.empty() ? d.ranking.front().cand.effect : d.verdict;
   r.correct = r.top1 == expected_top1(c.truth);
   if (c.truth == "none") r.confident_wrong = d.verdict == "explained";
   if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
@@ -398,7 +417,8 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
     std::vector<BenchCase> some;
     for (size_t i : opt.only) {
       if (i >= cases.size())
-        throw InputError(fmt::format("diagnose-bench: --only {}: the run has cases 0..{}", i, cases.size() - 1));
+        throw InputError(
+            fmt::format("diagnose-bench: --only {}: the run has cases 0..{}", i, cases.size() - 1));
       some.push_back(cases[i]);
     }
     cases = some;
@@ -453,7 +473,8 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
     correct += r.correct;
     s.confident_wrong += r.confident_wrong;
     s.ambiguous += !r.ambiguous_with.empty();
-    if (r.drawn.truth == "outside") s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
+    if (r.drawn.truth == "outside")
+      s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
     if (!r.drawn.effect.effect.empty()) {
       ++effect_cases;
       correct_effects += r.correct;
@@ -477,18 +498,18 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
 std::vector<std::string> BenchSummary::missed() const {
   std::vector<std::string> m;
   if (top1_accuracy < targets.top1_min)
-    m.push_back(fmt::format("top-1 correct in {:.1f} % of cases (target >= {:.0f} %)", 100 * top1_accuracy,
-                            100 * targets.top1_min));
+    m.push_back(fmt::format("top-1 correct in {:.1f} % of cases (target >= {:.0f} %)",
+                            100 * top1_accuracy, 100 * targets.top1_min));
   if (median_shrink < targets.shrink_min)
-    m.push_back(fmt::format("median holdout shrink {:.1f} % (target >= {:.0f} %)", 100 * median_shrink,
-                            100 * targets.shrink_min));
+    m.push_back(fmt::format("median holdout shrink {:.1f} % (target >= {:.0f} %)",
+                            100 * median_shrink, 100 * targets.shrink_min));
   if (params_within < params_scored)
     m.push_back(fmt::format("{} of {} scored parameters off by more than {:.0f} % (worst {:.1f} %)",
-                            params_scored - params_within, params_scored, 100 * targets.param_rel_max,
-                            100 * param_max));
+                            params_scored - params_within, params_scored,
+                            100 * targets.param_rel_max, 100 * param_max));
   if (confident_wrong > targets.confident_wrong_max)
-    m.push_back(fmt::format("{} confident wrong answers on none/outside recordings (target <= {})", confident_wrong,
-                            targets.confident_wrong_max));
+    m.push_back(fmt::format("{} confident wrong answers on none/outside recordings (target <= {})",
+                            confident_wrong, targets.confident_wrong_max));
   return m;
 }
 
@@ -497,10 +518,12 @@ bool BenchSummary::met() const { return missed().empty(); }
 namespace {
 std::string short_name(const std::string& s) {
   static const std::vector<std::pair<std::string, std::string>> k = {
-      {"offset", "off"},       {"gain_mismatch", "gain"}, {"phase_error", "phase"},  {"harmonic", "harm"},
-      {"eccentricity", "ecc"}, {"channel_skew", "skew"},  {"common_delay", "delay"}, {"drift", "drift"},
-      {"quantization", "quant"}, {"saturation", "sat"},   {"excess_noise", "noise"}, {"hysteresis", "hyst"},
-      {"no_gap", "nogap"},     {"unexplained", "unexpl"}, {"none", "none"},          {"outside", "outside"}};
+      {"offset", "off"},         {"gain_mismatch", "gain"}, {"phase_error", "phase"},
+      {"harmonic", "harm"},      {"eccentricity", "ecc"},   {"channel_skew", "skew"},
+      {"common_delay", "delay"}, {"drift", "drift"},        {"quantization", "quant"},
+      {"saturation", "sat"},     {"excess_noise", "noise"}, {"hysteresis", "hyst"},
+      {"no_gap", "nogap"},       {"unexplained", "unexpl"}, {"none", "none"},
+      {"outside", "outside"}};
   for (const auto& [a, b] : k)
     if (a == s) return b;
   return s;
@@ -508,7 +531,8 @@ std::string short_name(const std::string& s) {
 }  // namespace
 
 std::string BenchSummary::text() const {
-  std::string t = fmt::format("confusion matrix (rows: truth, columns: top-1 verdict), {} recordings\n", cases.size());
+  std::string t = fmt::format(
+      "confusion matrix (rows: truth, columns: top-1 verdict), {} recordings\n", cases.size());
   t += fmt::format("{:>14}", "");
   for (const auto& c : columns) t += fmt::format(" {:>6}", short_name(c));
   t += "\n";
@@ -518,8 +542,8 @@ std::string BenchSummary::text() const {
       t += confusion[r][c] ? fmt::format(" {:>6}", confusion[r][c]) : fmt::format(" {:>6}", ".");
     t += "\n";
   }
-  t += fmt::format("\n{:>14} {:>4} {:>7} {:>15} {:>7} {:>9} {:>9} {:>8}\n", "truth", "n", "top-1", "gap deg (med)",
-                   "shrink", "par med", "par max", "params");
+  t += fmt::format("\n{:>14} {:>4} {:>7} {:>15} {:>7} {:>9} {:>9} {:>8}\n", "truth", "n", "top-1",
+                   "gap deg (med)", "shrink", "par med", "par max", "params");
   for (const auto& row : rows) {
     int n = 0, ok = 0;
     std::vector<double> sh, pe, gap;
@@ -532,26 +556,37 @@ std::string BenchSummary::text() const {
       for (const auto& p : r.params) pe.push_back(p.rel_error);
     }
     const bool effect = row != "none" && row != "outside";
-    t += fmt::format("{:>14} {:>4} {:>6.0f}% {:>15.3f} {:>7} {:>9} {:>9} {:>8}\n", row, n, n ? 100.0 * ok / n : 0.0,
-                     median(gap), effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
-                     pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * median(pe)),
-                     pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * *std::max_element(pe.begin(), pe.end())),
-                     pe.size());
+    t += fmt::format(
+        "{:>14} {:>4} {:>6.0f}% {:>15.3f} {:>7} {:>9} {:>9} {:>8}\n", row, n,
+        n ? 100.0 * ok / n : 0.0, median(gap),
+        effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
+        pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * median(pe)),
+        pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * *std::max_element(pe.begin(), pe.end())),
+        pe.size());
   }
-  t += fmt::format("\ntop-1 correct: {:.1f} % of all {} recordings ({:.1f} % of the effect recordings)\n",
-                   100 * top1_accuracy, cases.size(), 100 * top1_effects);
-  t += fmt::format("median holdout shrink (1 - after/before) over the effect recordings: {:.1f} % (lowest {:.1f} %)\n",
-                   100 * median_shrink, 100 * min_shrink);
-  t += fmt::format("parameters (strong enough to matter): {} scored, {} within {:.0f} %, median error {:.2f} %, max {:.2f} %\n",
-                   params_scored, params_within, 100 * targets.param_rel_max, 100 * param_median, 100 * param_max);
+  t += fmt::format(
+      "\ntop-1 correct: {:.1f} % of all {} recordings ({:.1f} % of the effect recordings)\n",
+      100 * top1_accuracy, cases.size(), 100 * top1_effects);
+  t += fmt::format(
+      "median holdout shrink (1 - after/before) over the effect recordings: {:.1f} % (lowest "
+      "{:.1f} %)\n",
+      100 * median_shrink, 100 * min_shrink);
+  t += fmt::format(
+      "parameters (strong enough to matter): {} scored, {} within {:.0f} %, median error {:.2f} %, "
+      "max {:.2f} %\n",
+      params_scored, params_within, 100 * targets.param_rel_max, 100 * param_median,
+      100 * param_max);
   t += fmt::format("confident wrong answers on none/outside recordings: {}\n", confident_wrong);
   t += fmt::format("named effects the diagnosis flagged as ambiguous: {}\n", ambiguous);
-  t += fmt::format("outside the vocabulary, the best effect or pair explained at most {:.1f} % of gap^2 (naming needs 90 %)\n",
-                   100 * outside_best_explained);
+  t += fmt::format(
+      "outside the vocabulary, the best effect or pair explained at most {:.1f} % of gap^2 (naming "
+      "needs 90 %)\n",
+      100 * outside_best_explained);
   double total = 0, worst = 0;
   for (const auto& r : cases) total += r.seconds, worst = std::max(worst, r.seconds);
-  t += fmt::format("diagnosis time per recording: mean {:.2f} s, max {:.2f} s (wall {:.1f} s in all)\n",
-                   cases.empty() ? 0.0 : total / cases.size(), worst, seconds);
+  t += fmt::format(
+      "diagnosis time per recording: mean {:.2f} s, max {:.2f} s (wall {:.1f} s in all)\n",
+      cases.empty() ? 0.0 : total / cases.size(), worst, seconds);
   return t;
 }
 
@@ -569,10 +604,14 @@ nlohmann::json BenchSummary::to_json() const {
   j["confident_wrong"] = confident_wrong;
   j["ambiguous"] = ambiguous;
   j["outside_best_explained"] = outside_best_explained;
-  j["params"] = {{"scored", params_scored}, {"within", params_within}, {"median_rel_error", param_median},
+  j["params"] = {{"scored", params_scored},
+                 {"within", params_within},
+                 {"median_rel_error", param_median},
                  {"max_rel_error", param_max}};
-  j["targets"] = {{"top1_min", targets.top1_min}, {"shrink_min", targets.shrink_min},
-                  {"param_rel_max", targets.param_rel_max}, {"confident_wrong_max", targets.confident_wrong_max}};
+  j["targets"] = {{"top1_min", targets.top1_min},
+                  {"shrink_min", targets.shrink_min},
+                  {"param_rel_max", targets.param_rel_max},
+                  {"confident_wrong_max", targets.confident_wrong_max}};
   j["met"] = met();
   j["missed"] = missed();
   j["seconds"] = seconds;
@@ -600,7 +639,8 @@ nlohmann::json BenchSummary::to_json() const {
     c["best_explained"] = r.best_explained;
     json sc = json::array();
     for (const auto& q : r.params)
-      sc.push_back({{"name", q.name}, {"truth", q.truth}, {"fitted", q.fitted}, {"rel_error", q.rel_error}});
+      sc.push_back(
+          {{"name", q.name}, {"truth", q.truth}, {"fitted", q.fitted}, {"rel_error", q.rel_error}});
     c["recovery"] = sc;
     c["seconds"] = r.seconds;
     all.push_back(c);

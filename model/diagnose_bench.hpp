@@ -20,9 +20,9 @@
 //   harmonic       1..5 % of A, order 2..5 (two channels) or 3, 5, 7 (four: even orders cancel in
 //                  c1 - c3 and cause no angle error), any phase
 //   eccentricity   0.2..2 deg, any phi0
-//   channel_skew   tau with 360 * v * tau = 0.2..3 deg (the phase between neighbouring channels at v)
-//   common_delay   tau with 360 * v * tau = 0.2..3 deg (the angle lag at v)
-//   drift          on a random subset of channels, offset and/or gain coefficients whose change over
+//   channel_skew   tau with 360 * v * tau = 0.2..3 deg (the phase between neighbouring channels at
+//   v) common_delay   tau with 360 * v * tau = 0.2..3 deg (the angle lag at v) drift          on a
+//   random subset of channels, offset and/or gain coefficients whose change over
 //                  40 degC is 1..5 % of A
 //   quantization   6..10 bits over a full scale of 1.05..1.5 P
 //   saturation     level 80..95 % of P
@@ -37,9 +37,9 @@
 // is compared as a relative error |fitted - true| / |true| of the quantity that carries the effect:
 //   offset, drift, tau, delta, h, sigma   the parameter itself
 //   gain_mismatch                         gain - 1 (the mismatch, not the gain)
-//   harmonic                              the complex amplitude a e^{i psi} (order must match exactly)
-//   eccentricity                          the complex eps e^{i phi0}
-//   quantization                          the ADC step 2 full_scale / 2^bits (bits and full scale
+//   harmonic                              the complex amplitude a e^{i psi} (order must match
+//   exactly) eccentricity                          the complex eps e^{i phi0} quantization the ADC
+//   step 2 full_scale / 2^bits (bits and full scale
 //                                         are not separately observable)
 //   saturation                            the clipped depth 1 - level / P
 #pragma once
@@ -62,12 +62,12 @@ struct BenchCase {
   std::string outside;  // for "outside": glitch, dropout, modulation or pickup
   ParamList outside_params;
   int channels = 4;
-  Scenario model;             // the designer's model (no effects): sim, and the base of real/holdout
-  Effect effect;              // the drawn effect (empty name for none/outside)
+  Scenario model;  // the designer's model (no effects): sim, and the base of real/holdout
+  Effect effect;   // the drawn effect (empty name for none/outside)
   Trajectory real_traj, hold_traj;
   double real_temp[2] = {25, 25}, hold_temp[2] = {25, 25};  // start, end degC
-  double peak = 1;            // P: the largest |channel| of the clean model
-  uint64_t seed = 0;          // noise seeds derive from it
+  double peak = 1;    // P: the largest |channel| of the clean model
+  uint64_t seed = 0;  // noise seeds derive from it
 };
 
 struct BenchRecordings {
@@ -94,19 +94,20 @@ struct BenchCaseResult {
   bool confident_wrong = false;  // an effect named (or no_gap) on a none/outside recording
   std::vector<std::string> ambiguous_with;  // the diagnosis's own doubt (Diagnosis::ambiguous_with)
   double real_before = 0, real_after = 0, hold_before = 0, hold_after = 0;
-  double shrink = 0;  // 1 - hold_after / hold_before
+  double shrink = 0;          // 1 - hold_after / hold_before
   double best_explained = 0;  // the largest share of gap^2 any acceptable effect or pair explained
   std::vector<BenchParam> params;  // when the right effect is named (top-1)
   double seconds = 0;              // wall time of the diagnosis
 };
 
 struct BenchOptions {
-  int per_effect = 10;    // recordings per effect, and as many with none and outside the vocabulary
+  int per_effect = 10;  // recordings per effect, and as many with none and outside the vocabulary
   uint64_t seed = 1;
   size_t samples = 20000;  // per recording
   int jobs = 1;
   std::vector<size_t> only;  // run only these case indices (empty: all)
-  std::function<void(size_t done, size_t total, const BenchCaseResult&)> progress;  // called serialized
+  std::function<void(size_t done, size_t total, const BenchCaseResult&)>
+      progress;  // called serialized
 };
 
 // The targets of issue 5.
@@ -119,14 +120,15 @@ struct BenchTargets {
 
 struct BenchSummary {
   std::vector<BenchCaseResult> cases;
-  std::vector<std::string> rows;     // truth labels: effects, none, outside
-  std::vector<std::string> columns;  // verdict labels: effects, no_gap, unexplained
-  std::vector<std::vector<int>> confusion;  // [row][column]
+  std::vector<std::string> rows;               // truth labels: effects, none, outside
+  std::vector<std::string> columns;            // verdict labels: effects, no_gap, unexplained
+  std::vector<std::vector<int>> confusion;     // [row][column]
   double top1_accuracy = 0, top1_effects = 0;  // all cases; effect cases only
   double median_shrink = 0, min_shrink = 0;
   int confident_wrong = 0;
   int ambiguous = 0;  // named effects the diagnosis itself flagged as ambiguous
-  double outside_best_explained = 0;  // the most any effect or pair explained on an outside recording
+  double outside_best_explained =
+      0;  // the most any effect or pair explained on an outside recording
   int params_scored = 0, params_within = 0;  // scored parameters, those within param_rel_max
   double param_median = 0, param_max = 0;
   double seconds = 0;
@@ -148,6 +150,7 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples);
 std::vector<BenchCase> draw_bench_cases(const BenchOptions& opt);
 
 // Draws and diagnoses 14 * per_effect cases on `jobs` threads, then summarizes.
-BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& targets = BenchTargets{});
+BenchSummary run_diagnose_bench(const BenchOptions& opt,
+                                const BenchTargets& targets = BenchTargets{});
 
 }  // namespace acore

@@ -16,7 +16,8 @@ namespace acore {
 namespace {
 
 constexpr double kTempRef = 25.0;
-// excess_noise is rejected when more than this share of its variance is correlated sample to sample.
+// excess_noise is rejected when more than this share of its variance is correlated sample to
+// sample.
 constexpr double kWhiteShare = 0.2;
 
 // Per-channel columns of one parameter: col[c][i] = d channel_c(i) / d parameter.
@@ -118,7 +119,9 @@ FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
 namespace {
 // How much of a channel's extra white-noise variance each signal carries: c1 - c3 two channels',
 // (c1 + c3)/2 a quarter of two; sin, cos one.
-double signal_weight(const Recording& r, int q) { return r.channels == 4 ? (q < 2 ? 2.0 : 0.5) : 1.0; }
+double signal_weight(const Recording& r, int q) {
+  return r.channels == 4 ? (q < 2 ? 2.0 : 0.5) : 1.0;
+}
 }  // namespace
 
 double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double extra_sigma) {
@@ -133,7 +136,8 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double e
   double total = 0;
   const double n = static_cast<double>(real.size());
   for (int q = 0; q < S; ++q) {
-    const double s2 = sq(fp.signal_sigma[q]), v = s2 + signal_weight(real, q) * extra_sigma * extra_sigma;
+    const double s2 = sq(fp.signal_sigma[q]),
+                 v = s2 + signal_weight(real, q) * extra_sigma * extra_sigma;
     total += rss[q] / v + n * std::log(v / s2);
   }
   return total;
@@ -147,7 +151,8 @@ struct Fitted {
   ParamList params;
   int k = 0;
   bool applicable = true;  // false: the recording cannot show this effect (drift without temp, ...)
-  std::string rejected;    // why the effect's own assumptions fail on this recording (empty: they hold)
+  std::string
+      rejected;  // why the effect's own assumptions fail on this recording (empty: they hold)
 };
 
 std::string chan_name(const Recording& r, int c) {
@@ -273,7 +278,8 @@ Fitted fit_quantization(const FitProblem& fp) {
   const double tiny = 1e-12 * std::max(peak, 1e-300);
   double step = 0;
   for (size_t i = 1; i < all.size(); ++i)
-    if (all[i] - all[i - 1] > tiny && (step == 0 || all[i] - all[i - 1] < step)) step = all[i] - all[i - 1];
+    if (all[i] - all[i - 1] > tiny && (step == 0 || all[i] - all[i - 1] < step))
+      step = all[i] - all[i - 1];
   if (step == 0) {
     f.applicable = false;  // one value only: nothing to read a step from
     return f;
@@ -303,8 +309,11 @@ Fitted fit_quantization(const FitProblem& fp) {
     return f;
   }
   // Full scale: the smallest power of two at or above the peak (an ADC range); bits from the step.
-  const double full_scale = std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-300)))));
-  f.params = {{"bits", std::round(std::log2(2.0 * full_scale / step))}, {"full_scale", full_scale}, {"step", step},
+  const double full_scale =
+      std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-300)))));
+  f.params = {{"bits", std::round(std::log2(2.0 * full_scale / step))},
+              {"full_scale", full_scale},
+              {"step", step},
               {"origin", origin}};
   return f;
 }
@@ -385,13 +394,15 @@ Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base
     spread2 += sq(v / w) / n;
   }
   if (excess > 0 && correlated > kWhiteShare * excess + 4 * std::sqrt(spread2))
-    f.rejected = fmt::format("not white noise: {:.0f} % of the excess variance is correlated from sample to sample",
-                             100 * std::min(1.0, correlated / excess));
+    f.rejected = fmt::format(
+        "not white noise: {:.0f} % of the excess variance is correlated from sample to sample",
+        100 * std::min(1.0, correlated / excess));
   return f;
 }
 
 // Mean and variance of an ADC's output Q(x + n), n ~ N(0, sigma^2), Q rounding to origin + k step.
-void quantized_moments(double x, double sigma, double step, double origin, double& mean, double& var) {
+void quantized_moments(double x, double sigma, double step, double origin, double& mean,
+                       double& var) {
   const double u = (x - origin) / step;
   if (sigma < 1e-3 * step) {
     mean = origin + step * std::nearbyint(u);
@@ -404,7 +415,8 @@ void quantized_moments(double x, double sigma, double step, double origin, doubl
     return;
   }
   const double z = sigma / step;
-  const int lo = static_cast<int>(std::floor(u - 7 * z)) - 1, hi = static_cast<int>(std::ceil(u + 7 * z)) + 1;
+  const int lo = static_cast<int>(std::floor(u - 7 * z)) - 1,
+            hi = static_cast<int>(std::ceil(u + 7 * z)) + 1;
   double m1 = 0, m2 = 0;
   double cdf_lo = 0.5 * std::erfc(-((lo - 0.5) - u) / (z * M_SQRT2));
   for (int k = lo; k <= hi; ++k) {
@@ -486,7 +498,8 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
         added += var - sigma * sigma;
       }
     }
-    if (extra_sigma) *extra_sigma = std::sqrt(std::max(0.0, added / (r.channels * static_cast<double>(r.size()))));
+    if (extra_sigma)
+      *extra_sigma = std::sqrt(std::max(0.0, added / (r.channels * static_cast<double>(r.size()))));
   } else if (e == "saturation") {
     const double level = cand.param("level");
     for (int c = 0; c < r.channels; ++c)
@@ -499,7 +512,8 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
   return out;
 }
 
-EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect, double base_extra) {
+EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
+                           double base_extra) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   Fitted f;

@@ -33,8 +33,9 @@ struct EffectCandidate {
   double delta_bic = 0;  // bic - bic of "no effect": negative is evidence for the effect
   bool applicable = true;  // false: the recording cannot show the effect (no temp column for drift,
                            // values on no lattice for quantization); likelihoods are then infinite
-  std::string rejected;    // non-empty: the recording contradicts the effect's own assumptions (excess
-                           // noise that is not white); says how. Such an effect is never named.
+  std::string
+      rejected;  // non-empty: the recording contradicts the effect's own assumptions (excess
+                 // noise that is not white); says how. Such an effect is never named.
 };
 
 // The residual problem: real and model channels at the real recording's samples.
@@ -53,7 +54,8 @@ FitProblem make_fit_problem(const GapModel& m, const Recording& real);
 
 // -2 log L of a candidate prediction of the real channels, whose noise is the simulation's plus
 // white noise of extra_sigma on every channel (excess_noise, quantization), up to a constant.
-double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction, double extra_sigma = 0);
+double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction,
+                           double extra_sigma = 0);
 
 // Fits one effect (DESIGN 3.4 name) on top of `base` (the model prediction, possibly already
 // carrying another effect, whose extra white noise per channel is base_extra). Throws InputError

@@ -20,7 +20,8 @@ namespace {
 // A back-and-forth trajectory with varying speed and a temperature ramp; `shift` moves the angle
 // each channel sees, `chan` edits the channel values (given the angle and temperature);
 // independent noise sigma.
-Recording make(size_t n, uint64_t seed, double sigma, const std::function<double(int, double, double, double)>& shift,
+Recording make(size_t n, uint64_t seed, double sigma,
+               const std::function<double(int, double, double, double)>& shift,
                const std::function<void(double*, double, double)>& chan) {
   Recording r;
   std::mt19937_64 rng(seed);
@@ -71,14 +72,19 @@ TEST(Diagnose, NamesTheHandMadeEffectAndShrinksTheHoldoutGap) {
   const std::vector<Case> cases = {
       {"offset", no_shift, [](double* c, double, double) { c[0] += 0.03; }, "offset_c1", 0.03},
       {"gain_mismatch", no_shift, [](double* c, double, double) { c[1] *= 1.04; }, "gain_c2", 1.04},
-      {"phase_error", [](int ch, double, double, double) { return ch == 0 || ch == 2 ? 0.02 : 0.0; }, no_chan,
+      {"phase_error",
+       [](int ch, double, double, double) { return ch == 0 || ch == 2 ? 0.02 : 0.0; }, no_chan,
        "delta_rad", 0.02},
-      {"eccentricity", [](int, double th, double, double) { return 0.01 * std::sin(th - 0.5); }, no_chan,
-       "epsilon_rad", 0.01},
-      {"common_delay", [](int, double, double w, double) { return -w * 2e-4; }, no_chan, "tau_s", 2e-4},
-      {"channel_skew", [](int ch, double, double w, double) { return w * ch * 1e-4; }, no_chan, "tau_s", 1e-4},
-      {"hysteresis", [](int, double, double w, double) { return w >= 0 ? 0.004 : -0.004; }, no_chan, "h_rad", 0.004},
-      {"drift", no_shift, [](double* c, double, double temp) { c[0] += 0.001 * (temp - 25); }, "offset_per_C_c1", 0.001},
+      {"eccentricity", [](int, double th, double, double) { return 0.01 * std::sin(th - 0.5); },
+       no_chan, "epsilon_rad", 0.01},
+      {"common_delay", [](int, double, double w, double) { return -w * 2e-4; }, no_chan, "tau_s",
+       2e-4},
+      {"channel_skew", [](int ch, double, double w, double) { return w * ch * 1e-4; }, no_chan,
+       "tau_s", 1e-4},
+      {"hysteresis", [](int, double, double w, double) { return w >= 0 ? 0.004 : -0.004; }, no_chan,
+       "h_rad", 0.004},
+      {"drift", no_shift, [](double* c, double, double temp) { c[0] += 0.001 * (temp - 25); },
+       "offset_per_C_c1", 0.001},
       {"saturation", no_shift,
        [](double* c, double, double) {
          for (int k = 0; k < 4; ++k) c[k] = std::clamp(c[k], -1.2, 1.2);
@@ -93,7 +99,8 @@ TEST(Diagnose, NamesTheHandMadeEffectAndShrinksTheHoldoutGap) {
     ASSERT_FALSE(d.ranking.empty());
     EXPECT_EQ(d.verdict, "explained") << c.effect;
     EXPECT_EQ(d.ranking.front().cand.effect, c.effect) << d.to_json().dump(1);
-    EXPECT_TRUE(d.ambiguous_with.empty()) << c.effect << ": " << d.to_json()["ambiguous_with"].dump();
+    EXPECT_TRUE(d.ambiguous_with.empty())
+        << c.effect << ": " << d.to_json()["ambiguous_with"].dump();
     if (d.ranking.front().cand.effect == c.effect)
       EXPECT_NEAR(d.ranking.front().cand.param(c.param), c.value, 0.2 * std::fabs(c.value)) << c.effect;
     ASSERT_TRUE(d.hold_before.has_value());
@@ -126,7 +133,8 @@ TEST(Diagnose, RecoversAHandMadeThirdHarmonic) {
   EXPECT_LT(d.hold_after->gap_deg, 0.1 * d.hold_before->gap_deg);
 }
 
-// An 8-bit ADC over [-2, 2) applied here after the noise (step 4/256): the values lie on its lattice.
+// An 8-bit ADC over [-2, 2) applied here after the noise (step 4/256): the values lie on its
+// lattice.
 TEST(Diagnose, RecoversAHandMadeAdcStep) {
   const double step = 4.0 / 256;
   auto adc = [&](Recording r) {
@@ -153,10 +161,12 @@ TEST(Diagnose, NoLatticeNoQuantization) {
 }
 
 // Mains pick-up (50 Hz) on c1: more variance than the simulation's noise, but not white noise and
-// no effect of the vocabulary: the excess-noise candidate must be rejected, the verdict unexplained.
+// no effect of the vocabulary: the excess-noise candidate must be rejected, the verdict
+// unexplained.
 TEST(Diagnose, InterferenceIsNotExcessNoise) {
   Recording real = make(20000, 6, 0.01, no_shift, no_chan);
-  for (size_t k = 0; k < real.size(); ++k) real.ch[0][k] += 0.02 * std::sin(2 * M_PI * 50 * real.t[k]);
+  for (size_t k = 0; k < real.size(); ++k)
+    real.ch[0][k] += 0.02 * std::sin(2 * M_PI * 50 * real.t[k]);
   const Diagnosis d = diagnose(sim(), real, nullptr);
   EXPECT_EQ(d.verdict, "unexplained") << d.to_json().dump(1);
   bool seen = false;
@@ -196,7 +206,8 @@ TEST(Diagnose, ConstantSpeedCannotTellDelayFromHysteresis) {
   const std::string top = d.ranking.front().cand.effect;
   ASSERT_TRUE(top == "common_delay" || top == "hysteresis") << top;
   const std::string other = top == "common_delay" ? "hysteresis" : "common_delay";
-  EXPECT_NE(std::find(d.ambiguous_with.begin(), d.ambiguous_with.end(), other), d.ambiguous_with.end())
+  EXPECT_NE(std::find(d.ambiguous_with.begin(), d.ambiguous_with.end(), other),
+            d.ambiguous_with.end())
       << d.to_json()["ambiguous_with"].dump();
 }
 

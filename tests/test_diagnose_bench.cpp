@@ -23,7 +23,8 @@ TEST(DiagnoseBench, DrawsAreReproducibleAndInTheirRanges) {
       const BenchCase again = draw_bench_case(3, k, e, ch);
       ASSERT_EQ(c.effect.params, again.effect.params) << e;
       ASSERT_EQ(c.effect.effect, e);
-      const double v = std::max(std::fabs(c.real_traj.speed_rps), std::fabs(c.real_traj.speed_end_rps));
+      const double v =
+          std::max(std::fabs(c.real_traj.speed_rps), std::fabs(c.real_traj.speed_end_rps));
       // The ramp reverses: its end speeds have opposite signs.
       EXPECT_LT(c.real_traj.speed_rps * c.real_traj.speed_end_rps, 0);
       auto in = [&](double x, double lo, double hi) {
@@ -41,7 +42,8 @@ TEST(DiagnoseBench, DrawsAreReproducibleAndInTheirRanges) {
       if (e == "hysteresis") in(std::fabs(c.effect.param("h_rad")) / kDeg, 0.1, 1);
       if (e == "offset" && ch == 4) {
         const auto o = [&](const char* n) { return c.effect.param(n); };
-        EXPECT_GE(std::max(std::fabs(o("offset_c1") - o("offset_c3")), std::fabs(o("offset_c2") - o("offset_c4"))),
+        EXPECT_GE(std::max(std::fabs(o("offset_c1") - o("offset_c3")),
+                           std::fabs(o("offset_c2") - o("offset_c4"))),
                   0.01);
       }
     }

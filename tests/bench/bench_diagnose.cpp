@@ -5,16 +5,17 @@
 // BM_Diagnose/<case>: one effect the diagnosis names (a single fit), and one outside the vocabulary
 // (every effect fitted, then every pair tried on top of the best: the slowest path).
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
 
 #include "diagnose.hpp"
 #include "diagnose_bench.hpp"
-#include <fmt/format.h>
 
 namespace {
 
 constexpr size_t kSamples = 50000;
 
-void run(benchmark::State& state, const std::string& truth, int channels, const std::string& outside) {
+void run(benchmark::State& state, const std::string& truth, int channels,
+         const std::string& outside) {
   const acore::BenchCase c = acore::draw_bench_case(1, 0, truth, channels, outside);
   const acore::BenchRecordings r = acore::make_bench_recordings(c, kSamples);
   std::string verdict;
@@ -23,7 +24,8 @@ void run(benchmark::State& state, const std::string& truth, int channels, const 
     verdict = d.verdict == "explained" ? d.ranking.front().cand.effect : d.verdict;
     benchmark::DoNotOptimize(d.after.gap_deg);
   }
-  state.SetLabel(fmt::format("{} ch, truth {} -> {}", channels, outside.empty() ? truth : outside, verdict));
+  state.SetLabel(
+      fmt::format("{} ch, truth {} -> {}", channels, outside.empty() ? truth : outside, verdict));
   state.counters["samples"] = static_cast<double>(kSamples);
 }
 
