@@ -362,6 +362,7 @@ BenchRecordings make_bench_recordings(const BenchCase& c, size_t samples) {
     if (!c.effect.effect.empty()) r.effects = {c.effect};
     Recording rec = simulate(r, samples, seed);
     if (c.truth == "outside") apply_outside(c, rec);
+    rec.meta.erase("effects");  // blind: the recording does not name its effect
     return rec;
   };
   out.real = real_like(c.real_traj, c.real_temp, mix(c.seed + 2));
