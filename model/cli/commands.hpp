@@ -12,6 +12,7 @@ void add_simulate(CLI::App& app);
 void add_calibrate(CLI::App& app);
 void add_estimate(CLI::App& app);
 void add_diagnose(CLI::App& app);
+void add_diagnose_bench(CLI::App& app);
 void add_harmonics(CLI::App& app);
 void add_sweep(CLI::App& app);
 #ifdef ACORE_WITH_RTL
