@@ -42,21 +42,80 @@ std::vector<double> fit_fourier(const Recording& rec, const FloatCoefficients& f
 
 }  // namespace
 
+DatapathConfig FloatCoefficients::shape() const {
+  DatapathConfig c;
+  c.correction = correction;
+  c.degree = degree;
+  c.regions = regions;
+  c.xcenter = xcenter;
+  return c;
+}
+
+double correction_u(double x, int xcenter) {
+  if (!xcenter) return x;
+  return 2 * (x >= 0 ? x - 0.375 : x + 0.375);
+}
+
+double correction_v(double y_other) {
+  return std::ldexp(y_other >= 0 ? y_other - 1 : y_other + 1, kVShift);
+}
+
+void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out) {
+  const double u = correction_u(x, shape.xcenter);
+  if (shape.correction == kPoly) {
+    double pw = 1;
+    for (int j = 0; j <= shape.degree; ++j, pw *= u) out[j] = pw;
+  } else if (shape.correction == kPoly2d) {
+    const double v = correction_v(y_other);
+    double ui = 1;
+    for (int i = 0; i <= shape.degree; ++i, ui *= u) {
+      double vj = 1;
+      for (int j = 0; i + j <= shape.degree; ++j, vj *= v) out[shape.term2d(i, j)] = ui * vj;
+    }
+  }
+}
+
+double correction_poly(const FloatCoefficients& fc, int r, int c, double x, double y_other) {
+  const double u = correction_u(x, fc.xcenter);
+  const int d = fc.degree;
+  if (fc.correction == kPoly) {
+    double acc = fc.coef(r, c, d);
+    for (int j = d - 1; j >= 0; --j) acc = acc * u + fc.coef(r, c, j);
+    return acc;
+  }
+  if (fc.correction != kPoly2d) return 0.0;
+  const DatapathConfig shape = fc.shape();
+  const double v = correction_v(y_other);
+  double acc = 0;
+  for (int i = d; i >= 0; --i) {
+    double q = fc.coef(r, c, shape.term2d(i, d - i));
+    for (int j = d - i - 1; j >= 0; --j) q = q * v + fc.coef(r, c, shape.term2d(i, j));
+    acc = i == d ? q : acc * u + q;
+  }
+  return acc;
+}
+
 FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
   if (!rec.has_theta()) throw InputError("calibration needs a theta_ref column");
   const size_t n = rec.size();
-  const int terms = opt.degree + 1;
+  FloatCoefficients fc;
+  fc.correction = opt.correction;
+  fc.degree = opt.degree;
+  fc.regions = opt.regions;
+  fc.xcenter = opt.xcenter;
+  const DatapathConfig shape = fc.shape();
+  shape.validate();
+  const int terms = shape.coef_per_curve();
   if (n < static_cast<size_t>(8 * terms * opt.regions))
     throw InputError(fmt::format("calibration needs at least {} samples, the recording has {}",
                                  8 * terms * opt.regions, n));
   // The fit must see the whole electrical turn: every 10-degree sector of p * theta_ref.
   const int covered = turn_sectors_covered(rec.theta_ref, opt.periodicity);
   if (covered < 36)
-    throw InputError(fmt::format("calibration: theta_ref covers only {} of the 36 ten-degree sectors "
-                                 "of a turn; record at least one full turn", covered));
-  FloatCoefficients fc;
-  fc.degree = opt.degree;
-  fc.regions = opt.regions;
+    throw InputError(
+        fmt::format("calibration: theta_ref covers only {} of the 36 ten-degree sectors "
+                    "of a turn; record at least one full turn",
+                    covered));
   fc.poly.assign(static_cast<size_t>(opt.regions) * 2 * terms, 0.0);
 
   // Scaling: offset = mean, amplitude = sqrt(2/N sum (c - O)^2)  (Eq. 4).
@@ -77,13 +136,15 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
 
   // Domain selection and the design matrix per region.
   std::vector<std::vector<size_t>> members(opt.regions);
-  std::vector<double> xs(n), s13(n), s24(n);
+  std::vector<double> xs(n), ys(n), s13(n), s24(n);
   for (size_t i = 0; i < n; ++i) {
     s13[i] = (d[0][i] - fc.offset[0]) / fc.amp[0];
     s24[i] = (d[1][i] - fc.offset[1]) / fc.amp[1];
-    members[select_region_real(s13[i], s24[i], opt.regions, &xs[i])].push_back(i);
+    const int r = select_region_real(s13[i], s24[i], opt.regions, &xs[i]);
+    ys[i] = x_is_sine(r, opt.regions) ? s24[i] : s13[i];
+    members[r].push_back(i);
   }
-  for (int r = 0; r < opt.regions; ++r) {
+  for (int r = 0; r < opt.regions && terms > 0; ++r) {
     const auto& m = members[r];
     if (m.size() < static_cast<size_t>(2 * terms))
       throw InputError(fmt::format(
@@ -93,15 +154,16 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
     Eigen::MatrixXd rhs(m.size(), 2);
     for (size_t k = 0; k < m.size(); ++k) {
       const size_t i = m[k];
-      double pw = 1;
-      for (int j = 0; j < terms; ++j, pw *= xs[i]) V(k, j) = pw;
+      double basis[64];
+      correction_basis(shape, xs[i], ys[i], basis);
+      for (int j = 0; j < terms; ++j) V(k, j) = basis[j];
       const double e = opt.periodicity * rec.theta_ref[i];
       rhs(k, 0) = s13[i] - std::sin(e);  // Eq. 6: measured scaled curve minus the ideal one
       rhs(k, 1) = s24[i] - std::cos(e);
     }
     const Eigen::MatrixXd sol = V.colPivHouseholderQr().solve(rhs);
     for (int c = 0; c < 2; ++c)
-      for (int j = 0; j < terms; ++j) fc.coef(r, c, j) = opt.fourier_only ? 0.0 : sol(j, c);
+      for (int j = 0; j < terms; ++j) fc.coef(r, c, j) = sol(j, c);
   }
   if (opt.fourier_k > 0) fc.fourier = fit_fourier(rec, fc, opt);
   return fc;
@@ -117,8 +179,10 @@ double choose_in_scale(const Recording& rec, int in_w) {
 }
 
 RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_scale) {
+  cfg.correction = fc.correction;
   cfg.degree = fc.degree;
   cfg.regions = fc.regions;
+  cfg.xcenter = fc.xcenter;
   cfg.fourier_k = fc.fourier_k();
   cfg.validate();
   RegImage img;
@@ -147,16 +211,17 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
   }
   for (int r = 0; r < cfg.regions; ++r)
     for (int c = 0; c < 2; ++c)
-      for (int j = 0; j <= cfg.degree; ++j) {
+      for (int j = 0; j < cfg.coef_per_curve(); ++j) {
         const double v = fc.coef(r, c, j);
         const long long q = std::llround(std::ldexp(v, cfg.coef_f));
         try {
           img.set_signed(cfg.addr_poly(r, c, j), q);
         } catch (const InputError&) {
           throw InputError(fmt::format(
-              "polynomial coefficient region {} curve {} x^{} = {:.4f} exceeds the Q{}.{} range: "
+              "polynomial coefficient region {} curve {} {}^{} = {:.4f} exceeds the Q{}.{} range: "
               "lower --coef-frac",
-              r, c ? "c24" : "c13", j, v, cfg.reg_w - cfg.coef_f, cfg.coef_f));
+              r, c ? "c24" : "c13", cfg.correction == kPoly2d ? "term" : "x", j, v,
+              cfg.reg_w - cfg.coef_f, cfg.coef_f));
         }
       }
   const auto table = cordic_atan_table(cfg.z_w, cfg.iterations);
@@ -194,12 +259,31 @@ RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, 
   }
 }
 
+CalOptions cal_options_for(const DatapathConfig& cfg, int periodicity) {
+  CalOptions opt;
+  opt.correction = cfg.correction;
+  opt.degree = cfg.degree;
+  opt.regions = cfg.regions;
+  opt.xcenter = cfg.xcenter;
+  opt.periodicity = periodicity;
+  opt.fourier_k = cfg.fourier_k;
+  return opt;
+}
+
+RegImage calibrate_image(const Recording& rec, const DatapathConfig& cfg, int periodicity, FloatCoefficients* fc) {
+  const FloatCoefficients c = calibrate(rec, cal_options_for(cfg, periodicity));
+  if (fc) *fc = c;
+  return quantize_auto_range(c, cfg, choose_in_scale(rec, cfg.in_w));
+}
+
 FloatCoefficients dequantize(const RegImage& img) {
   const DatapathConfig& cfg = img.cfg;
   FloatCoefficients fc;
+  fc.correction = cfg.correction;
   fc.degree = cfg.degree;
   fc.regions = cfg.regions;
-  fc.poly.assign(static_cast<size_t>(cfg.regions) * 2 * (cfg.degree + 1), 0.0);
+  fc.xcenter = cfg.xcenter;
+  fc.poly.assign(static_cast<size_t>(cfg.poly_words()), 0.0);
   for (int c = 0; c < 2; ++c) {
     fc.offset[c] = img.offset(c) / img.in_scale;
     if (img.recip(c) <= 0) throw InputError("register image: an amplitude reciprocal is zero");
@@ -207,7 +291,7 @@ FloatCoefficients dequantize(const RegImage& img) {
   }
   for (int r = 0; r < cfg.regions; ++r)
     for (int c = 0; c < 2; ++c)
-      for (int j = 0; j <= cfg.degree; ++j)
+      for (int j = 0; j < cfg.coef_per_curve(); ++j)
         fc.coef(r, c, j) = std::ldexp(static_cast<double>(img.poly(r, c, j)), -cfg.coef_f);
   const double gain = fourier_gain(cfg);
   for (int j = 0; j < cfg.fourier_words(); ++j)

@@ -15,28 +15,45 @@ namespace acore {
 
 // The calibrated estimator in real numbers: what the float model runs.
 struct FloatCoefficients {
+  int correction = kPoly;  // kPoly, kPoly2d, kNone (datapath_config.hpp)
   int degree = 3;
   int regions = 4;
+  int xcenter = 0;
   double offset[2] = {0, 0};  // O13, O24 in recording units
   double amp[2] = {1, 1};     // A13, A24 in recording units
-  std::vector<double> poly;   // [region][curve][power], curve 0 = c13, 1 = c24
+  std::vector<double> poly;   // [region][curve][term], curve 0 = c13, 1 = c24 (terms as in the map)
+  // The correction's shape (correction, degree, regions, xcenter) as a datapath configuration.
+  DatapathConfig shape() const;
+  int terms() const { return shape().coef_per_curve(); }
+  double& coef(int r, int c, int t) { return poly[(r * 2 + c) * terms() + t]; }
+  double coef(int r, int c, int t) const { return poly[(r * 2 + c) * terms() + t]; }
   // Angle-domain Fourier correction after the CORDIC: [a_0, a_1, b_1, ..., a_K, b_K] in radians of
   // electrical angle, in the estimated angle (model/fourier_correct.hpp); empty = off.
   std::vector<double> fourier;
   int fourier_k() const { return fourier.empty() ? 0 : static_cast<int>(fourier.size() / 2); }
-  double& coef(int r, int c, int j) { return poly[(r * 2 + c) * (degree + 1) + j]; }
-  double coef(int r, int c, int j) const { return poly[(r * 2 + c) * (degree + 1) + j]; }
 };
 
 struct CalOptions {
+  int correction = kPoly;
   int degree = 3;
   int regions = 4;
+  int xcenter = 0;      // 8 regions: fit in u = 2 (x -+ 3/8) (poly_correct.hpp)
   int periodicity = 1;  // electrical periods per turn: the reference is sin/cos(p theta_ref)
-  int fourier_k = 0;    // harmonics of the Fourier correction fitted after the polynomial; 0 = none
-  // Fit no polynomial (its words stay zero, so the polynomial stage passes the curves through
-  // unchanged) and let the Fourier correction do all the work.
-  bool fourier_only = false;
+  int fourier_k = 0;    // harmonics of the Fourier correction fitted after the correction; 0 = none
 };
+
+// The real-valued arguments of the correction polynomials, as the datapath forms them:
+// u = x, or 2 (x -+ 3/8) with xcenter; v = 2^kVShift (y_other - sign(y_other)) (poly2d).
+double correction_u(double x, int xcenter);
+double correction_v(double y_other);
+// Every term's basis value at (x, y_other) in the register map's order (1-D: u^j; 2-D: u^i v^j).
+void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out);
+// P_region,curve(x, y_other) in double, by (nested) Horner like the datapath.
+double correction_poly(const FloatCoefficients& fc, int region, int curve, double x,
+                       double y_other);
+
+// The calibration options a datapath configuration asks for (its correction mode, degree, regions).
+CalOptions cal_options_for(const DatapathConfig& cfg, int periodicity);
 
 // Throws InputError when the recording has no theta_ref or too few samples in a region.
 // With opt.fourier_k > 0, after the polynomial: least squares of the remaining angle error
@@ -56,6 +73,11 @@ RegImage quantize(const FloatCoefficients& coef, DatapathConfig cfg, double in_s
 // to 8) while the Horner accumulator keeps its fraction bits; likewise a Fourier coefficient lowers
 // fourier_coef_f (down to reg_w - 1). The image header records the result.
 RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, double in_scale);
+
+// calibrate() with cal_options_for(cfg), then quantize_auto_range() at the automatic in_scale: the
+// one-call path of the sweep and the co-sim tests. *fc (optional) receives the float coefficients.
+RegImage calibrate_image(const Recording& rec, const DatapathConfig& cfg, int periodicity,
+                         FloatCoefficients* fc = nullptr);
 
 // The real values a register image stands for (so the float engine can run from an image).
 FloatCoefficients dequantize(const RegImage& img);

@@ -9,6 +9,29 @@
 
 namespace acore {
 
+const char* correction_name(int correction) {
+  switch (correction) {
+    case kPoly: return "poly";
+    case kPoly2d: return "poly2d";
+    case kNone: return "none";
+  }
+  return "?";
+}
+
+int parse_correction(const std::string& name) {
+  for (int c : {kPoly, kPoly2d, kNone})
+    if (name == correction_name(c)) return c;
+  throw InputError("correction '" + name + "' is not one of poly, poly2d, none");
+}
+
+int DatapathConfig::coef_per_curve() const {
+  switch (correction) {
+    case kPoly: return degree + 1;
+    case kPoly2d: return (degree + 1) * (degree + 2) / 2;
+    default: return 0;
+  }
+}
+
 void DatapathConfig::validate() const {
   auto need = [](bool ok, const std::string& why) {
     if (!ok) throw InputError("datapath configuration: " + why);
@@ -19,8 +42,14 @@ void DatapathConfig::validate() const {
   need(s_w >= s_f + 2 && s_w <= 30, fmt::format("s_w={} must be s_f+2..30 (s_f={})", s_w, s_f));
   need(r_shift >= 0 && scale_guard >= 0 && scale_guard <= r_shift,
        fmt::format("need 0 <= scale_guard={} <= r_shift={}", scale_guard, r_shift));
+  need(correction >= kPoly && correction <= kNone,
+       fmt::format("correction={} must be 0 (poly), 1 (poly2d) or 2 (none)", correction));
   need(degree >= 1 && degree <= 7, fmt::format("degree={} must be 1..7", degree));
+  need(correction != kPoly2d || degree <= 3, fmt::format("degree={} must be 1..3 for poly2d", degree));
   need(regions == 4 || regions == 8, fmt::format("regions={} must be 4 or 8", regions));
+  need(xcenter == 0 || (xcenter == 1 && regions == 8),
+       fmt::format("xcenter={} must be 0, or 1 with 8 regions (regions={})", xcenter, regions));
+  need(s_f >= kVShift + 1, fmt::format("s_f={} must be >= {}", s_f, kVShift + 1));
   need(coef_f >= 1 && coef_f < reg_w, fmt::format("coef_f={} must be 1..reg_w-1", coef_f));
   need(acc_f() >= s_f, fmt::format("coef_f+acc_guard={} must be >= s_f={}", acc_f(), s_f));
   need(acc_int >= reg_w - coef_f + 1, fmt::format("acc_int={} too small for the coefficients", acc_int));
@@ -47,16 +76,34 @@ void DatapathConfig::validate() const {
                    fourier_coef_f, reg_w - 1));
 }
 
+DatapathConfig cordic_width_preset(int angle_w) {
+  DatapathConfig c;
+  if (angle_w >= 8 && angle_w <= 16) {
+    c.angle_w = angle_w;
+    return c;
+  }
+  if (angle_w != 18 && angle_w != 20)
+    throw InputError(fmt::format("angle width {} must be 8..16, 18 or 20", angle_w));
+  const int extra = angle_w - 16;  // 2 or 4
+  c.angle_w = angle_w;
+  c.iterations = 16 + extra;
+  c.cordic_guard = 3 + extra / 2;
+  c.z_w = 20 + extra;
+  c.reg_w = 18 + extra;
+  c.coef_f = 15 + extra;
+  return c;
+}
+
 std::string DatapathConfig::describe() const {
   std::string fourier;
   if (fourier_k > 0)
     fourier = fmt::format(" fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_word_w={} fourier_guard={}",
                           fourier_k, fourier_iterations, fourier_coef_f, fourier_word_w, fourier_guard);
   return fmt::format(
-      "in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} coef_f={} "
-      "acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}{}",
-      in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions, coef_f, acc_guard, acc_int,
-      iterations, cordic_guard, z_w, angle_w, fourier);
+      "correction={} in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} "
+      "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}{}",
+      correction_name(correction), in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions,
+      xcenter, coef_f, acc_guard, acc_int, iterations, cordic_guard, z_w, angle_w, fourier);
 }
 
 namespace {
@@ -71,8 +118,10 @@ const std::vector<std::pair<const char*, Field>>& rtl_param_table() {
       {"S_F", &DatapathConfig::s_f},
       {"R_SHIFT", &DatapathConfig::r_shift},
       {"SCALE_G", &DatapathConfig::scale_guard},
+      {"CORRECTION", &DatapathConfig::correction},
       {"DEGREE", &DatapathConfig::degree},
       {"REGIONS", &DatapathConfig::regions},
+      {"XCENTER", &DatapathConfig::xcenter},
       {"COEF_F", &DatapathConfig::coef_f},
       {"ACC_G", &DatapathConfig::acc_guard},
       {"ACC_I", &DatapathConfig::acc_int},

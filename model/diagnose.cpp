@@ -29,6 +29,13 @@ void check_recording(const Recording& r, const std::string& what) {
   if (!r.has_theta()) throw InputError(what + ": no theta_ref column (the gap needs the reference angle)");
   if (r.size() < kMinSamples)
     throw InputError(fmt::format("{}: {} samples, at least {} needed", what, r.size(), kMinSamples));
+  // A sensor that is not connected (or a column of zeros) leaves nothing to compare or fit.
+  bool varies = false;
+  for (int c = 0; c < r.channels && !varies; ++c)
+    for (double v : r.ch[c]) varies = varies || v != r.ch[c][0];
+  if (!varies)
+    throw InputError(fmt::format("{}: every channel ({}) is constant: no sensor signal to diagnose",
+                                 what, r.channels == 4 ? "c1, c2, c3, c4" : "sin, cos"));
   // Wrapped or unwrapped: either way a turn must be covered, checked by 10-degree sectors.
   const int covered = turn_sectors_covered(r.theta_ref);
   if (covered < 36)
@@ -124,14 +131,23 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   for (const std::string& e : fittable_effects()) {
     RankedEffect r;
     r.cand = fit_effect(fp, fp.predicted, e);
-    if (!std::isfinite(r.cand.bic) || r.cand.bic >= 1e299) continue;
+    if (!r.cand.applicable) continue;
     const StageSeries after = evaluate(fp.predicted, r.cand, real, m, fp, 0);
     r.after_deg = after.gap_deg;
     r.explained = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
     d.ranking.push_back(r);
   }
-  std::sort(d.ranking.begin(), d.ranking.end(),
-            [](const RankedEffect& a, const RankedEffect& b) { return a.cand.delta_bic < b.cand.delta_bic; });
+  // By information criterion, except that quantization, when the values lie on a lattice (its
+  // step read from the data, not fitted to the residual) and it explains most of the gap, comes
+  // first: the lattice proves the ADC, and excess noise would only be fitting its rounding noise.
+  auto measured = [&](const RankedEffect& r) {
+    return r.cand.effect == "quantization" && r.explained >= opt.explained_min;
+  };
+  std::sort(d.ranking.begin(), d.ranking.end(), [&](const RankedEffect& a, const RankedEffect& b) {
+    if (a.cand.rejected.empty() != b.cand.rejected.empty()) return a.cand.rejected.empty();
+    if (measured(a) != measured(b)) return measured(a);
+    return a.cand.delta_bic < b.cand.delta_bic;
+  });
 
   // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
   // Is there a gap at all? The systematic part must stand out of what noise leaves in the projection
@@ -144,22 +160,34 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   const RankedEffect* top = d.ranking.empty() ? nullptr : &d.ranking.front();
   if (!significant) {
     d.verdict = "no_gap";
-  } else if (top && top->explained >= opt.explained_min && top->cand.delta_bic < -10) {
+  } else if (top && top->cand.rejected.empty() && top->explained >= opt.explained_min &&
+             top->cand.delta_bic < -10) {
     d.verdict = "explained";
   } else {
     d.verdict = "unexplained";
   }
 
+  if (d.verdict == "explained")
+    for (size_t k = 1; k < d.ranking.size(); ++k) {
+      const RankedEffect& r = d.ranking[k];
+      // A lattice settles quantization against excess noise (see the ranking above).
+      const bool settled = top->cand.effect == "quantization" && r.cand.effect == "excess_noise";
+      if (!settled && r.cand.rejected.empty() && r.explained >= opt.explained_min &&
+          r.cand.delta_bic < top->cand.delta_bic + 10)
+        d.ambiguous_with.push_back(r.cand.effect);
+    }
+
   // A second effect when the first leaves a clear remainder.
-  if (significant && opt.try_pairs && top && top->explained < 0.9 && top->cand.delta_bic < -10) {
+  if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
+      top->cand.delta_bic < -10) {
     double extra1 = 0;
     const Recording base1 = predict_effect(fp, fp.predicted, top->cand, &extra1);
     double best_expl = top->explained;
     for (const std::string& e : fittable_effects()) {
       if (e == top->cand.effect) continue;
       RankedEffect r;
-      r.cand = fit_effect(fp, base1, e);
-      if (!std::isfinite(r.cand.bic) || r.cand.bic >= 1e299 || r.cand.delta_bic > -10) continue;
+      r.cand = fit_effect(fp, base1, e, extra1);
+      if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
       const StageSeries after = evaluate(base1, r.cand, real, m, fp, extra1);
       const double expl = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
       if (expl > best_expl + 0.1) {
@@ -230,10 +258,15 @@ nlohmann::json Diagnosis::to_json() const {
   if (verdict != "explained")
     rank.push_back({{"effect", "unexplained"}, {"params", json::object()}, {"explained", 0.0},
                     {"after_deg", before.gap_deg}});
-  for (const auto& r : ranking)
-    rank.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained},
-                    {"after_deg", r.after_deg}, {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}});
+  for (const auto& r : ranking) {
+    json e = {{"effect", r.cand.effect},       {"params", params_json(r.cand)},
+              {"explained", r.explained},      {"after_deg", r.after_deg},
+              {"delta_bic", r.cand.delta_bic}, {"k", r.cand.k}};
+    if (!r.cand.rejected.empty()) e["rejected"] = r.cand.rejected;
+    rank.push_back(e);
+  }
   j["ranking"] = rank;
+  j["ambiguous_with"] = ambiguous_with;
   if (!combination.empty()) {
     json c = json::array();
     for (const auto& r : combination) c.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}});

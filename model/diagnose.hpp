@@ -16,7 +16,8 @@ namespace acore {
 struct DiagnoseOptions {
   int fourier_order = 12;     // harmonics of the static sensor model fitted to the simulation
   bool try_pairs = true;      // combinations of two effects when one leaves a clear remainder
-  double explained_min = 0.5; // the best effect must explain this share of gap^2 to be named
+  double explained_min =
+      0.9;  // the best effect (or pair) must explain this share of gap^2 to be named
 };
 
 struct RankedEffect {
@@ -44,6 +45,10 @@ struct Diagnosis {
   std::vector<RankedEffect> ranking;  // best first, by information criterion
   std::vector<RankedEffect> combination;  // the best pair when it beats the best single effect
   double combination_after_deg = 0, combination_explained = 0;
+  // Other effects the recording cannot tell from the named one: they explain as much and their
+  // information criterion is within 10 of it (e.g. common_delay and hysteresis on a recording at
+  // one constant speed). Record with speed changes and a reversal to separate them.
+  std::vector<std::string> ambiguous_with;
   int periodicity = 1;
   nlohmann::json to_json() const;  // DESIGN 3.3 fields and more
 };

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "errors.hpp"
 
@@ -15,6 +16,9 @@ namespace acore {
 namespace {
 
 constexpr double kTempRef = 25.0;
+// excess_noise is rejected when more than this share of its variance is correlated sample to
+// sample.
+constexpr double kWhiteShare = 0.2;
 
 // Per-channel columns of one parameter: col[c][i] = d channel_c(i) / d parameter.
 using Column = std::vector<std::vector<double>>;
@@ -58,13 +62,14 @@ std::pair<Eigen::VectorXd, double> solve_linear(const FitProblem& fp, const Reco
   return {phi, (b - A * phi).squaredNorm()};
 }
 
-// Channel c of the model evaluated at shifted mechanical angles, minus at the true ones.
+// Channel c of the model evaluated at shifted mechanical angles, minus at the true ones (which
+// fp.predicted holds).
 std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function<double(size_t)>& delta) {
   const Recording& real = *fp.real;
   std::vector<double> v(real.size());
   for (size_t i = 0; i < real.size(); ++i) {
-    const double th = real.theta_ref[i];
-    v[i] = fp.model->sensor.value(c, th + delta(i)) - fp.model->sensor.value(c, th);
+    const double d = delta(i);
+    v[i] = d == 0 ? 0.0 : fp.model->sensor.value(c, real.theta_ref[i] + d) - fp.predicted.ch[c][i];
   }
   return v;
 }
@@ -111,15 +116,31 @@ FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
   return fp;
 }
 
-double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double noise_scale) {
+namespace {
+// How much of a channel's extra white-noise variance each signal carries: c1 - c3 two channels',
+// (c1 + c3)/2 a quarter of two; sin, cos one.
+double signal_weight(const Recording& r, int q) {
+  return r.channels == 4 ? (q < 2 ? 2.0 : 0.5) : 1.0;
+}
+}  // namespace
+
+double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double extra_sigma) {
   const Recording& real = *fp.real;
   const int S = nsignals(real);
-  double s[4], total = 0;
+  double s[4], rss[4] = {0, 0, 0, 0};
   for (size_t i = 0; i < real.size(); ++i) {
     to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - pred.ch[c][j]; }, s);
-    for (int q = 0; q < S; ++q) total += sq(s[q] / (fp.signal_sigma[q] * noise_scale));
+    for (int q = 0; q < S; ++q) rss[q] += s[q] * s[q];
   }
-  return total + 2.0 * S * real.size() * std::log(noise_scale);
+  // Gaussian, known variance per signal: sum r^2 / v + N ln(v / sigma^2) (0 without extra noise).
+  double total = 0;
+  const double n = static_cast<double>(real.size());
+  for (int q = 0; q < S; ++q) {
+    const double s2 = sq(fp.signal_sigma[q]),
+                 v = s2 + signal_weight(real, q) * extra_sigma * extra_sigma;
+    total += rss[q] / v + n * std::log(v / s2);
+  }
+  return total;
 }
 
 namespace {
@@ -128,8 +149,10 @@ namespace {
 // applies an effect, so fitting and carrying the effect to a holdout cannot disagree.
 struct Fitted {
   ParamList params;
-  double noise_scale = 1.0;  // < 0 marks a noise effect, scored by its own likelihood
   int k = 0;
+  bool applicable = true;  // false: the recording cannot show this effect (drift without temp, ...)
+  std::string
+      rejected;  // why the effect's own assumptions fail on this recording (empty: they hold)
 };
 
 std::string chan_name(const Recording& r, int c) {
@@ -239,27 +262,59 @@ Fitted fit_drift(const FitProblem& fp, const Recording& base) {
   return f;
 }
 
-// ADC step from the real data: the median gap between neighbouring distinct values.
+// An ADC leaves every value of every channel on a lattice origin + k * step. The step is read from
+// the data (the smallest gap between distinct values, refined over wider spans so that a fine
+// lattice is resolved to full precision), not fitted to the residual; no lattice, no quantization.
 Fitted fit_quantization(const FitProblem& fp) {
   const Recording& r = *fp.real;
-  std::vector<double> steps;
-  double peak = 0;
-  for (int c = 0; c < r.channels; ++c) {
-    std::vector<double> v = r.ch[c];
-    for (double x : v) peak = std::max(peak, std::fabs(x));
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    for (size_t i = 1; i < v.size(); ++i) steps.push_back(v[i] - v[i - 1]);
-  }
   Fitted f;
-  f.k = 2;
-  if (steps.empty()) return f;
-  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-  const double step = steps[steps.size() / 2];
+  f.k = 1;
+  std::vector<double> all;
+  double peak = 0;
+  for (int c = 0; c < r.channels; ++c)
+    for (double x : r.ch[c]) all.push_back(x), peak = std::max(peak, std::fabs(x));
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  const double tiny = 1e-12 * std::max(peak, 1e-300);
+  double step = 0;
+  for (size_t i = 1; i < all.size(); ++i)
+    if (all[i] - all[i - 1] > tiny && (step == 0 || all[i] - all[i - 1] < step))
+      step = all[i] - all[i - 1];
+  if (step == 0) {
+    f.applicable = false;  // one value only: nothing to read a step from
+    return f;
+  }
+  for (size_t span = 1; span < all.size(); span *= 2) {
+    const double d = all[std::min(all.size() - 1, span)] - all[0];
+    const double m = std::round(d / step);
+    if (m >= 1) step = d / m;
+  }
+  // Origin: the circular mean of the values' position within a step.
+  double cs = 0, sn = 0;
+  for (double x : all) {
+    const double ph = 2 * M_PI * (x / step - std::floor(x / step));
+    cs += std::cos(ph);
+    sn += std::sin(ph);
+  }
+  const double origin = step * std::atan2(sn, cs) / (2 * M_PI);
+  size_t on = 0, total = 0;
+  for (int c = 0; c < r.channels; ++c)
+    for (double x : r.ch[c]) {
+      const double u = (x - origin) / step;
+      on += std::fabs(u - std::round(u)) <= 1e-6 + 1e-12 * std::fabs(u);
+      ++total;
+    }
+  if (on < 0.99 * static_cast<double>(total)) {
+    f.applicable = false;  // the values are not on a lattice: not quantized
+    return f;
+  }
   // Full scale: the smallest power of two at or above the peak (an ADC range); bits from the step.
-  const double full_scale = std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-12)))));
-  const double bits = std::log2(2.0 * full_scale / step);
-  f.params = {{"bits", std::round(bits)}, {"full_scale", full_scale}, {"step", step}};
+  const double full_scale =
+      std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-300)))));
+  f.params = {{"bits", std::round(std::log2(2.0 * full_scale / step))},
+              {"full_scale", full_scale},
+              {"step", step},
+              {"origin", origin}};
   return f;
 }
 
@@ -293,40 +348,86 @@ Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
   return f;
 }
 
-Fitted fit_excess_noise(const FitProblem& fp, const Recording& base) {
-  // Extra white noise sigma_e on each channel: d signals gain 2 sigma_e^2, m signals sigma_e^2/2.
+// Extra white noise sigma_e on each channel, on top of what `base` already carries (base_extra):
+// maximum likelihood over sigma_e by a ternary search (the likelihood is unimodal in sigma_e^2).
+Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base_extra) {
   const Recording& r = *fp.real;
   const int S = nsignals(r);
-  std::vector<double> rss(S, 0.0);
-  double s[4];
+  std::vector<double> rss(S, 0.0), lag1(S, 0.0);
+  double s[4], prev[4] = {0, 0, 0, 0};
   for (size_t i = 0; i < r.size(); ++i) {
     to_signals(r, i, [&](int c, size_t j) { return r.ch[c][j] - base.ch[c][j]; }, s);
-    for (int q = 0; q < S; ++q) rss[q] += s[q] * s[q];
+    for (int q = 0; q < S; ++q) {
+      rss[q] += s[q] * s[q];
+      if (i > 0) lag1[q] += s[q] * prev[q];
+      prev[q] = s[q];
+    }
   }
   const double n = static_cast<double>(r.size());
-  auto weight = [&](int q) { return r.channels == 4 ? (q < 2 ? 2.0 : 0.5) : 1.0; };
   auto nll = [&](double var_e) {
     double t = 0;
     for (int q = 0; q < S; ++q) {
-      const double v = sq(fp.signal_sigma[q]) + weight(q) * var_e;
-      t += rss[q] / v + n * std::log(v / sq(fp.signal_sigma[q]));
+      const double v = sq(fp.signal_sigma[q]) + signal_weight(r, q) * (sq(base_extra) + var_e);
+      t += rss[q] / v + n * std::log(v);
     }
     return t;
   };
   double lo = 0, hi = 0;
-  for (int q = 0; q < S; ++q) hi = std::max(hi, rss[q] / n / weight(q));
+  for (int q = 0; q < S; ++q) hi = std::max(hi, rss[q] / n / signal_weight(r, q));
   hi = std::max(hi, 1e-30);
   for (int it = 0; it < 100; ++it) {
     const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
     if (nll(a) < nll(b)) hi = b; else lo = a;
   }
   Fitted f;
-  const double var_e = 0.5 * (lo + hi);
-  f.params = {{"sigma", std::sqrt(var_e)}};
+  f.params = {{"sigma", std::sqrt(0.5 * (lo + hi))}};
   f.k = 1;
-  f.noise_scale = -1;  // marks a noise effect: scored by nll below
-  f.params.push_back({"_nll", nll(var_e)});
+  // The excess must be white noise (DESIGN 3.4). Its part that is correlated from one sample to the
+  // next (the residual's lag-1 autocovariance; white noise adds none) is anything but noise: a
+  // glitch, a dropout, interference. Pooled over signals in channel units, with the spread white
+  // noise alone would give.
+  double excess = 0, correlated = 0, spread2 = 0;
+  for (int q = 0; q < S; ++q) {
+    const double w = signal_weight(r, q), v = rss[q] / n;
+    excess += (v - sq(fp.signal_sigma[q]) - w * sq(base_extra)) / w;
+    correlated += lag1[q] / std::max(1.0, n - 1) / w;
+    spread2 += sq(v / w) / n;
+  }
+  if (excess > 0 && correlated > kWhiteShare * excess + 4 * std::sqrt(spread2))
+    f.rejected = fmt::format(
+        "not white noise: {:.0f} % of the excess variance is correlated from sample to sample",
+        100 * std::min(1.0, correlated / excess));
   return f;
+}
+
+// Mean and variance of an ADC's output Q(x + n), n ~ N(0, sigma^2), Q rounding to origin + k step.
+void quantized_moments(double x, double sigma, double step, double origin, double& mean,
+                       double& var) {
+  const double u = (x - origin) / step;
+  if (sigma < 1e-3 * step) {
+    mean = origin + step * std::nearbyint(u);
+    var = 0;
+    return;
+  }
+  if (sigma > 8 * step) {  // finely quantized: the error is uniform and independent of x
+    mean = x;
+    var = sigma * sigma + step * step / 12;
+    return;
+  }
+  const double z = sigma / step;
+  const int lo = static_cast<int>(std::floor(u - 7 * z)) - 1,
+            hi = static_cast<int>(std::ceil(u + 7 * z)) + 1;
+  double m1 = 0, m2 = 0;
+  double cdf_lo = 0.5 * std::erfc(-((lo - 0.5) - u) / (z * M_SQRT2));
+  for (int k = lo; k <= hi; ++k) {
+    const double cdf_hi = 0.5 * std::erfc(-((k + 0.5) - u) / (z * M_SQRT2));
+    const double pk = cdf_hi - cdf_lo;
+    cdf_lo = cdf_hi;
+    m1 += pk * (k - u);
+    m2 += pk * (k - u) * (k - u);
+  }
+  mean = x + step * m1;
+  var = step * step * std::max(0.0, m2 - m1 * m1);
 }
 
 }  // namespace
@@ -384,9 +485,21 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
       for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
     }
   } else if (e == "quantization") {
-    const double step = cand.param("step");
-    for (int c = 0; c < r.channels; ++c)
-      for (auto& v : out.ch[c]) v = std::nearbyint(v / step) * step;
+    // The ADC sees the model plus the simulation's noise: predict its mean output, and carry the
+    // variance it adds beyond that noise (zero far from a step edge, step^2/12 when dithered).
+    const double step = cand.param("step"), origin = cand.param("origin");
+    double added = 0;
+    for (int c = 0; c < r.channels; ++c) {
+      const double sigma = fp.model->sensor.noise_sigma[c];
+      for (auto& v : out.ch[c]) {
+        double mean, var;
+        quantized_moments(v, sigma, step, origin, mean, var);
+        v = mean;
+        added += var - sigma * sigma;
+      }
+    }
+    if (extra_sigma)
+      *extra_sigma = std::sqrt(std::max(0.0, added / (r.channels * static_cast<double>(r.size()))));
   } else if (e == "saturation") {
     const double level = cand.param("level");
     for (int c = 0; c < r.channels; ++c)
@@ -399,7 +512,8 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
   return out;
 }
 
-EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect) {
+EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
+                           double base_extra) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   Fitted f;
@@ -430,32 +544,35 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
     f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }});
     f.params = {{"h_rad", f.params[0].second}};
   } else if (effect == "drift") {
-    if (fp.dtemp.empty()) {
-      EffectCandidate none{effect, {}, 0, 1e300, 1e300, 1e300};
-      return none;  // no temperature column: drift cannot be observed
-    }
-    f = fit_drift(fp, base);
+    if (fp.dtemp.empty())
+      f.applicable = false;  // no temperature column: drift cannot be observed
+    else
+      f = fit_drift(fp, base);
   } else if (effect == "quantization") {
     f = fit_quantization(fp);
   } else if (effect == "saturation") {
     f = fit_saturation(fp, base);
   } else if (effect == "excess_noise") {
-    f = fit_excess_noise(fp, base);
+    f = fit_excess_noise(fp, base, base_extra);
   } else {
     throw InputError("unknown effect '" + effect + "'");
   }
   EffectCandidate cand;
   cand.effect = effect;
   cand.k = f.k;
-  if (f.noise_scale < 0) {
-    cand.neg2logl = f.params.back().second;
-    f.params.pop_back();
-  }
   cand.params = f.params;
-  if (f.noise_scale >= 0) cand.neg2logl = neg2_log_likelihood(fp, predict_effect(fp, base, cand, nullptr));
+  cand.applicable = f.applicable;
+  cand.rejected = f.rejected;
+  if (!f.applicable) {
+    cand.neg2logl = cand.bic = cand.delta_bic = std::numeric_limits<double>::infinity();
+    return cand;
+  }
+  double extra = 0;
+  const Recording pred = predict_effect(fp, base, cand, &extra);
+  cand.neg2logl = neg2_log_likelihood(fp, pred, std::hypot(base_extra, extra));
   const double n = static_cast<double>(r.size()) * nsignals(r);
   cand.bic = cand.neg2logl + cand.k * std::log(n);
-  cand.delta_bic = cand.bic - neg2_log_likelihood(fp, base);
+  cand.delta_bic = cand.bic - neg2_log_likelihood(fp, base, base_extra);
   return cand;
 }
 

@@ -31,6 +31,11 @@ struct EffectCandidate {
   double neg2logl = 0;
   double bic = 0;
   double delta_bic = 0;  // bic - bic of "no effect": negative is evidence for the effect
+  bool applicable = true;  // false: the recording cannot show the effect (no temp column for drift,
+                           // values on no lattice for quantization); likelihoods are then infinite
+  std::string
+      rejected;  // non-empty: the recording contradicts the effect's own assumptions (excess
+                 // noise that is not white); says how. Such an effect is never named.
 };
 
 // The residual problem: real and model channels at the real recording's samples.
@@ -47,17 +52,22 @@ struct FitProblem {
 
 FitProblem make_fit_problem(const GapModel& m, const Recording& real);
 
-// -2 log L of a candidate prediction of the real channels (per-signal sigma scaled by noise_scale).
-double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction, double noise_scale = 1.0);
+// -2 log L of a candidate prediction of the real channels, whose noise is the simulation's plus
+// white noise of extra_sigma on every channel (excess_noise, quantization), up to a constant.
+double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction,
+                           double extra_sigma = 0);
 
 // Fits one effect (DESIGN 3.4 name) on top of `base` (the model prediction, possibly already
-// carrying another effect). Throws InputError for an unknown name.
-EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect);
+// carrying another effect, whose extra white noise per channel is base_extra). Throws InputError
+// for an unknown name.
+EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
+                           double base_extra = 0);
 
 // The prediction of `fp.real`'s channels with the effect added to `base` (the model prediction at
 // the same samples, possibly carrying another effect), from the candidate's parameters alone: this
-// is how a fitted effect is carried to a holdout recording without refitting. For excess_noise the
-// channels are unchanged and the extra noise is returned in *extra_sigma (per channel).
+// is how a fitted effect is carried to a holdout recording without refitting. The white noise the
+// effect adds per channel is returned in *extra_sigma: excess_noise (channels unchanged) and
+// quantization (the ADC's mean output as channels, its added variance as noise); 0 for the others.
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
                          double* extra_sigma);
 

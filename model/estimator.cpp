@@ -12,7 +12,8 @@ Engine parse_engine(const std::string& name) {
   if (name == "float") return Engine::Float;
   if (name == "fixed") return Engine::Fixed;
   if (name == "rtl") return Engine::Rtl;
-  throw InputError("--engine: '" + name + "' is not one of float, fixed, rtl");
+  if (name == "rtl-serial") return Engine::RtlSerial;
+  throw InputError("--engine: '" + name + "' is not one of float, fixed, rtl, rtl-serial");
 }
 
 const char* engine_name(Engine e) {
@@ -20,6 +21,7 @@ const char* engine_name(Engine e) {
     case Engine::Float: return "float";
     case Engine::Fixed: return "fixed";
     case Engine::Rtl: return "rtl";
+    case Engine::RtlSerial: return "rtl-serial";
   }
   return "?";
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Runs an estimator engine over a whole recording: the common front of `estimate`, `demo` and
-// `diagnose`. The RTL engine lives in tb/rtl_engine.hpp and returns the same FixedSample rows.
+// `diagnose`. The RTL engines live in tb/rtl_engine.hpp (the pipelined top, "rtl") and
+// tb/rtl_serial_engine.hpp (the serial core, "rtl-serial") and return the same FixedSample rows.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,7 +12,7 @@
 
 namespace acore {
 
-enum class Engine { Float, Fixed, Rtl };
+enum class Engine { Float, Fixed, Rtl, RtlSerial };
 Engine parse_engine(const std::string& name);  // throws InputError
 const char* engine_name(Engine e);
 

@@ -199,7 +199,8 @@ bool FixedModel::batch_fits_int32() const {
 }
 
 void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const {
-  if (!batch_fits_int32()) {
+  // The vectorized loops cover the paper's correction (1-D, raw x) and none; the others run step().
+  if (!batch_fits_int32() || img_.cfg.correction == kPoly2d || img_.cfg.xcenter) {
     for (size_t i = 0; i < n; ++i) out[i] = to_output(step(in[i]));
     return;
   }
@@ -223,10 +224,15 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
     scale_chunk(d24, m, static_cast<int32_t>(img_.offset(1)), static_cast<uint32_t>(img_.recip(1)),
                 cfg.reg_w, cfg.r_shift, cfg.scale_guard, cfg.s_w, s24, ovf);
     region_chunk(s13, s24, m, cfg.regions, region, x);
-    gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
-    mask_chunk(x, m, cfg.s_w, mask_store.data());
-    poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w, cfg.s_f,
-               cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
+    if (cfg.correction == kPoly) {
+      gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
+      mask_chunk(x, m, cfg.s_w, mask_store.data());
+      poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w,
+                 cfg.s_f, cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
+    } else {  // kNone: the scaled curves go straight to the CORDIC
+      std::copy(s13, s13 + m, y13);
+      std::copy(s24, s24 + m, y24);
+    }
     cordic_chunk(y24, y13, m, atan32.data(), cfg.iterations, cfg.cordic_guard, cfg.z_w, cfg.angle_w,
                  angle, mag);
     output_chunk(angle, mag, region, ovf, m, window_.mag_lo, window_.mag_hi, out + base);

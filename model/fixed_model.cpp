@@ -5,6 +5,7 @@
 
 #include "fixed_point.hpp"
 #include "fourier_correct.hpp"
+#include "poly2d_correct.hpp"
 #include "poly_correct.hpp"
 #include "prefilter.hpp"
 #include "region_select.hpp"
@@ -37,7 +38,7 @@ FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), wi
   cfg.validate();
   for (int r = 0; r < cfg.regions; ++r)
     for (int c = 0; c < 2; ++c)
-      for (int j = 0; j <= cfg.degree; ++j) coef_.push_back(img_.poly(r, c, j));
+      for (int t = 0; t < cfg.coef_per_curve(); ++t) coef_.push_back(img_.poly(r, c, t));
   for (int i = 0; i < cfg.iterations; ++i) atan_.push_back(img_.atan(i));
   for (int j = 0; j < cfg.fourier_words(); ++j) fourier_.push_back(img_.fourier(j));
 }
@@ -69,9 +70,23 @@ FixedSample FixedModel::step(const ChannelCodes& c) const {
   out.s24 = scale_curve(d.d24, img_.offset(1), img_.recip(1), cfg, &out.ovf);
   const RegionChoice rc = select_region(out.s13, out.s24, cfg.regions);
   out.region = rc.region;
-  const int64_t* coef = &coef_[static_cast<size_t>(rc.region) * 2 * (cfg.degree + 1)];
-  out.y13 = poly_correct(out.s13, rc.x, coef, cfg, &out.ovf);
-  out.y24 = poly_correct(out.s24, rc.x, coef + cfg.degree + 1, cfg, &out.ovf);
+  const int terms = cfg.coef_per_curve();
+  const int64_t* coef = coef_.data() + static_cast<size_t>(rc.region) * 2 * terms;
+  switch (cfg.correction) {
+    case kPoly:
+      out.y13 = poly_correct(out.s13, rc.x, coef, cfg, &out.ovf);
+      out.y24 = poly_correct(out.s24, rc.x, coef + terms, cfg, &out.ovf);
+      break;
+    case kPoly2d: {
+      const int64_t v = poly2d_v(x_is_sine(rc.region, cfg.regions) ? out.s24 : out.s13, cfg);
+      out.y13 = poly2d_correct(out.s13, rc.x, v, coef, cfg, &out.ovf);
+      out.y24 = poly2d_correct(out.s24, rc.x, v, coef + terms, cfg, &out.ovf);
+      break;
+    }
+    default:  // kNone
+      out.y13 = out.s13;
+      out.y24 = out.s24;
+  }
   const CordicConfig cc = cordic_config();
   const CordicResult r = cordic_vector(out.y24, out.y13, cc, atan_.data());
   out.cordic_angle = r.angle;

@@ -11,11 +11,6 @@ namespace acore {
 namespace {
 double wrap_turn(double a) { return a < 0 ? a + 2 * M_PI : a; }
 
-double horner(const FloatCoefficients& fc, int r, int c, double x) {
-  double acc = fc.coef(r, c, fc.degree);
-  for (int j = fc.degree - 1; j >= 0; --j) acc = acc * x + fc.coef(r, c, j);
-  return acc;
-}
 }  // namespace
 
 FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc) {
@@ -24,8 +19,9 @@ FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc) 
   o.s24 = (d24 - fc.offset[1]) / fc.amp[1];
   double x;
   o.region = select_region_real(o.s13, o.s24, fc.regions, &x);
-  o.y13 = o.s13 - horner(fc, o.region, 0, x);
-  o.y24 = o.s24 - horner(fc, o.region, 1, x);
+  const double y_other = x_is_sine(o.region, fc.regions) ? o.s24 : o.s13;
+  o.y13 = o.s13 - correction_poly(fc, o.region, 0, x, y_other);
+  o.y24 = o.s24 - correction_poly(fc, o.region, 1, x, y_other);
   o.angle = wrap_turn(std::atan2(o.y13, o.y24));
   o.cordic_angle = o.angle;
   if (!fc.fourier.empty()) {

@@ -76,15 +76,23 @@ GapBasis make_gap_basis(const Recording& rec) {
   const int per = 2 * kOrders + 1;
   GapBasis b;
   b.X.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(per * factors.size()));
+  double cs[kOrders + 1], sn[kOrders + 1];
   for (size_t i = 0; i < n; ++i) {
-    const double th = rec.theta_ref[i];
+    // cos(k theta), sin(k theta) by rotation: one sincos per sample.
+    const double c1 = std::cos(rec.theta_ref[i]), s1 = std::sin(rec.theta_ref[i]);
+    cs[0] = 1;
+    sn[0] = 0;
+    for (int k = 1; k <= kOrders; ++k) {
+      cs[k] = cs[k - 1] * c1 - sn[k - 1] * s1;
+      sn[k] = sn[k - 1] * c1 + cs[k - 1] * s1;
+    }
     for (size_t f = 0; f < factors.size(); ++f) {
       const double v = factors[f][i];
       const Eigen::Index c0 = static_cast<Eigen::Index>(f * per);
       b.X(i, c0) = v;
       for (int k = 1; k <= kOrders; ++k) {
-        b.X(i, c0 + 2 * k - 1) = v * std::cos(k * th);
-        b.X(i, c0 + 2 * k) = v * std::sin(k * th);
+        b.X(i, c0 + 2 * k - 1) = v * cs[k];
+        b.X(i, c0 + 2 * k) = v * sn[k];
       }
     }
   }

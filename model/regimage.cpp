@@ -20,13 +20,21 @@ uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
 
 // Header keys and the config field each sets.
 std::map<std::string, int DatapathConfig::*> config_fields() {
-  return {{"in_w", &DatapathConfig::in_w},         {"reg_w", &DatapathConfig::reg_w},
-          {"s_w", &DatapathConfig::s_w},           {"s_f", &DatapathConfig::s_f},
-          {"r_shift", &DatapathConfig::r_shift},   {"scale_guard", &DatapathConfig::scale_guard},
-          {"degree", &DatapathConfig::degree},     {"regions", &DatapathConfig::regions},
-          {"coef_f", &DatapathConfig::coef_f},     {"acc_guard", &DatapathConfig::acc_guard},
-          {"acc_int", &DatapathConfig::acc_int},   {"iterations", &DatapathConfig::iterations},
-          {"cordic_guard", &DatapathConfig::cordic_guard}, {"z_w", &DatapathConfig::z_w},
+  return {{"in_w", &DatapathConfig::in_w},
+          {"reg_w", &DatapathConfig::reg_w},
+          {"s_w", &DatapathConfig::s_w},
+          {"s_f", &DatapathConfig::s_f},
+          {"r_shift", &DatapathConfig::r_shift},
+          {"scale_guard", &DatapathConfig::scale_guard},
+          {"degree", &DatapathConfig::degree},
+          {"regions", &DatapathConfig::regions},
+          {"xcenter", &DatapathConfig::xcenter},
+          {"coef_f", &DatapathConfig::coef_f},
+          {"acc_guard", &DatapathConfig::acc_guard},
+          {"acc_int", &DatapathConfig::acc_int},
+          {"iterations", &DatapathConfig::iterations},
+          {"cordic_guard", &DatapathConfig::cordic_guard},
+          {"z_w", &DatapathConfig::z_w},
           {"angle_w", &DatapathConfig::angle_w}};
 }
 
@@ -100,6 +108,9 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
           img.in_scale = std::stod(val, &used);
           in_scale_seen = true;
           if (!(img.in_scale > 0) || !std::isfinite(img.in_scale)) used = 0;
+        } else if (key == "correction") {
+          img.cfg.correction = parse_correction(val);  // absent: poly (images before the field)
+          used = val.size();
         } else if (auto it = fields.find(key); it != fields.end()) {
           img.cfg.*(it->second) = std::stoi(val, &used);
         } else {
@@ -148,6 +159,7 @@ std::string format_regimage(const RegImage& img) {
   std::string out = "// AngleCore coefficient register image ($readmemh), DESIGN 3.2 map\n";
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
+  out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
   for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
   if (c.fourier_k > 0)
     for (const auto& [key, field] : fourier_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
@@ -160,11 +172,19 @@ std::string format_regimage(const RegImage& img) {
   for (int k = 0; k < 2; ++k)
     line(c.addr_recip(k), fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
                                       std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
+  const char* x_name = c.xcenter ? "u" : "x";
   for (int r = 0; r < c.regions; ++r)
     for (int k = 0; k < 2; ++k)
-      for (int j = 0; j <= c.degree; ++j)
-        line(c.addr_poly(r, k, j), fmt::format("region {} {} x^{} = {:+.6f}", r, k ? "c24" : "c13", j,
-                                               std::ldexp(static_cast<double>(img.poly(r, k, j)), -c.coef_f)));
+      for (int t = 0; t < c.coef_per_curve(); ++t) {
+        std::string term = fmt::format("{}^{}", x_name, t);
+        if (c.correction == kPoly2d)
+          for (int i = 0; i <= c.degree; ++i)
+            for (int j = 0; i + j <= c.degree; ++j)
+              if (c.term2d(i, j) == t) term = fmt::format("{}^{} v^{}", x_name, i, j);
+        line(c.addr_poly(r, k, t),
+             fmt::format("region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
+                         std::ldexp(static_cast<double>(img.poly(r, k, t)), -c.coef_f)));
+      }
   for (int i = 0; i < c.iterations; ++i)
     line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,
                                      std::ldexp(static_cast<double>(img.atan(i)), -c.z_w) * 360.0));

@@ -35,6 +35,12 @@ inline RegionChoice select_region(int64_t s13, int64_t s24, int regions) {
   return r;
 }
 
+// True when the region's argument x is the sine curve s13 (regions 0 and 2 of four), so the other
+// curve is s24; false when x = s24 and the other curve is s13.
+inline bool x_is_sine(int region, int regions) {
+  return ((regions == 8 ? region >> 1 : region) & 1) == 0;
+}
+
 // The same rule on real numbers, for the float model and the calibration.
 inline int select_region_real(double s13, double s24, int regions, double* x) {
   int region;

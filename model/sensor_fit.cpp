@@ -11,20 +11,31 @@
 
 namespace acore {
 
+// cos(h e), sin(h e) for h = 1..order by rotation (one sincos instead of `order`): the error grows
+// about linearly with h, a few ulp at order 40.
 double SensorFit::value(int c, double theta) const {
   const auto& k = coef[c];
-  const double e = periodicity * theta;
-  double v = k[0];
-  for (int h = 1; h <= order; ++h) v += k[2 * h - 1] * std::cos(h * e) + k[2 * h] * std::sin(h * e);
+  const double e = periodicity * theta, c1 = std::cos(e), s1 = std::sin(e);
+  double v = k[0], ch = 1, sh = 0;
+  for (int h = 1; h <= order; ++h) {
+    const double cn = ch * c1 - sh * s1;
+    sh = sh * c1 + ch * s1;
+    ch = cn;
+    v += k[2 * h - 1] * ch + k[2 * h] * sh;
+  }
   return v;
 }
 
 double SensorFit::derivative(int c, double theta) const {
   const auto& k = coef[c];
-  const double e = periodicity * theta;
-  double v = 0;
-  for (int h = 1; h <= order; ++h)
-    v += h * periodicity * (-k[2 * h - 1] * std::sin(h * e) + k[2 * h] * std::cos(h * e));
+  const double e = periodicity * theta, c1 = std::cos(e), s1 = std::sin(e);
+  double v = 0, ch = 1, sh = 0;
+  for (int h = 1; h <= order; ++h) {
+    const double cn = ch * c1 - sh * s1;
+    sh = sh * c1 + ch * s1;
+    ch = cn;
+    v += h * periodicity * (-k[2 * h - 1] * sh + k[2 * h] * ch);
+  }
   return v;
 }
 

@@ -22,14 +22,17 @@ module acore_delay #(
     if (DEPTH == 0) begin : g_wire
       assign q_o = d_i;
     end else begin : g_regs
-      // One always block per stage (a generate loop, so any DEPTH elaborates without a loop).
-      reg [W-1:0] q_q [0:DEPTH-1];
-      always @(posedge clk_i) if (en_i) q_q[0] <= d_i;
+      // One register per stage, generated (a for loop inside one always block would hit the
+      // simulator's loop-unroll limit for the deep sideband delays of high-degree corrections).
+      wire [W-1:0] q [0:DEPTH];
+      assign q[0] = d_i;
       genvar i;
-      for (i = 1; i < DEPTH; i = i + 1) begin : g_stage
-        always @(posedge clk_i) if (en_i) q_q[i] <= q_q[i-1];
+      for (i = 0; i < DEPTH; i = i + 1) begin : g_stage
+        reg [W-1:0] q_q;
+        always @(posedge clk_i) if (en_i) q_q <= q[i];
+        assign q[i+1] = q_q;
       end
-      assign q_o = q_q[DEPTH-1];
+      assign q_o = q[DEPTH];
     end
   endgenerate
 

@@ -3,8 +3,11 @@
 // model/poly_correct.cpp): y = s - P_region(x), Horner's scheme on the adder/shifter multiplier,
 // unrolled into DEGREE pipelined steps so one sample enters per clock:
 //   acc_n = a_n << ACC_G                                                ACC_F = COEF_F + ACC_G
-//   acc_j = saturate(shift_add_mul(acc_{j+1}, x, S_W signed, S_F) + (a_j << ACC_G), ACC_W)
+//   acc_j = saturate(shift_add_mul(acc_{j+1}, u, S_W signed, U_SH) + (a_j << ACC_G), ACC_W)
 //   y     = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W)
+// with u = x, U_SH = S_F (XCENTER = 0, the paper's), or u = x - (x >= 0 ? 3/8 : -3/8), U_SH = S_F - 1
+// (XCENTER = 1, 8 regions: the polynomial in 2 (x -+ 3/8), centred in its half region, so that
+// high-degree coefficients stay in range; exact, computed in clock 0 by one adder).
 // The coefficients a_j of the sample's region are picked from the register file bus at the step
 // that uses them (the region travels with the sample).
 //
@@ -30,6 +33,8 @@ module acore_poly_correct #(
   parameter integer ACC_I = 6,
   // Which curve's coefficients: 0 = sine curve c13, 1 = cosine curve c24.
   parameter integer CURVE = 0,
+  // 1 (8 regions only): the polynomial is in u = x -+ 3/8, centred in its half region.
+  parameter integer XCENTER = 0,
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS)
 ) (
@@ -67,7 +72,8 @@ module acore_poly_correct #(
   localparam integer ACC_W = ACC_F + ACC_I;
   localparam integer ML = $clog2(S_W);
   localparam integer LATENCY = 1 + pc_cmul(DEGREE, ML + 2) + 3;
-  localparam integer P_W = ACC_W + ((S_W > S_F) ? (S_W - S_F) : 0) + 1;
+  localparam integer U_SH = S_F - XCENTER;
+  localparam integer P_W = ACC_W + ((S_W > U_SH) ? (S_W - U_SH) : 0) + 1;
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
   localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
@@ -76,6 +82,8 @@ module acore_poly_correct #(
     if (ACC_F < S_F) $error("acore_poly_correct: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
     if (ACC_I < REG_W - COEF_F + 1) $error("acore_poly_correct: ACC_I=%0d too small (instance %m)", ACC_I);
     if (DEGREE < 1) $error("acore_poly_correct: DEGREE=%0d must be >= 1 (instance %m)", DEGREE);
+    if (XCENTER != 0 && (XCENTER != 1 || REGIONS != 8 || S_F < 3))
+      $error("acore_poly_correct: XCENTER=%0d must be 0, or 1 with 8 regions and S_F >= 3 (instance %m)", XCENTER);
   end
 
   // Per step m: inputs of the step (accumulator, argument, curve, region, overflow so far).
@@ -103,7 +111,16 @@ module acore_poly_correct #(
     end
   endfunction
 
-  // Clock 0: the leading coefficient of the sample's region, registered with the sample.
+  // Clock 0: the leading coefficient of the sample's region, registered with the sample, and u.
+  wire [S_W-1:0] u_next;
+  generate
+    if (XCENTER != 0) begin : g_centre
+      localparam [S_W-1:0] CENTRE = {{(S_W-S_F+1){1'b0}}, 2'b11, {(S_F-3){1'b0}}};  // 3/8
+      assign u_next = x_i[S_W-1] ? x_i + CENTRE : x_i - CENTRE;
+    end else begin : g_raw
+      assign u_next = x_i;
+    end
+  endgenerate
   localparam integer BASE_N = pc_cmul(pc_cmul(CURVE, DEGREE + 1) + DEGREE, REG_W);
   reg [ACC_W-1:0] acc0_q;
   reg [S_W-1:0]   x0_q, s0_q;
@@ -111,7 +128,7 @@ module acore_poly_correct #(
   always @(posedge clk_i) begin
     if (en_i) begin
       acc0_q <= coef_acc(coef_i, region_i, BASE_N);
-      x0_q   <= x_i;
+      x0_q   <= u_next;
       s0_q   <= s_i;
       r0_q   <= region_i;
     end
@@ -130,7 +147,7 @@ module acore_poly_correct #(
       localparam integer BASE_J = pc_cmul(pc_cmul(CURVE, DEGREE + 1) + DEGREE - 1 - m, REG_W);
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
-        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(S_F), .P_W(P_W)
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .P_W(P_W)
       ) u_mul (
         .clk_i(clk_i), .en_i(en_i), .a_i(acc[m]), .b_i(xs[m]), .p_o(prod)
       );

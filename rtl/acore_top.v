@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 // acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit).
 //
-//   c1..c4 -> prefilter -> scaler x2 -> region_select -> poly_correct x2 -> cordic -> [fourier] -> angle, flags
+//   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> angle, flags
 //                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k
 //
 // The Fourier correction (acore_fourier_correct.v) is generated only when FOURIER_K > 0; with
 // FOURIER_K = 0 (the default) the top is the chain without it, word for word and clock for clock.
+//
+// The correction stage is chosen by CORRECTION: 0 = acore_poly_correct (1-D in x, the paper's),
+// 1 = acore_poly2d_correct (2-D in x and the other curve), 2 = none (the scaled curves go straight
+// to the CORDIC, no coefficient words). LATENCY follows from the stages chosen.
 //
 // Streaming: a sample is taken when in_valid_i && in_ready_o and comes out LATENCY accepted-or-
 // advancing clocks later on out_valid_o. The pipeline stalls as a whole when the output is held
@@ -36,9 +40,13 @@ module acore_top #(
   // Extra scale of the amplitude reciprocal, and guard bits of the scaling product.
   parameter integer R_SHIFT = 13,
   parameter integer SCALE_G = 4,
+  // Correction mode: 0 = poly (1-D), 1 = poly2d (2-D, total degree DEGREE <= 3), 2 = none.
+  parameter integer CORRECTION = 0,
   // Polynomial degree and number of regions (4 or 8).
   parameter integer DEGREE = 3,
   parameter integer REGIONS = 4,
+  // 1 (8 regions only): the polynomials are in u = x -+ 3/8, centred in their half region.
+  parameter integer XCENTER = 0,
   // Coefficient fraction bits; Horner accumulator guard and integer bits.
   parameter integer COEF_F = 15,
   parameter integer ACC_G = 4,
@@ -60,9 +68,12 @@ module acore_top #(
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
-  // 4 + 2 REGIONS (DEGREE + 1) + K (REGIONS is a power of two, so the product is a shift),
-  // plus 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0.
-  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K +
+  // Coefficients per region and curve: DEGREE + 1 (poly), (DEGREE + 1)(DEGREE + 2) / 2 (poly2d), 0.
+  parameter integer TERMS = (CORRECTION == 2) ? 0 :
+                            (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1,
+  // 4 + 2 REGIONS TERMS + K (REGIONS is a power of two, so the product is a shift), plus
+  // 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0.
+  parameter integer WORDS = 4 + (TERMS << ($clog2(REGIONS) + 1)) + K +
                             ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
@@ -110,7 +121,9 @@ module acore_top #(
   localparam integer PRE_LATENCY = 1;
   localparam integer SCALER_LATENCY = $clog2(REG_W) + 3;
   localparam integer REGION_LATENCY = 2;
-  localparam integer POLY_LATENCY = 1 + top_cmul(DEGREE, $clog2(S_W) + 2) + 3;
+  localparam integer POLY_LATENCY = (CORRECTION == 2) ? 0 :
+                                    (CORRECTION == 1) ? 6 + top_cmul(DEGREE, $clog2(S_W) + 2) :
+                                    1 + top_cmul(DEGREE, $clog2(S_W) + 2) + 3;
   localparam integer CORDIC_LATENCY = 1 + K + 1;
   // acore_fourier_correct: clog2(KB) + 1 + FOURIER_M + clog2(FOURIER_K + 1) + 1, KB = bits of K.
   localparam integer FOURIER_KB = ($clog2(FOURIER_K + 1) > 2) ? $clog2(FOURIER_K + 1) : 2;
@@ -119,7 +132,7 @@ module acore_top #(
   localparam integer OUT_LATENCY = 1;
   localparam integer LATENCY = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
                                CORDIC_LATENCY + FOURIER_LATENCY + OUT_LATENCY;
-  localparam integer NCOEF = top_cmul(REGIONS << 1, DEGREE + 1);
+  localparam integer NCOEF = top_cmul(REGIONS << 1, TERMS);
   localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
 
   initial begin
@@ -128,6 +141,10 @@ module acore_top #(
     if (S_W < S_F + 2 || S_W > 30) $error("acore_top: S_W=%0d must be S_F+2..30 (instance %m)", S_W);
     if (REGIONS != 4 && REGIONS != 8) $error("acore_top: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
     if (DEGREE < 1 || DEGREE > 7) $error("acore_top: DEGREE=%0d must be 1..7 (instance %m)", DEGREE);
+    if (CORRECTION < 0 || CORRECTION > 2) $error("acore_top: CORRECTION=%0d must be 0..2 (instance %m)", CORRECTION);
+    if (CORRECTION == 1 && DEGREE > 3) $error("acore_top: poly2d DEGREE=%0d must be 1..3 (instance %m)", DEGREE);
+    if (XCENTER != 0 && (XCENTER != 1 || REGIONS != 8 || CORRECTION == 2))
+      $error("acore_top: XCENTER=%0d must be 0, or 1 with 8 regions and a polynomial (instance %m)", XCENTER);
     if (K < 4 || K > 24) $error("acore_top: K=%0d must be 4..24 (instance %m)", K);
     if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
     if (FOURIER_K < 0 || FOURIER_K > 31) $error("acore_top: FOURIER_K=%0d must be 0..31 (instance %m)", FOURIER_K);
@@ -136,7 +153,8 @@ module acore_top #(
     if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 || FOURIER_W < 8 ||
                           FOURIER_W > REG_W || FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
       $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, 8 <= FOURIER_W <= REG_W, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
-    if (WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
+    if (TERMS != ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1) ||
+        WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
   end
 
   // ---- handshake: one enable for the whole pipeline ----
@@ -151,7 +169,6 @@ module acore_top #(
 
   // ---- register file ----
   localparam integer BUS_W = top_cmul(WORDS, REG_W);
-  localparam integer COEF_BUS_W = top_cmul(NCOEF, REG_W);
   localparam integer AT_BUS_W = top_cmul(K, REG_W);
   localparam integer OFF_RCP24 = top_cmul(3, REG_W);
   localparam integer OFF_ATAN = top_cmul(4 + NCOEF, REG_W);
@@ -163,7 +180,6 @@ module acore_top #(
   wire [REG_W-1:0] off24 = words[REG_W +: REG_W];
   wire [REG_W-1:0] rcp13 = words[(REG_W << 1) +: REG_W];
   wire [REG_W-1:0] rcp24 = words[OFF_RCP24 +: REG_W];
-  wire [COEF_BUS_W-1:0] coef = words[(REG_W << 2) +: COEF_BUS_W];
   wire [AT_BUS_W-1:0] atan = words[OFF_ATAN +: AT_BUS_W];
 
   // ---- 1: pre-filter ----
@@ -187,21 +203,49 @@ module acore_top #(
     .clk_i(clk_i), .en_i(en), .s13_i(s13), .s24_i(s24),
     .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
 
-  // ---- 4: polynomial correction ----
+  // ---- 4: correction (CORRECTION), coefficients from word 4 on ----
   wire [S_W-1:0] y13, y24;
   wire pc_ovf13, pc_ovf24;
-  acore_poly_correct #(
-    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
-    .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0)
-  ) u_pc13 (
-    .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s13_r), .region_i(region), .coef_i(coef),
-    .y_o(y13), .ovf_o(pc_ovf13));
-  acore_poly_correct #(
-    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
-    .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1)
-  ) u_pc24 (
-    .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s24_r), .region_i(region), .coef_i(coef),
-    .y_o(y24), .ovf_o(pc_ovf24));
+  generate
+    if (CORRECTION == 2) begin : g_none
+      // No polynomial: x is not needed (named unused_* for lint).
+      wire unused_x = ^x;
+      assign y13 = s13_r;
+      assign y24 = s24_r;
+      assign pc_ovf13 = 1'b0;
+      assign pc_ovf24 = 1'b0;
+    end else begin : g_coef
+      localparam integer COEF_BUS_W = top_cmul(NCOEF, REG_W);
+      wire [COEF_BUS_W-1:0] coef = words[(REG_W << 2) +: COEF_BUS_W];
+      if (CORRECTION == 1) begin : g_poly2d
+        acore_poly2d_correct #(
+          .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER),
+          .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0)
+        ) u_pc13 (
+          .clk_i(clk_i), .en_i(en), .x_i(x), .s13_i(s13_r), .s24_i(s24_r), .region_i(region),
+          .coef_i(coef), .y_o(y13), .ovf_o(pc_ovf13));
+        acore_poly2d_correct #(
+          .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER),
+          .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1)
+        ) u_pc24 (
+          .clk_i(clk_i), .en_i(en), .x_i(x), .s13_i(s13_r), .s24_i(s24_r), .region_i(region),
+          .coef_i(coef), .y_o(y24), .ovf_o(pc_ovf24));
+      end else begin : g_poly
+        acore_poly_correct #(
+          .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
+          .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0), .XCENTER(XCENTER)
+        ) u_pc13 (
+          .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s13_r), .region_i(region), .coef_i(coef),
+          .y_o(y13), .ovf_o(pc_ovf13));
+        acore_poly_correct #(
+          .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
+          .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1), .XCENTER(XCENTER)
+        ) u_pc24 (
+          .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s24_r), .region_i(region), .coef_i(coef),
+          .y_o(y24), .ovf_o(pc_ovf24));
+      end
+    end
+  endgenerate
 
   // ---- 5: CORDIC, x = corrected cosine curve, y = corrected sine curve ----
   wire [ANGLE_W-1:0] angle;

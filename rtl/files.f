@@ -6,8 +6,13 @@ acore_prefilter.v
 acore_scaler.v
 acore_region_select.v
 acore_poly_correct.v
+acore_poly2d_correct.v
 acore_cordic.v
 acore_cordic_rotate.v
 acore_adder_tree.v
 acore_fourier_correct.v
 acore_top.v
+acore_serial_ram.v
+acore_serial_datapath.v
+acore_serial_ctrl.v
+acore_serial_top.v

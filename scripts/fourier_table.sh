@@ -3,8 +3,8 @@
 # The Fourier-correction table of the README: noise-free paper scenario, calibrated on one
 # recording (4096 samples) and measured on a separate validation recording (5003 samples, so every
 # validation angle lies between calibration angles), float and bit-accurate engines, for polynomial
-# degree 0 (no polynomial: --fourier-only, words counted without the polynomial, i.e. the
-# correction=none mode) and 1..3 (4 regions) against the harmonics K. Prints a Markdown table.
+# degree 0 (no polynomial: --correction none) and 1..3 (4 regions) against the harmonics K. Prints a
+# Markdown table.
 #   scripts/fourier_table.sh [build/anglecore] [out dir]   (about a minute)
 set -euo pipefail
 bin=${1:-build/anglecore}
@@ -18,14 +18,13 @@ echo "|---|---|---|---|---|---|---|"
 for degree in 0 1 2 3; do
   for k in ${FOURIER_TABLE_K:-0 4 8 13 16 20 21}; do
     args=(--degree "$degree")
-    [ "$degree" = 0 ] && args=(--degree 1)
+    [ "$degree" = 0 ] && args=(--correction none)
     [ "$k" != 0 ] && args+=(--fourier "$k")
-    [ "$degree" = 0 ] && { [ "$k" = 0 ] && continue; args+=(--fourier-only); }
     img="$out/d${degree}_k$k.hex"
     "$bin" calibrate --in "$out/cal.csv" --out "$img" "${args[@]}" --json "$out/d${degree}_k$k.cal.json" >/dev/null
     "$bin" estimate --regs "$img" --in "$out/val.csv" --engine float --json "$out/d${degree}_k$k.float.json" >/dev/null
     "$bin" estimate --regs "$img" --in "$out/val.csv" --engine fixed --json "$out/d${degree}_k$k.fixed.json" >/dev/null
-    words=$(( 4 + 16 + (k > 0 ? 2 * k + 1 : 0) + (degree > 0 ? 8 * (degree + 1) : 0) ))
+    words=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['words'])" "$out/d${degree}_k$k.cal.json")
     echo "| $degree | $k | $words | $(field "$out/d${degree}_k$k.float.json" rms) | $(field "$out/d${degree}_k$k.float.json" max_abs)" \
          "| $(field "$out/d${degree}_k$k.fixed.json" rms) | $(field "$out/d${degree}_k$k.fixed.json" max_abs) |"
   done

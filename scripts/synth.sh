@@ -1,25 +1,29 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Synthesis reports for AngleCore: writes synth/reports/ (see synth/README.md).
-#   generic `synth` cell counts, `synth_ice40` LUT4/DFF/carry + nextpnr-ice40 Fmax on an HX8K
-#   (ct256), `synth_xilinx` (xc7) LUT/FF/DSP, for the top and for the 16-bit CORDIC alone,
-#   and the summary table synth/reports/summary.md.
-# usage: scripts/synth.sh [-j N] [DESIGN ...]   (N Yosys/nextpnr jobs in parallel, default 1; with
-# DESIGNs, e.g. `fourier fourier_pnr`, only those are redone and the other reports are kept)
+#   generic `synth` cell counts, `synth_ice40` LUT4/DFF/carry/BRAM + nextpnr-ice40 Fmax on an HX8K
+#   (ct256), `synth_xilinx` (xc7) LUT/FF/DSP/RAM, for the pipelined top and its stages, the serial
+#   core and the 16-bit CORDIC alone, and the summary table synth/reports/summary.md.
+# usage: scripts/synth.sh [-j N] [-d DESIGN[,DESIGN...]]
+#   -j N  runs N Yosys/nextpnr jobs in parallel (default 1)
+#   -d    only these designs (default all: top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr
+#         poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial serial_pnr fourier fourier_pnr); their old reports are replaced, the others kept,
+#         and the summary is rebuilt from every report present. Example: -d serial,serial_pnr
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=1
-if [ "${1:-}" = "-j" ]; then jobs=${2:-1}; shift 2; fi
-only=("$@")
+only=""
+while [ $# -gt 0 ]; do
+  case $1 in
+    -j) jobs=${2:?-j needs a number}; shift 2 ;;
+    -d) only=${2:?-d needs design names}; shift 2 ;;
+    *) echo "usage: scripts/synth.sh [-j N] [-d DESIGN[,DESIGN...]]" >&2; exit 2 ;;
+  esac
+done
 syn=$root/synth
 build=$syn/build
 rep=$syn/reports
 mkdir -p "$build" "$rep"
-if [ ${#only[@]} -eq 0 ]; then  # no stale reports
-  rm -f "$rep"/generic_*.txt "$rep"/ice40_*.txt "$rep"/xilinx_*.txt "$rep"/*.log "$rep"/summary.md
-else
-  for d in "${only[@]}"; do rm -f "$rep"/{generic,ice40,xilinx}_"$d".txt "$rep/nextpnr_$d.log"; done
-fi
 freq=150  # nextpnr target clock, MHz (Fmax is reported whether or not it is met)
 
 # The 16-bit CORDIC configuration and its arctangent table (model/cordic.cpp cordic_atan_table:
@@ -47,8 +51,8 @@ while read -r f; do
   [[ $f =~ \.v$ ]] && rtl_reads+="read_verilog -sv $root/rtl/$f"$'\n'
 done <"$root/rtl/files.f"
 
-# design name -> top module, extra reads, chparam
-declare -A TOP READ
+# design name -> top module, extra reads (and chparam), flows (generic, xilinx, ice40, pnr)
+declare -A TOP READ FLOWS
 TOP[top]=acore_top;                 READ[top]="$rtl_reads"
 TOP[top_pnr]=acore_top_pinwrap;     READ[top_pnr]="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_top_pinwrap.v"
 stage_reads="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_stage_pinwrap.v"
@@ -60,9 +64,32 @@ TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $r
 c16_chparam="chparam"
 for k in IN_W G Z_W ANGLE_W K AT_W NORM SPLIT; do c16_chparam+=" -set $k ${C16[$k]}"; done
 TOP[cordic16_bus]=acore_cordic;     READ[cordic16_bus]="read_verilog -sv $root/rtl/acore_cordic.v"$'\n'"$c16_chparam acore_cordic"
+TOP[poly2d_pnr]=acore_poly2d_pinwrap;      READ[poly2d_pnr]="$stage_reads"
+TOP[poly2d1_pnr]=acore_poly2d_pinwrap;     READ[poly2d1_pnr]="$stage_reads"$'\n'"chparam -set DEGREE 1 acore_poly2d_pinwrap"
+TOP[serial]=acore_serial_top;       READ[serial]="$rtl_reads"
+TOP[serial_pnr]=acore_serial_top_pinwrap; READ[serial_pnr]="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_serial_top_pinwrap.v"
 # The Fourier correction with 21 harmonics (area), and 4 of them placed in a pin wrapper (Fmax).
 TOP[fourier]=acore_fourier_correct; READ[fourier]="$rtl_reads"$'\n'"chparam -set K 21 -set M 12 acore_fourier_correct"
 TOP[fourier_pnr]=acore_fourier_pinwrap; READ[fourier_pnr]="$stage_reads"
+for d in top cordic16 cordic16_bus serial fourier; do FLOWS[$d]="generic xilinx ice40"; done
+for d in top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr serial_pnr fourier_pnr; do
+  FLOWS[$d]="ice40 pnr"
+done
+FLOWS[cordic16]="generic xilinx ice40 pnr"
+all_designs=(top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial
+  serial_pnr fourier fourier_pnr)
+designs=("${all_designs[@]}")
+if [ -n "$only" ]; then
+  IFS=',' read -r -a designs <<<"$only"
+  for d in "${designs[@]}"; do
+    [ -n "${TOP[$d]:-}" ] || { echo "scripts/synth.sh: unknown design '$d' (known: ${all_designs[*]})" >&2; exit 2; }
+  done
+fi
+# No stale reports of the designs run now.
+for d in "${designs[@]}"; do
+  rm -f "$rep/generic_$d.txt" "$rep/ice40_$d.txt" "$rep/xilinx_$d.txt" "$rep/nextpnr_$d.log"
+done
+rm -f "$rep/summary.md"
 
 run_yosys() {  # run_yosys FLOW DESIGN
   local flow=$1 d=$2
@@ -84,24 +111,19 @@ run_pnr() {  # run_pnr DESIGN
   echo "nextpnr $d: done"
 }
 
-selected() {  # selected DESIGN: in the DESIGN list of the command line (or no list given)
-  [ ${#only[@]} -eq 0 ] && return 0
-  local o
-  for o in "${only[@]}"; do [ "$o" = "$1" ] && return 0; done
-  return 1
-}
-for d in "${only[@]}"; do [ -n "${TOP[$d]:-}" ] || { echo "synth.sh: unknown design '$d'"; exit 2; }; done
 tasks=()
-area_designs=()
-for d in top cordic16 cordic16_bus fourier; do selected "$d" && area_designs+=("$d"); done
-for d in "${area_designs[@]}"; do tasks+=("run_yosys generic $d" "run_yosys xilinx $d"); done
-for d in "${area_designs[@]}"; do tasks+=("run_yosys ice40 $d"); done
+pnr_designs=()
+for d in "${designs[@]}"; do
+  for f in ${FLOWS[$d]}; do
+    case $f in
+      pnr) pnr_designs+=("$d") ;;
+      ice40) [[ " ${FLOWS[$d]} " == *" pnr "* ]] || tasks+=("run_yosys ice40 $d") ;;
+      *) tasks+=("run_yosys $f $d") ;;
+    esac
+  done
+done
 export -f run_yosys run_pnr
 # ice40 netlists for place and route first (nextpnr needs them), then everything else in parallel.
-pnr_designs=()
-for d in cordic16 top_pnr scaler_pnr region_pnr poly_pnr cordic_top_pnr fourier_pnr; do
-  selected "$d" && pnr_designs+=("$d")
-done
 for d in "${pnr_designs[@]}"; do run_yosys ice40 "$d"; done
 running=0
 for d in "${pnr_designs[@]}"; do

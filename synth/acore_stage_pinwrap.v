@@ -70,6 +70,32 @@ module acore_poly_pinwrap (
     .coef_i(sr_q[38 +: NC]), .y_o(y_o), .ovf_o(ovf_o));
 endmodule
 
+// The 2-D correction stage (CORRECTION = 1, 4 regions, curve c13) of total degree DEGREE: its
+// coefficient words (4 regions x 2 curves x terms), x, s13, s24 and the region shifted in.
+module acore_poly2d_pinwrap #(
+  parameter integer DEGREE = 3
+) (
+  input  wire        clk_i,
+  input  wire        sdi_i,
+  input  wire        shift_i,
+  input  wire        en_i,
+  output wire [17:0] y_o,
+  output wire        ovf_o
+);
+  localparam integer TERMS = (DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10;
+  localparam integer NC = 8 * TERMS * 18;
+  localparam integer SR_W = 3 * 18 + 2 + NC;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  acore_poly2d_correct #(.DEGREE(DEGREE)) u_stage (
+    .clk_i(clk_i), .en_i(en_q), .x_i(sr_q[17:0]), .s13_i(sr_q[35:18]), .s24_i(sr_q[53:36]),
+    .region_i(sr_q[55:54]), .coef_i(sr_q[56 +: NC]), .y_o(y_o), .ovf_o(ovf_o));
+endmodule
+
 module acore_cordic_top_pinwrap (
   input  wire        clk_i,
   input  wire        sdi_i,

@@ -45,11 +45,7 @@ size_t compare(const std::vector<FixedSample>& rtl, const FixedModel& model, con
 // the result must be exactly the build's configuration.
 RegImage paper_image(const DatapathConfig& cfg) {
   const Recording cal = test::paper_recording(8000, true);
-  CalOptions opt;
-  opt.degree = cfg.degree;
-  opt.regions = cfg.regions;
-  opt.fourier_k = cfg.fourier_k;
-  const RegImage img = quantize_auto_range(calibrate(cal, opt), cfg, choose_in_scale(cal, cfg.in_w));
+  const RegImage img = calibrate_image(cal, cfg, 1);
   if (img.cfg.describe() != cfg.describe())
     throw InputError("the paper calibration for this configuration needs " + img.cfg.describe() +
                      "; set those parameters in rtl/configs.txt");

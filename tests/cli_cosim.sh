@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# `anglecore cosim` and `estimate --engine rtl` through the CLI: RTL vs model on a simulated
-# recording (0 mismatches, JSON fields), stalls, FST trace, RTL = fixed error statistics, bad input.
+# `anglecore cosim` and `estimate --engine rtl|rtl-serial` through the CLI: RTL (pipelined top and
+# serial core) vs model on a simulated recording (0 mismatches, JSON fields), stalls, FST trace,
+# RTL = fixed error statistics, bad input.
 # usage: cli_cosim.sh ANGLECORE SOURCE_DIR. Skips (exit 0 with a note) when built without the RTL.
 set -u
 bin=$1
@@ -48,19 +49,30 @@ check cosim-trace 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --tr
 [ -s "$tmp/wave.fst" ] || { echo "FAIL trace: no FST written"; fails=$((fails + 1)); }
 check est-rtl 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine rtl --json "$tmp/rtl.json"
 check est-fixed 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json"
+check cosim-serial 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/cs.json"
+check cosim-serial-stalls 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.5 --seed 3 --json "$tmp/cs2.json"
+check cosim-serial-trace 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --trace "$tmp/wave_s.fst"
+[ -s "$tmp/wave_s.fst" ] || { echo "FAIL serial trace: no FST written"; fails=$((fails + 1)); }
+check est-serial 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine rtl-serial --json "$tmp/rs.json"
 /usr/bin/python3 - "$tmp" <<'PY' || { echo "FAIL json"; fails=$((fails + 1)); }
 import json, sys
 d = sys.argv[1]
-for name in ("cosim.json", "cosim2.json"):
+for name, engine in (("cosim.json", "rtl"), ("cosim2.json", "rtl"), ("cs.json", "rtl-serial"), ("cs2.json", "rtl-serial")):
     j = json.load(open(f"{d}/{name}"))
     assert j["samples"] == 5000 and j["mismatches"] == 0 and j["first_mismatch"] is None, j
-r, f = json.load(open(f"{d}/rtl.json")), json.load(open(f"{d}/fx.json"))
+    assert j["engine"] == engine, j
+r, f, rs = json.load(open(f"{d}/rtl.json")), json.load(open(f"{d}/fx.json")), json.load(open(f"{d}/rs.json"))
 assert r["error_deg"] == f["error_deg"], (r["error_deg"], f["error_deg"])
+assert rs["error_deg"] == f["error_deg"] and rs["engine"] == "rtl-serial", (rs, f["error_deg"])
 PY
 # Bad input: missing file, an image of another configuration (the RTL is built for the defaults).
 check missing-regs 2 "$bin" cosim --regs "$tmp/nope.hex" --in "$tmp/val.csv"
 check bad-backpressure 2 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 2
 sed 's/acore: iterations=16/acore: iterations=12/' "$tmp/regs.hex" | grep -v 'atan(2^-1[2-5])' >"$tmp/k12.hex"
 check other-config 2 "$bin" cosim --regs "$tmp/k12.hex" --in "$tmp/val.csv"
+check other-config-serial 2 "$bin" cosim --engine rtl-serial --regs "$tmp/k12.hex" --in "$tmp/val.csv"
+check est-other-config-serial 2 "$bin" estimate --engine rtl-serial --regs "$tmp/k12.hex" --in "$tmp/val.csv"
+check cosim-not-rtl 2 "$bin" cosim --engine fixed --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+check cosim-bad-engine 2 "$bin" cosim --engine rtl-parallel --regs "$tmp/regs.hex" --in "$tmp/val.csv"
 [ "$fails" -eq 0 ] && echo "cli_cosim: all checks passed" || echo "cli_cosim: $fails failed"
 [ "$fails" -eq 0 ]

@@ -26,6 +26,31 @@ for path in sys.argv[1:]:
 PY
 expect_text angles-header "$tmp/angles.csv" "index,angle_rad,uncorrected_rad,region,flags,theta_ref,error_deg"
 check higher-degree 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs5.hex" --degree 5 --regions 8
+# Correction modes and widths (README "Correction modes and CORDIC widths"): the header records the
+# mode, the word count follows the map, and estimate runs the image.
+check poly2d 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/p2d.hex" --correction poly2d --degree 3 --json "$tmp/p2d.json"
+expect_text poly2d-header "$tmp/p2d.hex" "// acore: correction=poly2d"
+expect_text poly2d-term "$tmp/p2d.hex" "region 3 c24 x^3 v^0"
+expect_eq poly2d-words "$(grep -cE '^[0-9a-f]+ ' "$tmp/p2d.hex")" 100
+expect_text poly2d-json "$tmp/p2d.json" '"correction": "poly2d"'
+check poly2d-estimate 0 "$bin" estimate --regs "$tmp/p2d.hex" --in "$tmp/val.csv" --engine fixed
+check none 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/none.hex" --correction none
+expect_eq none-words "$(grep -cE '^[0-9a-f]+ ' "$tmp/none.hex")" 20
+check xcenter 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/n7x.hex" --degree 7 --regions 8 --xcenter
+expect_text xcenter-header "$tmp/n7x.hex" "// acore: xcenter=1"
+check angle20 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/a20.hex" --angle-w 20
+expect_text angle20-reg-w "$tmp/a20.hex" "// acore: reg_w=22"
+expect_text angle20-atan "$tmp/a20.hex" "atan(2^-19)"
+check poly2d-degree4 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --correction poly2d --degree 4
+expect_text poly2d-degree4-msg "$tmp/err" "poly2d takes a total degree of 1..3"
+check xcenter-4regions 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --xcenter
+expect_text xcenter-4regions-msg "$tmp/err" "--xcenter needs --regions 8"
+check bad-angle-w 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --angle-w 17
+expect_text bad-angle-w-msg "$tmp/err" "angle width 17"
+check bad-correction 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --correction fourier3d
+sed 's/correction=poly2d/correction=poly3d/' "$tmp/p2d.hex" >"$tmp/badmode.hex"
+check bad-mode-header 2 "$bin" estimate --regs "$tmp/badmode.hex" --in "$tmp/val.csv"
+expect_text bad-mode-header-msg "$tmp/err" "header field 'correction'"
 
 # Bad usage and bad input: exit 2 with a message naming the problem.
 check no-args 2 "$bin"
@@ -33,6 +58,7 @@ check unknown-sub 2 "$bin" frobnicate
 check missing-regs 2 "$bin" estimate --in "$tmp/val.csv"
 check bad-engine 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine quantum
 expect_text bad-engine-msg "$tmp/err" "quantum"
+expect_text bad-engine-choices "$tmp/err" "rtl-serial"
 check bad-degree 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --degree 9
 check bad-regions 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --regions 6
 check missing-file 2 "$bin" calibrate --in "$tmp/nope.csv" --out "$tmp/x.hex"

@@ -11,24 +11,23 @@ source "$(dirname "$0")/lib_cli.sh"
 
 check simulate-cal 0 "$bin" simulate --scenario paper-noiseless --samples 4096 --seed 1 --out "$tmp/cal.csv"
 check simulate-val 0 "$bin" simulate --scenario paper-noiseless --samples 5003 --seed 2 --out "$tmp/val.csv"
-check calibrate-k21 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/f21.hex" --degree 1 --fourier 21 --fourier-only \
+check calibrate-k21 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/f21.hex" --correction none --fourier 21 \
   --json "$tmp/cal.json"
 expect_text header-k "$tmp/f21.hex" "// acore: fourier_k=21"
 expect_text header-m "$tmp/f21.hex" "// acore: fourier_iterations=12"
 expect_text last-word "$tmp/f21.hex" "fourier b_21"
 expect_text json-fourier "$tmp/cal.json" '"fourier"'
 check estimate-k21 0 "$bin" estimate --regs "$tmp/f21.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json"
-# Issue 6 target (63 words once the zero polynomial words are dropped): RMS <= 0.10, max <= 0.35 deg.
-/usr/bin/python3 - "$tmp/fx.json" <<'PY' || { echo "FAIL accuracy"; fails=$((fails + 1)); }
+# Issue 6 target, at most 64 words: RMS <= 0.10, max <= 0.35 deg.
+/usr/bin/python3 - "$tmp/fx.json" "$tmp/cal.json" <<'PY' || { echo "FAIL accuracy"; fails=$((fails + 1)); }
 import json, sys
 e = json.load(open(sys.argv[1]))["error_deg"]
 assert e["rms"] <= 0.10 and e["max_abs"] <= 0.35, e
+assert json.load(open(sys.argv[2]))["words"] == 63
 PY
 check calibrate-default 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/plain.hex"
 if grep -q fourier "$tmp/plain.hex"; then echo "FAIL plain-image: fourier keys without --fourier"; fails=$((fails + 1)); else passes=$((passes + 1)); fi
 
-check only-without-k 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --fourier-only
-expect_text only-without-k-msg "$tmp/err" "--fourier-only needs --fourier"
 check k-too-large 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --fourier 40
 check m-above-k 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --fourier 4 --fourier-iterations 20
 expect_text m-above-k-msg "$tmp/err" "fourier_iterations=20"

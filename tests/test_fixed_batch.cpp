@@ -57,5 +57,32 @@ TEST(FixedBatch, MatchesStepOnRandomImagesAndInputsIncludingSaturation) {
     }
 }
 
+// The other correction modes: none runs the vectorized loops without the Horner chunk; poly2d and
+// XCENTER fall back to step() (so the comparison guards the dispatch, not a second implementation).
+TEST(FixedBatch, MatchesStepInTheOtherCorrectionModes) {
+  std::mt19937_64 rng(8);
+  struct Mode {
+    int correction, degree, regions, xcenter;
+  };
+  for (const Mode md : {Mode{kNone, 3, 4, 0}, Mode{kNone, 3, 8, 0}, Mode{kPoly2d, 3, 4, 0}, Mode{kPoly, 7, 8, 1}}) {
+    DatapathConfig cfg;
+    cfg.correction = md.correction;
+    cfg.degree = md.degree;
+    cfg.regions = md.regions;
+    cfg.xcenter = md.xcenter;
+    RegImage img;
+    img.cfg = cfg;
+    img.words.assign(cfg.words(), 0);
+    std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
+    for (auto& w : img.words) w = word(rng);
+    img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    std::uniform_int_distribution<int32_t> code(-32768, 32767);
+    std::vector<ChannelCodes> codes(2000);
+    for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
+    expect_same(FixedModel(img), codes);
+  }
+}
+
 }  // namespace
 }  // namespace acore

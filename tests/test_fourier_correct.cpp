@@ -140,9 +140,8 @@ TEST(FourierCorrect, PaperCoefficientsWellInsideAnOutputLsb) {
   // The 21-harmonic fit of the noise-free paper scenario: the stage's own error is a fraction of
   // the 16-bit output LSB (0.0055 deg), so the correction is limited by the fit, not the hardware.
   CalOptions o;
-  o.degree = 1;
+  o.correction = kNone;
   o.fourier_k = 21;
-  o.fourier_only = true;
   const Recording cal = test::paper_recording(4096);
   const RegImage img =
       quantize_auto_range(calibrate(cal, o), DatapathConfig{}, choose_in_scale(cal, 16));
@@ -173,9 +172,8 @@ TEST(FourierCalibration, RecoversAKnownDistortionExactly) {
   }
   for (int k : {4, 6}) {
     CalOptions o;
-    o.degree = 1;
+    o.correction = kNone;
     o.fourier_k = k;
-    o.fourier_only = true;
     const FloatCoefficients fc = calibrate(rec, o);
     ASSERT_EQ(fc.fourier_k(), k);
     for (size_t j = 0; j < fc.fourier.size(); ++j)
@@ -195,21 +193,15 @@ TEST(FourierCalibration, RecoversAKnownDistortionExactly) {
 }
 
 TEST(FourierCalibration, PaperNoiselessTargetWithoutPolynomial) {
-  // Issue 6 target, at most 64 words: RMS <= 0.10 deg, max <= 0.35 deg on a validation recording.
-  // 21 harmonics and no polynomial: 4 + 43 + 16 = 63 words once the polynomial words are dropped
-  // (correction=none); here the degree-1 polynomial words are zero, which the polynomial stage
-  // passes through unchanged (y = s exactly), so the figures are those of that mode.
+  // Issue 6 target, at most 64 words: RMS <= 0.10 deg, max <= 0.35 deg on a validation recording
+  // whose angles the calibration never saw. 21 harmonics and no polynomial: 4 + 16 + 43 = 63 words.
   CalOptions o;
-  o.degree = 1;
+  o.correction = kNone;
   o.fourier_k = 21;
-  o.fourier_only = true;
   const Recording cal = test::paper_recording(4096), val = test::paper_recording(5003);
   const FloatCoefficients fc = calibrate(cal, o);
   const RegImage img = quantize_auto_range(fc, DatapathConfig{}, choose_in_scale(cal, 16));
-  for (int r = 0; r < img.cfg.regions; ++r)
-    for (int c = 0; c < 2; ++c)
-      for (int j = 0; j <= img.cfg.degree; ++j) ASSERT_EQ(img.poly(r, c, j), 0);
-  EXPECT_EQ(img.cfg.words() - img.cfg.poly_words(), 63);
+  EXPECT_EQ(img.cfg.words(), 63);
   const ErrorStats fl = error_stats(angle_error_deg(run_float(val, fc).angle, val.theta_ref));
   const AngleSeries fx = run_fixed(val, img);
   const ErrorStats sx = error_stats(angle_error_deg(fx.angle, val.theta_ref));

@@ -85,6 +85,28 @@ TEST(RegImage, BadInputNamesFileLineAndField) {
   EXPECT_THROW(read_regimage("/nonexistent/regs.hex"), InputError);
 }
 
+TEST(RegImage, CorrectionModeRoundTripsAndOlderImagesReadAsPoly) {
+  const Recording rec = test::paper_recording(4096);
+  CalOptions o;
+  o.correction = kPoly2d;
+  const RegImage a = quantize(calibrate(rec, o), DatapathConfig{}, choose_in_scale(rec, 16));
+  EXPECT_EQ(a.words.size(), 100u);
+  const std::string text = format_regimage(a);
+  EXPECT_NE(text.find("// acore: correction=poly2d"), std::string::npos);
+  EXPECT_NE(text.find("region 0 c13 x^1 v^2"), std::string::npos);
+  const RegImage b = parse_regimage(text, "x");
+  EXPECT_EQ(b.cfg.correction, kPoly2d);
+  EXPECT_EQ(a.words, b.words);
+  // An image written before the mode existed has no correction/xcenter keys: the paper's mode.
+  std::string old = format_regimage(paper_image());
+  for (const char* key : {"// acore: correction=poly\n", "// acore: xcenter=0\n"})
+    old.erase(old.find(key), std::string(key).size());
+  const RegImage c = parse_regimage(old, "old.hex");
+  EXPECT_EQ(c.cfg.correction, kPoly);
+  EXPECT_EQ(c.cfg.xcenter, 0);
+  EXPECT_EQ(c.words, paper_image().words);
+}
+
 TEST(RegImage, QuantizeRejectsCoefficientsOutOfRange) {
   const Recording rec = test::paper_recording(4096);
   FloatCoefficients fc = calibrate(rec, CalOptions{});

@@ -15,32 +15,43 @@ namespace acore::cli {
 
 namespace {
 struct CalibrateArgs {
-  std::string in, out, json;
-  int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, p = 0;
-  int fourier = 0, fourier_iterations = DatapathConfig{}.fourier_iterations, fourier_guard = DatapathConfig{}.fourier_guard;
+  std::string in, out, json, correction = "poly";
+  int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, in_w = 16, p = 0;
+  int fourier = 0, fourier_iterations = DatapathConfig{}.fourier_iterations;
+  int fourier_guard = DatapathConfig{}.fourier_guard;
   double in_scale = 0;
-  bool coef_f_given = false, fourier_only = false;
+  bool coef_f_given = false, iterations_given = false, xcenter = false;
 };
 
 void run_calibrate(const CalibrateArgs& a) {
   const Recording rec = read_recording(a.in);
   CalOptions opt;
+  opt.correction = parse_correction(a.correction);
   opt.degree = a.degree;
   opt.regions = a.regions;
+  opt.xcenter = a.xcenter ? 1 : 0;
   opt.periodicity = a.p ? a.p : recording_periodicity(rec, a.in);
   opt.fourier_k = a.fourier;
-  opt.fourier_only = a.fourier_only;
-  if (a.fourier_only && a.fourier == 0) throw InputError("calibrate: --fourier-only needs --fourier K (K >= 1)");
-  DatapathConfig cfg;
+  DatapathConfig cfg = cordic_width_preset(a.angle_w);
+  cfg.correction = opt.correction;
   cfg.fourier_k = a.fourier;
   cfg.fourier_iterations = a.fourier_iterations;
   cfg.fourier_guard = a.fourier_guard;
   cfg.degree = a.degree;
   cfg.regions = a.regions;
-  cfg.iterations = a.iterations;
-  cfg.coef_f = a.coef_f;
-  cfg.angle_w = a.angle_w;
-  cfg.z_w = std::max(cfg.z_w, a.angle_w + 4);
+  cfg.xcenter = opt.xcenter;
+  if (a.iterations_given) cfg.iterations = a.iterations;
+  // A wider input needs wider offset words (REG_W >= IN_W + 2); the coefficients keep Q3.x.
+  cfg.in_w = a.in_w;
+  if (const int grow = cfg.in_w + 2 - cfg.reg_w; grow > 0) {
+    cfg.reg_w += grow;
+    cfg.coef_f += grow;
+  }
+  if (a.coef_f_given) {
+    cfg.acc_guard += cfg.coef_f - a.coef_f;  // the accumulator keeps its fraction bits
+    cfg.coef_f = a.coef_f;
+    cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
+  }
   cfg.validate();
   const FloatCoefficients fc = calibrate(rec, opt);
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
@@ -48,10 +59,13 @@ void run_calibrate(const CalibrateArgs& a) {
   cfg = img.cfg;
   std::string fourier_args;
   if (a.fourier > 0)
-    fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}{}", a.fourier,
-                               a.fourier_iterations, a.fourier_guard, a.fourier_only ? " --fourier-only" : "");
-  img.provenance.push_back(fmt::format("command=anglecore calibrate --in {} --degree {} --regions {} "
-                                       "--iterations {}{}", a.in, a.degree, a.regions, a.iterations, fourier_args));
+    fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}", a.fourier,
+                               a.fourier_iterations, a.fourier_guard);
+  img.provenance.push_back(
+      fmt::format("command=anglecore calibrate --in {} --correction {} --degree {} "
+                  "--regions {}{} --angle-w {} --in-w {} --iterations {}{}",
+                  a.in, a.correction, a.degree, a.regions, a.xcenter ? " --xcenter" : "", a.angle_w,
+                  a.in_w, cfg.iterations, fourier_args));
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
   write_regimage(img, a.out);
 
@@ -65,15 +79,24 @@ void run_calibrate(const CalibrateArgs& a) {
                            cfg.describe(), in_scale);
   std::cout << fmt::format("  on the calibration recording: uncorrected RMS {:.3f} deg, corrected RMS "
                            "{:.3f} (float) {:.3f} (fixed) deg\n", su.rms, sf.rms, sx.rms);
-  nlohmann::json j = {{"samples", rec.size()},      {"words", cfg.words()},
-                      {"degree", cfg.degree},       {"regions", cfg.regions},
-                      {"iterations", cfg.iterations}, {"in_scale", in_scale},
-                      {"offset", {fc.offset[0], fc.offset[1]}}, {"amplitude", {fc.amp[0], fc.amp[1]}},
-                      {"poly", fc.poly},
-                      {"fourier_k", cfg.fourier_k},
-                      {"fourier", fc.fourier},
-                      {"fit_error_deg", {{"float", stats_json(sf)}, {"fixed", stats_json(sx)},
-                                         {"uncorrected", stats_json(su)}}}};
+  nlohmann::json j = {
+      {"samples", rec.size()},
+      {"words", cfg.words()},
+      {"correction", correction_name(cfg.correction)},
+      {"xcenter", cfg.xcenter},
+      {"angle_w", cfg.angle_w},
+      {"reg_w", cfg.reg_w},
+      {"degree", cfg.degree},
+      {"regions", cfg.regions},
+      {"iterations", cfg.iterations},
+      {"in_scale", in_scale},
+      {"offset", {fc.offset[0], fc.offset[1]}},
+      {"amplitude", {fc.amp[0], fc.amp[1]}},
+      {"poly", fc.poly},
+      {"fourier_k", cfg.fourier_k},
+      {"fourier", fc.fourier},
+      {"fit_error_deg",
+       {{"float", stats_json(sf)}, {"fixed", stats_json(sx)}, {"uncorrected", stats_json(su)}}}};
   write_json(a.json, j);
 }
 }  // namespace
@@ -83,30 +106,52 @@ void add_calibrate(CLI::App& app) {
   CLI::App* c = app.add_subcommand("calibrate", "Fit and quantize the coefficients into a register image");
   c->add_option("--in", args->in, "Calibration recording (CSV with theta_ref)")->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
-  c->add_option("--degree", args->degree, "Polynomial degree n")->check(CLI::Range(1, 7));
+  c->add_option(
+       "--correction", args->correction,
+       "poly (1-D in x, the paper's), poly2d (2-D in x and the other curve), none (no correction)")
+      ->check(CLI::IsMember({"poly", "poly2d", "none"}));
+  c->add_option("--degree", args->degree,
+                "Polynomial degree n (poly: 1..7; poly2d: total degree 1..3)")
+      ->check(CLI::Range(1, 7));
   c->add_option("--regions", args->regions, "Correction regions (4 or 8)")->check(CLI::IsMember({4, 8}));
-  c->add_option("--iterations", args->iterations, "CORDIC iterations k")->check(CLI::Range(4, 24));
+  c->add_flag("--xcenter", args->xcenter,
+              "8 regions: fit in u = 2 (x -+ 3/8), centred in its half region (keeps high-degree "
+              "coefficients in range, so COEF_F stays 15)");
+  c->add_option("--iterations", args->iterations,
+                "CORDIC iterations k (default: the --angle-w preset's)")
+      ->check(CLI::Range(4, 24));
   c->add_option("--coef-frac", args->coef_f, "Fraction bits of a polynomial coefficient (default 15, lowered "
                                              "automatically when a coefficient needs more range)")
       ->check(CLI::Range(1, 17));
-  c->add_option("--angle-w", args->angle_w, "Output angle width in bits")->check(CLI::Range(8, 20));
+  c->add_option(
+       "--angle-w", args->angle_w,
+       "Output angle width: 8..16 (K=16, Z_W=20, REG_W=18), 18 (K=18, Z_W=22, REG_W=20) or 20 "
+       "(K=20, Z_W=24, REG_W=22); see README 'CORDIC width options'")
+      ->check(CLI::Range(8, 20));
+  c->add_option("--in-w", args->in_w,
+                "Input code width IN_W (default 16; REG_W grows to IN_W + 2 if needed)")
+      ->check(CLI::Range(8, 24));
   c->add_option("--in-scale", args->in_scale, "Input codes per recording unit (default: automatic power of two)")
       ->check(CLI::PositiveNumber);
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
-  c->add_option("--fourier", args->fourier, "Harmonics K of the angle-domain Fourier correction after the CORDIC "
-                                            "(default 0: off); 2K+1 more words")
+  c->add_option("--fourier", args->fourier,
+                "Harmonics K of the angle-domain Fourier correction after the CORDIC (default 0: off); "
+                "2K+1 more words; with --correction none it corrects the uncorrected angle")
       ->check(CLI::Range(0, 31));
   c->add_option("--fourier-iterations", args->fourier_iterations,
                 "Rotation-CORDIC stages per harmonic of the Fourier correction (<= --iterations)")
       ->check(CLI::Range(4, 24));
   c->add_option("--fourier-guard", args->fourier_guard, "Guard fraction bits of the Fourier rotations")
       ->check(CLI::Range(0, 8));
-  c->add_flag("--fourier-only", args->fourier_only,
-              "Fit no polynomial (its words stay zero: the curves pass unchanged) and only the Fourier correction");
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
     args->coef_f_given = c->count("--coef-frac") > 0;
+    args->iterations_given = c->count("--iterations") > 0;
+    if (args->correction == "poly2d" && args->degree > 3)
+      throw InputError(
+          fmt::format("--degree {}: poly2d takes a total degree of 1..3", args->degree));
+    if (args->xcenter && args->regions != 8) throw InputError("--xcenter needs --regions 8");
     run_calibrate(*args);
   });
 }

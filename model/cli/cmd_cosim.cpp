@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// `anglecore cosim`: the Verilated RTL against the bit-accurate model, sample by sample (DESIGN 3.3).
-// Built only with the RTL (ACORE_WITH_RTL); exit 1 on any mismatch.
+// `anglecore cosim`: the Verilated RTL against the bit-accurate model, sample by sample
+// (DESIGN 3.3).
+// --engine rtl (default) runs the pipelined top, rtl-serial the serial core. Built only with the
+// RTL (ACORE_WITH_RTL); exit 1 on any mismatch.
 #ifdef ACORE_WITH_RTL
 #include <fmt/format.h>
 
@@ -13,12 +15,13 @@
 #include "estimator.hpp"
 #include "fixed_model.hpp"
 #include "rtl_engine.hpp"
+#include "rtl_serial_engine.hpp"
 
 namespace acore::cli {
 
 namespace {
 struct CosimArgs {
-  std::string regs, in, json, trace;
+  std::string regs, in, json, trace, engine = "rtl";
   double backpressure = 0.0;
   uint64_t seed = 1;
 };
@@ -30,6 +33,9 @@ nlohmann::json sample_json(const FixedSample& s) {
 }
 
 void run_cosim(const CosimArgs& a) {
+  const Engine engine = parse_engine(a.engine);
+  if (engine != Engine::Rtl && engine != Engine::RtlSerial)
+    throw InputError("--engine: '" + a.engine + "' is not an RTL engine (rtl, rtl-serial)");
   const RegImage img = read_regimage(a.regs);
   const Recording rec = read_recording(a.in);
   // c1 = sin, c2 = cos, c3 = c4 = 0 for two-channel recordings (FixedModel::to_code per value).
@@ -39,7 +45,8 @@ void run_cosim(const CosimArgs& a) {
   opt.seed = a.seed;
   opt.backpressure = a.backpressure;
   opt.gaps = a.backpressure;
-  const std::vector<FixedSample> rtl = run_rtl(img, codes, opt);
+  const std::vector<FixedSample> rtl =
+      engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
   const FixedModel model(img);
   size_t bad = 0;
   nlohmann::json first = nullptr;
@@ -49,9 +56,14 @@ void run_cosim(const CosimArgs& a) {
     if (bad++ == 0)
       first = {{"index", i}, {"rtl", i < rtl.size() ? sample_json(rtl[i]) : nullptr}, {"model", sample_json(m)}};
   }
-  const nlohmann::json j = {{"samples", codes.size()}, {"mismatches", bad}, {"first_mismatch", first}};
-  std::cout << fmt::format("cosim: {} samples, {} mismatches (RTL vs bit-accurate model{})\n", codes.size(),
-                           bad, a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
+  const nlohmann::json j = {{"samples", codes.size()},
+                            {"mismatches", bad},
+                            {"first_mismatch", first},
+                            {"engine", engine_name(engine)}};
+  std::cout << fmt::format(
+      "cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", codes.size(), bad,
+      engine == Engine::Rtl ? "RTL" : "serial RTL",
+      a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
   if (!a.trace.empty()) std::cout << "waveform: " << a.trace << "\n";
   write_json(a.json, j);
   if (bad) throw CheckFailed(fmt::format("{} of {} samples differ; first at index {}", bad, codes.size(),
@@ -65,6 +77,8 @@ void add_cosim(CLI::App& app) {
   c->add_option("--regs", args->regs, "Register image ($readmemh, from `calibrate`)")->required();
   c->add_option("--in", args->in, "Recording (CSV)")->required();
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
+  c->add_option("--engine", args->engine,
+                "rtl (pipelined top, default) | rtl-serial (serial core, rtl/acore_serial_top.v)");
   c->add_option("--trace", args->trace, "Write an FST waveform of the RTL run");
   c->add_option("--backpressure", args->backpressure,
                 "Probability of a stalled output and of an input gap per clock (default 0)")

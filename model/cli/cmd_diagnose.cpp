@@ -38,11 +38,18 @@ void print_summary(const Diagnosis& d) {
     std::cout << fmt::format("  gap order {:2d}: {:.4f} deg  <- {}\n", d.harmonics[k].order, d.harmonics[k].amplitude_deg,
                              fmt::join(d.harmonics[k].causes, "; "));
   std::cout << fmt::format("verdict: {}\n", d.verdict);
+  if (!d.ambiguous_with.empty())
+    std::cout << fmt::format(
+        "  ambiguous: the recording cannot tell {} from {} (record with speed changes and a "
+        "reversal)\n",
+        d.ranking.front().cand.effect, fmt::join(d.ambiguous_with, ", "));
   std::cout << fmt::format("  {:<14} {:>10} {:>10} {:>10}  {}\n", "effect", "dBIC", "explained", "after deg", "parameters");
   for (size_t k = 0; k < std::min<size_t>(6, d.ranking.size()); ++k) {
     const auto& r = d.ranking[k];
-    std::cout << fmt::format("  {:<14} {:>10.1f} {:>9.1f}% {:>10.4f}  {}\n", r.cand.effect, r.cand.delta_bic,
-                             100 * r.explained, r.after_deg, params_text(r.cand));
+    std::cout << fmt::format(
+        "  {:<14} {:>10.1f} {:>9.1f}% {:>10.4f}  {}{}\n", r.cand.effect, r.cand.delta_bic,
+        100 * r.explained, r.after_deg, params_text(r.cand),
+        r.cand.rejected.empty() ? "" : "  [rejected: " + r.cand.rejected + "]");
   }
   if (!d.combination.empty())
     std::cout << fmt::format("combination: {} + {} explains {:.1f}%, gap after {:.4f} deg\n",
@@ -96,8 +103,9 @@ void write_report(const Diagnosis& d, const Recording& real, const std::string& 
   md << "\n## Which\n\n| rank | effect | ΔBIC | explained | gap after ° | parameters |\n|---|---|---|---|---|---|\n";
   for (size_t k = 0; k < d.ranking.size(); ++k) {
     const auto& r = d.ranking[k];
-    md << fmt::format("| {} | {} | {:.1f} | {:.1f}% | {:.4f} | {} |\n", k + 1, r.cand.effect, r.cand.delta_bic,
-                      100 * r.explained, r.after_deg, params_text(r.cand));
+    md << fmt::format("| {} | {} | {:.1f} | {:.1f}% | {:.4f} | {}{} |\n", k + 1, r.cand.effect,
+                      r.cand.delta_bic, 100 * r.explained, r.after_deg, params_text(r.cand),
+                      r.cand.rejected.empty() ? "" : " (rejected: " + r.cand.rejected + ")");
   }
   if (!d.combination.empty())
     md << fmt::format("\nBest pair: {} + {}, explains {:.1f}%, gap after {:.4f}°.\n", d.combination[0].cand.effect,

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `anglecore estimate`: run one engine (float, fixed, rtl) on a recording and report the error.
+// `anglecore estimate`: run one engine (float, fixed, rtl, rtl-serial) on a recording and report
+// the error.
 #include <fmt/format.h>
 
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "estimator.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
+#include "rtl_serial_engine.hpp"
 #endif
 
 namespace acore::cli {
@@ -46,16 +48,20 @@ void run_estimate(const EstimateArgs& a) {
     case Engine::Float: s = run_float(rec, dequantize(img)); break;
     case Engine::Fixed: s = run_fixed(rec, img); break;
     case Engine::Rtl:
+    case Engine::RtlSerial:
 #ifdef ACORE_WITH_RTL
     {
-      const auto rows = run_rtl(img, to_codes(rec, img.in_scale, img.cfg.in_w), RtlRunOptions{});
+      const auto codes = to_codes(rec, img.in_scale, img.cfg.in_w);
+      const auto rows = engine == Engine::Rtl ? run_rtl(img, codes, RtlRunOptions{})
+                                              : run_rtl_serial(img, codes, RtlRunOptions{});
       s = series_from_fixed(rows, img.cfg);
       // The RTL has no uncorrected output: take it from the bit-accurate model (same front end).
       s.uncorrected = run_fixed(rec, img).uncorrected;
       break;
     }
 #else
-      throw InputError("--engine rtl: this anglecore was built without the RTL (ACORE_WITH_RTL=OFF)");
+      throw InputError(std::string("--engine ") + engine_name(engine) +
+                       ": this anglecore was built without the RTL (ACORE_WITH_RTL=OFF)");
 #endif
   }
   nlohmann::json j = {{"engine", engine_name(engine)}, {"samples", rec.size()}};
@@ -88,7 +94,8 @@ void add_estimate(CLI::App& app) {
   CLI::App* c = app.add_subcommand("estimate", "Run the estimator on a recording and report the angle error");
   c->add_option("--regs", args->regs, "Register image from `calibrate`")->required();
   c->add_option("--in", args->in, "Recording to estimate (CSV)")->required();
-  c->add_option("--engine", args->engine, "float | fixed | rtl (default fixed)");
+  c->add_option("--engine", args->engine,
+                "float | fixed | rtl (pipelined top) | rtl-serial (serial core) (default fixed)");
   c->add_option("--out", args->out, "Write per-sample angles (CSV)");
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));

@@ -12,7 +12,9 @@ void add_simulate(CLI::App& app);
 void add_calibrate(CLI::App& app);
 void add_estimate(CLI::App& app);
 void add_diagnose(CLI::App& app);
+void add_diagnose_bench(CLI::App& app);
 void add_harmonics(CLI::App& app);
+void add_sweep(CLI::App& app);
 #ifdef ACORE_WITH_RTL
 void add_cosim(CLI::App& app);  // needs the Verilated RTL (tb/rtl_engine.hpp)
 #endif

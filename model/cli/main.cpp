@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
   acore::cli::add_calibrate(app);
   acore::cli::add_estimate(app);
   acore::cli::add_diagnose(app);
+  acore::cli::add_diagnose_bench(app);
   acore::cli::add_harmonics(app);
+  acore::cli::add_sweep(app);
 #ifdef ACORE_WITH_RTL
   acore::cli::add_cosim(app);
 #endif

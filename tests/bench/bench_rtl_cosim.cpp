@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Verilated RTL throughput (samples per wall second, one core, tracing off): the RTL engine alone
 // (run_rtl: register load + stream), the RTL at random stalls, and RTL + bit-accurate model compare
-// (what `anglecore cosim` does). Run: build/tests/bench/bench_rtl_cosim --benchmark_counters_tabular=true
+// (what `anglecore cosim` does); the same for the serial core (run_rtl_serial, 226 clocks a sample,
+// on the first 20000 samples). Run: build/tests/bench/bench_rtl_cosim
+// --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include "calibration.hpp"
@@ -9,6 +11,7 @@
 #include "fixed_model.hpp"
 #include "paper_signals.hpp"
 #include "rtl_engine.hpp"
+#include "rtl_serial_engine.hpp"
 
 namespace {
 
@@ -51,6 +54,39 @@ void BM_CosimCompare(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_CosimCompare)->Unit(benchmark::kMillisecond);
+
+std::vector<acore::ChannelCodes> serial_inputs() {
+  return {setup().in.begin(), setup().in.begin() + 20000};
+}
+
+void BM_RtlSerialEngine(benchmark::State& state) {
+  const Setup& s = setup();
+  const auto in = serial_inputs();
+  for (auto _ : state)
+    benchmark::DoNotOptimize(acore::run_rtl_serial(s.img, in, acore::RtlRunOptions{}));
+  state.counters["samples/s"] = benchmark::Counter(
+      static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["clocks/s"] =
+      benchmark::Counter(static_cast<double>(in.size()) *
+                             acore::RtlSerialHarness::cycles_per_sample() * state.iterations(),
+                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_RtlSerialEngine)->Unit(benchmark::kMillisecond);
+
+void BM_SerialCosimCompare(benchmark::State& state) {
+  const Setup& s = setup();
+  const auto in = serial_inputs();
+  const acore::FixedModel model(s.img);
+  size_t bad = 0;
+  for (auto _ : state) {
+    const auto rtl = acore::run_rtl_serial(s.img, in, acore::RtlRunOptions{});
+    for (size_t i = 0; i < in.size(); ++i) bad += !(rtl[i] == model.step(in[i]));
+  }
+  if (bad) state.SkipWithError("serial RTL and model differ");
+  state.counters["samples/s"] = benchmark::Counter(
+      static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SerialCosimCompare)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

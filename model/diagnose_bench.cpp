@@ -1,0 +1,653 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose_bench.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <exception>
+#include <mutex>
+#include <random>
+#include <thread>
+
+#include "diagnose.hpp"
+#include "errors.hpp"
+
+namespace acore {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+constexpr double kDuration = 2.0;  // seconds per recording: the sample rate is samples / kDuration
+constexpr double kDriftSpanC = 40.0;  // drift coefficients are drawn as a change over this span
+constexpr double kVisible =
+    0.01;  // a four-channel draw must move c1 - c3 or c2 - c4 this much (x A)
+
+const std::vector<std::string>& outside_kinds() {
+  static const std::vector<std::string> k = {"glitch", "dropout", "modulation", "pickup"};
+  return k;
+}
+
+// splitmix64: a well-mixed seed per (run seed, case index).
+uint64_t mix(uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+class Draw {
+ public:
+  explicit Draw(uint64_t seed) : rng_(seed) {}
+  double u(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
+  int i(int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng_); }
+  double sign() { return u(0, 1) < 0.5 ? -1.0 : 1.0; }
+  bool coin() { return u(0, 1) < 0.5; }
+  // A random nonempty subset of n channels.
+  std::vector<bool> subset(int n) {
+    std::vector<bool> s(static_cast<size_t>(n));
+    do {
+      for (int c = 0; c < n; ++c) s[static_cast<size_t>(c)] = coin();
+    } while (std::none_of(s.begin(), s.end(), [](bool b) { return b; }));
+    return s;
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+// A speed ramp through a reversal: from +-va to -+vb rev/s over kDuration.
+Trajectory draw_ramp(Draw& d) {
+  Trajectory t;
+  t.kind = "ramp";
+  const double dir = d.sign();
+  t.speed_rps = dir * d.u(3, 12);
+  t.speed_end_rps = -dir * d.u(3, 12);
+  t.theta0_rad = d.u(0, 2 * kPi);
+  return t;
+}
+
+void draw_temperature(Draw& d, double out[2]) {
+  const double a = d.u(0, 30), b = a + d.u(30, 60);
+  const bool cooling = d.coin();
+  out[0] = cooling ? b : a;
+  out[1] = cooling ? a : b;
+}
+
+double top_speed(const Trajectory& t) {
+  return std::max(std::fabs(t.speed_rps), std::fabs(t.speed_end_rps));
+}
+
+// The time of the ramp's reversal, in seconds.
+double reversal_time(const Trajectory& t) {
+  const double a = std::fabs(t.speed_rps), b = std::fabs(t.speed_end_rps);
+  return kDuration * a / (a + b);
+}
+
+// Four channels: the effect on the pairs the estimator sees. gain(c) and offset(c) per channel.
+template <class G, class O>
+bool pairs_move(int channels, G&& gain, O&& offset) {
+  if (channels == 2)
+    return std::fabs(offset(0)) >= kVisible || std::fabs(offset(1)) >= kVisible ||
+           std::fabs(gain(0) - gain(1)) >= kVisible;
+  return std::fabs(offset(0) - offset(2)) >= kVisible ||
+         std::fabs(offset(1) - offset(3)) >= kVisible ||
+         std::fabs(0.5 * (gain(0) + gain(2)) - 0.5 * (gain(1) + gain(3))) >= kVisible;
+}
+
+Effect draw_effect(Draw& d, const BenchCase& c) {
+  const int nch = c.channels;
+  auto name = [&](int ch) { return effect_channel_name(nch, ch); };
+  const std::string& e = c.truth;
+  ParamList p;
+  if (e == "offset") {
+    std::vector<double> o(4, 0.0);
+    do {
+      const auto s = d.subset(nch);
+      for (int ch = 0; ch < nch; ++ch) o[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
+    } while (!pairs_move(
+        nch, [](int) { return 0.0; }, [&](int ch) { return o[ch]; }));
+    for (int ch = 0; ch < nch; ++ch)
+      if (o[ch] != 0) p.push_back({"offset_" + name(ch), o[ch]});
+  } else if (e == "gain_mismatch") {
+    std::vector<double> g(4, 0.0);
+    do {
+      const auto s = d.subset(nch);
+      for (int ch = 0; ch < nch; ++ch) g[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
+    } while (!pairs_move(
+        nch, [&](int ch) { return g[ch]; }, [](int) { return 0.0; }));
+    for (int ch = 0; ch < nch; ++ch)
+      if (g[ch] != 0) p.push_back({"gain_" + name(ch), 1.0 + g[ch]});
+  } else if (e == "phase_error") {
+    p = {{"delta_rad", d.sign() * d.u(0.5, 5) * kDeg}};
+  } else if (e == "harmonic") {
+    const int order = nch == 4 ? 2 * d.i(1, 3) + 1 : d.i(2, 5);
+    p = {{"order", order}, {"amplitude", d.u(0.01, 0.05)}, {"phase_rad", d.u(-kPi, kPi)}};
+  } else if (e == "eccentricity") {
+    p = {{"epsilon_rad", d.u(0.2, 2) * kDeg}, {"phi0_rad", d.u(-kPi, kPi)}};
+  } else if (e == "channel_skew" || e == "common_delay") {
+    // The angle the effect moves at the top speed: 360 v tau degrees.
+    p = {{"tau_s", d.u(0.2, 3) / (360.0 * top_speed(c.real_traj))}};
+  } else if (e == "drift") {
+    std::vector<double> ko(4, 0.0), kg(4, 0.0);
+    do {
+      const auto s = d.subset(nch);
+      for (int ch = 0; ch < nch; ++ch) {
+        ko[ch] = kg[ch] = 0;
+        if (!s[ch]) continue;
+        const int what = d.i(0, 2);  // 0: offset, 1: gain, 2: both
+        if (what != 1) ko[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
+        if (what != 0) kg[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
+      }
+    } while (!pairs_move(
+        nch, [&](int ch) { return kg[ch] * kDriftSpanC; },
+        [&](int ch) { return ko[ch] * kDriftSpanC; }));
+    for (int ch = 0; ch < nch; ++ch) {
+      if (ko[ch] != 0) p.push_back({"offset_per_C_" + name(ch), ko[ch]});
+      if (kg[ch] != 0) p.push_back({"gain_per_C_" + name(ch), kg[ch]});
+    }
+  } else if (e == "quantization") {
+    p = {{"bits", d.i(6, 10)}, {"full_scale", c.peak * d.u(1.05, 1.5)}};
+  } else if (e == "saturation") {
+    p = {{"level", c.peak * d.u(0.80, 0.95)}};
+  } else if (e == "excess_noise") {
+    p = {{"sigma", c.model.sigma_indep * d.u(2, 5)}};
+  } else if (e == "hysteresis") {
+    p = {{"h_rad", d.sign() * d.u(0.1, 1) * kDeg}};
+  } else {
+    throw InputError("diagnose-bench: unknown effect '" + e + "'");
+  }
+  return make_effect(e, p, nch);
+}
+
+ParamList draw_outside(Draw& d, const BenchCase& c) {
+  const std::string& k = c.outside;
+  if (k == "glitch") {
+    // The magnet slips on the shaft by J at t0, away from the reversal (else it is hysteresis).
+    const double tr = reversal_time(c.real_traj);
+    double t0;
+    do t0 = d.u(0.15, 0.85) * kDuration;
+    while (std::fabs(t0 - tr) < 0.2 * kDuration);
+    return {{"t0_s", t0}, {"jump_rad", d.sign() * d.u(1, 3) * kDeg}};
+  }
+  if (k == "dropout") {
+    // One channel freezes at its last value three times, 20..40 ms each.
+    ParamList p = {{"channel", d.i(0, c.channels - 1)}};
+    for (int s = 0; s < 3; ++s) {
+      p.push_back({fmt::format("start{}_s", s), d.u(0.05, 0.9) * kDuration});
+      p.push_back({fmt::format("length{}_s", s), d.u(0.02, 0.04)});
+    }
+    return p;
+  }
+  if (k == "modulation") {
+    // The sine pair's amplitude modulated at a frequency that has nothing to do with the angle.
+    return {{"depth", d.u(0.02, 0.05)}, {"freq_hz", d.u(3, 15)}, {"phase_rad", d.u(-kPi, kPi)}};
+  }
+  if (k == "pickup") {
+    // Mains pick-up on one channel.
+    return {{"channel", d.i(0, c.channels - 1)},
+            {"amplitude", d.u(0.01, 0.03)},
+            {"freq_hz", 50},
+            {"phase_rad", d.u(-kPi, kPi)}};
+  }
+  throw InputError("diagnose-bench: unknown outside effect '" + k + "'");
+}
+
+double param(const ParamList& p, const std::string& name) {
+  for (const auto& [k, v] : p)
+    if (k == name) return v;
+  throw InputError("diagnose-bench: no parameter '" + name + "'");
+}
+
+void apply_outside(const BenchCase& c, Recording& r) {
+  const ParamList& p = c.outside_params;
+  const size_t n = r.size();
+  if (c.outside == "glitch") {
+    // The sensor sees theta + J from t0 on: the reference lags the sensor by J.
+    const double t0 = param(p, "t0_s"), j = param(p, "jump_rad");
+    for (size_t i = 0; i < n; ++i)
+      if (r.t[i] >= t0) r.theta_ref[i] -= j;
+  } else if (c.outside == "dropout") {
+    auto& x = r.ch[static_cast<size_t>(param(p, "channel"))];
+    for (int s = 0; s < 3; ++s) {
+      const double t0 = param(p, fmt::format("start{}_s", s)),
+                   t1 = t0 + param(p, fmt::format("length{}_s", s));
+      double held = x[0];
+      for (size_t i = 0; i < n; ++i) {
+        if (r.t[i] < t0)
+          held = x[i];
+        else if (r.t[i] < t1)
+          x[i] = held;
+      }
+    }
+  } else if (c.outside == "modulation") {
+    const double m = param(p, "depth"), f = param(p, "freq_hz"), ph = param(p, "phase_rad");
+    for (int ch = 0; ch < r.channels; ch += 2)
+      for (size_t i = 0; i < n; ++i) r.ch[ch][i] *= 1.0 + m * std::sin(2 * kPi * f * r.t[i] + ph);
+  } else if (c.outside == "pickup") {
+    auto& x = r.ch[static_cast<size_t>(param(p, "channel"))];
+    const double a = param(p, "amplitude"), f = param(p, "freq_hz"), ph = param(p, "phase_rad");
+    for (size_t i = 0; i < n; ++i) x[i] += a * std::sin(2 * kPi * f * r.t[i] + ph);
+  }
+}
+
+double rel(double fitted, double truth) { return std::fabs(fitted - truth) / std::fabs(truth); }
+
+// The scored parameters of a correctly named effect (see the header).
+std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
+  std::vector<BenchParam> out;
+  const Effect& e = c.effect;
+  auto add = [&](const std::string& name, double truth, double fitted) {
+    out.push_back({name, truth, fitted, rel(fitted, truth)});
+  };
+  auto given = [&](const std::string& name) {
+    for (const auto& [k, v] : e.params)
+      if (k == name) return v;
+    return 0.0;
+  };
+  const ParamList defaults = effect_defaults(e.effect, c.channels);
+  auto drawn = [&](const std::string& name) {
+    for (const auto& [k, v] : defaults)
+      if (k == name) return given(name) != v;
+    return false;
+  };
+  if (e.effect == "offset" || e.effect == "drift" || e.effect == "phase_error" ||
+      e.effect == "channel_skew" || e.effect == "common_delay" || e.effect == "excess_noise" ||
+      e.effect == "hysteresis") {
+    for (const auto& [k, v] : e.params)
+      if (drawn(k)) add(k, v, cand.param(k));
+  } else if (e.effect == "gain_mismatch") {
+    for (const auto& [k, v] : e.params)
+      if (drawn(k)) add(k + " - 1", v - 1, cand.param(k) - 1);
+  } else if (e.effect == "harmonic") {
+    const std::complex<double> t = std::polar(e.param("amplitude"), e.param("phase_rad"));
+    const std::complex<double> f =
+        cand.param("order") == e.param("order")
+            ? std::polar(cand.param("amplitude"), cand.param("phase_rad"))
+            : std::complex<double>(0, 0);
+    out.push_back({fmt::format("order {} a e^(i psi)", e.param("order")), std::abs(t), std::abs(f),
+                   std::abs(f - t) / std::abs(t)});
+  } else if (e.effect == "eccentricity") {
+    const std::complex<double> t = std::polar(e.param("epsilon_rad"), e.param("phi0_rad"));
+    const std::complex<double> f = std::polar(cand.param("epsilon_rad"), cand.param("phi0_rad"));
+    out.push_back({"eps e^(i phi0)", std::abs(t), std::abs(f), std::abs(f - t) / std::abs(t)});
+  } else if (e.effect == "quantization") {
+    add("step", 2 * e.param("full_scale") / std::ldexp(1.0, static_cast<int>(e.param("bits"))),
+        cand.param("step"));
+  } else if (e.effect == "saturation") {
+    add("depth 1 - level/P", 1 - e.param("level") / c.peak, 1 - cand.param("level") / c.peak);
+  }
+  return out;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const size_t m = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + m, v.end());
+  if (v.size() % 2) return v[m];
+  return 0.5 * (v[m] + *std::max_element(v.begin(), v.begin() + m));
+}
+
+}  // namespace
+
+std::string expected_top1(const std::string& truth) {
+  if (truth == "none") return "no_gap";
+  if (truth == "outside") return "unexplained";
+  return truth;
+}
+
+BenchCase draw_bench_case(uint64_t seed, size_t index, const std::string& truth, int channels,
+                          const std::string& outside) {
+  if (channels != 2 && channels != 4) throw InputError("diagnose-bench: channels must be 2 or 4");
+  BenchCase c;
+  c.index = index;
+  c.truth = truth;
+  c.outside = outside;
+  c.channels = channels;
+  c.seed = mix(mix(seed) ^ index);
+  Draw d(c.seed);
+  // The designer's model: a realistic imperfect sensor (amplitudes, offsets, harmonics 1..5,
+  // noise).
+  Scenario& m = c.model;
+  m.name = "bench";
+  m.channels = channels;
+  m.p = 1;
+  for (int ch = 0; ch < channels; ++ch) {
+    ChannelModel& cm = m.sensor[static_cast<size_t>(ch)];
+    cm.amplitude = d.u(0.97, 1.03);
+    cm.offset = d.u(-0.01, 0.01);
+    for (int k = 1; k <= 5; ++k) {
+      const double a = k == 1 ? 0.005 : 0.01;
+      cm.af.push_back(d.u(-a, a));
+      cm.bf.push_back(d.u(-a, a));
+    }
+  }
+  m.sigma_indep = d.u(0.0005, 0.002);
+  m.sigma_common = channels == 4 ? d.u(0, 0.005) : 0.0;
+  m.trajectory.kind = "constant";
+  m.trajectory.turns = d.u(2, 5);
+  m.trajectory.theta0_rad = d.u(0, 2 * kPi);
+  for (int ch = 0; ch < channels; ++ch)
+    for (int k = 0; k < 3600; ++k)
+      c.peak = std::max(c.peak, std::fabs(m.channel_value(ch, 2 * kPi * k / 3600)));
+  c.real_traj = draw_ramp(d);
+  c.hold_traj = draw_ramp(d);
+  draw_temperature(d, c.real_temp);
+  draw_temperature(d, c.hold_temp);
+  if (truth == "outside") {
+    if (std::find(outside_kinds().begin(), outside_kinds().end(), outside) == outside_kinds().end())
+      throw InputError("diagnose-bench: unknown outside effect '" + outside + "'");
+    c.outside_params = draw_outside(d, c);
+  } else if (truth != "none") {
+    c.effect = draw_effect(d, c);
+  }
+  return c;
+}
+
+BenchRecordings make_bench_recordings(const BenchCase& c, size_t samples) {
+  const double fs = static_cast<double>(samples) / kDuration;
+  Scenario s = c.model;
+  s.trajectory.sample_rate_hz = fs;
+  BenchRecordings out;
+  out.sim = simulate(s, samples, mix(c.seed + 1));
+  auto real_like = [&](const Trajectory& tr, const double temp[2], uint64_t seed) {
+    Scenario r = c.model;
+    r.trajectory = tr;
+    r.trajectory.sample_rate_hz = fs;
+    r.temperature = {true, temp[0], temp[1]};
+    if (!c.effect.effect.empty()) r.effects = {c.effect};
+    Recording rec = simulate(r, samples, seed);
+    if (c.truth == "outside") apply_outside(c, rec);
+    rec.meta.erase("effects");  // blind: the recording does not name its effect
+    return rec;
+  };
+  out.real = real_like(c.real_traj, c.real_temp, mix(c.seed + 2));
+  out.holdout = real_like(c.hold_traj, c.hold_temp, mix(c.seed + 3));
+  return out;
+}
+
+BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
+  const BenchRecordings rec = make_bench_recordings(c, samples);
+  BenchCaseResult r;
+  r.drawn = c;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Diagnosis d = diagnose(rec.sim, rec.real, &rec.holdout);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.verdict = d.verdict;
+  r.top1 =
+      d.verdict == "explained" && !d.ranking.empty() ? d.ranking.front().cand.effect : d.verdict;
+  r.correct = r.top1 == expected_top1(c.truth);
+  if (c.truth == "none") r.confident_wrong = d.verdict == "explained";
+  if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
+  r.ambiguous_with = d.ambiguous_with;
+  r.best_explained = d.combination.empty() ? 0.0 : d.combination_explained;
+  for (const auto& e : d.ranking)
+    if (e.cand.rejected.empty()) r.best_explained = std::max(r.best_explained, e.explained);
+  r.real_before = d.before.gap_deg;
+  r.real_after = d.after.gap_deg;
+  r.hold_before = d.hold_before->gap_deg;
+  r.hold_after = d.hold_after->gap_deg;
+  r.shrink = r.hold_before > 0 ? 1.0 - r.hold_after / r.hold_before : 0.0;
+  if (r.correct && !c.effect.effect.empty()) r.params = score(c, d.ranking.front().cand);
+  return r;
+}
+
+std::vector<BenchCase> draw_bench_cases(const BenchOptions& opt) {
+  if (opt.per_effect < 1) throw InputError("diagnose-bench: --per-effect must be >= 1");
+  std::vector<BenchCase> cases;
+  auto add = [&](const std::string& truth, int k, const std::string& outside = "") {
+    cases.push_back(draw_bench_case(opt.seed, cases.size(), truth, k % 2 == 0 ? 4 : 2, outside));
+  };
+  for (const std::string& e : effect_names())
+    for (int k = 0; k < opt.per_effect; ++k) add(e, k);
+  for (int k = 0; k < opt.per_effect; ++k) add("none", k);
+  const int kinds = static_cast<int>(outside_kinds().size());
+  for (int k = 0; k < opt.per_effect; ++k) add("outside", k / kinds, outside_kinds()[k % kinds]);
+  return cases;
+}
+
+BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& targets) {
+  if (opt.jobs < 1) throw InputError("diagnose-bench: --jobs must be >= 1");
+  if (opt.samples < 2000) throw InputError("diagnose-bench: --samples must be >= 2000");
+  std::vector<BenchCase> cases = draw_bench_cases(opt);
+  if (!opt.only.empty()) {
+    std::vector<BenchCase> some;
+    for (size_t i : opt.only) {
+      if (i >= cases.size())
+        throw InputError(
+            fmt::format("diagnose-bench: --only {}: the run has cases 0..{}", i, cases.size() - 1));
+      some.push_back(cases[i]);
+    }
+    cases = some;
+  }
+  BenchSummary s;
+  s.targets = targets;
+  s.cases.resize(cases.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  std::atomic<size_t> next{0};
+  std::mutex mu;
+  size_t done = 0;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (;;) {
+      const size_t i = next++;
+      if (i >= cases.size()) return;
+      try {
+        BenchCaseResult r = run_bench_case(cases[i], opt.samples);
+        std::lock_guard<std::mutex> lock(mu);
+        s.cases[i] = std::move(r);
+        ++done;
+        if (opt.progress) opt.progress(done, cases.size(), s.cases[i]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mu);
+        if (!failure) failure = std::current_exception();
+        next = cases.size();
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 1; j < opt.jobs; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  s.rows = effect_names();
+  s.rows.push_back("none");
+  s.rows.push_back("outside");
+  s.columns = effect_names();
+  s.columns.push_back("no_gap");
+  s.columns.push_back("unexplained");
+  s.confusion.assign(s.rows.size(), std::vector<int>(s.columns.size(), 0));
+  auto index_of = [](const std::vector<std::string>& v, const std::string& x) {
+    return static_cast<size_t>(std::find(v.begin(), v.end(), x) - v.begin());
+  };
+  int correct = 0, correct_effects = 0, effect_cases = 0;
+  std::vector<double> shrinks, errors;
+  for (const auto& r : s.cases) {
+    ++s.confusion[index_of(s.rows, r.drawn.truth)][index_of(s.columns, r.top1)];
+    correct += r.correct;
+    s.confident_wrong += r.confident_wrong;
+    s.ambiguous += !r.ambiguous_with.empty();
+    if (r.drawn.truth == "outside")
+      s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
+    if (!r.drawn.effect.effect.empty()) {
+      ++effect_cases;
+      correct_effects += r.correct;
+      shrinks.push_back(r.shrink);
+    }
+    for (const auto& p : r.params) {
+      errors.push_back(p.rel_error);
+      ++s.params_scored;
+      s.params_within += p.rel_error <= targets.param_rel_max;
+    }
+  }
+  s.top1_accuracy = static_cast<double>(correct) / static_cast<double>(s.cases.size());
+  s.top1_effects = effect_cases ? static_cast<double>(correct_effects) / effect_cases : 0.0;
+  s.median_shrink = median(shrinks);
+  s.min_shrink = shrinks.empty() ? 0.0 : *std::min_element(shrinks.begin(), shrinks.end());
+  s.param_median = median(errors);
+  s.param_max = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
+  return s;
+}
+
+std::vector<std::string> BenchSummary::missed() const {
+  std::vector<std::string> m;
+  if (top1_accuracy < targets.top1_min)
+    m.push_back(fmt::format("top-1 correct in {:.1f} % of cases (target >= {:.0f} %)",
+                            100 * top1_accuracy, 100 * targets.top1_min));
+  if (median_shrink < targets.shrink_min)
+    m.push_back(fmt::format("median holdout shrink {:.1f} % (target >= {:.0f} %)",
+                            100 * median_shrink, 100 * targets.shrink_min));
+  if (params_within < params_scored)
+    m.push_back(fmt::format("{} of {} scored parameters off by more than {:.0f} % (worst {:.1f} %)",
+                            params_scored - params_within, params_scored,
+                            100 * targets.param_rel_max, 100 * param_max));
+  if (confident_wrong > targets.confident_wrong_max)
+    m.push_back(fmt::format("{} confident wrong answers on none/outside recordings (target <= {})",
+                            confident_wrong, targets.confident_wrong_max));
+  return m;
+}
+
+bool BenchSummary::met() const { return missed().empty(); }
+
+namespace {
+std::string short_name(const std::string& s) {
+  static const std::vector<std::pair<std::string, std::string>> k = {
+      {"offset", "off"},         {"gain_mismatch", "gain"}, {"phase_error", "phase"},
+      {"harmonic", "harm"},      {"eccentricity", "ecc"},   {"channel_skew", "skew"},
+      {"common_delay", "delay"}, {"drift", "drift"},        {"quantization", "quant"},
+      {"saturation", "sat"},     {"excess_noise", "noise"}, {"hysteresis", "hyst"},
+      {"no_gap", "nogap"},       {"unexplained", "unexpl"}, {"none", "none"},
+      {"outside", "outside"}};
+  for (const auto& [a, b] : k)
+    if (a == s) return b;
+  return s;
+}
+}  // namespace
+
+std::string BenchSummary::text() const {
+  std::string t = fmt::format(
+      "confusion matrix (rows: truth, columns: top-1 verdict), {} recordings\n", cases.size());
+  t += fmt::format("{:>14}", "");
+  for (const auto& c : columns) t += fmt::format(" {:>6}", short_name(c));
+  t += "\n";
+  for (size_t r = 0; r < rows.size(); ++r) {
+    t += fmt::format("{:>14}", rows[r]);
+    for (size_t c = 0; c < columns.size(); ++c)
+      t += confusion[r][c] ? fmt::format(" {:>6}", confusion[r][c]) : fmt::format(" {:>6}", ".");
+    t += "\n";
+  }
+  t += fmt::format("\n{:>14} {:>4} {:>7} {:>15} {:>7} {:>9} {:>9} {:>8}\n", "truth", "n", "top-1",
+                   "gap deg (med)", "shrink", "par med", "par max", "params");
+  for (const auto& row : rows) {
+    int n = 0, ok = 0;
+    std::vector<double> sh, pe, gap;
+    for (const auto& r : cases) {
+      if (r.drawn.truth != row) continue;
+      ++n;
+      ok += r.correct;
+      sh.push_back(r.shrink);
+      gap.push_back(r.real_before);
+      for (const auto& p : r.params) pe.push_back(p.rel_error);
+    }
+    const bool effect = row != "none" && row != "outside";
+    t += fmt::format(
+        "{:>14} {:>4} {:>6.0f}% {:>15.3f} {:>7} {:>9} {:>9} {:>8}\n", row, n,
+        n ? 100.0 * ok / n : 0.0, median(gap),
+        effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
+        pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * median(pe)),
+        pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * *std::max_element(pe.begin(), pe.end())),
+        pe.size());
+  }
+  t += fmt::format(
+      "\ntop-1 correct: {:.1f} % of all {} recordings ({:.1f} % of the effect recordings)\n",
+      100 * top1_accuracy, cases.size(), 100 * top1_effects);
+  t += fmt::format(
+      "median holdout shrink (1 - after/before) over the effect recordings: {:.1f} % (lowest "
+      "{:.1f} %)\n",
+      100 * median_shrink, 100 * min_shrink);
+  t += fmt::format(
+      "parameters (strong enough to matter): {} scored, {} within {:.0f} %, median error {:.2f} %, "
+      "max {:.2f} %\n",
+      params_scored, params_within, 100 * targets.param_rel_max, 100 * param_median,
+      100 * param_max);
+  t += fmt::format("confident wrong answers on none/outside recordings: {}\n", confident_wrong);
+  t += fmt::format("named effects the diagnosis flagged as ambiguous: {}\n", ambiguous);
+  t += fmt::format(
+      "outside the vocabulary, the best effect or pair explained at most {:.1f} % of gap^2 (naming "
+      "needs 90 %)\n",
+      100 * outside_best_explained);
+  double total = 0, worst = 0;
+  for (const auto& r : cases) total += r.seconds, worst = std::max(worst, r.seconds);
+  t += fmt::format(
+      "diagnosis time per recording: mean {:.2f} s, max {:.2f} s (wall {:.1f} s in all)\n",
+      cases.empty() ? 0.0 : total / cases.size(), worst, seconds);
+  return t;
+}
+
+nlohmann::json BenchSummary::to_json() const {
+  using nlohmann::json;
+  json j;
+  j["recordings"] = cases.size();
+  j["rows"] = rows;
+  j["columns"] = columns;
+  j["confusion"] = confusion;
+  j["top1_accuracy"] = top1_accuracy;
+  j["top1_accuracy_effects"] = top1_effects;
+  j["median_holdout_shrink"] = median_shrink;
+  j["min_holdout_shrink"] = min_shrink;
+  j["confident_wrong"] = confident_wrong;
+  j["ambiguous"] = ambiguous;
+  j["outside_best_explained"] = outside_best_explained;
+  j["params"] = {{"scored", params_scored},
+                 {"within", params_within},
+                 {"median_rel_error", param_median},
+                 {"max_rel_error", param_max}};
+  j["targets"] = {{"top1_min", targets.top1_min},
+                  {"shrink_min", targets.shrink_min},
+                  {"param_rel_max", targets.param_rel_max},
+                  {"confident_wrong_max", targets.confident_wrong_max}};
+  j["met"] = met();
+  j["missed"] = missed();
+  j["seconds"] = seconds;
+  json all = json::array();
+  for (const auto& r : cases) {
+    json c;
+    c["index"] = r.drawn.index;
+    c["truth"] = r.drawn.truth;
+    c["channels"] = r.drawn.channels;
+    json p = json::object();
+    for (const auto& [k, v] : r.drawn.effect.params) p[k] = v;
+    if (!r.drawn.outside.empty()) {
+      c["outside"] = r.drawn.outside;
+      for (const auto& [k, v] : r.drawn.outside_params) p[k] = v;
+    }
+    c["params"] = p;
+    c["verdict"] = r.verdict;
+    c["top1"] = r.top1;
+    c["correct"] = r.correct;
+    c["confident_wrong"] = r.confident_wrong;
+    c["ambiguous_with"] = r.ambiguous_with;
+    c["gap_deg"] = {{"before", r.real_before}, {"after", r.real_after}};
+    c["holdout_deg"] = {{"before", r.hold_before}, {"after", r.hold_after}};
+    c["shrink"] = r.shrink;
+    c["best_explained"] = r.best_explained;
+    json sc = json::array();
+    for (const auto& q : r.params)
+      sc.push_back(
+          {{"name", q.name}, {"truth", q.truth}, {"fitted", q.fitted}, {"rel_error", q.rel_error}});
+    c["recovery"] = sc;
+    c["seconds"] = r.seconds;
+    all.push_back(c);
+  }
+  j["cases"] = all;
+  return j;
+}
+
+}  // namespace acore

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// Blind self-benchmark of the gap diagnosis (`anglecore diagnose-bench`, README "Gap diagnosis").
+//
+// Each case draws a random "designer's model" of a sensor (simulator.hpp scenario: amplitudes,
+// offsets, harmonic errors orders 1..5, noise), and three recordings of it with simulate():
+//   sim      the model alone, constant speed, no temperature column
+//   real     the model plus ONE effect (make_effect), a speed ramp through a reversal, a
+//            temperature ramp, another noise seed
+//   holdout  the same effect and parameters, another ramp, temperature ramp and seed
+// The truth is one of the 12 effects of DESIGN 3.4, "none" (real differs by fresh noise only) or
+// "outside" (an effect outside the vocabulary, applied to the simulated real/holdout recordings
+// here: a slip of the angle, a channel that freezes, amplitude modulation of the sine pair at a
+// frequency unrelated to the angle, mains pick-up on one channel). The diagnosis runs blind.
+//
+// Ranges (A = amplitude 1, P = the largest |channel| of the clean model, sigma = the model's
+// independent noise, v = the real recording's top speed in rev/s, p = 1):
+//   offset         1..5 % of A on a random subset of channels, either sign
+//   gain_mismatch  gain - 1 = 1..5 % on a random subset of channels, either sign
+//   phase_error    0.5..5 deg, either sign
+//   harmonic       1..5 % of A, order 2..5 (two channels) or 3, 5, 7 (four: even orders cancel in
+//                  c1 - c3 and cause no angle error), any phase
+//   eccentricity   0.2..2 deg, any phi0
+//   channel_skew   tau with 360 * v * tau = 0.2..3 deg (the phase between neighbouring channels at
+//   v) common_delay   tau with 360 * v * tau = 0.2..3 deg (the angle lag at v) drift          on a
+//   random subset of channels, offset and/or gain coefficients whose change over
+//                  40 degC is 1..5 % of A
+//   quantization   6..10 bits over a full scale of 1.05..1.5 P
+//   saturation     level 80..95 % of P
+//   excess_noise   2..5 sigma
+//   hysteresis     0.1..1 deg, either sign
+// Four-channel draws are redrawn until they change what the estimator sees (c1 - c3, c2 - c4) by at
+// least 1 % of A: an offset or gain common to both channels of a pair is invisible to the angle.
+//
+// "Strong enough to matter" (the parameters whose recovery is scored): every parameter drawn by the
+// rules above, i.e. each drawn (non-default) per-channel value, tau, delta, epsilon, the harmonic,
+// h, sigma, the ADC step and the clipped depth; never a parameter left at its no-op default. Each
+// is compared as a relative error |fitted - true| / |true| of the quantity that carries the effect:
+//   offset, drift, tau, delta, h, sigma   the parameter itself
+//   gain_mismatch                         gain - 1 (the mismatch, not the gain)
+//   harmonic                              the complex amplitude a e^{i psi} (order must match
+//   exactly) eccentricity                          the complex eps e^{i phi0} quantization the ADC
+//   step 2 full_scale / 2^bits (bits and full scale
+//                                         are not separately observable)
+//   saturation                            the clipped depth 1 - level / P
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "effects.hpp"
+#include "recording.hpp"
+#include "simulator.hpp"
+
+namespace acore {
+
+// One drawn case: what the diagnosis must find.
+struct BenchCase {
+  size_t index = 0;
+  std::string truth;    // an effect name, "none" or "outside"
+  std::string outside;  // for "outside": glitch, dropout, modulation or pickup
+  ParamList outside_params;
+  int channels = 4;
+  Scenario model;  // the designer's model (no effects): sim, and the base of real/holdout
+  Effect effect;   // the drawn effect (empty name for none/outside)
+  Trajectory real_traj, hold_traj;
+  double real_temp[2] = {25, 25}, hold_temp[2] = {25, 25};  // start, end degC
+  double peak = 1;    // P: the largest |channel| of the clean model
+  uint64_t seed = 0;  // noise seeds derive from it
+};
+
+struct BenchRecordings {
+  Recording sim, real, holdout;
+};
+
+// The case `index` of a run with `seed`: truth and channel count given, everything else drawn from
+// a generator seeded by (seed, index) alone, so results do not depend on --jobs.
+BenchCase draw_bench_case(uint64_t seed, size_t index, const std::string& truth, int channels,
+                          const std::string& outside = "");
+// The three recordings of a case, `samples` each.
+BenchRecordings make_bench_recordings(const BenchCase& c, size_t samples);
+
+struct BenchParam {
+  std::string name;  // e.g. "offset_c1", "gain_c2 - 1", "step", "a e^{i psi}"
+  double truth = 0, fitted = 0, rel_error = 0;
+};
+
+struct BenchCaseResult {
+  BenchCase drawn;
+  std::string verdict;  // explained, unexplained, no_gap
+  std::string top1;     // the named effect when explained, else the verdict
+  bool correct = false;
+  bool confident_wrong = false;  // an effect named (or no_gap) on a none/outside recording
+  std::vector<std::string> ambiguous_with;  // the diagnosis's own doubt (Diagnosis::ambiguous_with)
+  double real_before = 0, real_after = 0, hold_before = 0, hold_after = 0;
+  double shrink = 0;          // 1 - hold_after / hold_before
+  double best_explained = 0;  // the largest share of gap^2 any acceptable effect or pair explained
+  std::vector<BenchParam> params;  // when the right effect is named (top-1)
+  double seconds = 0;              // wall time of the diagnosis
+};
+
+struct BenchOptions {
+  int per_effect = 10;  // recordings per effect, and as many with none and outside the vocabulary
+  uint64_t seed = 1;
+  size_t samples = 20000;  // per recording
+  int jobs = 1;
+  std::vector<size_t> only;  // run only these case indices (empty: all)
+  std::function<void(size_t done, size_t total, const BenchCaseResult&)>
+      progress;  // called serialized
+};
+
+// The targets of issue 5.
+struct BenchTargets {
+  double top1_min = 0.90;       // share of all cases (effects, none, outside) with the right top-1
+  double shrink_min = 0.70;     // median holdout shrink over the effect cases
+  double param_rel_max = 0.20;  // every scored parameter of a correctly named effect
+  int confident_wrong_max = 0;  // on none/outside
+};
+
+struct BenchSummary {
+  std::vector<BenchCaseResult> cases;
+  std::vector<std::string> rows;               // truth labels: effects, none, outside
+  std::vector<std::string> columns;            // verdict labels: effects, no_gap, unexplained
+  std::vector<std::vector<int>> confusion;     // [row][column]
+  double top1_accuracy = 0, top1_effects = 0;  // all cases; effect cases only
+  double median_shrink = 0, min_shrink = 0;
+  int confident_wrong = 0;
+  int ambiguous = 0;  // named effects the diagnosis itself flagged as ambiguous
+  double outside_best_explained =
+      0;  // the most any effect or pair explained on an outside recording
+  int params_scored = 0, params_within = 0;  // scored parameters, those within param_rel_max
+  double param_median = 0, param_max = 0;
+  double seconds = 0;
+  BenchTargets targets;
+  bool met() const;
+  std::vector<std::string> missed() const;  // the targets missed, in words
+  nlohmann::json to_json() const;
+  std::string text() const;  // confusion matrix, per-effect table, totals
+};
+
+// The expected top-1 label of a truth: the effect itself, no_gap for none, unexplained for outside.
+std::string expected_top1(const std::string& truth);
+
+// Scores one diagnosed case against its truth (params compared as documented above).
+BenchCaseResult run_bench_case(const BenchCase& c, size_t samples);
+
+// The 14 * per_effect cases of a run: per_effect of each effect, then none, then outside (cycling
+// through its kinds); channel counts alternate 4, 2, 4, ...
+std::vector<BenchCase> draw_bench_cases(const BenchOptions& opt);
+
+// Draws and diagnoses 14 * per_effect cases on `jobs` threads, then summarizes.
+BenchSummary run_diagnose_bench(const BenchOptions& opt,
+                                const BenchTargets& targets = BenchTargets{});
+
+}  // namespace acore

@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Design-space sweep, hardware half: area and clock rate of every configuration a sweep shard built.
+
+usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
+  ROOT   the repository (rtl/files.f)
+  DIR    the sweep directory: reads DIR/accuracy-<i>-of-<N>.jsonl (SHARD = "i/N"), writes
+         DIR/hw-<i>-of-<N>.jsonl, one line per distinct configuration ("final_params"):
+           {"final_params", "lut4", "dff", "carry", "bram", "fmax_mhz", "slowest", "stages": [...]}
+         lut4/dff/carry/bram: Yosys synth_ice40 of the whole acore_top with those parameters;
+         fmax_mhz: the slowest stage placed and routed alone on an HX8K (scripts/stage_fmax.py), the
+         register file's host read-back port excluded (reported in "stages").
+  Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
+  synthesizes what is new. Progress on stderr.
+"""
+import concurrent.futures
+import hashlib
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def rtl_files(root):
+    with open(os.path.join(root, "rtl", "files.f")) as f:
+        return [os.path.join(root, "rtl", l.strip()) for l in f if l.strip().endswith(".v") and not l.startswith("#")]
+
+
+def synth_area(root, params):
+    chp = " ".join(f"-chparam {k} {v}" for k, v in (p.split("=", 1) for p in params.split()))
+    with tempfile.TemporaryDirectory(prefix="acore_area_") as tmp:
+        stat = os.path.join(tmp, "stat.txt")
+        r = subprocess.run(["yosys", "-q", "-l", os.path.join(tmp, "log"), "-p",
+                            f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top {chp}; "
+                            f"synth_ice40 -top acore_top; tee -q -o {stat} stat"],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if r.returncode != 0 or not os.path.exists(stat):
+            raise RuntimeError("yosys synth_ice40 failed for " + params)
+        text = open(stat).read()
+    count = lambda pat: sum(int(n) for n in re.findall(pat + r"\s+(\d+)", text))
+    return {"lut4": count(r"SB_LUT4"), "dff": count(r"SB_DFF\w*"), "carry": count(r"SB_CARRY"),
+            "bram": count(r"SB_RAM40_4K\w*")}
+
+
+def measure(root, cache, params):
+    key = hashlib.sha1((params + "|" + "".join(open(f).read() for f in rtl_files(root))).encode()).hexdigest()[:16]
+    path = os.path.join(cache, f"top-{key}.json")
+    if os.path.exists(path):
+        return json.load(open(path))
+    res = {"final_params": params}
+    res.update(synth_area(root, params))
+    out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), root, os.path.join(cache, "stages")]
+                         + params.split(), capture_output=True, text=True)
+    if out.returncode != 0:
+        raise RuntimeError("stage_fmax.py failed for " + params + ": " + out.stderr.strip())
+    st = json.loads(out.stdout)
+    datapath = [s for s in st["stages"] if s.get("module") != "acore_coef_regfile" and s.get("fmax_mhz")]
+    slow = min(datapath, key=lambda s: s["fmax_mhz"]) if datapath else None
+    res["fmax_mhz"] = slow["fmax_mhz"] if slow else None
+    res["slowest"] = slow["module"] if slow else None
+    res["all_stages_fit"] = st["all_fit"]
+    res["stages"] = st["stages"]
+    with open(path, "w") as f:
+        json.dump(res, f)
+    return res
+
+
+def main():
+    args = sys.argv[1:]
+    jobs = 1
+    if "--jobs" in args:
+        i = args.index("--jobs")
+        jobs = int(args[i + 1])
+        del args[i:i + 2]
+    if len(args) != 3:
+        sys.exit(__doc__)
+    root, d, shard = args
+    i, n = shard.split("/")
+    acc = os.path.join(d, f"accuracy-{i}-of-{n}.jsonl")
+    if not os.path.exists(acc):
+        sys.exit(f"design_space_hw.py: {acc}: not found (run anglecore sweep --shard {shard} first)")
+    configs = []
+    for line in open(acc):
+        p = json.loads(line).get("final_params")
+        if p and p not in configs:
+            configs.append(p)
+    cache = os.path.join(d, "cache")
+    os.makedirs(os.path.join(cache, "stages"), exist_ok=True)
+    out_path = os.path.join(d, f"hw-{i}-of-{n}.jsonl")
+    t0 = time.time()
+    done = 0
+    with open(out_path, "w") as out, concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futs = {pool.submit(measure, root, cache, p): p for p in configs}
+        for fut in concurrent.futures.as_completed(futs):
+            done += 1
+            try:
+                r = fut.result()
+                out.write(json.dumps(r) + "\n")
+                out.flush()
+                print(f"[{done}/{len(configs)}] {futs[fut]}: {r['lut4']} LUT4, {r['fmax_mhz']} MHz "
+                      f"({time.time() - t0:.0f} s)", file=sys.stderr)
+            except Exception as e:  # one failed configuration must not lose the others
+                print(f"[{done}/{len(configs)}] {futs[fut]}: FAILED: {e}", file=sys.stderr)
+                out.write(json.dumps({"final_params": futs[fut], "error": str(e)}) + "\n")
+
+
+if __name__ == "__main__":
+    main()
