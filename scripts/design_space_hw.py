@@ -10,6 +10,10 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
          lut4/dff/carry/bram: Yosys synth_ice40 of the whole acore_top with those parameters;
          fmax_mhz: the slowest stage placed and routed alone on an HX8K (scripts/stage_fmax.py), the
          register file's host read-back port excluded (reported in "stages").
+         Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage) also
+         get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
+         same parameters, placed and routed whole (it fits an HX8K); cycles = its CYCLES localparam,
+         22 + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K (tb/test_cosim_serial checks the formula).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
 """
@@ -24,6 +28,9 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The parameters of rtl/acore_serial_top.v (the pipelined top's, without the correction modes).
+SERIAL_PARAMS = {"IN_W", "REG_W", "S_W", "S_F", "R_SHIFT", "SCALE_G", "DEGREE", "REGIONS", "COEF_F", "ACC_G", "ACC_I",
+                 "K", "CORDIC_G", "Z_W", "ANGLE_W"}
 
 
 def rtl_files(root):
@@ -65,6 +72,16 @@ def measure(root, cache, params):
     res["slowest"] = slow["module"] if slow else None
     res["all_stages_fit"] = st["all_fit"]
     res["stages"] = st["stages"]
+    p = dict(kv.split("=", 1) for kv in params.split())
+    if int(p.get("CORRECTION", 0)) == 0 and int(p.get("XCENTER", 0)) == 0 and int(p.get("FOURIER_K", 0)) == 0:
+        serial_params = [f"{k}={v}" for k, v in p.items() if k in SERIAL_PARAMS]
+        out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), "--whole", "acore_serial_top", root,
+                              os.path.join(cache, "serial")] + serial_params, capture_output=True, text=True)
+        if out.returncode != 0:
+            raise RuntimeError("stage_fmax.py --whole acore_serial_top failed for " + params + ": " + out.stderr.strip())
+        sr = json.loads(out.stdout)
+        sr["cycles"] = 22 + 2 * int(p["REG_W"]) + 2 * int(p["DEGREE"]) * (int(p["S_W"]) + 2) + 3 * int(p["K"])
+        res["serial"] = sr
     with open(path, "w") as f:
         json.dump(res, f)
     return res

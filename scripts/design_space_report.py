@@ -76,24 +76,36 @@ def main():
     grid, rows, hw = load(d)
     ok = [r for r in rows if "error" not in r]
     scen = list(ok[0]["accuracy"].keys()) if ok else []
+    serial_rows = []
     for r in ok:
         h = hw.get(r["final_params"], {})
+        r["engine"] = "pipelined"
         r["lut4"], r["dff"], r["fmax"] = h.get("lut4"), h.get("dff"), h.get("fmax_mhz")
         r["sps"] = r["fmax"] * 1e6 if r["fmax"] else None  # one sample per clock (pipelined top)
         r["rms"] = r["accuracy"][MAIN]["fixed"]["rms"]
         r["max"] = r["accuracy"][MAIN]["fixed"]["max_abs"]
-    front_words = {ok[i]["index"] for i in pareto([(r["words"], r["rms"]) for r in ok])}
+        if h.get("serial"):
+            # The serial core is bit-exact to the same model: same accuracy, its own area and rate.
+            sr = h["serial"]
+            s2 = dict(r, engine="serial", lut4=sr["lut4"], dff=sr["dff"], fmax=sr.get("fmax_mhz"))
+            s2["sps"] = s2["fmax"] * 1e6 / sr["cycles"] if s2["fmax"] else None
+            s2["cycles"] = sr["cycles"]
+            serial_rows.append(s2)
+    rows = rows + serial_rows
+    ok = ok + serial_rows
+    rid = lambda r: (r["index"], r.get("engine"))
+    front_words = {rid(ok[i]) for i in pareto([(r["words"], r["rms"]) for r in ok])}
     with_hw = [r for r in ok if r["lut4"]]
-    front_lut = {with_hw[i]["index"] for i in pareto([(r["lut4"], r["rms"]) for r in with_hw])}
+    front_lut = {rid(with_hw[i]) for i in pareto([(r["lut4"], r["rms"]) for r in with_hw])}
 
     with open(os.path.join(d, "design_space.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        head = ["index", "params", "words", "coef_f"]
+        head = ["index", "engine", "params", "words", "coef_f"]
         for s in scen:
             head += [f"{s}_fixed_rms", f"{s}_fixed_max", f"{s}_float_rms", f"{s}_float_max"]
         w.writerow(head + ["lut4", "dff", "fmax_mhz", "samples_per_s", "error"])
         for r in rows:
-            line = [r["index"], r["params"], r.get("words"), coef_f(r)]
+            line = [r["index"], r.get("engine", "pipelined"), r["params"], r.get("words"), coef_f(r)]
             for s in scen:
                 a = r.get("accuracy", {}).get(s)
                 line += [a["fixed"]["rms"], a["fixed"]["max_abs"], a["float"]["rms"], a["float"]["max_abs"]] if a else [""] * 4
@@ -105,7 +117,9 @@ def main():
           f"samples, validation {grid['val_samples']} samples at other angles, noise-free scenarios). "
           "Accuracy: bit-accurate model (= RTL), error = estimate − reference, degrees. LUT4/DFF: Yosys "
           "`synth_ice40` of the whole `acore_top`; Fmax: slowest datapath stage placed and routed alone on an "
-          "iCE40 HX8K (`scripts/stage_fmax.py`); samples/s = Fmax (one sample per clock). "
+          "iCE40 HX8K (`scripts/stage_fmax.py`); samples/s = Fmax (one sample per clock). Rows marked "
+          "*serial*: the serial core (`rtl/acore_serial_top.v`, same parameters, bit-exact to the same model) "
+          "placed and routed whole; samples/s = Fmax / CYCLES. "
           "P = on the Pareto front of RMS against words (w) or LUT4 (l).", ""]
     hdr = "| # | configuration | words | COEF_F |"
     sep = "|---|---|---|---|"
@@ -120,11 +134,12 @@ def main():
             md.append(f"| {r['index']} | `{r['params']}` | - | - | " + "- | - | " * len(scen)
                       + f"calibration failed: {r['error']} | | | | | |")
             continue
-        line = f"| {r['index']} | `{r['params']}` | {r['words']} | {coef_f(r)} |"
+        name = f"`{r['params']}`" + (f" *serial* ({r['cycles']} clk/sample)" if r.get("engine") == "serial" else "")
+        line = f"| {r['index']} | {name} | {r['words']} | {coef_f(r)} |"
         for s in scen:
             a = r["accuracy"][s]["fixed"]
             line += f" {a['rms']:.4f} | {a['max_abs']:.3f} |"
-        p = ("w" if r["index"] in front_words else "") + ("l" if r["index"] in front_lut else "")
+        p = ("w" if rid(r) in front_words else "") + ("l" if rid(r) in front_lut else "")
         fm = f"{r['fmax']:.1f}" if r["fmax"] else "-"
         sps = f"{r['sps'] / 1e6:.1f}" if r["sps"] else "-"
         line += (f" {r['accuracy'][MAIN]['float']['rms']:.4f} | {r['lut4'] or '-'} | {r['dff'] or '-'} | {fm} | {sps} |"
@@ -159,7 +174,11 @@ def main():
         if not pts:
             ax.text(0.5, 0.5, f"no {label} data (sweep run with --no-synth)", ha="center", transform=ax.transAxes)
             continue
-        ax.scatter([r[key] for r in pts], [r["rms"] for r in pts], s=14, label="RMS")
+        pip = [r for r in pts if r.get("engine") != "serial"]
+        ser = [r for r in pts if r.get("engine") == "serial"]
+        ax.scatter([r[key] for r in pip], [r["rms"] for r in pip], s=14, label="RMS (pipelined top)")
+        if ser and key != "words":
+            ax.scatter([r[key] for r in ser], [r["rms"] for r in ser], s=14, marker="s", label="RMS (serial core)")
         ax.scatter([r[key] for r in pts], [r["max"] for r in pts], s=8, marker="x", alpha=0.6, label="max")
         if key in ("words", "lut4"):
             costs = [(r[key], r["rms"]) for r in pts]

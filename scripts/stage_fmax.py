@@ -15,6 +15,9 @@ RTL source hash, so a sweep pays for each distinct stage once.
 usage: stage_fmax.py ROOT CACHE_DIR [PARAM=VALUE ...]
 prints one JSON object: {"stages": [{"module", "params_hash", "lut4", "lcs", "fmax_mhz", "fits"}],
                          "fmax_mhz": min over the stages that fit, "slowest": module}
+usage: stage_fmax.py --whole TOP ROOT CACHE_DIR [PARAM=VALUE ...]
+places and routes the whole module TOP (e.g. acore_serial_top, which fits) in the same wrapper and
+prints {"module", "lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}.
 """
 import hashlib
 import json
@@ -89,19 +92,50 @@ def stage_result(work, full_json, module, ports):
     if run(["yosys", "-q", "-s", ys], os.path.join(work, "yosys.log")) != 0:
         return {"error": "yosys failed", "log": os.path.join(work, "yosys.log")}
     stat = open(os.path.join(work, "stat.txt")).read()
-    m = re.search(r"SB_LUT4\s+(\d+)", stat)
-    lut4 = int(m.group(1)) if m else 0
+    count = lambda pat: sum(int(n) for n in re.findall(pat + r"\s+(\d+)", stat))
+    lut4 = count(r"SB_LUT4")
     log = os.path.join(work, "nextpnr.log")
     run(["nextpnr-ice40", "--hx8k", "--package", "ct256", "--json", f"{work}/wrap.json", "--freq", str(FREQ_MHZ),
          "--pcf-allow-unconstrained", "--timing-allow-fail", "--seed", "1", "-l", log], log + ".out")
     text = open(log).read() if os.path.exists(log) else ""
     fm = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
     lcs = re.search(r"ICESTORM_LC:\s+(\d+)/\s*(\d+)", text)
-    return {"lut4": lut4, "lcs": int(lcs.group(1)) if lcs else None, "fits": bool(fm),
-            "fmax_mhz": float(fm[-1]) if fm else None}
+    # The wrapper's own shift registers are counted in dff (not in lut4: they pack with no LUT).
+    return {"lut4": lut4, "dff": count(r"SB_DFF\w*"), "bram": count(r"SB_RAM40_4K\w*"),
+            "lcs": int(lcs.group(1)) if lcs else None, "fits": bool(fm), "fmax_mhz": float(fm[-1]) if fm else None}
+
+
+def elaborate(root, top, params, full, log):
+    chp = " ".join(f"-chparam {k} {v}" for k, v in params)
+    if run(["yosys", "-q", "-p", f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top {top} {chp}; "
+            f"proc; opt_clean; write_json {full}"], log) != 0:
+        sys.exit(f"stage_fmax.py: Yosys could not elaborate {top} " + " ".join(f"{k}={v}" for k, v in params))
+    return json.load(open(full))["modules"]
+
+
+def whole(top, root, cache, params):
+    os.makedirs(cache, exist_ok=True)
+    key = hashlib.sha1(f"{sources_hash(root)} {top} {params}".encode()).hexdigest()[:16]
+    path = os.path.join(cache, f"{top}-{key}.json")
+    if os.path.exists(path):
+        return json.load(open(path))
+    with tempfile.TemporaryDirectory(prefix="acore_fmax_") as tmp:
+        full = os.path.join(tmp, "full.json")
+        design = elaborate(root, top, params, full, os.path.join(tmp, "elab.log"))
+        res = stage_result(tmp, full, top, design[top]["ports"])
+    res["module"] = top
+    if "error" not in res:
+        with open(path, "w") as f:
+            json.dump(res, f)
+    return res
 
 
 def main():
+    if len(sys.argv) > 2 and sys.argv[1] == "--whole":
+        if len(sys.argv) < 5:
+            sys.exit(__doc__)
+        print(json.dumps(whole(sys.argv[2], sys.argv[3], sys.argv[4], [a.split("=", 1) for a in sys.argv[5:]])))
+        return
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     root, cache = sys.argv[1], sys.argv[2]
@@ -110,11 +144,7 @@ def main():
     src = sources_hash(root)
     with tempfile.TemporaryDirectory(prefix="acore_fmax_") as tmp:
         full = os.path.join(tmp, "full.json")
-        chp = " ".join(f"-chparam {k} {v}" for k, v in params)
-        if run(["yosys", "-q", "-p", f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top {chp}; "
-                f"proc; opt_clean; write_json {full}"], os.path.join(tmp, "elab.log")) != 0:
-            sys.exit("stage_fmax.py: Yosys could not elaborate acore_top " + " ".join(sys.argv[3:]))
-        design = json.load(open(full))["modules"]
+        design = elaborate(root, "acore_top", params, full, os.path.join(tmp, "elab.log"))
         children = sorted({c["type"] for c in design["acore_top"]["cells"].values() if c["type"] in design})
         stages = []
         for mod in children:
