@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "calibration.hpp"
+#include "design_space.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
@@ -22,6 +23,7 @@
 #include "simulator.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
+#include "rtl_serial_engine.hpp"
 #endif
 
 namespace acore::cli {
@@ -100,6 +102,10 @@ void run_demo(const DemoArgs& a) {
     const auto out = run_rtl(run.img, to_codes(val, run.img.in_scale, run.img.cfg.in_w), RtlRunOptions{});
     e_rtl = angle_error_deg(series_from_fixed(out, run.img.cfg).angle, val.theta_ref);
     rows.push_back({"ours, corrected, RTL (Verilator)", error_stats(e_rtl)});
+    // The serial core (226 clocks a sample) on the same image: bit-exact to the same model.
+    const auto ser = run_rtl_serial(run.img, to_codes(val, run.img.in_scale, run.img.cfg.in_w), RtlRunOptions{});
+    rows.push_back({"ours, corrected, serial RTL",
+                    error_stats(angle_error_deg(series_from_fixed(ser, run.img.cfg).angle, val.theta_ref))});
     rtl_ran = true;
   }
 #endif
@@ -198,6 +204,33 @@ void run_demo(const DemoArgs& a) {
       }
     std::cout << "\n";
     md << "\n";
+
+    // The other correction modes at their best points (issue 6 targets: <= 64 words RMS <= 0.10,
+    // max <= 0.35; <= 104 words RMS <= 0.01, max <= 0.07). Same path as `anglecore sweep`.
+    const std::vector<std::pair<std::string, std::string>> modes = {
+        {"Fourier K=21 after the CORDIC, no polynomial", "CORRECTION=2 FOURIER_K=21"},
+        {"2-D cubic, 4 regions", "CORRECTION=1 DEGREE=3"},
+        {"2-D cubic, 4 regions, 18-bit input and angle",
+         "CORRECTION=1 DEGREE=3 IN_W=18 REG_W=20 COEF_F=17 K=18 CORDIC_G=4 Z_W=22 ANGLE_W=18"},
+        {"degree 7, 8 centred regions", "DEGREE=7 REGIONS=8 XCENTER=1"}};
+    const auto sc = sweep_scenarios(a.samples, a.samples + 3);
+    const std::vector<SweepScenario> paper_only(sc.begin(), sc.begin() + 1);
+    std::cout << "Beyond the paper: correction modes (noise-free paper scenario, validation, bit-accurate)\n";
+    md << "## Beyond the paper: correction modes (noise-free paper scenario, bit-accurate)\n\n";
+    md << "| mode | RTL parameters | words | RMS ° | max ° |\n|---|---|---|---|---|\n";
+    for (size_t i = 0; i < modes.size(); ++i) {
+      const SweepResult r = evaluate_point(i, modes[i].second, paper_only);
+      if (!r.error.empty()) throw CheckFailed("demo: " + modes[i].second + ": " + r.error);
+      const ErrorStats& e = r.accuracy.front().fixed;
+      std::cout << fmt::format("  {:<46} {:>4} words  RMS {:.4f}  max {:.4f}\n", modes[i].first, r.words, e.rms,
+                               e.max_abs);
+      md << fmt::format("| {} | `{}` | {} | {:.4f} | {:.4f} |\n", modes[i].first, modes[i].second, r.words, e.rms,
+                        e.max_abs);
+      js["modes"].push_back({{"mode", modes[i].first}, {"params", modes[i].second}, {"words", r.words},
+                             {"fixed", stats_json(e)}});
+    }
+    std::cout << "  (the whole design space: scripts/design_space.sh, synth/reports/design_space.md)\n\n";
+    md << "\nThe whole design space: `scripts/design_space.sh`, `synth/reports/design_space.md`.\n\n";
   }
 
   // 4. Plots (Debian's matplotlib through /usr/bin/python3).
