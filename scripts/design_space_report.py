@@ -60,6 +60,24 @@ def coef_f(r):
     return int(m.group(1)) if m else None
 
 
+def short(r):
+    """A compact label of a point for the plots, e.g. 'poly2d d3', 'n5 r8 xc', 'F21', 'serial n3'."""
+    p = dict(kv.split("=") for kv in r["params"].split())
+    mode = {"0": "n", "1": "poly2d d", "2": ""}[p.get("CORRECTION", "0")]
+    lab = f"{mode}{p.get('DEGREE', 3)}" if p.get("CORRECTION", "0") != "2" else "none"
+    if p.get("REGIONS", "4") == "8":
+        lab += " r8"
+    if p.get("XCENTER", "0") == "1":
+        lab += " xc"
+    if p.get("FOURIER_K", "0") != "0":
+        lab = (lab + " + " if lab != "none" else "") + f"F{p['FOURIER_K']}"
+    if p.get("K") and p.get("K") != "16" and "ANGLE_W" not in p:
+        lab += f" k{p['K']}"
+    if "ANGLE_W" in p:
+        lab += f" a{p['ANGLE_W']}"
+    return ("serial " if r.get("engine") == "serial" else "") + lab
+
+
 def pareto(points):
     """Indices of points not dominated in (cost, error): no other point is <= in both and < in one."""
     front = []
@@ -184,9 +202,13 @@ def main():
             costs = [(r[key], r["rms"]) for r in pts]
             fr = sorted((pts[i] for i in pareto(costs)), key=lambda r: r[key])
             ax.step([r[key] for r in fr], [r["rms"] for r in fr], where="post", color="k", lw=1, label="Pareto (RMS)")
+            for r in fr:
+                ax.annotate(short(r), (r[key], r["rms"]), fontsize=7, xytext=(3, 3), textcoords="offset points")
         if key == "words":
             for words, rms, mx in TARGETS:
                 ax.plot([0, words, words], [rms, rms, 1e-4], "g--", lw=0.8)
+        if key in ("sps", "lut4"):
+            ax.set_xscale("log")
         ax.set_xlabel(label)
         ax.set_ylabel(f"angle error, ° ({MAIN}, bit-accurate)")
         ax.set_yscale("log")
