@@ -99,13 +99,19 @@ def main():
         h = hw.get(r["final_params"], {})
         r["engine"] = "pipelined"
         r["lut4"], r["dff"], r["fmax"] = h.get("lut4"), h.get("dff"), h.get("fmax_mhz")
+        # Stages too large for an HX8K alone were not placed: Fmax is then that of the others.
+        big = {}
+        for st in h.get("stages", []):
+            if not st.get("fits"):
+                big[st["module"]] = max(big.get(st["module"], 0), st.get("lcs") or 0)
+        r["unplaced"] = [f"{m} ({n} LCs)" for m, n in sorted(big.items())]
         r["sps"] = r["fmax"] * 1e6 if r["fmax"] else None  # one sample per clock (pipelined top)
         r["rms"] = r["accuracy"][MAIN]["fixed"]["rms"]
         r["max"] = r["accuracy"][MAIN]["fixed"]["max_abs"]
         if h.get("serial"):
             # The serial core is bit-exact to the same model: same accuracy, its own area and rate.
             sr = h["serial"]
-            s2 = dict(r, engine="serial", lut4=sr["lut4"], dff=sr["dff"], fmax=sr.get("fmax_mhz"))
+            s2 = dict(r, engine="serial", lut4=sr["lut4"], dff=sr["dff"], fmax=sr.get("fmax_mhz"), unplaced=[])
             s2["sps"] = s2["fmax"] * 1e6 / sr["cycles"] if s2["fmax"] else None
             s2["cycles"] = sr["cycles"]
             serial_rows.append(s2)
@@ -158,11 +164,18 @@ def main():
             a = r["accuracy"][s]["fixed"]
             line += f" {a['rms']:.4f} | {a['max_abs']:.3f} |"
         p = ("w" if rid(r) in front_words else "") + ("l" if rid(r) in front_lut else "")
-        fm = f"{r['fmax']:.1f}" if r["fmax"] else "-"
+        fm = (f"{r['fmax']:.1f}" + ("†" if r.get("unplaced") else "")) if r["fmax"] else "-"
         sps = f"{r['sps'] / 1e6:.1f}" if r["sps"] else "-"
         line += (f" {r['accuracy'][MAIN]['float']['rms']:.4f} | {r['lut4'] or '-'} | {r['dff'] or '-'} | {fm} | {sps} |"
                  f" {p} |")
         md.append(line)
+    unplaced = [r for r in ok if r.get("unplaced")]
+    if unplaced:
+        md += ["", "† A stage of this configuration is larger than an HX8K placed alone, so it was not placed; the "
+               "Fmax shown is that of the other stages (the large stage repeats the same one-adder-per-clock "
+               "step, but its routing is not measured): "
+               + "; ".join(f"#{r['index']}: {', '.join(r['unplaced'])}" for r in unplaced if r.get("engine") != "serial")
+               + "."]
     md += ["", f"## Targets ({MAIN}, bit-accurate, validation recording)", "",
            "| budget | required RMS / max | best point (by RMS) | its RMS / max | met |", "|---|---|---|---|---|"]
     status = 0
@@ -192,15 +205,20 @@ def main():
         if not pts:
             ax.text(0.5, 0.5, f"no {label} data (sweep run with --no-synth)", ha="center", transform=ax.transAxes)
             continue
-        pip = [r for r in pts if r.get("engine") != "serial"]
+        pip = [r for r in pts if r.get("engine") != "serial" and not (key in ("fmax", "sps") and r.get("unplaced"))]
+        part = [r for r in pts if key in ("fmax", "sps") and r.get("unplaced")]
+        if part:
+            ax.scatter([r[key] for r in part], [r["rms"] for r in part], s=14, facecolors="none", edgecolors="C0",
+                       label="RMS (a stage too large to place: other stages' Fmax)")
         ser = [r for r in pts if r.get("engine") == "serial"]
         ax.scatter([r[key] for r in pip], [r["rms"] for r in pip], s=14, label="RMS (pipelined top)")
         if ser and key != "words":
             ax.scatter([r[key] for r in ser], [r["rms"] for r in ser], s=14, marker="s", label="RMS (serial core)")
         ax.scatter([r[key] for r in pts], [r["max"] for r in pts], s=8, marker="x", alpha=0.6, label="max")
         if key in ("words", "lut4"):
-            costs = [(r[key], r["rms"]) for r in pts]
-            fr = sorted((pts[i] for i in pareto(costs)), key=lambda r: r[key])
+            # Words: the serial core has the pipelined top's words and accuracy, so one front suffices.
+            cand = [r for r in pts if key == "lut4" or r.get("engine") != "serial"]
+            fr = sorted((cand[i] for i in pareto([(r[key], r["rms"]) for r in cand])), key=lambda r: r[key])
             ax.step([r[key] for r in fr], [r["rms"] for r in fr], where="post", color="k", lw=1, label="Pareto (RMS)")
             for r in fr:
                 ax.annotate(short(r), (r[key], r["rms"]), fontsize=7, xytext=(3, 3), textcoords="offset points")
