@@ -72,6 +72,15 @@ sed 's/^0*1ffff/zz/' "$tmp/regs.hex" | sed '30s/^[0-9a-f]*/xyz/' >"$tmp/bad.hex"
 check bad-image 2 "$bin" estimate --regs "$tmp/bad.hex" --in "$tmp/val.csv"
 expect_text bad-image-msg "$tmp/err" "bad.hex:30"
 check help 0 "$bin" estimate --help
+# `--json -`: standard output is the JSON alone (the human-readable report goes to stderr).
+for cmd in "estimate --regs $tmp/regs.hex --in $tmp/val.csv --engine fixed" "calibrate --in $tmp/cal.csv --out $tmp/r2.hex"; do
+  # shellcheck disable=SC2086
+  if "$bin" $cmd --json - 2>/dev/null | /usr/bin/python3 -c "import json, sys; json.load(sys.stdin)"; then
+    passes=$((passes + 1))
+  else
+    echo "FAIL json-stdout: '$cmd --json -' does not print pure JSON"; fails=$((fails + 1))
+  fi
+done
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

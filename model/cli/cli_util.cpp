@@ -8,10 +8,23 @@
 
 namespace acore::cli {
 
+std::ostream& json_stdout() {
+  static std::ostream out(std::cout.rdbuf());  // bound before main() may redirect std::cout
+  return out;
+}
+
+bool json_to_stdout(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--json=-" || (a == "--json" && i + 1 < argc && std::string(argv[i + 1]) == "-")) return true;
+  }
+  return false;
+}
+
 void write_json(const std::string& path, const nlohmann::json& j) {
   if (path.empty()) return;
   if (path == "-") {
-    std::cout << j.dump(2) << "\n";
+    json_stdout() << j.dump(2) << "\n" << std::flush;
     return;
   }
   std::ofstream f(path);

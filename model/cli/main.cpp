@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 
@@ -22,6 +23,11 @@ int main(int argc, char** argv) {
 #ifdef ACORE_WITH_RTL
   acore::cli::add_cosim(app);
 #endif
+  // With `--json -` standard output carries the JSON alone: the human-readable report goes to stderr.
+  if (acore::cli::json_to_stdout(argc, argv)) {
+    acore::cli::json_stdout();  // binds the real stdout first
+    std::cout.rdbuf(std::cerr.rdbuf());
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
