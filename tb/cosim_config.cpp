@@ -12,6 +12,7 @@
 #include <string>
 
 #include "calibration.hpp"
+#include "cosim_stimuli.hpp"
 #include "errors.hpp"
 #include "estimator.hpp"
 #include "fixed_model.hpp"
@@ -25,20 +26,10 @@ namespace {
 // Samples where the RTL differs from the model; prints the first.
 size_t compare(const std::vector<FixedSample>& rtl, const FixedModel& model, const std::vector<ChannelCodes>& in,
                const char* what) {
-  size_t bad = rtl.size() == in.size() ? 0 : 1;
-  if (bad) std::printf("%s: %zu outputs for %zu inputs\n", what, rtl.size(), in.size());
-  for (size_t i = 0; i < std::min(rtl.size(), in.size()); ++i) {
-    const FixedSample m = model.step(in[i]);
-    if (rtl[i] == m) continue;
-    if (bad == 0)
-      std::printf("%s: first mismatch at sample %zu: rtl angle=%u region=%d flags=%d%d%d, model angle=%u "
-                  "region=%d flags=%d%d%d\n",
-                  what, i, rtl[i].angle, rtl[i].region, rtl[i].ovf, rtl[i].los, rtl[i].dos, m.angle, m.region,
-                  m.ovf, m.los, m.dos);
-    ++bad;
-  }
-  std::printf("%-28s %8zu samples, %zu mismatches\n", what, in.size(), bad);
-  return bad;
+  const cosim::Comparison c = cosim::compare(rtl, model, in);
+  if (c.mismatches) std::printf("%s: %s\n", what, c.first.c_str());
+  std::printf("%-28s %8zu samples, %zu mismatches\n", what, in.size(), c.mismatches);
+  return c.mismatches;
 }
 
 // The paper scenario calibrated for cfg: the calibration may only lower COEF_F (quantize_auto_range);
@@ -69,18 +60,6 @@ RegImage random_image(const RegImage& base, std::mt19937_64& rng) {
       img.set_unsigned(cfg.addr_recip(c), static_cast<int64_t>(img.words[cfg.addr_recip(c)] % 60000) + 40000);
     }
   return img;
-}
-
-std::vector<ChannelCodes> random_codes(std::mt19937_64& rng, size_t n, int in_w) {
-  std::vector<ChannelCodes> v(n);
-  const int64_t lo = -(int64_t{1} << (in_w - 1)), span = int64_t{1} << in_w;
-  for (auto& c : v)
-    for (int k = 0; k < 4; ++k) {
-      const uint64_t r = rng();
-      c[k] = static_cast<int32_t>((r & 3) == 0 ? ((r >> 2) & 1 ? lo : lo + span - 1)
-                                               : lo + static_cast<int64_t>((r >> 2) % span));
-    }
-  return v;
 }
 
 // A fine sweep through every 45-degree boundary plus the zero vector and full scale.
@@ -135,7 +114,7 @@ int run(const std::string& name, size_t samples) {
   std::mt19937_64 rng(std::hash<std::string>{}(name));
   for (int k = 0; k < 8; ++k) {
     const RegImage img = random_image(paper, rng);
-    const auto rin = random_codes(rng, 2000, cfg.in_w);
+    const auto rin = cosim::random_codes(rng, 2000, cfg.in_w);
     RtlRunOptions ro;
     ro.seed = k + 1;
     ro.gaps = 0.2;

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "calibration.hpp"
+#include "cosim_expect.hpp"
 #include "errors.hpp"
 #include "estimator.hpp"
 #include "fixed_model.hpp"
@@ -20,31 +21,6 @@
 namespace acore {
 namespace {
 
-std::string show(const FixedSample& s) {
-  char b[96];
-  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf, s.los, s.dos);
-  return b;
-}
-
-// Number of samples where the RTL differs from the model; prints the first.
-size_t mismatches(const std::vector<FixedSample>& rtl, const FixedModel& model,
-                  const std::vector<ChannelCodes>& in, const char* what) {
-  EXPECT_EQ(rtl.size(), in.size()) << what;
-  size_t bad = 0;
-  for (size_t i = 0; i < std::min(rtl.size(), in.size()); ++i) {
-    const FixedSample m = model.step(in[i]);
-    if (!(rtl[i] == m)) {
-      if (bad == 0)
-        ADD_FAILURE() << what << ": first mismatch at sample " << i << " (c = " << in[i][0] << ", " << in[i][1]
-                      << ", " << in[i][2] << ", " << in[i][3] << "): rtl " << show(rtl[i]) << ", model "
-                      << show(m);
-      ++bad;
-    }
-  }
-  std::printf("%s: %zu samples, %zu mismatches\n", what, in.size(), bad);
-  return bad;
-}
-
 // The paper scenario's calibrated, quantized coefficients (DESIGN 4).
 RegImage paper_image() {
   const Recording cal = test::paper_recording(4000, true);
@@ -53,19 +29,7 @@ RegImage paper_image() {
   return quantize(fc, DatapathConfig{}, choose_in_scale(cal, DatapathConfig{}.in_w));
 }
 
-// No correction: offsets 0, gain 1 at in_scale codes per unit, zero polynomials.
-RegImage identity_image() {
-  RegImage img;
-  img.cfg = DatapathConfig{};
-  img.in_scale = 8192.0;
-  img.words.assign(img.cfg.words(), 0);
-  const int64_t recip = std::llround(std::ldexp(1.0, img.cfg.s_f + img.cfg.r_shift) / img.in_scale);
-  img.set_unsigned(img.cfg.addr_recip(0), recip);
-  img.set_unsigned(img.cfg.addr_recip(1), recip);
-  const auto at = cordic_atan_table(img.cfg.z_w, img.cfg.iterations);
-  for (int i = 0; i < img.cfg.iterations; ++i) img.set_unsigned(img.cfg.addr_atan(i), at[i]);
-  return img;
-}
+RegImage identity_image() { return cosim::identity_image(DatapathConfig{}); }
 
 // Every word random (REG_W bits); atan words either the real table or random.
 RegImage random_image(std::mt19937_64& rng, bool random_atan) {
@@ -86,22 +50,9 @@ RegImage random_image(std::mt19937_64& rng, bool random_atan) {
   return img;
 }
 
-std::vector<ChannelCodes> random_codes(std::mt19937_64& rng, size_t n, int in_w) {
-  std::vector<ChannelCodes> v(n);
-  const int64_t lo = -(int64_t{1} << (in_w - 1)), span = int64_t{1} << in_w;
-  for (auto& c : v)
-    for (int k = 0; k < 4; ++k) {
-      // A quarter of the channels at the extremes, the rest uniform.
-      const uint64_t r = rng();
-      c[k] = static_cast<int32_t>((r & 3) == 0 ? ((r >> 2) & 1 ? lo : lo + span - 1)
-                                               : lo + static_cast<int64_t>((r >> 2) % span));
-    }
-  return v;
-}
-
-std::vector<ChannelCodes> paper_codes(const RegImage& img, size_t n) {
-  return to_codes(test::paper_recording(n, true), img.in_scale, img.cfg.in_w);
-}
+using cosim::mismatches;
+using cosim::paper_codes;
+using cosim::random_codes;
 
 TEST(Cosim, LatencyIsTheNamedLocalparam) {
   RtlHarness h;

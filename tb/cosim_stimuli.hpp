@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// What every co-sim program shares (tb/test_cosim.cpp, tb/test_cosim_serial.cpp,
+// tb/cosim_config.cpp): the output comparison against the bit-accurate model, random and paper
+// input codes, and the identity register image. Header-only, test code.
+#pragma once
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cordic.hpp"
+#include "estimator.hpp"
+#include "fixed_model.hpp"
+#include "paper_signals.hpp"
+#include "regimage.hpp"
+
+namespace acore::cosim {
+
+inline std::string show(const FixedSample& s) {
+  char b[96];
+  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf, s.los, s.dos);
+  return b;
+}
+
+struct Comparison {
+  size_t mismatches = 0;   // samples whose RTL-visible outputs differ (+1 when the counts differ)
+  std::string first;       // the first difference, described
+};
+
+// Every RTL output against FixedModel::step of the same input.
+inline Comparison compare(const std::vector<FixedSample>& rtl, const FixedModel& model,
+                          const std::vector<ChannelCodes>& in) {
+  Comparison r;
+  if (rtl.size() != in.size()) {
+    r.mismatches = 1;
+    r.first = std::to_string(rtl.size()) + " outputs for " + std::to_string(in.size()) + " inputs";
+  }
+  for (size_t i = 0; i < std::min(rtl.size(), in.size()); ++i) {
+    const FixedSample m = model.step(in[i]);
+    if (rtl[i] == m) continue;
+    if (r.first.empty())
+      r.first = "first mismatch at sample " + std::to_string(i) + " (c = " + std::to_string(in[i][0]) + ", " +
+                std::to_string(in[i][1]) + ", " + std::to_string(in[i][2]) + ", " + std::to_string(in[i][3]) +
+                "): rtl " + show(rtl[i]) + ", model " + show(m);
+    ++r.mismatches;
+  }
+  return r;
+}
+
+// n samples of IN_W-bit codes: a quarter of the channels at the extremes, the rest uniform.
+inline std::vector<ChannelCodes> random_codes(std::mt19937_64& rng, size_t n, int in_w) {
+  std::vector<ChannelCodes> v(n);
+  const int64_t lo = -(int64_t{1} << (in_w - 1)), span = int64_t{1} << in_w;
+  for (auto& c : v)
+    for (int k = 0; k < 4; ++k) {
+      const uint64_t r = rng();
+      c[k] = static_cast<int32_t>((r & 3) == 0 ? ((r >> 2) & 1 ? lo : lo + span - 1)
+                                               : lo + static_cast<int64_t>((r >> 2) % span));
+    }
+  return v;
+}
+
+// n samples of the paper scenario (tests/paper_signals.hpp) at the image's input scale.
+inline std::vector<ChannelCodes> paper_codes(const RegImage& img, size_t n) {
+  return to_codes(test::paper_recording(n, true), img.in_scale, img.cfg.in_w);
+}
+
+// No correction: offsets 0, gain 1 at 8192 codes per unit, zero polynomials, the real atan table.
+inline RegImage identity_image(const DatapathConfig& cfg) {
+  RegImage img;
+  img.cfg = cfg;
+  img.in_scale = 8192.0;
+  img.words.assign(img.cfg.words(), 0);
+  const int64_t recip = std::llround(std::ldexp(1.0, img.cfg.s_f + img.cfg.r_shift) / img.in_scale);
+  img.set_unsigned(img.cfg.addr_recip(0), recip);
+  img.set_unsigned(img.cfg.addr_recip(1), recip);
+  const auto at = cordic_atan_table(img.cfg.z_w, img.cfg.iterations);
+  for (int i = 0; i < img.cfg.iterations; ++i) img.set_unsigned(img.cfg.addr_atan(i), at[i]);
+  return img;
+}
+
+}  // namespace acore::cosim
