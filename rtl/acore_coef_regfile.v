@@ -7,8 +7,12 @@
 //   4 + 2(n+1)r + (n+1)c + j   coefficient of x^j, region r, curve c   signed, COEF_F fraction bits
 //   4 + 2 REGIONS (n+1) + i    atan(2^-i), one turn = 2^Z_W             unsigned
 //
-// Host port: one address for a synchronous write (we_i) and a registered read-back (rdata_o, one
-// clock after addr_i). Out-of-range addresses are ignored on write and read back as zero. Every
+// Host port: one address for a write (we_i; the word changes one clock after the edge that takes
+// it, the port being registered first) and a read-back pipelined over two clocks
+// (rdata_o is the word at addr_i of two clocks before): the first clock picks one word of every
+// group of GROUP words by the low address bits, the second picks the group. A one-clock read of
+// all WORDS words was the slowest path of the top (84 MHz on an HX8K against 117 MHz for the
+// datapath). Out-of-range addresses are ignored on write and read back as zero. Every
 // word is also on the flat bus words_o (word a at bits [a REG_W +: REG_W]) for the datapath.
 // INIT_FILE (a $readmemh image, e.g. from `anglecore calibrate`) sets the power-up contents on an
 // FPGA; the words are not reset, so a host or loader writes them otherwise.
@@ -22,9 +26,12 @@ module acore_coef_regfile #(
   // $readmemh image for the initial contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
-  parameter integer ADDR_W = $clog2(WORDS)
+  parameter integer ADDR_W = $clog2(WORDS),
+  // Read-back: words per group of the first clock (a power of two), and the number of groups.
+  parameter integer GROUP_W = (ADDR_W > 3) ? 3 : ADDR_W - 1,
+  parameter integer GROUPS = (WORDS + (1 << GROUP_W) - 1) >> GROUP_W
 ) (
-  clk_i, addr_i, wdata_i, we_i, rdata_o, words_o
+  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, words_o
 );
 
   // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
@@ -41,6 +48,8 @@ module acore_coef_regfile #(
   localparam integer BUS_W = rf_cmul(WORDS, REG_W);
 
   input  wire               clk_i;
+  // Synchronous reset of the registered write enable only (the words keep their contents).
+  input  wire               rst_i;
   input  wire [ADDR_W-1:0]  addr_i;
   input  wire [REG_W-1:0]   wdata_i;
   input  wire               we_i;
@@ -57,9 +66,39 @@ module acore_coef_regfile #(
     if (INIT_FILE != "") $readmemh(INIT_FILE, mem_q);
   end
 
+  // Write, registered first (address, data, and the enable with its range check), so that the
+  // word decode is the only logic between the host's flops and the words' enables.
+  reg [ADDR_W-1:0] waddr_q;
+  reg [REG_W-1:0] wdata_q;
+  reg we_q;
   always @(posedge clk_i) begin
-    if (we_i && in_range) mem_q[addr_i] <= wdata_i;
-    rdata_o <= in_range ? mem_q[addr_i] : {REG_W{1'b0}};
+    waddr_q <= addr_i;
+    wdata_q <= wdata_i;
+    we_q <= we_i && in_range && !rst_i;
+    if (we_q) mem_q[waddr_q] <= wdata_q;
+  end
+
+  // Read-back, clock 1: word addr_i[GROUP_W-1:0] of every group (zero past the last word), the
+  // group number and the range check; clock 2: the group's word.
+  localparam integer HI_W = ADDR_W - GROUP_W;
+  wire [GROUP_W-1:0] lo = addr_i[GROUP_W-1:0];
+  wire [REG_W-1:0] grp_w [0:GROUPS-1];
+  reg [HI_W-1:0] hi_q;
+  reg in_range_q;
+  genvar gi;
+  generate
+    for (gi = 0; gi < GROUPS; gi = gi + 1) begin : g_grp
+      localparam integer GI = gi;
+      wire [ADDR_W-1:0] idx = {GI[HI_W-1:0], lo};
+      reg [REG_W-1:0] word_q;
+      always @(posedge clk_i) word_q <= ({1'b0, idx} <= LAST) ? mem_q[idx] : {REG_W{1'b0}};
+      assign grp_w[gi] = word_q;
+    end
+  endgenerate
+  always @(posedge clk_i) begin
+    hi_q <= addr_i[ADDR_W-1:GROUP_W];
+    in_range_q <= in_range;
+    rdata_o <= in_range_q ? grp_w[hi_q] : {REG_W{1'b0}};
   end
 
   genvar a;

@@ -80,7 +80,7 @@ module acore_top #(
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
-  // Register file host port (synchronous write, read-back one clock after the address).
+  // Register file host port (synchronous write; read-back two clocks after the address).
   input  wire [ADDR_W-1:0]  reg_addr_i,
   input  wire [REG_W-1:0]   reg_wdata_i,
   input  wire               reg_we_i,
@@ -174,7 +174,7 @@ module acore_top #(
   localparam integer OFF_ATAN = top_cmul(4 + NCOEF, REG_W);
   wire [BUS_W-1:0] words;
   acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
-    .clk_i(clk_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
+    .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .words_o(words));
   wire [REG_W-1:0] off13 = words[0 +: REG_W];
   wire [REG_W-1:0] off24 = words[REG_W +: REG_W];

@@ -119,6 +119,8 @@ uint64_t RtlHarness::read_reg(int addr) {
   RtlPins& t = *impl_->top;
   t.set_reg(static_cast<uint32_t>(addr), 0, false);
   impl_->eval();
+  // The read-back is pipelined over two clocks (rtl/acore_coef_regfile.v).
+  tick();
   tick();
   return t.reg_rdata();
 }
