@@ -10,8 +10,8 @@ CORDIC, register file, delay lines, ...) is wrapped in a generated pin wrapper t
 input bit through a shift register and captures every output bit into a shift register (so no logic
 is optimized away and the pin count stays at four), synthesized with synth_ice40 and placed and
 routed by nextpnr-ice40 on an HX8K (ct256, seed 1). Delay lines and the register file are skipped
-(no datapath logic). Results are cached by stage, parameter set and RTL source hash, so a sweep
-pays for each distinct stage once.
+(no datapath logic). Results are cached by the elaborated stage's own netlist text, so a sweep
+pays for each distinct stage once and an edit elsewhere in rtl/ keeps the cache.
 
 usage: stage_fmax.py ROOT CACHE_DIR [PARAM=VALUE ...]
 prints one JSON object: {"stages": [{"module", "params_hash", "lut4", "lcs", "fmax_mhz", "fits"}],
@@ -42,6 +42,22 @@ def sources_hash(root):
         with open(p, "rb") as f:
             h.update(f.read())
     return h.hexdigest()[:12]
+
+
+def module_text(design, mod):
+    """The elaborated module and everything it instantiates, as text: the cache key of a stage (a
+    change elsewhere in rtl/ does not invalidate it)."""
+    seen, todo, parts = set(), [mod], []
+    while todo:
+        m = todo.pop()
+        if m in seen:
+            continue
+        seen.add(m)
+        body = dict(design[m])
+        body.pop("attributes", None)  # source locations change with unrelated edits
+        parts.append(m + json.dumps(body, sort_keys=True))
+        todo += [c["type"] for c in design[m].get("cells", {}).values() if c["type"] in design]
+    return "\n".join(sorted(parts))
 
 
 def run(cmd, log):
@@ -142,7 +158,6 @@ def main():
     root, cache = sys.argv[1], sys.argv[2]
     params = [a.split("=", 1) for a in sys.argv[3:]]
     os.makedirs(cache, exist_ok=True)
-    src = sources_hash(root)
     with tempfile.TemporaryDirectory(prefix="acore_fmax_") as tmp:
         full = os.path.join(tmp, "full.json")
         design = elaborate(root, "acore_top", params, full, os.path.join(tmp, "elab.log"))
@@ -154,7 +169,7 @@ def main():
         stages = []
         for mod in children:
             base = mod.split("\\")[-1] if mod.startswith("$paramod$") else mod.split("\\")[1] if mod.startswith("$paramod") else mod
-            key = hashlib.sha1(f"{src} {mod}".encode()).hexdigest()[:16]
+            key = hashlib.sha1(module_text(design, mod).encode()).hexdigest()[:16]
             path = os.path.join(cache, f"{base}-{key}.json")
             if os.path.exists(path):
                 res = json.load(open(path))
