@@ -40,8 +40,8 @@ void DatapathConfig::validate() const {
   need(reg_w >= d_w() + 1 && reg_w <= 30,
        fmt::format("reg_w={} must hold an offset of d_w+1={} bits and be <= 30", reg_w, d_w() + 1));
   need(s_w >= s_f + 2 && s_w <= 30, fmt::format("s_w={} must be s_f+2..30 (s_f={})", s_w, s_f));
-  need(r_shift >= 0 && scale_guard >= 0 && scale_guard <= r_shift,
-       fmt::format("need 0 <= scale_guard={} <= r_shift={}", scale_guard, r_shift));
+  need(r_shift >= 0 && r_shift <= 30 && scale_guard >= 0 && scale_guard <= r_shift,
+       fmt::format("need 0 <= scale_guard={} <= r_shift={} <= 30", scale_guard, r_shift));
   need(correction >= kPoly && correction <= kNone,
        fmt::format("correction={} must be 0 (poly), 1 (poly2d) or 2 (none)", correction));
   need(degree >= 1 && degree <= 7, fmt::format("degree={} must be 1..7", degree));
