@@ -52,6 +52,9 @@ struct DatapathConfig {
   int fourier_word_w = 16;       // FOURIER_W: significant bits of a harmonic's word (signed; the
                                  // register word's upper bits must repeat its sign); a_0 uses REG_W
   int fourier_guard = 2;         // FOURIER_G: guard fraction bits of the rotation x/y registers
+  // --- RTL schedule (not the arithmetic: the model and the register image do not depend on it) ---
+  int fold = 1;  // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock),
+                 // 2, 4 or 8 (folded: the hardware reused FOLD times per sample; poly and none only)
 
   // Derived, do not set.
   int d_w() const { return in_w + 1; }              // D_W: c1 - c3
@@ -83,7 +86,8 @@ struct DatapathConfig {
 
   // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
   void validate() const;
-  // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0).
+  // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0,
+  // fold only when it is not 1: the RTL engine matches builds by this string).
   std::string describe() const;
 
   // Every field as its RTL parameter (name in upper case as in rtl/acore_top.v, value), in the

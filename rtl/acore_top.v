@@ -64,6 +64,10 @@ module acore_top #(
   parameter integer FOURIER_CF = 22,
   parameter integer FOURIER_W = 16,
   parameter integer FOURIER_G = 2,
+  // Clocks per sample: 1 = one sample per clock (the pipeline below, with a stall enable); 2, 4 or
+  // 8 = the folded datapath (acore_fold_datapath.v: the hardware reused FOLD times per sample, an
+  // output FIFO and credits instead of the stall). The same contract and register map at any FOLD.
+  parameter integer FOLD = 1,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
@@ -130,8 +134,24 @@ module acore_top #(
   localparam integer FOURIER_LATENCY = (FOURIER_K > 0) ?
       $clog2(FOURIER_KB) + 1 + FOURIER_M + $clog2(FOURIER_K + 1) + 1 : 0;
   localparam integer OUT_LATENCY = 1;
-  localparam integer LATENCY = PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
+  // FOLD > 1 (acore_fold_datapath.v's schedule): the curves are items FOLD_H = FOLD/2 clocks apart,
+  // the multipliers folded FOLD_H times (acore_fold_mul: ML clocks, B bits of the multiplier a
+  // clock); output register 1, output FIFO 2, plus the clock of the accepting edge.
+  localparam integer FOLD_H = FOLD >> 1;
+  localparam integer FOLD_HB = (FOLD_H > 1) ? $clog2(FOLD_H) : 0;
+  localparam integer FOLD_SC_ML = (FOLD_H <= 1) ? $clog2(REG_W) + 1 :
+                                  $clog2((REG_W + FOLD_H - 1) >> FOLD_HB) + 1 + FOLD_H;
+  localparam integer FOLD_PC_ML = (FOLD_H <= 1) ? $clog2(S_W) + 1 :
+                                  $clog2((S_W + FOLD_H - 1) >> FOLD_HB) + 1 + FOLD_H;
+  localparam integer FOLD_R = FOLD_H + FOLD_SC_ML + 2 + 2;
+  localparam integer FOLD_C = (CORRECTION == 2) ? FOLD_R + 1 :
+                              FOLD_R + 1 + FOLD_H + 4 + top_cmul(DEGREE, FOLD_PC_ML + 1);
+  localparam integer FOLD_LATENCY = FOLD_C + K + 2 + 1 + 2 + 1;
+  localparam integer LATENCY = (FOLD > 1) ? FOLD_LATENCY :
+                               PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
                                CORDIC_LATENCY + FOURIER_LATENCY + OUT_LATENCY;
+  // Clocks per sample at full rate (Verilator public, read by the tests).
+  localparam integer CYCLES = FOLD;
   localparam integer NCOEF = top_cmul(REGIONS << 1, TERMS);
   localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
 
@@ -153,60 +173,74 @@ module acore_top #(
     if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 || FOURIER_W < 8 ||
                           FOURIER_W > REG_W || FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
       $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, 8 <= FOURIER_W <= REG_W, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
+    if (FOLD != 1 && FOLD != 2 && FOLD != 4 && FOLD != 8) $error("acore_top: FOLD=%0d must be 1, 2, 4 or 8 (instance %m)", FOLD);
+    if (FOLD > 1 && CORRECTION == 1) $error("acore_top: FOLD=%0d: poly2d (CORRECTION=1) is not folded (instance %m)", FOLD);
+    if (FOLD > 1 && FOURIER_K > 0) $error("acore_top: FOLD=%0d: the Fourier correction (FOURIER_K=%0d) is not folded (instance %m)", FOLD, FOURIER_K);
     if (TERMS != ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1) ||
         WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
   end
 
-  // ---- handshake: one enable for the whole pipeline ----
-  reg  [LATENCY-1:0] vld_q;
-  wire stall = vld_q[LATENCY-1] & ~out_ready_i;
-  wire en = ~stall;
-  assign in_ready_o = en;
-  always @(posedge clk_i) begin
-    if (rst_i) vld_q <= {LATENCY{1'b0}};
-    else if (en) vld_q <= {vld_q[LATENCY-2:0], in_valid_i};
-  end
-
-  // ---- register file ----
-  localparam integer BUS_W = top_cmul(WORDS, REG_W);
-  localparam integer AT_BUS_W = top_cmul(K, REG_W);
-  localparam integer OFF_RCP24 = top_cmul(3, REG_W);
-  localparam integer OFF_ATAN = top_cmul(4 + NCOEF, REG_W);
-  wire [BUS_W-1:0] words;
-  acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
-    .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
-    .rdata_o(reg_rdata_o), .words_o(words));
-  wire [REG_W-1:0] off13 = words[0 +: REG_W];
-  wire [REG_W-1:0] off24 = words[REG_W +: REG_W];
-  wire [REG_W-1:0] rcp13 = words[(REG_W << 1) +: REG_W];
-  wire [REG_W-1:0] rcp24 = words[OFF_RCP24 +: REG_W];
-  wire [AT_BUS_W-1:0] atan = words[OFF_ATAN +: AT_BUS_W];
-
-  // ---- 1: pre-filter ----
-  wire [D_W-1:0] d13, d24;
-  acore_prefilter #(.IN_W(IN_W)) u_pre (
-    .clk_i(clk_i), .en_i(en), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
-    .d13_o(d13), .d24_o(d24));
-
-  // ---- 2: scaling ----
-  wire [S_W-1:0] s13, s24;
-  wire sc_ovf13, sc_ovf24;
-  acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc13 (
-    .clk_i(clk_i), .en_i(en), .d_i(d13), .offset_i(off13), .recip_i(rcp13), .s_o(s13), .ovf_o(sc_ovf13));
-  acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc24 (
-    .clk_i(clk_i), .en_i(en), .d_i(d24), .offset_i(off24), .recip_i(rcp24), .s_o(s24), .ovf_o(sc_ovf24));
-
-  // ---- 3: domain selection ----
-  wire [RG_W-1:0] region;
-  wire [S_W-1:0] x, s13_r, s24_r;
-  acore_region_select #(.S_W(S_W), .REGIONS(REGIONS)) u_rs (
-    .clk_i(clk_i), .en_i(en), .s13_i(s13), .s24_i(s24),
-    .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
-
-  // ---- 4: correction (CORRECTION), coefficients from word 4 on ----
-  wire [S_W-1:0] y13, y24;
-  wire pc_ovf13, pc_ovf24;
+  // ---- datapath: one sample per clock (FOLD = 1) or folded (FOLD > 1, acore_fold_*.v); both end
+  // in the output register below ----
+  wire               out_en;  // the output register advances
+  wire [ANGLE_W-1:0] angle_c;
+  wire [MAG_W-1:0]   mag_c;
+  wire               sc_ovf_d, pc_ovf_d;
+  wire [RG_W-1:0]    region_d;
+  // The output register's word and the word on the output pins: {dos, los, ovf, region, angle}.
+  localparam integer OUT_W = ANGLE_W + RG_W + 3;
+  wire [OUT_W-1:0]   out_word_q, out_word;
   generate
+    if (FOLD == 1) begin : g_pipe
+    // ---- handshake: one enable for the whole pipeline ----
+    reg  [LATENCY-1:0] vld_q;
+    wire stall = vld_q[LATENCY-1] & ~out_ready_i;
+    wire en = ~stall;
+    assign in_ready_o = en;
+    always @(posedge clk_i) begin
+      if (rst_i) vld_q <= {LATENCY{1'b0}};
+      else if (en) vld_q <= {vld_q[LATENCY-2:0], in_valid_i};
+    end
+
+    // ---- register file ----
+    localparam integer BUS_W = top_cmul(WORDS, REG_W);
+    localparam integer AT_BUS_W = top_cmul(K, REG_W);
+    localparam integer OFF_RCP24 = top_cmul(3, REG_W);
+    localparam integer OFF_ATAN = top_cmul(4 + NCOEF, REG_W);
+    wire [BUS_W-1:0] words;
+    acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
+      .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
+      .rdata_o(reg_rdata_o), .words_o(words));
+    wire [REG_W-1:0] off13 = words[0 +: REG_W];
+    wire [REG_W-1:0] off24 = words[REG_W +: REG_W];
+    wire [REG_W-1:0] rcp13 = words[(REG_W << 1) +: REG_W];
+    wire [REG_W-1:0] rcp24 = words[OFF_RCP24 +: REG_W];
+    wire [AT_BUS_W-1:0] atan = words[OFF_ATAN +: AT_BUS_W];
+
+    // ---- 1: pre-filter ----
+    wire [D_W-1:0] d13, d24;
+    acore_prefilter #(.IN_W(IN_W)) u_pre (
+      .clk_i(clk_i), .en_i(en), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
+      .d13_o(d13), .d24_o(d24));
+
+    // ---- 2: scaling ----
+    wire [S_W-1:0] s13, s24;
+    wire sc_ovf13, sc_ovf24;
+    acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc13 (
+      .clk_i(clk_i), .en_i(en), .d_i(d13), .offset_i(off13), .recip_i(rcp13), .s_o(s13), .ovf_o(sc_ovf13));
+    acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc24 (
+      .clk_i(clk_i), .en_i(en), .d_i(d24), .offset_i(off24), .recip_i(rcp24), .s_o(s24), .ovf_o(sc_ovf24));
+
+    // ---- 3: domain selection ----
+    wire [RG_W-1:0] region;
+    wire [S_W-1:0] x, s13_r, s24_r;
+    acore_region_select #(.S_W(S_W), .REGIONS(REGIONS)) u_rs (
+      .clk_i(clk_i), .en_i(en), .s13_i(s13), .s24_i(s24),
+      .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
+
+    // ---- 4: correction (CORRECTION), coefficients from word 4 on ----
+    wire [S_W-1:0] y13, y24;
+    wire pc_ovf13, pc_ovf24;
     if (CORRECTION == 2) begin : g_none
       // No polynomial: x is not needed (named unused_* for lint).
       wire unused_x = ^x;
@@ -245,20 +279,16 @@ module acore_top #(
           .y_o(y24), .ovf_o(pc_ovf24));
       end
     end
-  endgenerate
 
-  // ---- 5: CORDIC, x = corrected cosine curve, y = corrected sine curve ----
-  wire [ANGLE_W-1:0] angle;
-  wire [MAG_W-1:0] mag;
-  acore_cordic #(
-    .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .NORM(0)
-  ) u_cordic (
-    .clk_i(clk_i), .en_i(en), .x_i(y24), .y_i(y13), .atan_i(atan), .angle_o(angle), .mag_o(mag));
+    // ---- 5: CORDIC, x = corrected cosine curve, y = corrected sine curve ----
+    wire [ANGLE_W-1:0] angle;
+    wire [MAG_W-1:0] mag;
+    acore_cordic #(
+      .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .NORM(0)
+    ) u_cordic (
+      .clk_i(clk_i), .en_i(en), .x_i(y24), .y_i(y13), .atan_i(atan), .angle_o(angle), .mag_o(mag));
 
-  // ---- 6 (optional): Fourier correction of the angle ----
-  wire [ANGLE_W-1:0] angle_c;
-  wire [MAG_W-1:0] mag_c;
-  generate
+    // ---- 6 (optional): Fourier correction of the angle ----
     if (FOURIER_K > 0) begin : g_fourier
       localparam integer OFF_FOURIER = top_cmul(4 + NCOEF + K, REG_W);
       localparam integer FOURIER_BUS_W = top_cmul(NFOURIER, REG_W);
@@ -276,24 +306,94 @@ module acore_top #(
       assign angle_c = angle;
       assign mag_c = mag;
     end
-  endgenerate
 
-  // ---- sideband: scaler overflow, region and correction overflow, aligned to the angle ----
-  wire sc_ovf_d, pc_ovf_d;
-  wire [RG_W-1:0] region_d;
-  acore_delay #(.W(1), .DEPTH(REGION_LATENCY + POLY_LATENCY + CORDIC_LATENCY + FOURIER_LATENCY)) u_d_scovf (
-    .clk_i(clk_i), .en_i(en), .d_i(sc_ovf13 | sc_ovf24), .q_o(sc_ovf_d));
-  acore_delay #(.W(RG_W), .DEPTH(POLY_LATENCY + CORDIC_LATENCY + FOURIER_LATENCY)) u_d_region (
-    .clk_i(clk_i), .en_i(en), .d_i(region), .q_o(region_d));
-  acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY + FOURIER_LATENCY)) u_d_pcovf (
-    .clk_i(clk_i), .en_i(en), .d_i(pc_ovf13 | pc_ovf24), .q_o(pc_ovf_d));
+    // ---- sideband: scaler overflow, region and correction overflow, aligned to the angle ----
+    acore_delay #(.W(1), .DEPTH(REGION_LATENCY + POLY_LATENCY + CORDIC_LATENCY + FOURIER_LATENCY)) u_d_scovf (
+      .clk_i(clk_i), .en_i(en), .d_i(sc_ovf13 | sc_ovf24), .q_o(sc_ovf_d));
+    acore_delay #(.W(RG_W), .DEPTH(POLY_LATENCY + CORDIC_LATENCY + FOURIER_LATENCY)) u_d_region (
+      .clk_i(clk_i), .en_i(en), .d_i(region), .q_o(region_d));
+    acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY + FOURIER_LATENCY)) u_d_pcovf (
+      .clk_i(clk_i), .en_i(en), .d_i(pc_ovf13 | pc_ovf24), .q_o(pc_ovf_d));
+      assign out_en = en;
+      assign out_valid_o = vld_q[LATENCY-1];
+      assign out_word = out_word_q;
+    end else begin : g_fold
+      // ---- handshake: a sample at least FOLD clocks after the previous one, while the output
+      // FIFO can take every sample in flight (credits); the datapath itself never stalls ----
+      localparam integer FIFO_DEPTH = 256;  // one block RAM deep
+      localparam integer OCC_W = $clog2(FIFO_DEPTH) + 1;
+      localparam integer CNT_W = $clog2(FOLD);
+      localparam integer CNT_FULL_I = FOLD - 1;
+      localparam [CNT_W-1:0] CNT_FULL = CNT_FULL_I[CNT_W-1:0];
+      localparam [OCC_W-1:0] OCC_MAX = FIFO_DEPTH[OCC_W-1:0];
+      reg [CNT_W-1:0] cnt_q;  // clocks since the last accepted sample, up to FOLD - 1
+      reg [OCC_W-1:0] occ_q;  // samples accepted and not yet delivered
+      reg             rdy_q;
+      wire accept = in_valid_i & in_ready_o;
+      wire deliver = out_valid_o & out_ready_i;
+      wire [CNT_W-1:0] cnt_d = accept ? {CNT_W{1'b0}} : (cnt_q == CNT_FULL) ? cnt_q : cnt_q + 1'b1;
+      wire [OCC_W-1:0] occ_d = occ_q + {{(OCC_W-1){1'b0}}, accept} - {{(OCC_W-1){1'b0}}, deliver};
+      always @(posedge clk_i) begin
+        if (rst_i) begin
+          cnt_q <= CNT_FULL;
+          occ_q <= {OCC_W{1'b0}};
+          rdy_q <= 1'b0;
+        end else begin
+          cnt_q <= cnt_d;
+          occ_q <= occ_d;
+          rdy_q <= (cnt_d == CNT_FULL) && (occ_d < OCC_MAX);
+        end
+      end
+      // Registered (no path from out_ready_i), and low while rst_i is high.
+      assign in_ready_o = rdy_q & ~rst_i;
+
+      // ---- register file: the same map and host port, the words in block RAM ----
+      localparam integer PORTS = (CORRECTION == 2) ? 1 : DEGREE + 1;
+      localparam integer PA_W = top_cmul(PORTS, ADDR_W);
+      localparam integer PD_W = top_cmul(PORTS, REG_W);
+      localparam integer AT_BUS_W = top_cmul(K, REG_W);
+      wire [(REG_W<<2)-1:0] scale;
+      wire [AT_BUS_W-1:0] atan;
+      wire [PA_W-1:0] coef_addr;
+      wire [PD_W-1:0] coef;
+      acore_fold_regs #(
+        .REG_W(REG_W), .WORDS(WORDS), .ATAN_BASE(4 + NCOEF), .K(K), .PORTS(PORTS), .INIT_FILE(INIT_FILE)
+      ) u_regs (
+        .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
+        .rdata_o(reg_rdata_o), .scale_o(scale), .atan_o(atan), .raddr_i(coef_addr), .rdata_p_o(coef));
+
+      // ---- the folded estimator ----
+      wire dp_valid, dp_ovf;
+      acore_fold_datapath #(
+        .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
+        .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
+        .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
+        .FOLD(FOLD), .ADDR_W(ADDR_W)
+      ) u_dp (
+        .clk_i(clk_i), .rst_i(rst_i), .accept_i(accept), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
+        .c4_i(c4_i), .scale_i(scale), .atan_i(atan), .coef_addr_o(coef_addr), .coef_i(coef),
+        .valid_o(dp_valid), .angle_o(angle_c), .mag_o(mag_c), .region_o(region_d), .ovf_o(dp_ovf));
+      assign sc_ovf_d = dp_ovf;
+      assign pc_ovf_d = 1'b0;
+      // The output register advances every clock; the FIFO takes its sample one clock later.
+      assign out_en = 1'b1;
+      reg out_vld_q;
+      always @(posedge clk_i) begin
+        if (rst_i) out_vld_q <= 1'b0;
+        else out_vld_q <= dp_valid;
+      end
+      acore_fold_fifo #(.W(OUT_W), .DEPTH(FIFO_DEPTH)) u_fifo (
+        .clk_i(clk_i), .rst_i(rst_i), .wr_i(out_vld_q), .wdata_i(out_word_q), .valid_o(out_valid_o),
+        .ready_i(out_ready_i), .data_o(out_word));
+    end
+  endgenerate
 
   // ---- output register: status window compare ----
   reg [ANGLE_W-1:0] angle_q;
   reg [RG_W-1:0] region_q;
   reg ovf_q, los_q, dos_q;
   always @(posedge clk_i) begin
-    if (en) begin
+    if (out_en) begin
       angle_q  <= angle_c;
       region_q <= region_d;
       ovf_q    <= sc_ovf_d | pc_ovf_d;
@@ -302,12 +402,12 @@ module acore_top #(
     end
   end
 
-  assign out_valid_o = vld_q[LATENCY-1];
-  assign angle_o  = angle_q & {ANGLE_W{out_valid_o}};
-  assign region_o = region_q & {RG_W{out_valid_o}};
-  assign ovf_o    = ovf_q & out_valid_o;
-  assign los_o    = los_q & out_valid_o;
-  assign dos_o    = dos_q & out_valid_o;
+  assign out_word_q = {dos_q, los_q, ovf_q, region_q, angle_q};
+  assign angle_o  = out_word[ANGLE_W-1:0] & {ANGLE_W{out_valid_o}};
+  assign region_o = out_word[ANGLE_W +: RG_W] & {RG_W{out_valid_o}};
+  assign ovf_o    = out_word[ANGLE_W + RG_W] & out_valid_o;
+  assign los_o    = out_word[ANGLE_W + RG_W + 1] & out_valid_o;
+  assign dos_o    = out_word[ANGLE_W + RG_W + 2] & out_valid_o;
 
 endmodule
 

@@ -11,6 +11,13 @@ acore_cordic.v
 acore_cordic_rotate.v
 acore_adder_tree.v
 acore_fourier_correct.v
+acore_fold_mul.v
+acore_fold_scaler.v
+acore_fold_poly.v
+acore_fold_cordic.v
+acore_fold_regs.v
+acore_fold_fifo.v
+acore_fold_datapath.v
 acore_top.v
 acore_serial_ram.v
 acore_serial_datapath.v

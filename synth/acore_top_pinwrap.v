@@ -7,7 +7,9 @@
 `default_nettype none
 
 module acore_top_pinwrap #(
-  parameter integer DEGREE = 3
+  parameter integer DEGREE = 3,
+  // Clocks per sample of the top (1, 2, 4, 8).
+  parameter integer FOLD = 1
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -33,7 +35,7 @@ module acore_top_pinwrap #(
   reg [SR_W-1:0] sr_q;
   always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
 
-  acore_top #(.DEGREE(DEGREE)) u_top (
+  acore_top #(.DEGREE(DEGREE), .FOLD(FOLD)) u_top (
     .clk_i(clk_i), .rst_i(rst_i),
     .reg_addr_i(sr_q[ADDR_W-1:0]), .reg_wdata_i(sr_q[ADDR_W +: 18]), .reg_we_i(reg_we_i),
     .reg_rdata_o(reg_rdata_o),

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// acore_tb_icarus: 4-state bench of rtl/acore_top.v (SERIAL=0) or rtl/acore_serial_top.v
-// (SERIAL=1, the first N_SERIAL samples of each frame) under Icarus Verilog. Reads model-generated
+// acore_tb_icarus: 4-state bench of rtl/acore_top.v (SERIAL=0, FOLD clocks a sample) or
+// rtl/acore_serial_top.v (SERIAL=1, the first N_SERIAL samples of each frame) under Icarus Verilog. Reads model-generated
 // vectors (tb/gen_vectors.cpp: regs.hex, in.hex, exp.hex, meta.txt in VEC_DIR), loads the register
 // file through its write port and checks the read-back, streams the samples with random input gaps
 // and output backpressure, and checks every output word against the model and that no output
@@ -14,6 +14,8 @@ module acore_tb_icarus;
   parameter integer MAXN = 20000;
   parameter integer SERIAL = 0;
   parameter integer N_SERIAL = 400;
+  // The pipelined top's fold factor (clocks per sample).
+  parameter integer FOLD = 1;
   localparam integer WORDS = 52;
 
   reg clk = 1'b0;
@@ -42,7 +44,7 @@ module acore_tb_icarus;
         .in_ready_o(in_ready), .c1_i(c1), .c2_i(c2), .c3_i(c3), .c4_i(c4), .out_valid_o(out_valid),
         .out_ready_i(out_ready), .angle_o(angle), .region_o(region), .ovf_o(ovf), .los_o(los), .dos_o(dos));
     end else begin : g_top
-      acore_top dut (
+      acore_top #(.FOLD(FOLD)) dut (
         .clk_i(clk), .rst_i(rst), .reg_addr_i(reg_addr), .reg_wdata_i(reg_wdata), .reg_we_i(reg_we),
         .reg_rdata_o(reg_rdata), .mag_lo_i(mag_lo), .mag_hi_i(mag_hi), .in_valid_i(in_valid),
         .in_ready_o(in_ready), .c1_i(c1), .c2_i(c2), .c3_i(c3), .c4_i(c4), .out_valid_o(out_valid),
@@ -99,7 +101,7 @@ module acore_tb_icarus;
     $readmemh({VEC_DIR, "/exp.hex"}, vexp, 0, n - 1);
     // The serial core takes hundreds of clocks per sample: a prefix of the frame.
     if (SERIAL != 0 && n > N_SERIAL) n = N_SERIAL;
-    per_sample = (SERIAL != 0) ? 600 : 20;
+    per_sample = (SERIAL != 0) ? 600 : 20 + FOLD;
 
     rst = 1'b1; reg_we = 1'b0; reg_addr = 6'd0; reg_wdata = 18'd0; in_valid = 1'b0; out_ready = 1'b1;
     c1 = 16'd0; c2 = 16'd0; c3 = 16'd0; c4 = 16'd0;
@@ -136,7 +138,7 @@ module acore_tb_icarus;
     @(negedge clk) in_valid = 1'b0;
     repeat (300) @(negedge clk);
     if (SERIAL != 0) $write("icarus (acore_serial_top): ");
-    else $write("icarus (acore_top): ");
+    else $write("icarus (acore_top, FOLD=%0d): ", FOLD);
     $display("%0d samples, %0d mismatches, %0d X/Z outputs, %0d cycles", nout, errors, xz, cycles);
     if (errors == 0 && xz == 0 && nout == n) $display("PASS");
     else $display("FAIL");

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Icarus Verilog run of tb/acore_tb_icarus.v on model-generated vectors (two frames), for the
-# pipelined top and for the serial core (SERIAL=1).
+# pipelined top, the top folded to 4 clocks a sample (FOLD=4) and the serial core (SERIAL=1).
 # usage: icarus.sh GEN_VECTORS_BINARY SOURCE_DIR WORK_DIR
 set -euo pipefail
 gen=$1
@@ -10,19 +10,24 @@ work=$3
 mkdir -p "$work"
 files=()
 while read -r f; do [[ $f =~ \.v$ ]] && files+=("$src/rtl/$f"); done <"$src/rtl/files.f"
-for serial in 0 1; do
-  iverilog -g2012 -Wall -Wno-timescale -P acore_tb_icarus.SERIAL=$serial -o "$work/acore_tb_icarus_$serial.vvp" \
+# variant name -> bench parameters
+declare -A params=([top]="-P acore_tb_icarus.SERIAL=0" [fold4]="-P acore_tb_icarus.SERIAL=0 -P acore_tb_icarus.FOLD=4"
+                   [serial]="-P acore_tb_icarus.SERIAL=1")
+variants=(top fold4 serial)
+for v in "${variants[@]}"; do
+  # shellcheck disable=SC2086
+  iverilog -g2012 -Wall -Wno-timescale ${params[$v]} -o "$work/acore_tb_icarus_$v.vvp" \
     -s acore_tb_icarus "${files[@]}" "$src/tb/acore_tb_icarus.v"
 done
 status=0
 for frame in 0 1; do
   mkdir -p "$work/frame$frame"
   "$gen" "$work/frame$frame" "$frame"
-  for serial in 0 1; do
+  for v in "${variants[@]}"; do
     # The bench reads its vectors from the current directory (VEC_DIR = ".").
-    (cd "$work/frame$frame" && vvp -n ../acore_tb_icarus_$serial.vvp >log_$serial.txt 2>&1) || true
-    tail -3 "$work/frame$frame/log_$serial.txt"
-    grep -q '^PASS$' "$work/frame$frame/log_$serial.txt" || status=1
+    (cd "$work/frame$frame" && vvp -n ../acore_tb_icarus_$v.vvp >log_$v.txt 2>&1) || true
+    tail -3 "$work/frame$frame/log_$v.txt"
+    grep -q '^PASS$' "$work/frame$frame/log_$v.txt" || status=1
   done
 done
 exit $status

@@ -16,6 +16,7 @@ struct RtlBuild {
   std::string name;    // configuration name in rtl/configs.txt
   std::string params;  // its RTL parameter overrides, "DEGREE=5 REGIONS=8" ("" = the defaults)
   int latency;         // LATENCY of that build (Verilator public parameter)
+  int cycles;          // CYCLES: clocks per sample at full rate (= FOLD)
   std::unique_ptr<RtlPins> (*make)(VerilatedContext* ctx, const char* name);
   DatapathConfig config() const { return DatapathConfig{}.with_rtl_params(params); }
 };

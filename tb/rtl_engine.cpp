@@ -38,6 +38,7 @@ struct RtlHarness::Impl {
   uint64_t cycles = 0;
   DatapathConfig cfg;
   int latency = 0;
+  int cycles_per_sample = 1;
   void eval() {
     top->eval();
     if (tfp) tfp->dump(ctx->time());
@@ -45,6 +46,7 @@ struct RtlHarness::Impl {
 };
 
 int RtlHarness::latency() const { return impl_->latency; }
+int RtlHarness::cycles_per_sample() const { return impl_->cycles_per_sample; }
 const DatapathConfig& RtlHarness::config() const { return impl_->cfg; }
 
 RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed, const DatapathConfig& cfg)
@@ -52,6 +54,7 @@ RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed, 
   const RtlBuild& build = rtl_build_for(cfg);
   impl_->cfg = cfg;
   impl_->latency = build.latency;
+  impl_->cycles_per_sample = build.cycles;
   impl_->ctx = std::make_unique<VerilatedContext>();
   impl_->ctx->randReset(rand_reset);
   impl_->ctx->randSeed(static_cast<int>(seed & 0x7fffffff));
@@ -172,7 +175,12 @@ std::vector<FixedSample> RtlHarness::stream(const std::vector<ChannelCodes>& in,
 
 std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelCodes>& in,
                                  const RtlRunOptions& opt) {
-  RtlHarness h(opt.trace, 2, opt.seed, img.cfg);
+  DatapathConfig cfg = img.cfg;
+  if (opt.fold != 0) {
+    cfg.fold = opt.fold;
+    cfg.validate();
+  }
+  RtlHarness h(opt.trace, 2, opt.seed, cfg);
   h.set_window(opt.window ? *opt.window : StatusWindow::defaults(img.cfg));
   h.reset();
   h.load(img);

@@ -24,9 +24,12 @@ struct RtlRunOptions {
   double gaps = 0.0;          // probability that in_valid is low in a clock (an input gap)
   std::string trace;          // FST waveform file; empty = no tracing (no overhead)
   std::optional<StatusWindow> window;  // mag_lo/mag_hi; default StatusWindow::defaults(cfg)
+  // The build's FOLD (clocks per sample): 0 = the image's configuration (cfg.fold, 1 for every image
+  // read from a file: a register image does not depend on FOLD); 1, 2, 4, 8 = that build.
+  int fold = 0;
 };
 
-// Throws InputError when no Verilated build has the image's configuration.
+// Throws InputError when no Verilated build has the image's configuration (with opt.fold).
 std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelCodes>& in,
                                  const RtlRunOptions& opt);
 
@@ -65,6 +68,8 @@ class RtlHarness {
                                   std::mt19937_64& rng);
   // The pipeline latency: LATENCY of this build of rtl/acore_top.v (Verilator public parameter).
   int latency() const;
+  // Clocks per sample at full rate: CYCLES of this build (= FOLD).
+  int cycles_per_sample() const;
   const DatapathConfig& config() const;
 
  private:

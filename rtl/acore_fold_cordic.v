@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// acore_fold_cordic: stage 5 for the folded top (FOLD = N > 1), acore_cordic's contract (NORM = 0,
+// model/cordic.cpp, bit for bit) on U = ceil(K / N) stage units instead of K stages: unit u does
+// iterations uN .. uN + N - 1 on consecutive clocks, so a vector can enter every N clocks.
+//
+//   pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = half a turn        (1 clock)
+//   iteration i, s = (Y < 0):  X += (Y >>> i) ^ {s} + s,  Y += (X >>> i) ^ {~s} + ~s,
+//                              Z += atan_i ^ {s} + s                   (1 clock each)
+//   angle = round_shr(Z, Z_W - ANGLE_W);  mag = X_K >>> G               (1 clock)
+//   LATENCY = K + 2, as acore_cordic.
+//
+// Unit u at phase p (p = 0 the clock a vector arrives from unit u-1 or the pre-rotation) adds the
+// operand shifted by uN + p and atan word uN + p: at p = 0 it reads the previous unit's registers,
+// else its own. The phase counter of each unit restarts from the vector's start (start_i delayed
+// uN clocks), so vectors need only be N clocks apart, not aligned to a grid. On iCE40 the shift
+// choice, the operand's conditional negation and (for N = 2) the arctangent choice share one LUT
+// per bit; the own/previous choice of the adder's other operand is one more. The last iterations
+// of the last unit (when N does not divide K) compute values nobody reads: the result is taken
+// the clock after iteration K-1.
+`resetall
+`default_nettype none
+
+module acore_fold_cordic #(
+  // Width of the signed x/y inputs.
+  parameter integer IN_W = 18,
+  // Guard fraction bits of the x/y registers.
+  parameter integer G = 3,
+  // Angle accumulator, one turn = 2^Z_W.
+  parameter integer Z_W = 20,
+  // Output angle width, unsigned, one turn = 2^ANGLE_W.
+  parameter integer ANGLE_W = 16,
+  // Iterations.
+  parameter integer K = 16,
+  // Width of one arctangent word on atan_i (unsigned, zero-extended to Z_W).
+  parameter integer AT_W = 18,
+  // Clocks per vector: iterations per unit (a power of two, >= 2).
+  parameter integer N = 2,
+  // Derived, do not override.
+  parameter integer XY_W = IN_W + 2 + G,
+  parameter integer MAG_W = IN_W + 2
+) (
+  clk_i, start_i, x_i, y_i, atan_i, angle_o, mag_o
+);
+
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all.
+  function integer fc_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      fc_cmul = 0;
+      for (n = 0; n < b; n = n + 1) fc_cmul = fc_cmul + a;
+    end
+  endfunction
+
+  // Derived, do not override.
+  localparam integer AT_BUS_W = fc_cmul(K, AT_W);
+  localparam integer PW = $clog2(N);                 // phase counter width
+  localparam integer U = (K + N - 1) >> PW;          // stage units
+  localparam integer LATENCY = K + 2;
+  localparam integer DROP = Z_W - ANGLE_W;
+
+  input  wire                clk_i;
+  // x_i, y_i are valid: a vector starts (at least N clocks after the previous one).
+  input  wire                start_i;
+  // Cosine-like input x and sine-like input y.
+  input  wire [IN_W-1:0]     x_i;
+  input  wire [IN_W-1:0]     y_i;
+  // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
+  input  wire [AT_BUS_W-1:0] atan_i;
+  output reg  [ANGLE_W-1:0]  angle_o;
+  // X_K >>> G: vector length times the CORDIC gain, never negative.
+  output reg  [MAG_W-1:0]    mag_o;
+
+  initial begin
+    if (Z_W < ANGLE_W) $error("acore_fold_cordic: Z_W=%0d < ANGLE_W=%0d (instance %m)", Z_W, ANGLE_W);
+    if (AT_W > Z_W) $error("acore_fold_cordic: AT_W=%0d > Z_W=%0d (instance %m)", AT_W, Z_W);
+    if (K < 1 || K >= XY_W) $error("acore_fold_cordic: K=%0d must be 1..XY_W-1 (instance %m)", K);
+    if (N < 2 || (1 << PW) != N) $error("acore_fold_cordic: N=%0d must be a power of two >= 2 (instance %m)", N);
+    if (XY_W != IN_W + 2 + G || MAG_W != IN_W + 2) $error("acore_fold_cordic: XY_W/MAG_W are derived (instance %m)");
+  end
+
+  // Registers after the pre-rotation (index 0) and of every unit (index u + 1). X is never
+  // negative (no sign bit kept); Y of unit u holds the results of iterations uN.. and is computed on
+  // YW(u) = the width of iteration uN's result (acore_cordic's bound: entering iteration i,
+  // |Y| < 2^(XY_W - i), and a 2x margin), stored and read sign-extended.
+  wire [XY_W-2:0] xr [0:U];
+  wire [XY_W-1:0] yr [0:U];
+  wire [Z_W-1:0]  zr [0:U];
+
+  // ---- pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = half a turn ----
+  wire [XY_W-1:0] x0 = {{2{x_i[IN_W-1]}}, x_i, {G{1'b0}}};
+  wire [XY_W-1:0] y0 = {{2{y_i[IN_W-1]}}, y_i, {G{1'b0}}};
+  wire neg0 = x_i[IN_W-1];
+  wire [XY_W-1:0] x0_abs = neg0 ? ({XY_W{1'b0}} - x0) : x0;
+  reg [XY_W-2:0] x_pre_q;
+  reg [XY_W-1:0] y_pre_q;
+  reg [Z_W-1:0]  z_pre_q;
+  always @(posedge clk_i) begin
+    x_pre_q <= x0_abs[XY_W-2:0];
+    y_pre_q <= neg0 ? ({XY_W{1'b0}} - y0) : y0;
+    z_pre_q <= {neg0, {(Z_W-1){1'b0}}};
+  end
+  assign xr[0] = x_pre_q;
+  assign yr[0] = y_pre_q;
+  assign zr[0] = z_pre_q;
+
+  // The start, delayed: unit u's phase restarts when start_i delayed uN clocks is high.
+  localparam integer ST_D = fc_cmul(U - 1, N);
+  wire [ST_D:0] st;
+  assign st[0] = start_i;
+  genvar u, p;
+  generate
+    if (ST_D > 0) begin : g_st
+      reg [ST_D-1:0] st_q;
+      if (ST_D > 1) begin : g_sh
+        always @(posedge clk_i) st_q <= {st_q[ST_D-2:0], start_i};
+      end else begin : g_one
+        always @(posedge clk_i) st_q <= start_i;
+      end
+      assign st[ST_D:1] = st_q;
+    end
+
+    for (u = 0; u < U; u = u + 1) begin : g_unit
+      localparam integer I0 = fc_cmul(u, N);  // first iteration of the unit
+      localparam integer YW = (I0 + 1 <= 2) ? XY_W : XY_W + 1 - I0;
+      // Phase: 0 the clock the vector arrives, then 1 .. N-1.
+      reg [PW-1:0] ph_q;
+      always @(posedge clk_i) ph_q <= st[I0] ? {PW{1'b0}} : ph_q + 1'b1;
+      wire take = (ph_q == {PW{1'b0}});
+      wire [XY_W-2:0] xa = take ? xr[u] : xr[u+1];
+      wire [XY_W-1:0] ya = take ? yr[u] : yr[u+1];
+      wire [Z_W-1:0]  za = take ? zr[u] : zr[u+1];
+      wire s = ya[XY_W-1];
+      // The shifted operands and the arctangent word of iteration I0 + phase (an N:1 choice: the
+      // previous unit's registers at phase 0, the unit's own after).
+      wire [XY_W-2:0] ys_p [0:N-1];
+      wire [XY_W-1:0] xs_p [0:N-1];
+      wire [Z_W-1:0]  at_p [0:N-1];
+      for (p = 0; p < N; p = p + 1) begin : g_ph
+        localparam integer I = I0 + p;
+        wire signed [XY_W-1:0] y_src = (p == 0) ? yr[u] : yr[u+1];
+        wire [XY_W-2:0] x_src = (p == 0) ? xr[u] : xr[u+1];
+        wire [XY_W-1:0] ys_full = y_src >>> I;
+        assign ys_p[p] = ys_full[XY_W-2:0];
+        assign xs_p[p] = {1'b0, x_src >> I};
+        if (I < K) begin : g_at
+          assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[fc_cmul(I, AT_W) +: AT_W]};
+        end else begin : g_noat
+          assign at_p[p] = {Z_W{1'b0}};
+        end
+      end
+      wire [XY_W-2:0] ys = ys_p[ph_q];
+      wire [XY_W-1:0] xs = xs_p[ph_q];
+      wire [Z_W-1:0]  at = at_p[ph_q];
+      // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
+      wire [XY_W-1:0] x_sum = {xa, 1'b1} + {ys ^ {(XY_W-1){s}}, s};
+      wire [YW:0]     y_sum = {ya[YW-1:0], 1'b1} + {xs[YW-1:0] ^ {YW{~s}}, ~s};
+      wire [Z_W:0]    z_sum = {za, 1'b1} + {at ^ {Z_W{s}}, s};
+      reg [XY_W-2:0] x_q;
+      reg [YW-1:0]   y_q;
+      reg [Z_W-1:0]  z_q;
+      always @(posedge clk_i) begin
+        x_q <= x_sum[XY_W-1:1];
+        y_q <= y_sum[YW:1];
+        z_q <= z_sum[Z_W:1];
+      end
+      assign xr[u+1] = x_q;
+      assign yr[u+1] = {{(XY_W-YW){y_q[YW-1]}}, y_q};
+      assign zr[u+1] = z_q;
+    end
+  endgenerate
+
+  // ---- output: the clock after iteration K-1, round the angle, drop the guard bits ----
+  wire [Z_W-1:0] z_k = zr[U];
+  wire [Z_W-1:0] z_rnd;
+  generate
+    if (DROP > 0) begin : g_rnd
+      assign z_rnd = z_k + ({{(Z_W-1){1'b0}}, 1'b1} << (DROP - 1));
+    end else begin : g_nornd
+      assign z_rnd = z_k;
+    end
+  endgenerate
+  wire [XY_W-2:0] x_k = xr[U];
+  always @(posedge clk_i) begin
+    angle_o <= z_rnd[Z_W-1:DROP];
+    mag_o   <= {1'b0, x_k[XY_W-2:G]};
+  end
+
+endmodule
+
+`resetall

@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+// acore_fold_datapath: the estimator of acore_top folded N = FOLD times (FOLD = 2, 4, 8): a sample
+// every N clocks or more, each piece of hardware used N times per sample, the same contract bit
+// for bit (model/fixed_model.cpp). The two curves share one scaler and one Horner chain: each
+// sample becomes two items (c13, then c24 N/2 clocks later), and the multipliers are folded
+// F = N/2 times (acore_fold_mul). The CORDIC has K/N stage units (acore_fold_cordic).
+//
+//   accept -> prefilter -> [c13 | c24] scaler -> pair -> region select -> [c13 | c24] Horner
+//          -> pair -> CORDIC -> angle, magnitude, region, overflow (to the top's output register)
+//
+// Schedule, in clocks after the accepting edge (H = N/2; SL, PL, CL the scaler's, the Horner
+// chain's and the CORDIC's latencies):
+//   0       d13, d24 (held until the next sample); c13 item into the scaler
+//   H       c24 item into the scaler
+//   SL      s13 out (held);   H + SL: s24 out -> region select (2 clocks)
+//   R = H + SL + 2: region, x, s13, s24 (held);  R + 1: c13 item into the Horner chain, R+1+H: c24
+//   R+1+PL  y13 out (held);   C = R + 1 + H + PL: y24 out -> CORDIC
+//   C + CL  angle, magnitude, and the region and overflow of the sample beside them (valid_o)
+// A sample is a valid bit that travels with it (valid_o); nothing stalls: the top's credit counter
+// never lets more samples in than its output FIFO can hold. No reset but of the valid bits.
+// CORRECTION = 2 (none): no Horner chain, the CORDIC starts at C = R + 1.
+`resetall
+`default_nettype none
+
+module acore_fold_datapath #(
+  parameter integer IN_W = 16,
+  parameter integer REG_W = 18,
+  parameter integer S_W = 18,
+  parameter integer S_F = 16,
+  parameter integer R_SHIFT = 13,
+  parameter integer SCALE_G = 4,
+  // 0 = poly, 2 = none (poly2d is not folded).
+  parameter integer CORRECTION = 0,
+  parameter integer DEGREE = 3,
+  parameter integer REGIONS = 4,
+  parameter integer XCENTER = 0,
+  parameter integer COEF_F = 15,
+  parameter integer ACC_G = 4,
+  parameter integer ACC_I = 6,
+  parameter integer K = 16,
+  parameter integer CORDIC_G = 3,
+  parameter integer Z_W = 20,
+  parameter integer ANGLE_W = 16,
+  // Clocks per sample (2, 4 or 8).
+  parameter integer FOLD = 2,
+  // Register address width.
+  parameter integer ADDR_W = 6,
+  // Derived, do not override.
+  parameter integer RG_W = $clog2(REGIONS),
+  parameter integer MAG_W = S_W + 2,
+  // Coefficient read ports (the Horner chain's; 1, unused, without a polynomial).
+  parameter integer PORTS = (CORRECTION == 2) ? 1 : DEGREE + 1
+) (
+  clk_i, rst_i, accept_i, c1_i, c2_i, c3_i, c4_i, scale_i, atan_i, coef_addr_o, coef_i,
+  valid_o, angle_o, mag_o, region_o, ovf_o
+);
+
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all.
+  function integer fd_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      fd_cmul = 0;
+      for (n = 0; n < b; n = n + 1) fd_cmul = fd_cmul + a;
+    end
+  endfunction
+
+  localparam integer AT_BUS_W = fd_cmul(K, REG_W);
+  localparam integer PA_W = fd_cmul(PORTS, ADDR_W);
+  localparam integer PD_W = fd_cmul(PORTS, REG_W);
+
+  input  wire                  clk_i;
+  // Synchronous reset of the valid bits.
+  input  wire                  rst_i;
+  // A sample is taken (at least FOLD clocks after the previous one): c1..c4 are valid.
+  input  wire                  accept_i;
+  input  wire [IN_W-1:0]       c1_i;
+  input  wire [IN_W-1:0]       c2_i;
+  input  wire [IN_W-1:0]       c3_i;
+  input  wire [IN_W-1:0]       c4_i;
+  // Register words 0..3 (O13, O24, R13, R24) and the arctangent words.
+  input  wire [(REG_W<<2)-1:0] scale_i;
+  input  wire [AT_BUS_W-1:0]   atan_i;
+  // The Horner chain's coefficient read ports (acore_fold_regs).
+  output wire [PA_W-1:0]       coef_addr_o;
+  input  wire [PD_W-1:0]       coef_i;
+  // A sample's results (valid for one clock).
+  output wire                  valid_o;
+  output wire [ANGLE_W-1:0]    angle_o;
+  output wire [MAG_W-1:0]      mag_o;
+  output wire [RG_W-1:0]       region_o;
+  output wire                  ovf_o;
+
+  // Derived, do not override: stage latencies (each module documents its own) and the schedule.
+  localparam integer D_W = IN_W + 1;
+  localparam integer H = FOLD >> 1;
+  localparam integer F = H;
+  localparam integer SC_B = (F == 1) ? REG_W : (REG_W + F - 1) >> $clog2(F);
+  localparam integer SC_ML = (F == 1) ? $clog2(REG_W) + 1 : $clog2(SC_B) + 1 + F;
+  localparam integer SL = SC_ML + 2;
+  localparam integer PC_B = (F == 1) ? S_W : (S_W + F - 1) >> $clog2(F);
+  localparam integer PC_ML = (F == 1) ? $clog2(S_W) + 1 : $clog2(PC_B) + 1 + F;
+  localparam integer PL = (CORRECTION == 2) ? 0 : 4 + fd_cmul(DEGREE, PC_ML + 1);
+  localparam integer CL = K + 2;
+  localparam integer R = H + SL + 2;
+  localparam integer C = (CORRECTION == 2) ? R + 1 : R + 1 + H + PL;
+  localparam integer LATENCY = C + CL;  // accepting edge -> valid_o, in clocks after it, minus one
+  localparam integer TERMS = DEGREE + 1;
+
+  // Address of an item's word 0: 4 + (2 region + curve) TERMS (a table over region and curve).
+  function automatic [ADDR_W-1:0] base_of(input [RG_W-1:0] r, input c);
+    integer k;
+    reg [ADDR_W-1:0] b;
+    begin
+      base_of = {ADDR_W{1'b0}};
+      b = 4;
+      for (k = 0; k < (REGIONS << 1); k = k + 1) begin
+        if ({r, c} == k[RG_W:0]) base_of = b;
+        b = b + TERMS[ADDR_W-1:0];
+      end
+    end
+  endfunction
+
+  initial begin
+    if (FOLD != 2 && FOLD != 4 && FOLD != 8) $error("acore_fold_datapath: FOLD=%0d must be 2, 4 or 8 (instance %m)", FOLD);
+    if (CORRECTION != 0 && CORRECTION != 2)
+      $error("acore_fold_datapath: CORRECTION=%0d: only poly (0) and none (2) are folded (instance %m)", CORRECTION);
+  end
+
+  // ---- valid bits: v[t] is high t clocks after the accepting edge (t = 0 the next clock) ----
+  reg [LATENCY:0] v_q;
+  always @(posedge clk_i) begin
+    if (rst_i) v_q <= {(LATENCY+1){1'b0}};
+    else v_q <= {v_q[LATENCY-1:0], accept_i};
+  end
+  assign valid_o = v_q[LATENCY];
+
+  // ---- 1: pre-filter, held until the next sample ----
+  wire [D_W-1:0] d13, d24;
+  acore_prefilter #(.IN_W(IN_W)) u_pre (
+    .clk_i(clk_i), .en_i(accept_i), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
+    .d13_o(d13), .d24_o(d24));
+
+  // ---- 2: scaling, one item per curve: c13 at clock 0, c24 at clock H ----
+  wire sc_second = v_q[H];
+  wire [REG_W-1:0] off13 = scale_i[0 +: REG_W];
+  wire [REG_W-1:0] off24 = scale_i[REG_W +: REG_W];
+  wire [REG_W-1:0] rcp13 = scale_i[(REG_W << 1) +: REG_W];
+  wire [REG_W-1:0] rcp24 = scale_i[fd_cmul(3, REG_W) +: REG_W];
+  wire [S_W-1:0] s_sc;
+  wire ovf_sc;
+  acore_fold_scaler #(
+    .D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G), .F(F)
+  ) u_sc (
+    .clk_i(clk_i), .start_i(v_q[0] | sc_second), .d_i(sc_second ? d24 : d13),
+    .offset_i(sc_second ? off24 : off13), .recip_i(sc_second ? rcp24 : rcp13), .s_o(s_sc), .ovf_o(ovf_sc));
+
+  // ---- 3: pair the curves, domain selection ----
+  reg [S_W-1:0] s13_q;
+  reg           sc_ovf13_q, sc_ovf_q, sc_ovf_r_q;
+  always @(posedge clk_i) begin
+    if (v_q[SL]) begin
+      s13_q      <= s_sc;
+      sc_ovf13_q <= ovf_sc;
+    end
+    // Scaler overflow of the sample, beside the region select's two clocks.
+    sc_ovf_q   <= sc_ovf13_q | ovf_sc;
+    sc_ovf_r_q <= sc_ovf_q;
+  end
+  wire [RG_W-1:0] region;
+  wire [S_W-1:0]  x, s13_r, s24_r;
+  acore_region_select #(.S_W(S_W), .REGIONS(REGIONS)) u_rs (
+    .clk_i(clk_i), .en_i(1'b1), .s13_i(s13_q), .s24_i(s_sc),
+    .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
+  // The sample, held from clock R + 1 until its second item has entered the correction.
+  reg [RG_W-1:0] region_h_q;
+  reg [S_W-1:0]  x_h_q, s13_h_q, s24_h_q;
+  reg            sc_ovf_h_q;
+  always @(posedge clk_i) begin
+    if (v_q[R]) begin
+      region_h_q <= region;
+      x_h_q      <= x;
+      s13_h_q    <= s13_r;
+      s24_h_q    <= s24_r;
+      sc_ovf_h_q <= sc_ovf_r_q;
+    end
+  end
+
+  // ---- 4: correction (CORRECTION), c13 item at R + 1, c24 at R + 1 + H; pair the results ----
+  wire [S_W-1:0] y13, y24;
+  wire           pc_ovf;
+  generate
+    if (CORRECTION == 2) begin : g_none
+      wire unused_x = ^x_h_q;
+      assign y13 = s13_h_q;
+      assign y24 = s24_h_q;
+      assign pc_ovf = sc_ovf_h_q;
+      assign coef_addr_o = {PA_W{1'b0}};
+      wire unused_coef = ^coef_i;
+    end else begin : g_poly
+      wire pc_second = v_q[R + 1 + H];
+      wire [S_W-1:0] y_pc;
+      wire ovf_pc;
+      acore_fold_poly #(
+        .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
+        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F)
+      ) u_pc (
+        .clk_i(clk_i), .start_i(v_q[R + 1] | pc_second), .x_i(x_h_q),
+        .s_i(pc_second ? s24_h_q : s13_h_q), .base_i(base_of(region_h_q, pc_second)),
+        .ovf_i(sc_ovf_h_q), .coef_addr_o(coef_addr_o), .coef_i(coef_i), .y_o(y_pc), .ovf_o(ovf_pc));
+      reg [S_W-1:0] y13_q;
+      reg           ovf13_q;
+      always @(posedge clk_i) begin
+        if (v_q[R + 1 + PL]) begin
+          y13_q   <= y_pc;
+          ovf13_q <= ovf_pc;
+        end
+      end
+      assign y13 = y13_q;
+      assign y24 = y_pc;
+      assign pc_ovf = ovf13_q | ovf_pc;
+    end
+  endgenerate
+
+  // ---- 5: CORDIC from clock C, x = corrected cosine curve, y = corrected sine curve ----
+  acore_fold_cordic #(
+    .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .N(FOLD)
+  ) u_cordic (
+    .clk_i(clk_i), .start_i(v_q[C]), .x_i(y24), .y_i(y13), .atan_i(atan_i), .angle_o(angle_o),
+    .mag_o(mag_o));
+
+  // ---- sideband: region from the held sample, overflow from the CORDIC's input ----
+  acore_delay #(.W(RG_W), .DEPTH(C + CL - R - 1)) u_d_region (
+    .clk_i(clk_i), .en_i(1'b1), .d_i(region_h_q), .q_o(region_o));
+  acore_delay #(.W(1), .DEPTH(CL)) u_d_ovf (
+    .clk_i(clk_i), .en_i(1'b1), .d_i(pc_ovf), .q_o(ovf_o));
+
+endmodule
+
+`resetall

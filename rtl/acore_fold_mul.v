@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// acore_fold_mul: the adder/shifter multiplier of model/fixed_point.hpp shift_add_mul(), folded
+// over F clocks, plus an addend:
+//   p = init + sum over bits j of b of  b[j] w_j floor(a 2^(j - RSHIFT))      (w_j = -1 for the
+//   top bit of a signed b, else 1), every partial product floored on its own, as the contract says.
+//
+// F = 1: the whole tree (acore_shift_add_mul) and one adder for init; one product per clock.
+// F > 1: B = ceil(B_W / F) bits of b per clock, most significant group first, accumulated. The
+// operand register O holds floor(a 2^(t - RSHIFT)) for the top bit t of the current group and
+// shifts right (arithmetic) by B each clock: floor(floor(z) / 2^B) = floor(z / 2^B), so partial
+// product k of the group, O >>> k, is exactly floor(a 2^(t - k - RSHIFT)). b is padded with zeros
+// below its bit 0 up to F B bits (zero bits add nothing). The negative top bit is the first
+// partial product of the first group: negated in the first tree level.
+//
+//   F = 1: clock 0 a_i, b_i | 1..L adder tree (L = clog2(B_W)) | init added
+//   F > 1: clock 0 a_i, b_i | O, X loaded | group g: partial products and the first tree level,
+//          L - 1 more tree levels (L = clog2(B)), accumulate: acc = (g == 0 ? init : acc) + T_g
+//   LATENCY = L + 1 (F = 1) or L + 1 + F (F > 1) clocks from start_i to p_o (valid one clock);
+//   init_i is read INIT_AT = LATENCY - F clocks after start_i.
+// A new product may start every F clocks. Sums are modulo 2^P_W (harmless while the exact result
+// fits P_W bits, which the elaboration check enforces). No reset: data only; start_i must be low
+// (or its product ignored) until the first real operand.
+`resetall
+`default_nettype none
+
+module acore_fold_mul #(
+  // Width of a, signed.
+  parameter integer A_W = 25,
+  // Width of b.
+  parameter integer B_W = 18,
+  // 1: b is two's complement (its top bit weighs -2^(B_W-1)); 0: unsigned.
+  parameter integer B_SIGNED = 1,
+  // Right shift of the product (fraction bits of b).
+  parameter integer RSHIFT = 16,
+  // Width of the addend init (signed) and of the result p (signed, must hold init + product).
+  parameter integer INIT_W = 25,
+  parameter integer P_W = 29,
+  // Clocks per product (1, 2, 4, ...).
+  parameter integer F = 2
+) (
+  input  wire              clk_i,
+  // a_i and b_i are valid (a product starts); needed for F > 1 only.
+  input  wire              start_i,
+  input  wire [A_W-1:0]    a_i,
+  input  wire [B_W-1:0]    b_i,
+  // Addend, valid INIT_AT clocks after start_i.
+  input  wire [INIT_W-1:0] init_i,
+  // init + a b, valid LATENCY clocks after start_i.
+  output wire [P_W-1:0]    p_o
+);
+
+  // Constant product and ceiling quotient by repetition, for widths at elaboration only: the RTL
+  // has no multiplication operator at all.
+  function integer fm_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      fm_cmul = 0;
+      for (n = 0; n < b; n = n + 1) fm_cmul = fm_cmul + a;
+    end
+  endfunction
+  function integer fm_cdiv(input integer a, input integer b);
+    begin
+      fm_cdiv = 0;
+      while (fm_cmul(fm_cdiv, b) < a) fm_cdiv = fm_cdiv + 1;
+    end
+  endfunction
+
+  // Derived, do not override: bits per clock, tree levels, latency.
+  localparam integer B = fm_cdiv(B_W, F);
+  localparam integer L = (F == 1) ? $clog2(B_W) : $clog2(B);
+  localparam integer LATENCY = (F == 1) ? L + 1 : L + 1 + F;
+  localparam integer INIT_AT = LATENCY - F;
+  // Bits the exact product can need (as acore_shift_add_mul), plus one for init.
+  localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
+
+  initial begin
+    if (F < 1) $error("acore_fold_mul: F=%0d must be >= 1 (instance %m)", F);
+    if (F > 1 && B < 2) $error("acore_fold_mul: B_W=%0d over F=%0d clocks leaves fewer than 2 bits a clock (instance %m)", B_W, F);
+    if (P_W < NEED_W + 1 || P_W < INIT_W + 1)
+      $error("acore_fold_mul: P_W=%0d cannot hold init + product (need %0d) (instance %m)", P_W, NEED_W + 1);
+  end
+
+  wire [P_W-1:0] init_ext = {{(P_W-INIT_W){init_i[INIT_W-1]}}, init_i};
+
+  generate
+    if (F == 1) begin : g_tree
+      // The whole tree, then the addend.
+      wire [P_W-1:0] prod;
+      acore_shift_add_mul #(
+        .A_W(A_W), .B_W(B_W), .B_SIGNED(B_SIGNED), .RSHIFT(RSHIFT), .P_W(P_W)
+      ) u_mul (
+        .clk_i(clk_i), .en_i(1'b1), .a_i(a_i), .b_i(b_i), .p_o(prod));
+      reg [P_W-1:0] p_q;
+      always @(posedge clk_i) p_q <= prod + init_ext;
+      assign p_o = p_q;
+      // start_i is not needed: the tree takes an operand every clock.
+      wire unused_start = start_i;
+    end else begin : g_fold
+      // O_0 = floor(a 2^SH0) for the top bit B_W-1 of b.
+      localparam integer SH0 = B_W - 1 - RSHIFT;
+      localparam integer O_W = A_W + ((SH0 > 0) ? SH0 : 0);
+      localparam integer X_W = fm_cmul(F, B);
+      localparam integer PAD = X_W - B_W;
+      localparam integer NT = (B + 1) >> 1;  // terms after the first tree level
+      wire [O_W-1:0] o0;
+      if (SH0 > 0) begin : g_shl
+        assign o0 = {a_i, {SH0{1'b0}}};
+      end else if (SH0 == 0) begin : g_same
+        assign o0 = a_i;
+      end else begin : g_shr
+        wire signed [A_W-1:0] a_s = a_i;
+        assign o0 = a_s >>> (-SH0);
+      end
+      wire [X_W-1:0] b_pad;
+      if (PAD > 0) begin : g_pad
+        assign b_pad = {b_i, {PAD{1'b0}}};
+      end else begin : g_nopad
+        assign b_pad = b_i;
+      end
+      reg [O_W-1:0] o_q;
+      reg [X_W-1:0] x_q;
+      reg           first_q;
+      // Arithmetic shift in its own expression (a conditional with an unsigned operand would make
+      // it a logical one).
+      wire signed [O_W-1:0] o_s = o_q;
+      wire [O_W-1:0] o_next = o_s >>> B;
+      always @(posedge clk_i) begin
+        o_q     <= start_i ? o0 : o_next;
+        x_q     <= start_i ? b_pad : x_q << B;
+        first_q <= start_i;
+      end
+      // Partial product k of the group: O >>> k, gated by bit k from the top of the group.
+      wire signed [P_W-1:0] o_ext = {{(P_W-O_W){o_q[O_W-1]}}, o_q};
+      wire [P_W-1:0] pp [0:B-1];
+      genvar k;
+      for (k = 0; k < B; k = k + 1) begin : g_pp
+        wire [P_W-1:0] sh = o_ext >>> k;
+        assign pp[k] = sh & {P_W{x_q[X_W-1-k]}};
+      end
+      // First tree level: pairs (0, 1), (2, 3), ...; the first group's first partial product is
+      // the negative top bit of a signed b: sum = pp1 + (pp0 ^ {neg}) + neg in one adder (bit 0 of
+      // the wider add makes the carry-in).
+      wire neg = first_q & (B_SIGNED != 0);
+      localparam integer T_BUS = fm_cmul(NT, P_W);
+      wire [T_BUS-1:0] lvl1;
+      for (k = 0; k < NT; k = k + 1) begin : g_l1
+        reg [P_W-1:0] s_q;
+        if (k == 0) begin : g_first
+          wire [P_W:0] s0 = {pp[0] ^ {P_W{neg}}, 1'b1} + {pp[1], neg};
+          always @(posedge clk_i) s_q <= s0[P_W:1];
+        end else if ((k << 1) + 1 < B) begin : g_pair
+          always @(posedge clk_i) s_q <= pp[k << 1] + pp[(k << 1) + 1];
+        end else begin : g_single
+          always @(posedge clk_i) s_q <= pp[k << 1];
+        end
+        assign lvl1[fm_cmul(k, P_W) +: P_W] = s_q;
+      end
+      reg first1_q;
+      always @(posedge clk_i) first1_q <= first_q;
+      // The remaining levels, and "first group" beside them.
+      wire [P_W-1:0] t_sum;
+      wire           t_first;
+      if (NT > 1) begin : g_tree
+        acore_adder_tree #(.N(NT), .W(P_W)) u_tree (
+          .clk_i(clk_i), .en_i(1'b1), .terms_i(lvl1), .sum_o(t_sum));
+        acore_delay #(.W(1), .DEPTH($clog2(NT))) u_dfirst (
+          .clk_i(clk_i), .en_i(1'b1), .d_i(first1_q), .q_o(t_first));
+      end else begin : g_one
+        assign t_sum = lvl1;
+        assign t_first = first1_q;
+      end
+      // Accumulate the groups; the first one starts from the addend.
+      reg [P_W-1:0] acc_q;
+      always @(posedge clk_i) acc_q <= (t_first ? init_ext : acc_q) + t_sum;
+      assign p_o = acc_q;
+    end
+  endgenerate
+
+endmodule
+
+`resetall

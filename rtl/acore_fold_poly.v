@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: MIT
+// acore_fold_poly: stage 4 for the folded top (FOLD > 1), the contract of acore_poly_correct
+// (model/poly_correct.cpp) on one Horner chain shared by both curves:
+//   acc_n = a_n << ACC_G;  acc_j = saturate(shift_add_mul(acc_{j+1}, u, S_W signed, U_SH) +
+//   (a_j << ACC_G), ACC_W);  y = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W)
+// with u = x (XCENTER = 0) or x -+ 3/8 (XCENTER = 1, U_SH = S_F - 1), as acore_poly_correct.
+// An item is one curve of one sample: u, s and base_i, the register address of the item's word 0
+// (4 + (2 region + curve) (DEGREE + 1)). Items come at least F clocks apart; each Horner step is
+// an acore_fold_mul folded F times whose addend is the coefficient.
+//
+// The coefficients come from a synchronous-read memory (the register file's block RAM copies):
+// port 0 reads a_n when the item enters, port m + 1 reads a_j (j = DEGREE-1-m) for step m, each
+// address one clock before the word is used (coef_addr_o, coef_i one clock later).
+//
+//   clock 0: item in, a_n addressed | 1: u_q, a_n -> step 0 | step m: ML clocks of multiplier
+//   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
+//   LATENCY = 4 + DEGREE (ML + 1), ML = acore_fold_mul's LATENCY (25 at F = 1, the defaults)
+`resetall
+`default_nettype none
+
+module acore_fold_poly #(
+  parameter integer REG_W = 18,
+  // Curve width, signed, S_F fraction bits.
+  parameter integer S_W = 18,
+  parameter integer S_F = 16,
+  // Polynomial degree n.
+  parameter integer DEGREE = 3,
+  // Fraction bits of a coefficient (REG_W-bit signed word).
+  parameter integer COEF_F = 15,
+  // Guard fraction bits and integer bits (incl. sign) of the Horner accumulator.
+  parameter integer ACC_G = 4,
+  parameter integer ACC_I = 6,
+  // 1 (8 regions only): the polynomial is in u = x -+ 3/8, centred in its half region.
+  parameter integer XCENTER = 0,
+  // Register address width.
+  parameter integer ADDR_W = 6,
+  // Clocks per item of each multiplier.
+  parameter integer F = 1,
+  // Derived, do not override: coefficient read ports.
+  parameter integer PORTS = DEGREE + 1
+) (
+  clk_i, start_i, x_i, s_i, base_i, ovf_i, coef_addr_o, coef_i, y_o, ovf_o
+);
+
+  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
+  // has no multiplication operator at all.
+  function integer fp_cmul(input integer a, input integer b);
+    integer n;
+    begin
+      fp_cmul = 0;
+      for (n = 0; n < b; n = n + 1) fp_cmul = fp_cmul + a;
+    end
+  endfunction
+
+  localparam integer ADDR_BUS_W = fp_cmul(PORTS, ADDR_W);
+  localparam integer COEF_BUS_W = fp_cmul(PORTS, REG_W);
+
+  input  wire                  clk_i;
+  // An item starts: x_i, s_i, base_i, ovf_i are valid.
+  input  wire                  start_i;
+  // Polynomial argument and the curve to correct.
+  input  wire [S_W-1:0]        x_i;
+  input  wire [S_W-1:0]        s_i;
+  // Address of the item's coefficient of x^0.
+  input  wire [ADDR_W-1:0]     base_i;
+  // An earlier stage saturated (carried to ovf_o).
+  input  wire                  ovf_i;
+  // Read port p: address (port p at bits [p ADDR_W +: ADDR_W]) and its word one clock later.
+  output wire [ADDR_BUS_W-1:0] coef_addr_o;
+  input  wire [COEF_BUS_W-1:0] coef_i;
+  // Corrected curve and "some stage saturated".
+  output wire [S_W-1:0]        y_o;
+  output wire                  ovf_o;
+
+  // Derived, do not override.
+  localparam integer ACC_F = COEF_F + ACC_G;
+  localparam integer ACC_W = ACC_F + ACC_I;
+  localparam integer U_SH = S_F - XCENTER;
+  localparam integer P_W = ACC_W + ((S_W > U_SH) ? (S_W - U_SH) : 0) + 2;  // product + addend
+  localparam integer MUL_B = (F == 1) ? S_W : (S_W + F - 1) >> $clog2(F);
+  localparam integer ML = (F == 1) ? $clog2(S_W) + 1 : $clog2(MUL_B) + 1 + F;
+  localparam integer INIT_AT = ML - F;
+  localparam integer STEP = ML + 1;
+  localparam integer LATENCY = 4 + fp_cmul(DEGREE, STEP);
+  localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
+  localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
+  localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
+
+  initial begin
+    if (ACC_F < S_F) $error("acore_fold_poly: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
+    if (ACC_I < REG_W - COEF_F + 1) $error("acore_fold_poly: ACC_I=%0d too small (instance %m)", ACC_I);
+    if (DEGREE < 1) $error("acore_fold_poly: DEGREE=%0d must be >= 1 (instance %m)", DEGREE);
+    if (XCENTER != 0 && (XCENTER != 1 || S_F < 3))
+      $error("acore_fold_poly: XCENTER=%0d must be 0, or 1 with S_F >= 3 (instance %m)", XCENTER);
+    if (F != 1 && F != 2 && F != 4) $error("acore_fold_poly: F=%0d must be 1, 2 or 4 (instance %m)", F);
+  end
+
+  // A coefficient word, sign-extended and shifted to ACC_F fraction bits.
+  function automatic [ACC_W-1:0] coef_acc(input [REG_W-1:0] w);
+    coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
+  endfunction
+
+  // Clock 0: address a_n; u (centred with XCENTER) and the item registered.
+  wire [S_W-1:0] u_next;
+  generate
+    if (XCENTER != 0) begin : g_centre
+      localparam [S_W-1:0] CENTRE = {{(S_W-S_F+1){1'b0}}, 2'b11, {(S_F-3){1'b0}}};  // 3/8
+      assign u_next = x_i[S_W-1] ? x_i + CENTRE : x_i - CENTRE;
+    end else begin : g_raw
+      assign u_next = x_i;
+    end
+  endgenerate
+  localparam [ADDR_W-1:0] DEG_A = DEGREE[ADDR_W-1:0];
+  assign coef_addr_o[ADDR_W-1:0] = base_i + DEG_A;
+
+  // Per step m: its inputs at its start clock (accumulator, argument, curve, base address,
+  // overflow so far, start).
+  wire [ACC_W-1:0]  acc [0:DEGREE];
+  wire [S_W-1:0]    us  [0:DEGREE];
+  wire [S_W-1:0]    ss  [0:DEGREE];
+  wire [ADDR_W-1:0] bs  [0:DEGREE];
+  wire              ov  [0:DEGREE];
+  wire              st  [0:DEGREE];
+  reg [S_W-1:0]    u0_q, s0_q;
+  reg [ADDR_W-1:0] b0_q;
+  reg              ov0_q, st0_q;
+  always @(posedge clk_i) begin
+    u0_q  <= u_next;
+    s0_q  <= s_i;
+    b0_q  <= base_i;
+    ov0_q <= ovf_i;
+    st0_q <= start_i;
+  end
+  assign acc[0] = coef_acc(coef_i[fp_cmul(DEGREE, 0) +: REG_W]);
+  assign us[0]  = u0_q;
+  assign ss[0]  = s0_q;
+  assign bs[0]  = b0_q;
+  assign ov[0]  = ov0_q;
+  assign st[0]  = st0_q;
+
+  genvar m;
+  generate
+    for (m = 0; m < DEGREE; m = m + 1) begin : g_step
+      // Address of a_j one clock before the multiplier adds it (INIT_AT clocks into the step).
+      localparam integer J = DEGREE - 1 - m;
+      localparam [ADDR_W-1:0] J_A = J[ADDR_W-1:0];
+      wire [ADDR_W-1:0] b_at;
+      acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_db (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m]), .q_o(b_at));
+      assign coef_addr_o[fp_cmul(m + 1, ADDR_W) +: ADDR_W] = b_at + J_A;
+      wire [P_W-1:0] sum;
+      acore_fold_mul #(
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F)
+      ) u_mul (
+        .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
+        .init_i(coef_acc(coef_i[fp_cmul(m + 1, REG_W) +: REG_W])), .p_o(sum));
+      // The item beside the multiplier: base to the next step's address, u, s, start.
+      acore_delay #(.W(ADDR_W), .DEPTH(STEP - INIT_AT + 1)) u_db2 (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(b_at), .q_o(bs[m+1]));
+      acore_delay #(.W((S_W << 1) + 1), .DEPTH(STEP)) u_dus (
+        .clk_i(clk_i), .en_i(1'b1), .d_i({us[m], ss[m], st[m]}), .q_o({us[m+1], ss[m+1], st[m+1]}));
+      wire ov_e;
+      acore_delay #(.W(1), .DEPTH(STEP - 1)) u_dov (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(ov[m]), .q_o(ov_e));
+      // Clock ML: saturate to ACC_W.
+      wire [ACC_W-1:0] sum_sat;
+      wire sum_ovf;
+      acore_saturate #(.IN_W(P_W), .OUT_W(ACC_W)) u_sat (.d_i(sum), .q_o(sum_sat), .ovf_o(sum_ovf));
+      reg [ACC_W-1:0] acc_q;
+      reg             ov_q;
+      always @(posedge clk_i) begin
+        acc_q <= sum_sat;
+        ov_q  <= ov_e | sum_ovf;
+      end
+      assign acc[m+1] = acc_q;
+      assign ov[m+1]  = ov_q;
+    end
+  endgenerate
+
+  // y = saturate(s - round_shr(acc_0, RN), S_W): round, subtract, saturate, one clock each.
+  wire [ACC_W:0] acc_ext = {acc[DEGREE][ACC_W-1], acc[DEGREE]};
+  wire [ACC_W:0] acc_rnd;
+  generate
+    if (RN > 0) begin : g_rnd
+      assign acc_rnd = acc_ext + ({{ACC_W{1'b0}}, 1'b1} << (RN - 1));
+    end else begin : g_nornd
+      assign acc_rnd = acc_ext;
+    end
+  endgenerate
+  reg [R_W-1:0] p_r_q;
+  reg [S_W-1:0] s_r_q;
+  reg           ov_r_q, ov_y_q;
+  reg [Y_W-1:0] y_full_q;
+  always @(posedge clk_i) begin
+    p_r_q    <= acc_rnd[ACC_W:RN];
+    s_r_q    <= ss[DEGREE];
+    ov_r_q   <= ov[DEGREE];
+    y_full_q <= {{(Y_W-S_W){s_r_q[S_W-1]}}, s_r_q} - {{(Y_W-R_W){p_r_q[R_W-1]}}, p_r_q};
+    ov_y_q   <= ov_r_q;
+  end
+  wire [S_W-1:0] y_sat;
+  wire y_ovf;
+  acore_saturate #(.IN_W(Y_W), .OUT_W(S_W)) u_ysat (.d_i(y_full_q), .q_o(y_sat), .ovf_o(y_ovf));
+  reg [S_W-1:0] y_q;
+  reg ovf_q;
+  always @(posedge clk_i) begin
+    y_q   <= y_sat;
+    ovf_q <= ov_y_q | y_ovf;
+  end
+  assign y_o   = y_q;
+  assign ovf_o = ovf_q;
+
+  // The last step's start and base have no further reader.
+  wire unused_tail = st[DEGREE] ^ ^bs[DEGREE];
+
+endmodule
+
+`resetall

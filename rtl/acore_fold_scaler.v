@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// acore_fold_scaler: stage 2 for the folded top (FOLD > 1), the same contract as acore_scaler
+// (model/scaler.cpp) on one multiplier shared by both curves. Each curve is an item: d, O and R of
+// that curve at start_i; the items of a sample come FOLD/2 clocks apart, so the multiplier is
+// folded F = FOLD/2 times (acore_fold_mul):
+//   t = d - O                                 exact, max(D_W, REG_W) + 1 bits
+//   p = 2^(SCALE_G-1) + shift_add_mul(t, R, REG_W unsigned, R_SHIFT - SCALE_G)
+//   s = saturate(p >>> SCALE_G, S_W)          = saturate(round_shr(product, SCALE_G), S_W)
+// The rounding constant is the multiplier's addend, so rounding costs no adder of its own.
+//
+//   clock 0: d_i, offset_i, recip_i   1: t_q   1..1+ML: product   2+ML: s_o, ovf_o
+//   LATENCY = ML + 2 (ML = acore_fold_mul's LATENCY); a new item every F clocks.
+`resetall
+`default_nettype none
+
+module acore_fold_scaler #(
+  // Difference width (IN_W + 1).
+  parameter integer D_W = 17,
+  // Register word width: offset (signed) and reciprocal (unsigned).
+  parameter integer REG_W = 18,
+  // Scaled curve width, signed.
+  parameter integer S_W = 18,
+  // Extra scale of the reciprocal R, and the guard bits kept before the final rounding.
+  parameter integer R_SHIFT = 13,
+  parameter integer SCALE_G = 4,
+  // Clocks per item of the multiplier.
+  parameter integer F = 1
+) (
+  input  wire             clk_i,
+  // d_i, offset_i, recip_i are valid (an item starts).
+  input  wire             start_i,
+  input  wire [D_W-1:0]   d_i,
+  // Offset O, signed REG_W-bit word; reciprocal R, unsigned REG_W-bit word.
+  input  wire [REG_W-1:0] offset_i,
+  input  wire [REG_W-1:0] recip_i,
+  // Scaled curve, signed S_W bits (S_F fraction bits), and "it was saturated".
+  output wire [S_W-1:0]   s_o,
+  output wire             ovf_o
+);
+
+  // Derived, do not override: widths as in acore_scaler, plus one bit for the rounding addend.
+  localparam integer T_W = ((D_W > REG_W) ? D_W : REG_W) + 1;
+  localparam integer RS = R_SHIFT - SCALE_G;
+  localparam integer P_W = T_W + ((REG_W > RS) ? (REG_W - RS) : 0) + 2;
+  localparam integer MUL_B = (F == 1) ? REG_W : (REG_W + F - 1) >> $clog2(F);
+  localparam integer ML = (F == 1) ? $clog2(REG_W) + 1 : $clog2(MUL_B) + 1 + F;
+  localparam integer LATENCY = ML + 2;
+
+  initial begin
+    if (SCALE_G < 0 || SCALE_G > R_SHIFT)
+      $error("acore_fold_scaler: need 0 <= SCALE_G=%0d <= R_SHIFT=%0d (instance %m)", SCALE_G, R_SHIFT);
+    if (S_W > P_W - SCALE_G) $error("acore_fold_scaler: S_W=%0d wider than the product (instance %m)", S_W);
+    if (F != 1 && F != 2 && F != 4) $error("acore_fold_scaler: F=%0d must be 1, 2 or 4 (instance %m)", F);
+  end
+
+  reg [T_W-1:0]   t_q;
+  reg [REG_W-1:0] r_q;
+  reg             start_q;
+  always @(posedge clk_i) begin
+    t_q     <= {{(T_W-D_W){d_i[D_W-1]}}, d_i} - {{(T_W-REG_W){offset_i[REG_W-1]}}, offset_i};
+    r_q     <= recip_i;
+    start_q <= start_i;
+  end
+
+  // Half an output LSB: round half up.
+  localparam integer H_W = SCALE_G + 1;
+  wire [H_W-1:0] half;
+  generate
+    if (SCALE_G > 0) begin : g_half
+      assign half = {{SCALE_G{1'b0}}, 1'b1} << (SCALE_G - 1);
+    end else begin : g_nohalf
+      assign half = 1'b0;
+    end
+  endgenerate
+
+  wire [P_W-1:0] p;
+  acore_fold_mul #(
+    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F)
+  ) u_mul (
+    .clk_i(clk_i), .start_i(start_q), .a_i(t_q), .b_i(r_q), .init_i(half), .p_o(p));
+
+  wire [S_W-1:0] s_d;
+  wire ovf_d;
+  acore_saturate #(.IN_W(P_W - SCALE_G), .OUT_W(S_W)) u_sat (
+    .d_i(p[P_W-1:SCALE_G]), .q_o(s_d), .ovf_o(ovf_d));
+  reg [S_W-1:0] s_q;
+  reg ovf_q;
+  always @(posedge clk_i) begin
+    s_q   <= s_d;
+    ovf_q <= ovf_d;
+  end
+  assign s_o   = s_q;
+  assign ovf_o = ovf_q;
+
+endmodule
+
+`resetall
