@@ -12,9 +12,12 @@
 // Unit u at phase p (p = 0 the clock a vector arrives from unit u-1 or the pre-rotation) adds the
 // operand shifted by uN + p and atan word uN + p: at p = 0 it reads the previous unit's registers,
 // else its own. The phase counter of each unit restarts from the vector's start (start_i delayed
-// uN clocks), so vectors need only be N clocks apart, not aligned to a grid. On iCE40 the shift
-// choice, the operand's conditional negation and (for N = 2) the arctangent choice share one LUT
-// per bit; the own/previous choice of the adder's other operand is one more. The last iterations
+// uN clocks), so vectors need only be N clocks apart, not aligned to a grid. Per bit and word, a
+// unit costs the own/previous choice of the adder's first operand, a barrel of log2(N) 2:1 stages
+// for the shifted operand (the last stage shares its LUT with the conditional negation) and the
+// adder: at N = 2 three LUTs for two iterations, against two per iteration unfolded. The
+// arctangent word's N:1 choice merges with its negation at N = 2; from N = 4 on it costs more than
+// a block RAM port per unit (AT_RAM_UNITS). The last iterations
 // of the last unit (when N does not divide K) compute values nobody reads: the result is taken
 // the clock after iteration K-1.
 `resetall
@@ -35,11 +38,16 @@ module acore_fold_cordic #(
   parameter integer AT_W = 18,
   // Clocks per vector: iterations per unit (a power of two, >= 2).
   parameter integer N = 2,
+  // Units 0 .. AT_RAM_UNITS-1 read their arctangent word from a synchronous-read memory port
+  // (at_idx_o: iteration index for the next clock; at_word_i: that word, one clock later), which
+  // saves the unit's N:1 word choice (or at N = 2 the flops of its two words); the others take
+  // theirs from atan_i.
+  parameter integer AT_RAM_UNITS = 0,
   // Derived, do not override.
   parameter integer XY_W = IN_W + 2 + G,
   parameter integer MAG_W = IN_W + 2
 ) (
-  clk_i, start_i, x_i, y_i, atan_i, angle_o, mag_o
+  clk_i, start_i, x_i, y_i, atan_i, at_idx_o, at_word_i, angle_o, mag_o
 );
 
   // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
@@ -58,6 +66,9 @@ module acore_fold_cordic #(
   localparam integer U = (K + N - 1) >> PW;          // stage units
   localparam integer LATENCY = K + 2;
   localparam integer DROP = Z_W - ANGLE_W;
+  localparam integer AT_IDX_W = $clog2(fc_cmul(U, N));  // iteration index width
+  localparam integer IDX_BUS_W = fc_cmul(U, AT_IDX_W);
+  localparam integer WORD_BUS_W = fc_cmul(U, AT_W);
 
   input  wire                clk_i;
   // x_i, y_i are valid: a vector starts (at least N clocks after the previous one).
@@ -67,9 +78,29 @@ module acore_fold_cordic #(
   input  wire [IN_W-1:0]     y_i;
   // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
   input  wire [AT_BUS_W-1:0] atan_i;
+  // Per unit (AT_RAM_UNITS), the iteration whose word it needs next clock, and that word.
+  output wire [IDX_BUS_W-1:0] at_idx_o;
+  input  wire [WORD_BUS_W-1:0] at_word_i;
   output reg  [ANGLE_W-1:0]  angle_o;
   // X_K >>> G: vector length times the CORDIC gain, never negative.
   output reg  [MAG_W-1:0]    mag_o;
+
+  // v shifted right by sh (arithmetic if sgn): log2(N) stages of 2:1, stage k shifting by 2^k.
+  function automatic [XY_W-1:0] barrel(input [XY_W-1:0] v, input [PW-1:0] sh, input sgn);
+    integer k;
+    reg [XY_W-1:0] r;
+    begin
+      r = v;
+      // Separate assignments: in one conditional expression the unsigned branch would make the
+      // arithmetic shift a logical one.
+      for (k = 0; k < PW; k = k + 1)
+        if (sh[k]) begin
+          if (sgn) r = $signed(r) >>> (1 << k);
+          else r = r >> (1 << k);
+        end
+      barrel = r;
+    end
+  endfunction
 
   initial begin
     if (Z_W < ANGLE_W) $error("acore_fold_cordic: Z_W=%0d < ANGLE_W=%0d (instance %m)", Z_W, ANGLE_W);
@@ -86,20 +117,24 @@ module acore_fold_cordic #(
   wire [XY_W-2:0] xr [0:U];
   wire [XY_W-1:0] yr [0:U];
   wire [Z_W-1:0]  zr [0:U];
+  // The sign of each register's next Y (its D input): a unit registers the sign it will use.
+  wire            ysign_d [0:U];
 
   // ---- pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = half a turn ----
   wire [XY_W-1:0] x0 = {{2{x_i[IN_W-1]}}, x_i, {G{1'b0}}};
   wire [XY_W-1:0] y0 = {{2{y_i[IN_W-1]}}, y_i, {G{1'b0}}};
   wire neg0 = x_i[IN_W-1];
   wire [XY_W-1:0] x0_abs = neg0 ? ({XY_W{1'b0}} - x0) : x0;
+  wire [XY_W-1:0] y_pre_d = neg0 ? ({XY_W{1'b0}} - y0) : y0;
   reg [XY_W-2:0] x_pre_q;
   reg [XY_W-1:0] y_pre_q;
   reg [Z_W-1:0]  z_pre_q;
   always @(posedge clk_i) begin
     x_pre_q <= x0_abs[XY_W-2:0];
-    y_pre_q <= neg0 ? ({XY_W{1'b0}} - y0) : y0;
+    y_pre_q <= y_pre_d;
     z_pre_q <= {neg0, {(Z_W-1){1'b0}}};
   end
+  assign ysign_d[0] = y_pre_d[XY_W-1];
   assign xr[0] = x_pre_q;
   assign yr[0] = y_pre_q;
   assign zr[0] = z_pre_q;
@@ -120,38 +155,70 @@ module acore_fold_cordic #(
       assign st[ST_D:1] = st_q;
     end
 
+    // Arctangent words nobody reads (named unused_* for lint).
+    if (AT_RAM_UNITS >= U) begin : g_no_bus
+      wire unused_bus = ^atan_i;
+    end else if (AT_RAM_UNITS == 0) begin : g_no_ram
+      wire unused_ram = ^at_word_i;
+    end else begin : g_part
+      wire unused_ram = ^at_word_i[WORD_BUS_W-1:fc_cmul(AT_RAM_UNITS, AT_W)];
+      wire unused_bus = ^atan_i[fc_cmul(fc_cmul(AT_RAM_UNITS, N), AT_W)-1:0];
+    end
+
     for (u = 0; u < U; u = u + 1) begin : g_unit
       localparam integer I0 = fc_cmul(u, N);  // first iteration of the unit
       localparam integer YW = (I0 + 1 <= 2) ? XY_W : XY_W + 1 - I0;
-      // Phase: 0 the clock the vector arrives, then 1 .. N-1.
-      reg [PW-1:0] ph_q;
-      always @(posedge clk_i) ph_q <= st[I0] ? {PW{1'b0}} : ph_q + 1'b1;
-      wire take = (ph_q == {PW{1'b0}});
-      wire [XY_W-2:0] xa = take ? xr[u] : xr[u+1];
-      wire [XY_W-1:0] ya = take ? yr[u] : yr[u+1];
-      wire [Z_W-1:0]  za = take ? zr[u] : zr[u+1];
-      wire s = ya[XY_W-1];
-      // The shifted operands and the arctangent word of iteration I0 + phase (an N:1 choice: the
-      // previous unit's registers at phase 0, the unit's own after).
-      wire [XY_W-2:0] ys_p [0:N-1];
-      wire [XY_W-1:0] xs_p [0:N-1];
-      wire [Z_W-1:0]  at_p [0:N-1];
-      for (p = 0; p < N; p = p + 1) begin : g_ph
-        localparam integer I = I0 + p;
-        wire signed [XY_W-1:0] y_src = (p == 0) ? yr[u] : yr[u+1];
-        wire [XY_W-2:0] x_src = (p == 0) ? xr[u] : xr[u+1];
-        wire [XY_W-1:0] ys_full = y_src >>> I;
-        assign ys_p[p] = ys_full[XY_W-2:0];
-        assign xs_p[p] = {1'b0, x_src >> I};
-        if (I < K) begin : g_at
-          assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[fc_cmul(I, AT_W) +: AT_W]};
-        end else begin : g_noat
-          assign at_p[p] = {Z_W{1'b0}};
-        end
+      // Phase: 0 the clock the vector arrives, then 1 .. N-1 (ph_d: the next clock's).
+      // take: phase 0 (operands from the previous unit); s = (Y < 0), the rotation direction. Both
+      // are registered (from the next clock's phase and the sign of the next Y): s drives every
+      // bit of the three adders, so no logic sits between its flop and that fan-out.
+      reg  [PW-1:0] ph_q;
+      wire [PW-1:0] ph_d = st[I0] ? {PW{1'b0}} : ph_q + 1'b1;
+      wire take_d = (ph_d == {PW{1'b0}});
+      reg take_q, s_q;
+      always @(posedge clk_i) begin
+        ph_q   <= ph_d;
+        take_q <= take_d;
+        s_q    <= take_d ? ysign_d[u] : ysign_d[u+1];
       end
-      wire [XY_W-2:0] ys = ys_p[ph_q];
-      wire [XY_W-1:0] xs = xs_p[ph_q];
-      wire [Z_W-1:0]  at = at_p[ph_q];
+      wire take = take_q;
+      wire s = s_q;
+      wire [XY_W-2:0] xa = take ? xr[u] : xr[u+1];
+      wire signed [XY_W-1:0] ya = take ? yr[u] : yr[u+1];
+      wire [Z_W-1:0]  za = take ? zr[u] : zr[u+1];
+      // Operands shifted by I0 + phase: the fixed I0 is wiring, the phase a barrel of log2(N)
+      // 2:1 stages (the last one shares its LUT with the conditional negation).
+      wire signed [XY_W-1:0] ys0 = ya >>> I0;
+      wire [XY_W-1:0] ys_full = barrel(ys0, ph_q, 1'b1);
+      wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
+      wire [XY_W-1:0] xs = barrel({1'b0, xa >> I0}, ph_q, 1'b0);
+      // The arctangent word of iteration I0 + phase: from the bus (an N:1 choice) or, with
+      // AT_RAM, from a memory port addressed the clock before (iteration I0 + ph_d).
+      wire [Z_W-1:0] at;
+      if (u < AT_RAM_UNITS) begin : g_at_ram
+        // I0 is a multiple of N, so I0 + ph_d is I0 with ph_d in its low bits.
+        wire [AT_IDX_W-1:0] idx;
+        if (AT_IDX_W > PW) begin : g_hi
+          localparam [AT_IDX_W-1:0] I0_A = I0[AT_IDX_W-1:0];
+          assign idx = {I0_A[AT_IDX_W-1:PW], ph_d};
+        end else begin : g_lo
+          assign idx = ph_d;
+        end
+        assign at_idx_o[fc_cmul(u, AT_IDX_W) +: AT_IDX_W] = idx;
+        assign at = {{(Z_W-AT_W){1'b0}}, at_word_i[fc_cmul(u, AT_W) +: AT_W]};
+      end else begin : g_at_bus
+        wire [Z_W-1:0] at_p [0:N-1];
+        for (p = 0; p < N; p = p + 1) begin : g_ph
+          localparam integer I = I0 + p;
+          if (I < K) begin : g_at
+            assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[fc_cmul(I, AT_W) +: AT_W]};
+          end else begin : g_noat
+            assign at_p[p] = {Z_W{1'b0}};
+          end
+        end
+        assign at = at_p[ph_q];
+        assign at_idx_o[fc_cmul(u, AT_IDX_W) +: AT_IDX_W] = {AT_IDX_W{1'b0}};
+      end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
       wire [XY_W-1:0] x_sum = {xa, 1'b1} + {ys ^ {(XY_W-1){s}}, s};
       wire [YW:0]     y_sum = {ya[YW-1:0], 1'b1} + {xs[YW-1:0] ^ {YW{~s}}, ~s};
@@ -167,6 +234,7 @@ module acore_fold_cordic #(
       assign xr[u+1] = x_q;
       assign yr[u+1] = {{(XY_W-YW){y_q[YW-1]}}, y_q};
       assign zr[u+1] = z_q;
+      assign ysign_d[u+1] = y_sum[YW];
     end
   endgenerate
 

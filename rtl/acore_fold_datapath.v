@@ -13,12 +13,12 @@
 //   0       d13, d24 (held until the next sample); c13 item into the scaler
 //   H       c24 item into the scaler
 //   SL      s13 out (held);   H + SL: s24 out -> region select (2 clocks)
-//   R = H + SL + 2: region, x, s13, s24 (held);  R + 1: c13 item into the Horner chain, R+1+H: c24
-//   R+1+PL  y13 out (held);   C = R + 1 + H + PL: y24 out -> CORDIC
+//   R = H + SL + 2: region, x, s13, s24 (held); c13 item into the Horner chain; R + H: c24
+//   R + PL  y13 out (held);   C = R + H + PL: y24 out -> CORDIC
 //   C + CL  angle, magnitude, and the region and overflow of the sample beside them (valid_o)
 // A sample is a valid bit that travels with it (valid_o); nothing stalls: the top's credit counter
-// never lets more samples in than its output FIFO can hold. No reset but of the valid bits.
-// CORRECTION = 2 (none): no Horner chain, the CORDIC starts at C = R + 1.
+// never lets more samples in than its output FIFO can hold. No reset but of the valid bits (and
+// of the block RAM delay lines' pointers). CORRECTION = 2 (none): no Horner chain, C = R.
 `resetall
 `default_nettype none
 
@@ -43,15 +43,16 @@ module acore_fold_datapath #(
   parameter integer ANGLE_W = 16,
   // Clocks per sample (2, 4 or 8).
   parameter integer FOLD = 2,
-  // Register address width.
-  parameter integer ADDR_W = 6,
+  // Register file: words (4 + 2 REGIONS (DEGREE+1) + K, or 4 + K without a polynomial) and the
+  // power-up image.
+  parameter integer WORDS = 52,
+  parameter INIT_FILE = "",
   // Derived, do not override.
+  parameter integer ADDR_W = $clog2(WORDS),
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer MAG_W = S_W + 2,
-  // Coefficient read ports (the Horner chain's; 1, unused, without a polynomial).
-  parameter integer PORTS = (CORRECTION == 2) ? 1 : DEGREE + 1
+  parameter integer MAG_W = S_W + 2
 ) (
-  clk_i, rst_i, accept_i, c1_i, c2_i, c3_i, c4_i, scale_i, atan_i, coef_addr_o, coef_i,
+  clk_i, rst_i, reg_addr_i, reg_wdata_i, reg_we_i, reg_rdata_o, accept_i, c1_i, c2_i, c3_i, c4_i,
   valid_o, angle_o, mag_o, region_o, ovf_o
 );
 
@@ -65,25 +66,45 @@ module acore_fold_datapath #(
     end
   endfunction
 
-  localparam integer AT_BUS_W = fd_cmul(K, REG_W);
+  // Derived, do not override: the register file's read ports and the block RAM budget (iCE40
+  // SB_RAM40_4K, 256 x 16; an HX8K has 32). Fixed: the Horner chain's PP ports (a_n, then one per
+  // step), the scaler's 2 (offset, reciprocal), the host read-back copy (BPW blocks each) and the
+  // output FIFO. At FOLD = 2, where logic cells rather than LUTs are the limit, the Horner chain's
+  // and the region's delay lines go to block RAM (RAM_DELAY) if they fit, then as many CORDIC units
+  // as fit read their two arctangent words from a port of their own instead of 36 flops; from
+  // FOLD = 4 on every unit does (a port is cheaper than its N:1 choice of word), and must fit.
+  localparam integer H = FOLD >> 1;
+  localparam integer U = (K + FOLD - 1) >> $clog2(FOLD);
+  localparam integer PP = (CORRECTION == 2) ? 0 : DEGREE + 1;
+  localparam integer BPW = (REG_W > 16) ? 2 : 1;
+  localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
+  localparam integer BLOCKS = FIFO_B + fd_cmul(PP + 3, BPW);
+  localparam integer DELAY_B = fd_cmul(DEGREE, (S_W + ADDR_W > 16) ? 2 : 1) + 1;  // u, s, region lines
+  localparam integer RAM_DELAY = (FOLD == 2 && CORRECTION != 2 && BLOCKS + DELAY_B <= 32) ? 1 : 0;
+  localparam integer FREE_B = 32 - BLOCKS - ((RAM_DELAY != 0) ? DELAY_B : 0);
+  localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
+  localparam integer AT_UNITS = (FOLD >= 4 || AT_FIT >= U) ? U : AT_FIT;
+  localparam integer PORTS = PP + 2 + AT_UNITS;
   localparam integer PA_W = fd_cmul(PORTS, ADDR_W);
   localparam integer PD_W = fd_cmul(PORTS, REG_W);
+  localparam integer AT_BUS_W = fd_cmul(K, REG_W);
+  localparam integer ATAN_BASE = WORDS - K;
 
   input  wire                  clk_i;
-  // Synchronous reset of the valid bits.
+  // Synchronous reset of the valid bits (and of the register file's write enable).
   input  wire                  rst_i;
+  // Register file host port (acore_coef_regfile's timing: write lands one clock later, read-back
+  // two clocks after the address).
+  input  wire [ADDR_W-1:0]     reg_addr_i;
+  input  wire [REG_W-1:0]      reg_wdata_i;
+  input  wire                  reg_we_i;
+  output wire [REG_W-1:0]      reg_rdata_o;
   // A sample is taken (at least FOLD clocks after the previous one): c1..c4 are valid.
   input  wire                  accept_i;
   input  wire [IN_W-1:0]       c1_i;
   input  wire [IN_W-1:0]       c2_i;
   input  wire [IN_W-1:0]       c3_i;
   input  wire [IN_W-1:0]       c4_i;
-  // Register words 0..3 (O13, O24, R13, R24) and the arctangent words.
-  input  wire [(REG_W<<2)-1:0] scale_i;
-  input  wire [AT_BUS_W-1:0]   atan_i;
-  // The Horner chain's coefficient read ports (acore_fold_regs).
-  output wire [PA_W-1:0]       coef_addr_o;
-  input  wire [PD_W-1:0]       coef_i;
   // A sample's results (valid for one clock).
   output wire                  valid_o;
   output wire [ANGLE_W-1:0]    angle_o;
@@ -93,7 +114,6 @@ module acore_fold_datapath #(
 
   // Derived, do not override: stage latencies (each module documents its own) and the schedule.
   localparam integer D_W = IN_W + 1;
-  localparam integer H = FOLD >> 1;
   localparam integer F = H;
   localparam integer SC_B = (F == 1) ? REG_W : (REG_W + F - 1) >> $clog2(F);
   localparam integer SC_ML = (F == 1) ? $clog2(REG_W) + 1 : $clog2(SC_B) + 1 + F;
@@ -103,7 +123,7 @@ module acore_fold_datapath #(
   localparam integer PL = (CORRECTION == 2) ? 0 : 4 + fd_cmul(DEGREE, PC_ML + 1);
   localparam integer CL = K + 2;
   localparam integer R = H + SL + 2;
-  localparam integer C = (CORRECTION == 2) ? R + 1 : R + 1 + H + PL;
+  localparam integer C = (CORRECTION == 2) ? R : R + H + PL;
   localparam integer LATENCY = C + CL;  // accepting edge -> valid_o, in clocks after it, minus one
   localparam integer TERMS = DEGREE + 1;
 
@@ -122,10 +142,22 @@ module acore_fold_datapath #(
   endfunction
 
   initial begin
+    if (ADDR_W < AT_IDX_W) $error("acore_fold_datapath: ADDR_W=%0d < %0d (instance %m)", ADDR_W, AT_IDX_W);
     if (FOLD != 2 && FOLD != 4 && FOLD != 8) $error("acore_fold_datapath: FOLD=%0d must be 2, 4 or 8 (instance %m)", FOLD);
     if (CORRECTION != 0 && CORRECTION != 2)
       $error("acore_fold_datapath: CORRECTION=%0d: only poly (0) and none (2) are folded (instance %m)", CORRECTION);
   end
+
+  // ---- register file: read ports [0, PP) Horner, PP offset, PP+1 reciprocal, then CORDIC units ----
+  wire [PA_W-1:0]     raddr;
+  wire [PD_W-1:0]     rdata;
+  wire [AT_BUS_W-1:0] atan;
+  acore_fold_regs #(
+    .REG_W(REG_W), .WORDS(WORDS), .ATAN_BASE(ATAN_BASE), .K(K), .PORTS(PORTS),
+    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .INIT_FILE(INIT_FILE)
+  ) u_regs (
+    .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
+    .rdata_o(reg_rdata_o), .atan_o(atan), .raddr_i(raddr), .rdata_p_o(rdata));
 
   // ---- valid bits: v[t] is high t clocks after the accepting edge (t = 0 the next clock) ----
   reg [LATENCY:0] v_q;
@@ -141,19 +173,23 @@ module acore_fold_datapath #(
     .clk_i(clk_i), .en_i(accept_i), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
     .d13_o(d13), .d24_o(d24));
 
-  // ---- 2: scaling, one item per curve: c13 at clock 0, c24 at clock H ----
+  // ---- 2: scaling, one item per curve: c13 at clock 0, c24 at clock H; the curve's offset and
+  // reciprocal (words 0/1, 2/3) read the clock before ----
   wire sc_second = v_q[H];
-  wire [REG_W-1:0] off13 = scale_i[0 +: REG_W];
-  wire [REG_W-1:0] off24 = scale_i[REG_W +: REG_W];
-  wire [REG_W-1:0] rcp13 = scale_i[(REG_W << 1) +: REG_W];
-  wire [REG_W-1:0] rcp24 = scale_i[fd_cmul(3, REG_W) +: REG_W];
+  wire sc_second_next = v_q[H - 1];
+  localparam [ADDR_W-1:0] A_OFF = 0;
+  localparam [ADDR_W-1:0] A_RCP = 2;
+  assign raddr[fd_cmul(PP, ADDR_W) +: ADDR_W] = A_OFF | {{(ADDR_W-1){1'b0}}, sc_second_next};
+  assign raddr[fd_cmul(PP + 1, ADDR_W) +: ADDR_W] = A_RCP | {{(ADDR_W-1){1'b0}}, sc_second_next};
+  wire [REG_W-1:0] offset = rdata[fd_cmul(PP, REG_W) +: REG_W];
+  wire [REG_W-1:0] recip = rdata[fd_cmul(PP + 1, REG_W) +: REG_W];
   wire [S_W-1:0] s_sc;
   wire ovf_sc;
   acore_fold_scaler #(
     .D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G), .F(F)
   ) u_sc (
-    .clk_i(clk_i), .start_i(v_q[0] | sc_second), .d_i(sc_second ? d24 : d13),
-    .offset_i(sc_second ? off24 : off13), .recip_i(sc_second ? rcp24 : rcp13), .s_o(s_sc), .ovf_o(ovf_sc));
+    .clk_i(clk_i), .start_i(v_q[0] | sc_second), .d_i(sc_second ? d24 : d13), .offset_i(offset),
+    .recip_i(recip), .s_o(s_sc), .ovf_o(ovf_sc));
 
   // ---- 3: pair the curves, domain selection ----
   reg [S_W-1:0] s13_q;
@@ -172,46 +208,47 @@ module acore_fold_datapath #(
   acore_region_select #(.S_W(S_W), .REGIONS(REGIONS)) u_rs (
     .clk_i(clk_i), .en_i(1'b1), .s13_i(s13_q), .s24_i(s_sc),
     .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
-  // The sample, held from clock R + 1 until its second item has entered the correction.
+  // What the c24 item needs H clocks after clock R (at FOLD = 2 the next sample's region select
+  // output is due then; and no stall enable holds a stage here).
   reg [RG_W-1:0] region_h_q;
-  reg [S_W-1:0]  x_h_q, s13_h_q, s24_h_q;
+  reg [S_W-1:0]  x_h_q, s24_h_q;
   reg            sc_ovf_h_q;
   always @(posedge clk_i) begin
     if (v_q[R]) begin
       region_h_q <= region;
       x_h_q      <= x;
-      s13_h_q    <= s13_r;
       s24_h_q    <= s24_r;
       sc_ovf_h_q <= sc_ovf_r_q;
     end
   end
 
-  // ---- 4: correction (CORRECTION), c13 item at R + 1, c24 at R + 1 + H; pair the results ----
+  // ---- 4: correction (CORRECTION), c13 item at R (from the region select), c24 at R + H (from
+  // the held copy); pair the results ----
   wire [S_W-1:0] y13, y24;
   wire           pc_ovf;
   generate
     if (CORRECTION == 2) begin : g_none
-      wire unused_x = ^x_h_q;
-      assign y13 = s13_h_q;
-      assign y24 = s24_h_q;
-      assign pc_ovf = sc_ovf_h_q;
-      assign coef_addr_o = {PA_W{1'b0}};
-      wire unused_coef = ^coef_i;
+      wire unused_x = ^{x, x_h_q, s24_h_q, region_h_q, sc_ovf_h_q};
+      assign y13 = s13_r;
+      assign y24 = s24_r;
+      assign pc_ovf = sc_ovf_r_q;
     end else begin : g_poly
-      wire pc_second = v_q[R + 1 + H];
+      wire pc_second = v_q[R + H];
       wire [S_W-1:0] y_pc;
       wire ovf_pc;
       acore_fold_poly #(
         .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
-        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F)
+        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(RAM_DELAY)
       ) u_pc (
-        .clk_i(clk_i), .start_i(v_q[R + 1] | pc_second), .x_i(x_h_q),
-        .s_i(pc_second ? s24_h_q : s13_h_q), .base_i(base_of(region_h_q, pc_second)),
-        .ovf_i(sc_ovf_h_q), .coef_addr_o(coef_addr_o), .coef_i(coef_i), .y_o(y_pc), .ovf_o(ovf_pc));
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
+        .s_i(pc_second ? s24_h_q : s13_r),
+        .base_i(pc_second ? base_of(region_h_q, 1'b1) : base_of(region, 1'b0)),
+        .ovf_i(pc_second ? sc_ovf_h_q : sc_ovf_r_q), .coef_addr_o(raddr[0 +: fd_cmul(PP, ADDR_W)]),
+        .coef_i(rdata[0 +: fd_cmul(PP, REG_W)]), .y_o(y_pc), .ovf_o(ovf_pc));
       reg [S_W-1:0] y13_q;
       reg           ovf13_q;
       always @(posedge clk_i) begin
-        if (v_q[R + 1 + PL]) begin
+        if (v_q[R + PL]) begin
           y13_q   <= y_pc;
           ovf13_q <= ovf_pc;
         end
@@ -223,15 +260,49 @@ module acore_fold_datapath #(
   endgenerate
 
   // ---- 5: CORDIC from clock C, x = corrected cosine curve, y = corrected sine curve ----
+  localparam integer AT_IDX_W = $clog2(fd_cmul(U, FOLD));
+  wire [fd_cmul(U, AT_IDX_W)-1:0] at_idx;
+  wire [fd_cmul(U, REG_W)-1:0]    at_word;
   acore_fold_cordic #(
-    .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .N(FOLD)
+    .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .N(FOLD),
+    .AT_RAM_UNITS(AT_UNITS)
   ) u_cordic (
-    .clk_i(clk_i), .start_i(v_q[C]), .x_i(y24), .y_i(y13), .atan_i(atan_i), .angle_o(angle_o),
-    .mag_o(mag_o));
+    .clk_i(clk_i), .start_i(v_q[C]), .x_i(y24), .y_i(y13), .atan_i(atan), .at_idx_o(at_idx),
+    .at_word_i(at_word), .angle_o(angle_o), .mag_o(mag_o));
+  genvar gu;
+  generate
+    // Unit u < AT_UNITS reads word ATAN_BASE + its iteration index on port PP + 2 + u. (Indices
+    // past K - 1, in a last unit that N does not fill, read words nobody uses.)
+    localparam [ADDR_W-1:0] A_ATAN = ATAN_BASE[ADDR_W-1:0];
+    for (gu = 0; gu < U; gu = gu + 1) begin : g_at
+      if (gu < AT_UNITS) begin : g_port
+        wire [AT_IDX_W-1:0] idx = at_idx[fd_cmul(gu, AT_IDX_W) +: AT_IDX_W];
+        wire [ADDR_W-1:0] idx_a;
+        if (ADDR_W > AT_IDX_W) begin : g_ext
+          assign idx_a = {{(ADDR_W-AT_IDX_W){1'b0}}, idx};
+        end else begin : g_same
+          assign idx_a = idx;
+        end
+        assign raddr[fd_cmul(PP + 2 + gu, ADDR_W) +: ADDR_W] = A_ATAN + idx_a;
+        assign at_word[fd_cmul(gu, REG_W) +: REG_W] = rdata[fd_cmul(PP + 2 + gu, REG_W) +: REG_W];
+      end else begin : g_flops
+        assign at_word[fd_cmul(gu, REG_W) +: REG_W] = {REG_W{1'b0}};
+        wire unused_idx = ^at_idx[fd_cmul(gu, AT_IDX_W) +: AT_IDX_W];
+      end
+    end
+  endgenerate
 
-  // ---- sideband: region from the held sample, overflow from the CORDIC's input ----
-  acore_delay #(.W(RG_W), .DEPTH(C + CL - R - 1)) u_d_region (
-    .clk_i(clk_i), .en_i(1'b1), .d_i(region_h_q), .q_o(region_o));
+  // ---- sideband: region from the region select (in block RAM with RAM_DELAY), overflow from the
+  // CORDIC's input ----
+  generate
+    if (RAM_DELAY != 0) begin : g_rg_ram
+      acore_ram_delay #(.W(RG_W), .DEPTH(C + CL - R)) u_d_region (
+        .clk_i(clk_i), .rst_i(rst_i), .d_i(region), .q_o(region_o));
+    end else begin : g_rg_flop
+      acore_delay #(.W(RG_W), .DEPTH(C + CL - R)) u_d_region (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(region), .q_o(region_o));
+    end
+  endgenerate
   acore_delay #(.W(1), .DEPTH(CL)) u_d_ovf (
     .clk_i(clk_i), .en_i(1'b1), .d_i(pc_ovf), .q_o(ovf_o));
 

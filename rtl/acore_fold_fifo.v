@@ -37,7 +37,7 @@ module acore_fold_fifo #(
   end
 
   // A read never meets a write of the same word (the read word is stored, the written one free).
-  (* no_rw_check *)
+  (* no_rw_check, ram_style = "block" *)
   reg [W-1:0] mem_q [0:DEPTH-1];
   // Pointers one bit wider than the address: equal = empty.
   reg [AW:0] wptr_q, rptr_q;

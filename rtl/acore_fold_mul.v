@@ -9,8 +9,10 @@
 // operand register O holds floor(a 2^(t - RSHIFT)) for the top bit t of the current group and
 // shifts right (arithmetic) by B each clock: floor(floor(z) / 2^B) = floor(z / 2^B), so partial
 // product k of the group, O >>> k, is exactly floor(a 2^(t - k - RSHIFT)). b is padded with zeros
-// below its bit 0 up to F B bits (zero bits add nothing). The negative top bit is the first
-// partial product of the first group: negated in the first tree level.
+// below its bit 0 up to F B bits (zero bits add nothing). Each partial product is loaded into a
+// register beside O, cleared when its bit of b is 0 (the AND gate of a partial product becomes a
+// flop's synchronous clear). The negative top bit is the first partial product of the first
+// group: loaded inverted, with a carry-in in the first tree level.
 //
 //   F = 1: clock 0 a_i, b_i | 1..L adder tree (L = clog2(B_W)) | init added
 //   F > 1: clock 0 a_i, b_i | O, X loaded | group g: partial products and the first tree level,
@@ -124,29 +126,43 @@ module acore_fold_mul #(
       // it a logical one).
       wire signed [O_W-1:0] o_s = o_q;
       wire [O_W-1:0] o_next = o_s >>> B;
+      wire [O_W-1:0] o_d = start_i ? o0 : o_next;
+      wire [X_W-1:0] x_d = start_i ? b_pad : x_q << B;
+      // The first group's top bit of a signed b weighs -2^(B_W-1): its partial product is negated,
+      // as ~O_0 here plus a carry-in in the first tree level.
+      wire neg_d = start_i & (B_SIGNED != 0) & b_pad[X_W-1];
+      reg neg_q;
       always @(posedge clk_i) begin
-        o_q     <= start_i ? o0 : o_next;
-        x_q     <= start_i ? b_pad : x_q << B;
+        o_q     <= o_d;
+        x_q     <= x_d;
         first_q <= start_i;
+        neg_q   <= neg_d;
       end
-      // Partial product k of the group: O >>> k, gated by bit k from the top of the group.
-      wire signed [P_W-1:0] o_ext = {{(P_W-O_W){o_q[O_W-1]}}, o_q};
+      // Partial product k of the group, O >>> k gated by bit k from the top of the group, in a
+      // register of its own loaded beside O: the gate is the flop's synchronous clear, so it costs
+      // no LUT (on iCE40 and xc7 alike; the flops replace the AND gates).
       wire [P_W-1:0] pp [0:B-1];
       genvar k;
       for (k = 0; k < B; k = k + 1) begin : g_pp
-        wire [P_W-1:0] sh = o_ext >>> k;
-        assign pp[k] = sh & {P_W{x_q[X_W-1-k]}};
+        wire signed [O_W-1:0] o_d_s = o_d;
+        wire [O_W-1:0] sh = o_d_s >>> k;
+        reg  [O_W-1:0] pp_q;
+        if (k == 0) begin : g_top
+          wire [O_W-1:0] v = neg_d ? ~o0 : sh;
+          always @(posedge clk_i) pp_q <= x_d[X_W-1] ? v : {O_W{1'b0}};
+        end else begin : g_rest
+          always @(posedge clk_i) pp_q <= x_d[X_W-1-k] ? sh : {O_W{1'b0}};
+        end
+        assign pp[k] = {{(P_W-O_W){pp_q[O_W-1]}}, pp_q};
       end
-      // First tree level: pairs (0, 1), (2, 3), ...; the first group's first partial product is
-      // the negative top bit of a signed b: sum = pp1 + (pp0 ^ {neg}) + neg in one adder (bit 0 of
-      // the wider add makes the carry-in).
-      wire neg = first_q & (B_SIGNED != 0);
+      // First tree level: pairs (0, 1), (2, 3), ...; the carry-in completes -O_0 = ~O_0 + 1 (bit 0
+      // of the wider add makes the carry-in).
       localparam integer T_BUS = fm_cmul(NT, P_W);
       wire [T_BUS-1:0] lvl1;
       for (k = 0; k < NT; k = k + 1) begin : g_l1
         reg [P_W-1:0] s_q;
         if (k == 0) begin : g_first
-          wire [P_W:0] s0 = {pp[0] ^ {P_W{neg}}, 1'b1} + {pp[1], neg};
+          wire [P_W:0] s0 = {pp[0], 1'b1} + {pp[1], neg_q};
           always @(posedge clk_i) s_q <= s0[P_W:1];
         end else if ((k << 1) + 1 < B) begin : g_pair
           always @(posedge clk_i) s_q <= pp[k << 1] + pp[(k << 1) + 1];

@@ -36,10 +36,13 @@ module acore_fold_poly #(
   parameter integer ADDR_W = 6,
   // Clocks per item of each multiplier.
   parameter integer F = 1,
+  // 1: the argument (with the base address) and the curve wait for the Horner steps in block RAM
+  // (acore_ram_delay), not in flops: DEGREE lines of S_W (+ ADDR_W) bits, 2 blocks each up to 32.
+  parameter integer RAM_DELAY = 0,
   // Derived, do not override: coefficient read ports.
   parameter integer PORTS = DEGREE + 1
 ) (
-  clk_i, start_i, x_i, s_i, base_i, ovf_i, coef_addr_o, coef_i, y_o, ovf_o
+  clk_i, rst_i, start_i, x_i, s_i, base_i, ovf_i, coef_addr_o, coef_i, y_o, ovf_o
 );
 
   // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
@@ -56,6 +59,8 @@ module acore_fold_poly #(
   localparam integer COEF_BUS_W = fp_cmul(PORTS, REG_W);
 
   input  wire                  clk_i;
+  // Synchronous reset (of the block RAM delay lines' pointers).
+  input  wire                  rst_i;
   // An item starts: x_i, s_i, base_i, ovf_i are valid.
   input  wire                  start_i;
   // Polynomial argument and the curve to correct.
@@ -117,7 +122,7 @@ module acore_fold_poly #(
   // overflow so far, start).
   wire [ACC_W-1:0]  acc [0:DEGREE];
   wire [S_W-1:0]    us  [0:DEGREE];
-  wire [S_W-1:0]    ss  [0:DEGREE];
+
   wire [ADDR_W-1:0] bs  [0:DEGREE];
   wire              ov  [0:DEGREE];
   wire              st  [0:DEGREE];
@@ -133,7 +138,6 @@ module acore_fold_poly #(
   end
   assign acc[0] = coef_acc(coef_i[fp_cmul(DEGREE, 0) +: REG_W]);
   assign us[0]  = u0_q;
-  assign ss[0]  = s0_q;
   assign bs[0]  = b0_q;
   assign ov[0]  = ov0_q;
   assign st[0]  = st0_q;
@@ -141,24 +145,30 @@ module acore_fold_poly #(
   genvar m;
   generate
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
-      // Address of a_j one clock before the multiplier adds it (INIT_AT clocks into the step).
+      // Address of a_j, formed at the step's start and presented one clock before the multiplier
+      // adds the word (INIT_AT clocks into the step).
       localparam integer J = DEGREE - 1 - m;
       localparam [ADDR_W-1:0] J_A = J[ADDR_W-1:0];
-      wire [ADDR_W-1:0] b_at;
-      acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_db (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m]), .q_o(b_at));
-      assign coef_addr_o[fp_cmul(m + 1, ADDR_W) +: ADDR_W] = b_at + J_A;
+      acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_da (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(coef_addr_o[fp_cmul(m + 1, ADDR_W) +: ADDR_W]));
       wire [P_W-1:0] sum;
       acore_fold_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F)
       ) u_mul (
         .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
         .init_i(coef_acc(coef_i[fp_cmul(m + 1, REG_W) +: REG_W])), .p_o(sum));
-      // The item beside the multiplier: base to the next step's address, u, s, start.
-      acore_delay #(.W(ADDR_W), .DEPTH(STEP - INIT_AT + 1)) u_db2 (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(b_at), .q_o(bs[m+1]));
-      acore_delay #(.W((S_W << 1) + 1), .DEPTH(STEP)) u_dus (
-        .clk_i(clk_i), .en_i(1'b1), .d_i({us[m], ss[m], st[m]}), .q_o({us[m+1], ss[m+1], st[m+1]}));
+      // The item beside the multiplier to the next step: start, and argument with base address.
+      acore_delay #(.W(1), .DEPTH(STEP)) u_dst (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(st[m]), .q_o(st[m+1]));
+      if (m == DEGREE - 1) begin : g_ulast
+        assign {bs[m+1], us[m+1]} = {(ADDR_W+S_W){1'b0}};  // no step after the last
+      end else if (RAM_DELAY != 0) begin : g_uram
+        acore_ram_delay #(.W(ADDR_W + S_W), .DEPTH(STEP)) u_du (
+          .clk_i(clk_i), .rst_i(rst_i), .d_i({bs[m], us[m]}), .q_o({bs[m+1], us[m+1]}));
+      end else begin : g_uflop
+        acore_delay #(.W(ADDR_W + S_W), .DEPTH(STEP)) u_du (
+          .clk_i(clk_i), .en_i(1'b1), .d_i({bs[m], us[m]}), .q_o({bs[m+1], us[m+1]}));
+      end
       wire ov_e;
       acore_delay #(.W(1), .DEPTH(STEP - 1)) u_dov (
         .clk_i(clk_i), .en_i(1'b1), .d_i(ov[m]), .q_o(ov_e));
@@ -174,6 +184,19 @@ module acore_fold_poly #(
       end
       assign acc[m+1] = acc_q;
       assign ov[m+1]  = ov_q;
+    end
+  endgenerate
+
+  // The curve, beside all the steps.
+  wire [S_W-1:0] s_e;
+  generate
+    if (RAM_DELAY != 0) begin : g_sram
+      acore_ram_delay #(.W(S_W), .DEPTH(fp_cmul(DEGREE, STEP))) u_ds (
+        .clk_i(clk_i), .rst_i(rst_i), .d_i(s0_q), .q_o(s_e));
+    end else begin : g_sflop
+      acore_delay #(.W(S_W), .DEPTH(fp_cmul(DEGREE, STEP))) u_ds (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(s0_q), .q_o(s_e));
+      wire unused_rst = rst_i;  // the flop delay lines have no pointer
     end
   endgenerate
 
@@ -193,7 +216,7 @@ module acore_fold_poly #(
   reg [Y_W-1:0] y_full_q;
   always @(posedge clk_i) begin
     p_r_q    <= acc_rnd[ACC_W:RN];
-    s_r_q    <= ss[DEGREE];
+    s_r_q    <= s_e;
     ov_r_q   <= ov[DEGREE];
     y_full_q <= {{(Y_W-S_W){s_r_q[S_W-1]}}, s_r_q} - {{(Y_W-R_W){p_r_q[R_W-1]}}, p_r_q};
     ov_y_q   <= ov_r_q;
@@ -210,8 +233,8 @@ module acore_fold_poly #(
   assign y_o   = y_q;
   assign ovf_o = ovf_q;
 
-  // The last step's start and base have no further reader.
-  wire unused_tail = st[DEGREE] ^ ^bs[DEGREE];
+  // The last step's start, base and argument have no further reader.
+  wire unused_tail = st[DEGREE] ^ ^bs[DEGREE] ^ ^us[DEGREE];
 
 endmodule
 

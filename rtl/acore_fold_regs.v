@@ -5,11 +5,13 @@
 // clocks before (zero past the last word). Storage differs:
 //   - every word is in a synchronous-read memory (block RAM on iCE40: 2 SB_RAM40_4K for 18-bit
 //     words, one copy per read port): the host read-back reads one copy, and PORTS datapath read
-//     ports (the polynomial coefficients) read theirs, each one clock after its address;
-//   - the words the datapath needs all at once (offsets, reciprocals: words 0..3; the K arctangent
-//     words from ATAN_BASE) are also kept in flops, on scale_o and atan_o.
-// A read of a word in the clock it is written returns the old word, on every port (as the flops
-// of acore_coef_regfile do).
+//     ports read theirs, each one clock after its address;
+//   - with ATAN_FLOPS, the K arctangent words (from ATAN_BASE) are also kept in flops, on atan_o,
+//     for a datapath that needs them all at once.
+// The host read-back of a word in the clock it is written returns the old word, as the flops of
+// acore_coef_regfile do. A datapath port reading a word in the very clock the host writes it may
+// see the old or the new word (iCE40 block RAM leaves a read-write collision undefined; checking
+// for it would cost logic on every port): write coefficients between samples.
 `resetall
 `default_nettype none
 
@@ -22,12 +24,14 @@ module acore_fold_regs #(
   parameter integer K = 16,
   // Datapath read ports.
   parameter integer PORTS = 4,
+  // 1: the arctangent words also in flops, on atan_o (else atan_o is zero).
+  parameter integer ATAN_FLOPS = 1,
   // $readmemh image for the initial contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(WORDS)
 ) (
-  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, scale_o, atan_o, raddr_i, rdata_p_o
+  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, atan_o, raddr_i, rdata_p_o
 );
 
   // Constant product by repeated addition, for widths and offsets at elaboration only.
@@ -51,8 +55,7 @@ module acore_fold_regs #(
   input  wire [REG_W-1:0]    wdata_i;
   input  wire                we_i;
   output reg  [REG_W-1:0]    rdata_o;
-  // Words 0..3 (offsets, reciprocals) and the arctangent words, word 0 in the low bits.
-  output wire [(REG_W<<2)-1:0] scale_o;
+  // The arctangent words (ATAN_FLOPS), word 0 in the low bits.
   output wire [AT_BUS_W-1:0] atan_o;
   // Datapath read ports: address of port p at bits [p ADDR_W +: ADDR_W], its word one clock later.
   input  wire [PA_W-1:0]     raddr_i;
@@ -77,20 +80,22 @@ module acore_fold_regs #(
     we_q    <= we_i && in_range && !rst_i;
   end
 
-  // Flop copy: only the words read from scale_o and atan_o remain after synthesis.
-  reg [REG_W-1:0] flop_q [0:WORDS-1];
-  // Memory copies: the host read-back and the datapath ports.
-  reg [REG_W-1:0] ram_q [0:WORDS-1];
+  // Memory copies: the host read-back (read-write collisions resolved to the old word) and the
+  // datapath ports (collisions left undefined, see above).
+  (* ram_style = "block" *)
+  reg [REG_W-1:0] rb_mem_q [0:WORDS-1];
+  (* no_rw_check, ram_style = "block" *)
+  reg [REG_W-1:0] dp_mem_q [0:WORDS-1];
   initial begin
     if (INIT_FILE != "") begin
-      $readmemh(INIT_FILE, flop_q);
-      $readmemh(INIT_FILE, ram_q);
+      $readmemh(INIT_FILE, rb_mem_q);
+      $readmemh(INIT_FILE, dp_mem_q);
     end
   end
   always @(posedge clk_i) begin
     if (we_q) begin
-      flop_q[waddr_q] <= wdata_q;
-      ram_q[waddr_q]  <= wdata_q;
+      rb_mem_q[waddr_q] <= wdata_q;
+      dp_mem_q[waddr_q] <= wdata_q;
     end
   end
 
@@ -98,7 +103,7 @@ module acore_fold_regs #(
   reg [REG_W-1:0] rb_q;
   reg in_range_q;
   always @(posedge clk_i) begin
-    rb_q       <= ram_q[addr_i];
+    rb_q       <= rb_mem_q[addr_i];
     in_range_q <= in_range;
     rdata_o    <= in_range_q ? rb_q : {REG_W{1'b0}};
   end
@@ -107,14 +112,22 @@ module acore_fold_regs #(
   generate
     for (p = 0; p < PORTS; p = p + 1) begin : g_port
       reg [REG_W-1:0] rd_q;
-      always @(posedge clk_i) rd_q <= ram_q[raddr_i[fr_cmul(p, ADDR_W) +: ADDR_W]];
+      always @(posedge clk_i) rd_q <= dp_mem_q[raddr_i[fr_cmul(p, ADDR_W) +: ADDR_W]];
       assign rdata_p_o[fr_cmul(p, REG_W) +: REG_W] = rd_q;
     end
-    for (a = 0; a < 4; a = a + 1) begin : g_scale
-      assign scale_o[fr_cmul(a, REG_W) +: REG_W] = flop_q[a];
-    end
-    for (a = 0; a < K; a = a + 1) begin : g_atan
-      assign atan_o[fr_cmul(a, REG_W) +: REG_W] = flop_q[ATAN_BASE + a];
+    if (ATAN_FLOPS != 0) begin : g_flops
+      // A flop copy of every word, written with the memories; only the arctangent words are read
+      // (synthesis keeps those alone).
+      reg [REG_W-1:0] flop_q [0:WORDS-1];
+      initial begin
+        if (INIT_FILE != "") $readmemh(INIT_FILE, flop_q);
+      end
+      always @(posedge clk_i) if (we_q) flop_q[waddr_q] <= wdata_q;
+      for (a = 0; a < K; a = a + 1) begin : g_atan
+        assign atan_o[fr_cmul(a, REG_W) +: REG_W] = flop_q[ATAN_BASE + a];
+      end
+    end else begin : g_no_flops
+      assign atan_o = {AT_BUS_W{1'b0}};
     end
   endgenerate
 

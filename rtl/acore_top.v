@@ -144,8 +144,8 @@ module acore_top #(
   localparam integer FOLD_PC_ML = (FOLD_H <= 1) ? $clog2(S_W) + 1 :
                                   $clog2((S_W + FOLD_H - 1) >> FOLD_HB) + 1 + FOLD_H;
   localparam integer FOLD_R = FOLD_H + FOLD_SC_ML + 2 + 2;
-  localparam integer FOLD_C = (CORRECTION == 2) ? FOLD_R + 1 :
-                              FOLD_R + 1 + FOLD_H + 4 + top_cmul(DEGREE, FOLD_PC_ML + 1);
+  localparam integer FOLD_C = (CORRECTION == 2) ? FOLD_R :
+                              FOLD_R + FOLD_H + 4 + top_cmul(DEGREE, FOLD_PC_ML + 1);
   localparam integer FOLD_LATENCY = FOLD_C + K + 2 + 1 + 2 + 1;
   localparam integer LATENCY = (FOLD > 1) ? FOLD_LATENCY :
                                PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
@@ -329,7 +329,7 @@ module acore_top #(
       reg [CNT_W-1:0] cnt_q;  // clocks since the last accepted sample, up to FOLD - 1
       reg [OCC_W-1:0] occ_q;  // samples accepted and not yet delivered
       reg             rdy_q;
-      wire accept = in_valid_i & in_ready_o;
+      wire accept = in_valid_i & rdy_q;  // (rst_i resets the datapath's valid bits anyway)
       wire deliver = out_valid_o & out_ready_i;
       wire [CNT_W-1:0] cnt_d = accept ? {CNT_W{1'b0}} : (cnt_q == CNT_FULL) ? cnt_q : cnt_q + 1'b1;
       wire [OCC_W-1:0] occ_d = occ_q + {{(OCC_W-1){1'b0}}, accept} - {{(OCC_W-1){1'b0}}, deliver};
@@ -347,32 +347,19 @@ module acore_top #(
       // Registered (no path from out_ready_i), and low while rst_i is high.
       assign in_ready_o = rdy_q & ~rst_i;
 
-      // ---- register file: the same map and host port, the words in block RAM ----
-      localparam integer PORTS = (CORRECTION == 2) ? 1 : DEGREE + 1;
-      localparam integer PA_W = top_cmul(PORTS, ADDR_W);
-      localparam integer PD_W = top_cmul(PORTS, REG_W);
-      localparam integer AT_BUS_W = top_cmul(K, REG_W);
-      wire [(REG_W<<2)-1:0] scale;
-      wire [AT_BUS_W-1:0] atan;
-      wire [PA_W-1:0] coef_addr;
-      wire [PD_W-1:0] coef;
-      acore_fold_regs #(
-        .REG_W(REG_W), .WORDS(WORDS), .ATAN_BASE(4 + NCOEF), .K(K), .PORTS(PORTS), .INIT_FILE(INIT_FILE)
-      ) u_regs (
-        .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
-        .rdata_o(reg_rdata_o), .scale_o(scale), .atan_o(atan), .raddr_i(coef_addr), .rdata_p_o(coef));
-
-      // ---- the folded estimator ----
+      // ---- the folded estimator, with its register file (the same map, host port and timing; the
+      // words in block RAM) ----
       wire dp_valid, dp_ovf;
       acore_fold_datapath #(
         .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
         .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
         .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
-        .FOLD(FOLD), .ADDR_W(ADDR_W)
+        .FOLD(FOLD), .WORDS(WORDS), .INIT_FILE(INIT_FILE)
       ) u_dp (
-        .clk_i(clk_i), .rst_i(rst_i), .accept_i(accept), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
-        .c4_i(c4_i), .scale_i(scale), .atan_i(atan), .coef_addr_o(coef_addr), .coef_i(coef),
-        .valid_o(dp_valid), .angle_o(angle_c), .mag_o(mag_c), .region_o(region_d), .ovf_o(dp_ovf));
+        .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
+        .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .accept_i(accept), .c1_i(c1_i), .c2_i(c2_i),
+        .c3_i(c3_i), .c4_i(c4_i), .valid_o(dp_valid), .angle_o(angle_c), .mag_o(mag_c),
+        .region_o(region_d), .ovf_o(dp_ovf));
       assign sc_ovf_d = dp_ovf;
       assign pc_ovf_d = 1'b0;
       // The output register advances every clock; the FIFO takes its sample one clock later.
