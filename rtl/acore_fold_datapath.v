@@ -120,7 +120,7 @@ module acore_fold_datapath #(
   localparam integer SL = SC_ML + 2;
   localparam integer PC_B = (F == 1) ? S_W : (S_W + F - 1) >> $clog2(F);
   localparam integer PC_ML = (F == 1) ? $clog2(S_W) + 1 : $clog2(PC_B) + 1 + F;
-  localparam integer PL = (CORRECTION == 2) ? 0 : 4 + fd_cmul(DEGREE, PC_ML + 1);
+  localparam integer PL = (CORRECTION == 2) ? 0 : 5 + fd_cmul(DEGREE, PC_ML + 1);
   localparam integer CL = K + 2;
   localparam integer R = H + SL + 2;
   localparam integer C = (CORRECTION == 2) ? R : R + H + PL;
@@ -211,13 +211,12 @@ module acore_fold_datapath #(
   // What the c24 item needs H clocks after clock R (at FOLD = 2 the next sample's region select
   // output is due then; and no stall enable holds a stage here).
   reg [RG_W-1:0] region_h_q;
-  reg [S_W-1:0]  x_h_q, s24_h_q;
+  reg [S_W-1:0]  x_h_q;
   reg            sc_ovf_h_q;
   always @(posedge clk_i) begin
     if (v_q[R]) begin
       region_h_q <= region;
       x_h_q      <= x;
-      s24_h_q    <= s24_r;
       sc_ovf_h_q <= sc_ovf_r_q;
     end
   end
@@ -228,12 +227,23 @@ module acore_fold_datapath #(
   wire           pc_ovf;
   generate
     if (CORRECTION == 2) begin : g_none
-      wire unused_x = ^{x, x_h_q, s24_h_q, region_h_q, sc_ovf_h_q};
+      wire unused_x = ^{x, x_h_q, region_h_q, sc_ovf_h_q};
       assign y13 = s13_r;
       assign y24 = s24_r;
       assign pc_ovf = sc_ovf_r_q;
     end else begin : g_poly
       wire pc_second = v_q[R + H];
+      wire unused_s = ^{s13_r, s24_r};  // the curves reach the correction from the scaler
+      // Each item's curve, straight from the scaler to the clock the polynomial's value is ready
+      // (PL - 3 clocks after the item's start; block RAM with RAM_DELAY).
+      wire [S_W-1:0] s_pc;
+      if (RAM_DELAY != 0) begin : g_sram
+        acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
+          .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
+      end else begin : g_sflop
+        acore_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
+          .clk_i(clk_i), .en_i(1'b1), .d_i(s_sc), .q_o(s_pc));
+      end
       wire [S_W-1:0] y_pc;
       wire ovf_pc;
       acore_fold_poly #(
@@ -241,7 +251,7 @@ module acore_fold_datapath #(
         .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(RAM_DELAY)
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
-        .s_i(pc_second ? s24_h_q : s13_r),
+        .s_i(s_pc),
         .base_i(pc_second ? base_of(region_h_q, 1'b1) : base_of(region, 1'b0)),
         .ovf_i(pc_second ? sc_ovf_h_q : sc_ovf_r_q), .coef_addr_o(raddr[0 +: fd_cmul(PP, ADDR_W)]),
         .coef_i(rdata[0 +: fd_cmul(PP, REG_W)]), .y_o(y_pc), .ovf_o(ovf_pc));

@@ -12,9 +12,9 @@
 // port 0 reads a_n when the item enters, port m + 1 reads a_j (j = DEGREE-1-m) for step m, each
 // address one clock before the word is used (coef_addr_o, coef_i one clock later).
 //
-//   clock 0: item in, a_n addressed | 1: u_q, a_n -> step 0 | step m: ML clocks of multiplier
+//   clock 0: item in, a_n addressed | 1: a_n read | 2: step 0 | step m: ML clocks of multiplier
 //   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
-//   LATENCY = 4 + DEGREE (ML + 1), ML = acore_fold_mul's LATENCY (25 at F = 1, the defaults)
+//   LATENCY = 5 + DEGREE (ML + 1), ML = acore_fold_mul's LATENCY (26 at F = 1, the defaults)
 `resetall
 `default_nettype none
 
@@ -36,8 +36,8 @@ module acore_fold_poly #(
   parameter integer ADDR_W = 6,
   // Clocks per item of each multiplier.
   parameter integer F = 1,
-  // 1: the argument (with the base address) and the curve wait for the Horner steps in block RAM
-  // (acore_ram_delay), not in flops: DEGREE lines of S_W (+ ADDR_W) bits, 2 blocks each up to 32.
+  // 1: the argument (with the base address) waits for the Horner steps in block RAM
+  // (acore_ram_delay), not in flops: DEGREE - 1 lines of S_W + ADDR_W bits.
   parameter integer RAM_DELAY = 0,
   // Derived, do not override: coefficient read ports.
   parameter integer PORTS = DEGREE + 1
@@ -61,9 +61,10 @@ module acore_fold_poly #(
   input  wire                  clk_i;
   // Synchronous reset (of the block RAM delay lines' pointers).
   input  wire                  rst_i;
-  // An item starts: x_i, s_i, base_i, ovf_i are valid.
+  // An item starts: x_i, base_i, ovf_i are valid.
   input  wire                  start_i;
-  // Polynomial argument and the curve to correct.
+  // Polynomial argument; the curve to correct, LATENCY - 3 clocks after start_i (when the
+  // polynomial's value is ready: the caller delays it, from wherever it is cheapest).
   input  wire [S_W-1:0]        x_i;
   input  wire [S_W-1:0]        s_i;
   // Address of the item's coefficient of x^0.
@@ -86,7 +87,7 @@ module acore_fold_poly #(
   localparam integer ML = (F == 1) ? $clog2(S_W) + 1 : $clog2(MUL_B) + 1 + F;
   localparam integer INIT_AT = ML - F;
   localparam integer STEP = ML + 1;
-  localparam integer LATENCY = 4 + fp_cmul(DEGREE, STEP);
+  localparam integer LATENCY = 5 + fp_cmul(DEGREE, STEP);
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
   localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
@@ -105,7 +106,8 @@ module acore_fold_poly #(
     coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
   endfunction
 
-  // Clock 0: address a_n; u (centred with XCENTER) and the item registered.
+  // Clock 0: address a_n; u (centred with XCENTER) and the item registered. Clock 1: a_n into a
+  // register (a block RAM's word should not start a path through logic), the item beside it.
   wire [S_W-1:0] u_next;
   generate
     if (XCENTER != 0) begin : g_centre
@@ -122,25 +124,29 @@ module acore_fold_poly #(
   // overflow so far, start).
   wire [ACC_W-1:0]  acc [0:DEGREE];
   wire [S_W-1:0]    us  [0:DEGREE];
-
   wire [ADDR_W-1:0] bs  [0:DEGREE];
   wire              ov  [0:DEGREE];
   wire              st  [0:DEGREE];
-  reg [S_W-1:0]    u0_q, s0_q;
-  reg [ADDR_W-1:0] b0_q;
-  reg              ov0_q, st0_q;
+  reg [S_W-1:0]    u0_q, u1_q;
+  reg [ADDR_W-1:0] b0_q, b1_q;
+  reg              ov0_q, st0_q, ov1_q, st1_q;
+  reg [ACC_W-1:0]  an_q;
   always @(posedge clk_i) begin
     u0_q  <= u_next;
-    s0_q  <= s_i;
     b0_q  <= base_i;
     ov0_q <= ovf_i;
     st0_q <= start_i;
+    an_q  <= coef_acc(coef_i[fp_cmul(DEGREE, 0) +: REG_W]);
+    u1_q  <= u0_q;
+    b1_q  <= b0_q;
+    ov1_q <= ov0_q;
+    st1_q <= st0_q;
   end
-  assign acc[0] = coef_acc(coef_i[fp_cmul(DEGREE, 0) +: REG_W]);
-  assign us[0]  = u0_q;
-  assign bs[0]  = b0_q;
-  assign ov[0]  = ov0_q;
-  assign st[0]  = st0_q;
+  assign acc[0] = an_q;
+  assign us[0]  = u1_q;
+  assign bs[0]  = b1_q;
+  assign ov[0]  = ov1_q;
+  assign st[0]  = st1_q;
 
   genvar m;
   generate
@@ -187,15 +193,8 @@ module acore_fold_poly #(
     end
   endgenerate
 
-  // The curve, beside all the steps.
-  wire [S_W-1:0] s_e;
   generate
-    if (RAM_DELAY != 0) begin : g_sram
-      acore_ram_delay #(.W(S_W), .DEPTH(fp_cmul(DEGREE, STEP))) u_ds (
-        .clk_i(clk_i), .rst_i(rst_i), .d_i(s0_q), .q_o(s_e));
-    end else begin : g_sflop
-      acore_delay #(.W(S_W), .DEPTH(fp_cmul(DEGREE, STEP))) u_ds (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(s0_q), .q_o(s_e));
+    if (RAM_DELAY == 0) begin : g_flops
       wire unused_rst = rst_i;  // the flop delay lines have no pointer
     end
   endgenerate
@@ -216,7 +215,7 @@ module acore_fold_poly #(
   reg [Y_W-1:0] y_full_q;
   always @(posedge clk_i) begin
     p_r_q    <= acc_rnd[ACC_W:RN];
-    s_r_q    <= s_e;
+    s_r_q    <= s_i;
     ov_r_q   <= ov[DEGREE];
     y_full_q <= {{(Y_W-S_W){s_r_q[S_W-1]}}, s_r_q} - {{(Y_W-R_W){p_r_q[R_W-1]}}, p_r_q};
     ov_y_q   <= ov_r_q;

@@ -2,16 +2,18 @@
 // acore_ram_delay: a DEPTH-clock delay line in a synchronous-read memory (block RAM on iCE40: one
 // SB_RAM40_4K per 16 bits of W), for long delays of wide words where a flop chain would fill logic
 // cells with flops alone. A circular buffer: every clock the word is written at the write pointer
-// and the word written DEPTH - 1 clocks earlier is read into the output register, so q_o is d_i
-// of DEPTH clocks before. No enable (the folded datapath never stalls). The read address never
-// equals the write address (DEPTH >= 2), so no read-write collision can occur.
+// and the word written DEPTH - 2 clocks earlier is read (the memory's own output register), then
+// registered once more in flops (a block RAM's clock-to-output is a quarter of a 100 MHz period:
+// its word should not start a path through logic), so q_o is d_i of DEPTH clocks before. No
+// enable (the folded datapath never stalls). The read address never equals the write address
+// (DEPTH >= 3), so no read-write collision can occur.
 `resetall
 `default_nettype none
 
 module acore_ram_delay #(
   // Word width.
   parameter integer W = 18,
-  // Delay in clocks, 2..256.
+  // Delay in clocks, 3..257.
   parameter integer DEPTH = 8
 ) (
   input  wire         clk_i,
@@ -22,22 +24,24 @@ module acore_ram_delay #(
   output reg  [W-1:0] q_o
 );
 
-  // Pointer width: the memory has 2^AW >= DEPTH words (kept in block RAM by ram_style however
+  // Pointer width: the memory has 2^AW >= DEPTH - 1 words (kept in block RAM by ram_style however
   // shallow: the block is the unit of cost).
-  localparam integer AW = (DEPTH > 2) ? $clog2(DEPTH) : 1;
-  localparam integer BACK_I = DEPTH - 1;
+  localparam integer AW = (DEPTH > 3) ? $clog2(DEPTH - 1) : 1;
+  localparam integer BACK_I = DEPTH - 2;
   localparam [AW-1:0] BACK = BACK_I[AW-1:0];
 
   initial begin
-    if (DEPTH < 2 || DEPTH > 256) $error("acore_ram_delay: DEPTH=%0d must be 2..256 (instance %m)", DEPTH);
+    if (DEPTH < 3 || DEPTH > 257) $error("acore_ram_delay: DEPTH=%0d must be 3..257 (instance %m)", DEPTH);
   end
 
   (* no_rw_check, ram_style = "block" *)
   reg [W-1:0] mem_q [0:(1<<AW)-1];
   reg [AW-1:0] wp_q;
+  reg [W-1:0] rd_q;
   always @(posedge clk_i) begin
     mem_q[wp_q] <= d_i;
-    q_o <= mem_q[wp_q - BACK];
+    rd_q <= mem_q[wp_q - BACK];
+    q_o <= rd_q;
     if (rst_i) wp_q <= {AW{1'b0}};
     else wp_q <= wp_q + 1'b1;
   end

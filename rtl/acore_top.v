@@ -145,7 +145,7 @@ module acore_top #(
                                   $clog2((S_W + FOLD_H - 1) >> FOLD_HB) + 1 + FOLD_H;
   localparam integer FOLD_R = FOLD_H + FOLD_SC_ML + 2 + 2;
   localparam integer FOLD_C = (CORRECTION == 2) ? FOLD_R :
-                              FOLD_R + FOLD_H + 4 + top_cmul(DEGREE, FOLD_PC_ML + 1);
+                              FOLD_R + FOLD_H + 5 + top_cmul(DEGREE, FOLD_PC_ML + 1);
   localparam integer FOLD_LATENCY = FOLD_C + K + 2 + 1 + 2 + 1;
   localparam integer LATENCY = (FOLD > 1) ? FOLD_LATENCY :
                                PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
