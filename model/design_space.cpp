@@ -93,7 +93,11 @@ nlohmann::json default_sweep_grid() {
     {"CORRECTION": [2]},
     {"CORRECTION": [2], "FOURIER_K": [13, 20, 21]},
     {"DEGREE": [1], "FOURIER_K": [13]},
-    {"DEGREE": [3], "FOURIER_K": [8]}
+    {"DEGREE": [3], "FOURIER_K": [8]},
+    {"DEGREE": [3], "FOLD": [2, 4, 8]},
+    {"DEGREE": [1], "FOLD": [8]},
+    {"DEGREE": [5], "REGIONS": [8], "FOLD": [4, 8]},
+    {"DEGREE": [7], "REGIONS": [8], "XCENTER": [1], "FOLD": [8]}
   ])");
 }
 

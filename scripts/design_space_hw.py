@@ -9,9 +9,11 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
            {"final_params", "lut4", "dff", "carry", "bram", "fmax_mhz", "slowest", "stages": [...]}
          lut4/dff/carry/bram: Yosys synth_ice40 of the whole acore_top with those parameters;
          fmax_mhz: the slowest stage placed and routed alone on an HX8K (scripts/stage_fmax.py), the
-         register file's host read-back port excluded (reported in "stages").
-         Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage) also
-         get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
+         register file's host read-back port excluded (reported in "stages"); for a folded top
+         (FOLD > 1, made to fit) the whole top placed and routed in the same kind of pin wrapper
+         ("whole": {"lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}, "slowest": "acore_top").
+         Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage, FOLD 1)
+         also get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
          same parameters, placed and routed whole (it fits an HX8K); cycles = its CYCLES localparam,
          22 + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K (tb/test_cosim_serial checks the formula).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
@@ -61,6 +63,22 @@ def measure(root, cache, params):
         return json.load(open(path))
     res = {"final_params": params}
     res.update(synth_area(root, params))
+    p = dict(kv.split("=", 1) for kv in params.split())
+    if int(p.get("FOLD", 1)) > 1:
+        # A folded top is made to fit: place and route it whole.
+        out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), "--whole", "acore_top", root,
+                              os.path.join(cache, "whole")] + params.split(), capture_output=True, text=True)
+        if out.returncode != 0:
+            raise RuntimeError("stage_fmax.py --whole acore_top failed for " + params + ": " + out.stderr.strip())
+        wh = json.loads(out.stdout)
+        res["whole"] = wh
+        res["fmax_mhz"] = wh.get("fmax_mhz")
+        res["slowest"] = "acore_top" if wh.get("fmax_mhz") else None
+        res["all_stages_fit"] = bool(wh.get("fits"))
+        res["stages"] = []
+        with open(path, "w") as f:
+            json.dump(res, f)
+        return res
     out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), root, os.path.join(cache, "stages")]
                          + params.split(), capture_output=True, text=True)
     if out.returncode != 0:
@@ -72,7 +90,6 @@ def measure(root, cache, params):
     res["slowest"] = slow["module"] if slow else None
     res["all_stages_fit"] = st["all_fit"]
     res["stages"] = st["stages"]
-    p = dict(kv.split("=", 1) for kv in params.split())
     if int(p.get("CORRECTION", 0)) == 0 and int(p.get("XCENTER", 0)) == 0 and int(p.get("FOURIER_K", 0)) == 0:
         serial_params = [f"{k}={v}" for k, v in p.items() if k in SERIAL_PARAMS]
         out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), "--whole", "acore_serial_top", root,

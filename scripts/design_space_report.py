@@ -75,7 +75,15 @@ def short(r):
         lab += f" k{p['K']}"
     if "ANGLE_W" in p:
         lab += f" a{p['ANGLE_W']}"
+    if p.get("FOLD", "1") != "1":
+        lab += f" /{p['FOLD']}"
     return ("serial " if r.get("engine") == "serial" else "") + lab
+
+
+def fold(r):
+    """Clocks per sample of the pipelined top (FOLD; 1 unless the point folds it)."""
+    m = re.search(r"FOLD=(\d+)", r.get("final_params", "") or r.get("params", ""))
+    return int(m.group(1)) if m else 1
 
 
 def pareto(points):
@@ -105,7 +113,8 @@ def main():
             if not st.get("fits"):
                 big[st["module"]] = max(big.get(st["module"], 0), st.get("lcs") or 0)
         r["unplaced"] = [f"{m} ({n} LCs)" for m, n in sorted(big.items())]
-        r["sps"] = r["fmax"] * 1e6 if r["fmax"] else None  # one sample per clock (pipelined top)
+        r["fold"] = fold(r)
+        r["sps"] = r["fmax"] * 1e6 / r["fold"] if r["fmax"] else None  # a sample every FOLD clocks
         r["rms"] = r["accuracy"][MAIN]["fixed"]["rms"]
         r["max"] = r["accuracy"][MAIN]["fixed"]["max_abs"]
         if h.get("serial"):
@@ -141,7 +150,8 @@ def main():
           f"samples, validation {grid['val_samples']} samples at other angles, noise-free scenarios). "
           "Accuracy: bit-accurate model (= RTL), error = estimate − reference, degrees. LUT4/DFF: Yosys "
           "`synth_ice40` of the whole `acore_top`; Fmax: slowest datapath stage placed and routed alone on an "
-          "iCE40 HX8K (`scripts/stage_fmax.py`); samples/s = Fmax (one sample per clock). Rows marked "
+          "iCE40 HX8K (`scripts/stage_fmax.py`), or for a folded top (FOLD > 1: a sample every FOLD clocks) the "
+          "whole top placed and routed; samples/s = Fmax / FOLD. Rows marked "
           "*serial*: the serial core (`rtl/acore_serial_top.v`, same parameters, bit-exact to the same model) "
           "placed and routed whole; samples/s = Fmax / CYCLES. "
           "P = on the Pareto front of RMS against words (w) or LUT4 (l).", ""]

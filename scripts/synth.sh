@@ -7,8 +7,10 @@
 # usage: scripts/synth.sh [-j N] [-d DESIGN[,DESIGN...]]
 #   -j N  runs N Yosys/nextpnr jobs in parallel (default 1)
 #   -d    only these designs (default all: top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr
-#         poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial serial_pnr fourier fourier_pnr); their old reports are replaced, the others kept,
-#         and the summary is rebuilt from every report present. Example: -d serial,serial_pnr
+#         poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial serial_pnr fourier fourier_pnr
+#         top_fold2 top_fold4 top_fold8 top_fold2_pnr top_fold4_pnr top_fold8_pnr); their old reports
+#         are replaced, the others kept, and the summary is rebuilt from every report present.
+#         Example: -d serial,serial_pnr
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=1
@@ -71,13 +73,21 @@ TOP[serial_pnr]=acore_serial_top_pinwrap; READ[serial_pnr]="$rtl_reads"$'\n'"rea
 # The Fourier correction with 21 harmonics (area), and 4 of them placed in a pin wrapper (Fmax).
 TOP[fourier]=acore_fourier_correct; READ[fourier]="$rtl_reads"$'\n'"chparam -set K 21 -set M 12 acore_fourier_correct"
 TOP[fourier_pnr]=acore_fourier_pinwrap; READ[fourier_pnr]="$stage_reads"
-for d in top cordic16 cordic16_bus serial fourier; do FLOWS[$d]="generic xilinx ice40"; done
-for d in top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr serial_pnr fourier_pnr; do
+# The top folded to FOLD = 2, 4, 8 clocks a sample (default configuration): area, and the whole top
+# placed and routed in the pin wrapper.
+for n in 2 4 8; do
+  TOP[top_fold$n]=acore_top;            READ[top_fold$n]="$rtl_reads"$'\n'"chparam -set FOLD $n acore_top"
+  TOP[top_fold${n}_pnr]=acore_top_pinwrap
+  READ[top_fold${n}_pnr]="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_top_pinwrap.v"$'\n'"chparam -set FOLD $n acore_top_pinwrap"
+done
+for d in top cordic16 cordic16_bus serial fourier top_fold2 top_fold4 top_fold8; do FLOWS[$d]="generic xilinx ice40"; done
+for d in top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr serial_pnr fourier_pnr \
+  top_fold2_pnr top_fold4_pnr top_fold8_pnr; do
   FLOWS[$d]="ice40 pnr"
 done
 FLOWS[cordic16]="generic xilinx ice40 pnr"
 all_designs=(top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial
-  serial_pnr fourier fourier_pnr)
+  serial_pnr fourier fourier_pnr top_fold2 top_fold4 top_fold8 top_fold2_pnr top_fold4_pnr top_fold8_pnr)
 designs=("${all_designs[@]}")
 if [ -n "$only" ]; then
   IFS=',' read -r -a designs <<<"$only"

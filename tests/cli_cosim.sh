@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# `anglecore cosim` and `estimate --engine rtl|rtl-serial` through the CLI: RTL (pipelined top and
-# serial core) vs model on a simulated recording (0 mismatches, JSON fields), stalls, FST trace,
-# RTL = fixed error statistics, bad input.
+# `anglecore cosim` and `estimate --engine rtl|rtl-serial` through the CLI: RTL (pipelined top, the
+# top folded to 2, 4 and 8 clocks a sample with --fold, serial core) vs model on a simulated
+# recording (0 mismatches, JSON fields), stalls, FST trace, RTL = fixed error statistics, bad input.
 # usage: cli_cosim.sh ANGLECORE SOURCE_DIR. Skips (exit 0 with a note) when built without the RTL.
 set -u
 bin=$1
@@ -54,6 +54,11 @@ check cosim-serial-stalls 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.h
 check cosim-serial-trace 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --trace "$tmp/wave_s.fst"
 [ -s "$tmp/wave_s.fst" ] || { echo "FAIL serial trace: no FST written"; fails=$((fails + 1)); }
 check est-serial 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine rtl-serial --json "$tmp/rs.json"
+# The same image on the folded builds (a register image does not depend on FOLD).
+for n in 2 4 8; do
+  check "cosim-fold$n" 0 "$bin" cosim --fold $n --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.3 --json "$tmp/cf$n.json"
+done
+check est-fold4 0 "$bin" estimate --engine rtl --fold 4 --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/rf4.json"
 /usr/bin/python3 - "$tmp" <<'PY' || { echo "FAIL json"; fails=$((fails + 1)); }
 import json, sys
 d = sys.argv[1]
@@ -61,8 +66,13 @@ for name, engine in (("cosim.json", "rtl"), ("cosim2.json", "rtl"), ("cs.json", 
     j = json.load(open(f"{d}/{name}"))
     assert j["samples"] == 5000 and j["mismatches"] == 0 and j["first_mismatch"] is None, j
     assert j["engine"] == engine, j
+for n in (2, 4, 8):
+    j = json.load(open(f"{d}/cf{n}.json"))
+    assert j["samples"] == 5000 and j["mismatches"] == 0 and j["fold"] == n and j["engine"] == "rtl", j
 r, f, rs = json.load(open(f"{d}/rtl.json")), json.load(open(f"{d}/fx.json")), json.load(open(f"{d}/rs.json"))
 assert r["error_deg"] == f["error_deg"], (r["error_deg"], f["error_deg"])
+rf4 = json.load(open(f"{d}/rf4.json"))
+assert rf4["error_deg"] == f["error_deg"] and rf4["fold"] == 4, (rf4, f["error_deg"])
 assert rs["error_deg"] == f["error_deg"] and rs["engine"] == "rtl-serial", (rs, f["error_deg"])
 PY
 # Bad input: missing file, an image of another configuration (the RTL is built for the defaults).
@@ -74,5 +84,10 @@ check other-config-serial 2 "$bin" cosim --engine rtl-serial --regs "$tmp/k12.he
 check est-other-config-serial 2 "$bin" estimate --engine rtl-serial --regs "$tmp/k12.hex" --in "$tmp/val.csv"
 check cosim-not-rtl 2 "$bin" cosim --engine fixed --regs "$tmp/regs.hex" --in "$tmp/val.csv"
 check cosim-bad-engine 2 "$bin" cosim --engine rtl-parallel --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+check cosim-bad-fold 2 "$bin" cosim --fold 3 --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+check cosim-fold-serial 2 "$bin" cosim --engine rtl-serial --fold 2 --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+check est-fold-fixed 2 "$bin" estimate --engine fixed --fold 2 --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+# No folded build of the 12-iteration configuration: the error names the available builds.
+check fold-other-config 2 "$bin" cosim --fold 2 --regs "$tmp/k12.hex" --in "$tmp/val.csv"
 [ "$fails" -eq 0 ] && echo "cli_cosim: all checks passed" || echo "cli_cosim: $fails failed"
 [ "$fails" -eq 0 ]

@@ -5,6 +5,7 @@
 #include "calibration.hpp"
 #include "cordic.hpp"
 #include "errors.hpp"
+#include "fixed_model.hpp"
 #include "paper_signals.hpp"
 #include "regimage.hpp"
 
@@ -51,6 +52,35 @@ TEST(RegImage, RoundTripKeepsWordsConfigAndScale) {
   // atan(2^0) = 45 deg = 1/8 turn of 2^Z_W, written with its human value.
   EXPECT_EQ(b.atan(0), int64_t{1} << (b.cfg.z_w - 3));
   EXPECT_NE(text.find("atan(2^-0) = 45.000000 deg"), std::string::npos);
+}
+
+// FOLD (clocks per sample of rtl/acore_top.v) is an RTL parameter of the schedule, not of the
+// arithmetic: the image does not record it, the model ignores it, and validate() rejects what the
+// RTL does not fold (as acore_top's elaboration checks do).
+TEST(RegImage, FoldIsTheRtlScheduleNotPartOfTheImage) {
+  const DatapathConfig four = DatapathConfig{}.with_rtl_params("FOLD=4");
+  EXPECT_EQ(four.fold, 4);
+  EXPECT_NO_THROW(four.validate());
+  EXPECT_EQ(DatapathConfig{}.describe().find("fold"), std::string::npos);
+  const std::string d = four.describe();
+  EXPECT_EQ(d.substr(d.size() - 7), " fold=4");
+  for (const char* bad : {"FOLD=3", "FOLD=16", "FOLD=0", "FOLD=2 CORRECTION=1", "FOLD=8 FOURIER_K=4"})
+    EXPECT_THROW(DatapathConfig{}.with_rtl_params(bad).validate(), InputError) << bad;
+  EXPECT_NO_THROW(DatapathConfig{}.with_rtl_params("FOLD=8 CORRECTION=2").validate());
+
+  RegImage img = paper_image();
+  RegImage folded = img;
+  folded.cfg.fold = 8;
+  const std::string text = format_regimage(folded);
+  EXPECT_EQ(text, format_regimage(img));
+  const RegImage back = parse_regimage(text, "x");
+  EXPECT_EQ(back.cfg.fold, 1);
+  EXPECT_EQ(back.words, img.words);
+  const FixedModel m1(img), m8(folded);
+  for (int k = 0; k < 200; ++k) {
+    const int32_t a = (k * 7919) % 20000 - 10000, b = (k * 104729) % 20000 - 10000;
+    EXPECT_TRUE(m1.step({a, b, -a / 3, b / 5}) == m8.step({a, b, -a / 3, b / 5}));
+  }
 }
 
 TEST(RegImage, DequantizeInvertsQuantizeWithinOneLsb) {

@@ -24,6 +24,7 @@ struct CosimArgs {
   std::string regs, in, json, trace, engine = "rtl";
   double backpressure = 0.0;
   uint64_t seed = 1;
+  int fold = 1;  // --engine rtl: the build with this FOLD (clocks per sample)
 };
 
 nlohmann::json sample_json(const FixedSample& s) {
@@ -36,6 +37,7 @@ void run_cosim(const CosimArgs& a) {
   const Engine engine = parse_engine(a.engine);
   if (engine != Engine::Rtl && engine != Engine::RtlSerial)
     throw InputError("--engine: '" + a.engine + "' is not an RTL engine (rtl, rtl-serial)");
+  if (a.fold != 1 && engine != Engine::Rtl) throw InputError("--fold applies to --engine rtl only");
   const RegImage img = read_regimage(a.regs);
   const Recording rec = read_recording(a.in);
   // c1 = sin, c2 = cos, c3 = c4 = 0 for two-channel recordings (FixedModel::to_code per value).
@@ -45,6 +47,7 @@ void run_cosim(const CosimArgs& a) {
   opt.seed = a.seed;
   opt.backpressure = a.backpressure;
   opt.gaps = a.backpressure;
+  opt.fold = a.fold;
   const std::vector<FixedSample> rtl =
       engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
   const FixedModel model(img);
@@ -59,10 +62,11 @@ void run_cosim(const CosimArgs& a) {
   const nlohmann::json j = {{"samples", codes.size()},
                             {"mismatches", bad},
                             {"first_mismatch", first},
-                            {"engine", engine_name(engine)}};
+                            {"engine", engine_name(engine)}, {"fold", a.fold}};
   std::cout << fmt::format(
       "cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", codes.size(), bad,
-      engine == Engine::Rtl ? "RTL" : "serial RTL",
+      engine == Engine::Rtl ? (a.fold > 1 ? fmt::format("RTL folded to {} clocks a sample", a.fold) : "RTL")
+                            : "serial RTL",
       a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
   if (!a.trace.empty()) std::cout << "waveform: " << a.trace << "\n";
   write_json(a.json, j);
@@ -79,6 +83,10 @@ void add_cosim(CLI::App& app) {
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->add_option("--engine", args->engine,
                 "rtl (pipelined top, default) | rtl-serial (serial core, rtl/acore_serial_top.v)");
+  c->add_option("--fold", args->fold,
+                "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
+                "register image does not depend on it; default 1)")
+      ->check(CLI::IsMember({1, 2, 4, 8}));
   c->add_option("--trace", args->trace, "Write an FST waveform of the RTL run");
   c->add_option("--backpressure", args->backpressure,
                 "Probability of a stalled output and of an input gap per clock (default 0)")

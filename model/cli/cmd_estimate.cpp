@@ -23,6 +23,7 @@ namespace {
 struct EstimateArgs {
   std::string regs, in, engine = "fixed", out, json;
   int p = 0;
+  int fold = 1;  // --engine rtl: the build with this FOLD (clocks per sample)
 };
 
 void write_angles(const std::string& path, const Recording& rec, const AngleSeries& s,
@@ -41,6 +42,7 @@ void write_angles(const std::string& path, const Recording& rec, const AngleSeri
 
 void run_estimate(const EstimateArgs& a) {
   const Engine engine = parse_engine(a.engine);
+  if (a.fold != 1 && engine != Engine::Rtl) throw InputError("--fold applies to --engine rtl only");
   const RegImage img = read_regimage(a.regs);
   const Recording rec = read_recording(a.in);
   AngleSeries s;
@@ -52,8 +54,9 @@ void run_estimate(const EstimateArgs& a) {
 #ifdef ACORE_WITH_RTL
     {
       const auto codes = to_codes(rec, img.in_scale, img.cfg.in_w);
-      const auto rows = engine == Engine::Rtl ? run_rtl(img, codes, RtlRunOptions{})
-                                              : run_rtl_serial(img, codes, RtlRunOptions{});
+      RtlRunOptions opt;
+      opt.fold = a.fold;
+      const auto rows = engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
       s = series_from_fixed(rows, img.cfg);
       // The RTL has no uncorrected output: take it from the bit-accurate model (same front end).
       s.uncorrected = run_fixed(rec, img).uncorrected;
@@ -65,6 +68,7 @@ void run_estimate(const EstimateArgs& a) {
 #endif
   }
   nlohmann::json j = {{"engine", engine_name(engine)}, {"samples", rec.size()}};
+  if (engine == Engine::Rtl) j["fold"] = a.fold;
   std::vector<double> err;
   if (rec.has_theta()) {
     const int p = a.p ? a.p : recording_periodicity(rec, a.in);
@@ -96,6 +100,10 @@ void add_estimate(CLI::App& app) {
   c->add_option("--in", args->in, "Recording to estimate (CSV)")->required();
   c->add_option("--engine", args->engine,
                 "float | fixed | rtl (pipelined top) | rtl-serial (serial core) (default fixed)");
+  c->add_option("--fold", args->fold,
+                "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
+                "register image does not depend on it; default 1)")
+      ->check(CLI::IsMember({1, 2, 4, 8}));
   c->add_option("--out", args->out, "Write per-sample angles (CSV)");
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
