@@ -13,7 +13,8 @@
 //   0       d13, d24 (held until the next sample); c13 item into the scaler
 //   H       c24 item into the scaler
 //   SL      s13 out (held);   H + SL: s24 out -> region select (2 clocks)
-//   R = H + SL + 2: region, x, s13, s24 (held); c13 item into the Horner chain; R + H: c24
+//   R = H + SL + 2: region, x (held for c24); c13 item into the Horner chain; R + H: c24 (each
+//           item's curve goes from the scaler to the chain's subtraction through a delay line)
 //   R + PL  y13 out (held);   C = R + H + PL: y24 out -> CORDIC
 //   C + CL  angle, magnitude, and the region and overflow of the sample beside them (valid_o)
 // A sample is a valid bit that travels with it (valid_o); nothing stalls: the top's credit counter
@@ -69,21 +70,23 @@ module acore_fold_datapath #(
   // Derived, do not override: the register file's read ports and the block RAM budget (iCE40
   // SB_RAM40_4K, 256 x 16; an HX8K has 32). Fixed: the Horner chain's PP ports (a_n, then one per
   // step), the scaler's 2 (offset, reciprocal), the host read-back copy (BPW blocks each) and the
-  // output FIFO. At FOLD = 2, where logic cells rather than LUTs are the limit, the Horner chain's
-  // and the region's delay lines go to block RAM (RAM_DELAY) if they fit, then as many CORDIC units
-  // as fit read their two arctangent words from a port of their own instead of 36 flops; from
-  // FOLD = 4 on every unit does (a port is cheaper than its N:1 choice of word), and must fit.
+  // output FIFO. Then, while they fit, in this order (flops saved per block): the curves' and the
+  // region's delay lines (S_RAM), the Horner steps' argument lines (U_RAM), and for as many CORDIC
+  // units as fit a port of their own for the arctangent words (AT_UNITS; the other units take
+  // their words from flops, with an N:1 choice that shares the negation's LUT at N = 2 only).
   localparam integer H = FOLD >> 1;
   localparam integer U = (K + FOLD - 1) >> $clog2(FOLD);
   localparam integer PP = (CORRECTION == 2) ? 0 : DEGREE + 1;
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
   localparam integer BLOCKS = FIFO_B + fd_cmul(PP + 3, BPW);
-  localparam integer DELAY_B = fd_cmul(DEGREE, (S_W + ADDR_W > 16) ? 2 : 1) + 1;  // u, s, region lines
-  localparam integer RAM_DELAY = (FOLD == 2 && CORRECTION != 2 && BLOCKS + DELAY_B <= 32) ? 1 : 0;
-  localparam integer FREE_B = 32 - BLOCKS - ((RAM_DELAY != 0) ? DELAY_B : 0);
+  localparam integer SR_B = ((CORRECTION == 2) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
+  localparam integer U_B = fd_cmul(DEGREE - 1, (S_W + ADDR_W > 16) ? 2 : 1);  // argument lines
+  localparam integer S_RAM = (BLOCKS + SR_B <= 32) ? 1 : 0;
+  localparam integer U_RAM = (S_RAM != 0 && CORRECTION != 2 && BLOCKS + SR_B + U_B <= 32) ? 1 : 0;
+  localparam integer FREE_B = 32 - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
-  localparam integer AT_UNITS = (FOLD >= 4 || AT_FIT >= U) ? U : AT_FIT;
+  localparam integer AT_UNITS = (AT_FIT >= U) ? U : AT_FIT;
   localparam integer PORTS = PP + 2 + AT_UNITS;
   localparam integer PA_W = fd_cmul(PORTS, ADDR_W);
   localparam integer PD_W = fd_cmul(PORTS, REG_W);
@@ -235,9 +238,9 @@ module acore_fold_datapath #(
       wire pc_second = v_q[R + H];
       wire unused_s = ^{s13_r, s24_r};  // the curves reach the correction from the scaler
       // Each item's curve, straight from the scaler to the clock the polynomial's value is ready
-      // (PL - 3 clocks after the item's start; block RAM with RAM_DELAY).
+      // (PL - 3 clocks after the item's start; block RAM with S_RAM).
       wire [S_W-1:0] s_pc;
-      if (RAM_DELAY != 0) begin : g_sram
+      if (S_RAM != 0) begin : g_sram
         acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
       end else begin : g_sflop
@@ -248,7 +251,7 @@ module acore_fold_datapath #(
       wire ovf_pc;
       acore_fold_poly #(
         .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
-        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(RAM_DELAY)
+        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(U_RAM)
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
         .s_i(s_pc),
@@ -302,10 +305,10 @@ module acore_fold_datapath #(
     end
   endgenerate
 
-  // ---- sideband: region from the region select (in block RAM with RAM_DELAY), overflow from the
+  // ---- sideband: region from the region select (in block RAM with S_RAM), overflow from the
   // CORDIC's input ----
   generate
-    if (RAM_DELAY != 0) begin : g_rg_ram
+    if (S_RAM != 0) begin : g_rg_ram
       acore_ram_delay #(.W(RG_W), .DEPTH(C + CL - R)) u_d_region (
         .clk_i(clk_i), .rst_i(rst_i), .d_i(region), .q_o(region_o));
     end else begin : g_rg_flop

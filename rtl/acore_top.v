@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit).
+// acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit), or
+// with FOLD = 2, 4, 8 one sample every FOLD clocks on folded hardware (acore_fold_datapath.v).
 //
 //   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> angle, flags
 //                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k
@@ -20,6 +21,12 @@
 //   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !(out_valid_o && !out_ready_i)
 //   c1..c4_i    | A | B | C | D | E |
 //   out_valid_o  ... LATENCY clocks later: | A | B | C | ...
+//
+// FOLD > 1: nothing stalls. in_ready_o (a register, low in reset) is high when FOLD clocks have
+// passed since the last sample taken and fewer samples are in flight or waiting than the output
+// FIFO holds (256, block RAM); a taken sample is computed and written into the FIFO, which feeds
+// the output port (one sample a clock while out_ready_i is high). LATENCY is then the accepting
+// edge to out_valid_o with the FIFO empty; CYCLES = FOLD clocks per sample at full rate.
 //
 // Only the valid flops are reset (rst_i synchronous, active high); data flops are not, and every
 // output is forced to zero while out_valid_o is low, so no unknown ever leaves the core.
