@@ -61,10 +61,13 @@ void DatapathConfig::validate() const {
                    reg_w + 2));
   need(angle_w >= 8 && angle_w <= 24, fmt::format("angle_w={} must be 8..24", angle_w));
   need(fourier_k >= 0 && fourier_k <= 31, fmt::format("fourier_k={} must be 0..31", fourier_k));
-  need(fold == 1 || fold == 2 || fold == 4 || fold == 8, fmt::format("fold={} must be 1, 2, 4 or 8", fold));
-  need(fold == 1 || correction != kPoly2d, fmt::format("fold={}: the poly2d correction is not folded", fold));
-  need(fold == 1 || fourier_k == 0,
-       fmt::format("fold={}: the Fourier correction (fourier_k={}) is not folded", fold, fourier_k));
+  need(fold == 1 || fold == 2 || fold == 4 || fold == 8,
+       fmt::format("fold={} must be 1, 2, 4 or 8", fold));
+  need(fold == 1 || correction != kPoly2d,
+       fmt::format("fold={}: the poly2d correction is not folded", fold));
+  need(
+      fold == 1 || fourier_k == 0,
+      fmt::format("fold={}: the Fourier correction (fourier_k={}) is not folded", fold, fourier_k));
   if (fourier_k == 0) return;
   need(fourier_iterations >= 4 && fourier_iterations <= iterations,
        fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
@@ -106,7 +109,8 @@ std::string DatapathConfig::describe() const {
   const std::string folded = fold != 1 ? fmt::format(" fold={}", fold) : "";
   return fmt::format(
       "correction={} in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} "
-      "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}{}{}",
+      "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} "
+      "angle_w={}{}{}",
       correction_name(correction), in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions,
       xcenter, coef_f, acc_guard, acc_int, iterations, cordic_guard, z_w, angle_w, fourier, folded);
 }

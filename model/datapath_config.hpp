@@ -53,8 +53,9 @@ struct DatapathConfig {
                                  // register word's upper bits must repeat its sign); a_0 uses REG_W
   int fourier_guard = 2;         // FOURIER_G: guard fraction bits of the rotation x/y registers
   // --- RTL schedule (not the arithmetic: the model and the register image do not depend on it) ---
-  int fold = 1;  // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock),
-                 // 2, 4 or 8 (folded: the hardware reused FOLD times per sample; poly and none only)
+  // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock), 2, 4 or 8
+  // (folded: the hardware reused FOLD times per sample; poly and none corrections only).
+  int fold = 1;
 
   // Derived, do not set.
   int d_w() const { return in_w + 1; }              // D_W: c1 - c3

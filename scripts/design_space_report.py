@@ -115,6 +115,8 @@ def main():
         r["unplaced"] = [f"{m} ({n} LCs)" for m, n in sorted(big.items())]
         r["fold"] = fold(r)
         r["sps"] = r["fmax"] * 1e6 / r["fold"] if r["fmax"] else None  # a sample every FOLD clocks
+        if h.get("whole") and not h["whole"].get("fits"):
+            r["nofit"] = h["whole"].get("lcs")  # the folded top placed whole did not fit an HX8K
         r["rms"] = r["accuracy"][MAIN]["fixed"]["rms"]
         r["max"] = r["accuracy"][MAIN]["fixed"]["max_abs"]
         if h.get("serial"):
@@ -175,6 +177,8 @@ def main():
             line += f" {a['rms']:.4f} | {a['max_abs']:.3f} |"
         p = ("w" if rid(r) in front_words else "") + ("l" if rid(r) in front_lut else "")
         fm = (f"{r['fmax']:.1f}" + ("†" if r.get("unplaced") else "")) if r["fmax"] else "-"
+        if r.get("nofit"):
+            fm = f"no fit ({r['nofit']} LCs)"
         sps = f"{r['sps'] / 1e6:.1f}" if r["sps"] else "-"
         line += (f" {r['accuracy'][MAIN]['float']['rms']:.4f} | {r['lut4'] or '-'} | {r['dff'] or '-'} | {fm} | {sps} |"
                  f" {p} |")

@@ -119,15 +119,19 @@ size_t full_rate(const RtlBuild& build, const RegImage& img, const std::vector<C
     const bool gap_ok = i == 0 || taken[i] - taken[i - 1] == static_cast<uint64_t>(build.cycles);
     const bool lat_ok = i < out.size() && out[i] - taken[i] == static_cast<uint64_t>(build.latency);
     if (!gap_ok || !lat_ok) {
-      if (!bad) std::printf("full rate: sample %zu taken at clock %llu, out at %llu (CYCLES %d, LATENCY %d)\n", i,
-                            static_cast<unsigned long long>(taken[i]),
-                            static_cast<unsigned long long>(i < out.size() ? out[i] : 0), build.cycles, build.latency);
+      if (!bad)
+        std::printf(
+            "full rate: sample %zu taken at clock %llu, out at %llu (CYCLES %d, LATENCY %d)\n", i,
+            static_cast<unsigned long long>(taken[i]),
+            static_cast<unsigned long long>(i < out.size() ? out[i] : 0), build.cycles,
+            build.latency);
       ++bad;
     }
   }
   const cosim::Comparison c = cosim::compare(rtl, FixedModel(img), in);
-  std::printf("%-28s %8zu samples, %zu timing violations, %zu mismatches (a sample every %d clocks)\n", "full rate",
-              in.size(), bad, c.mismatches, build.cycles);
+  std::printf(
+      "%-28s %8zu samples, %zu timing violations, %zu mismatches (a sample every %d clocks)\n",
+      "full rate", in.size(), bad, c.mismatches, build.cycles);
   return bad + c.mismatches;
 }
 
@@ -160,8 +164,8 @@ size_t long_stall(const RtlBuild& build, const RegImage& img, const std::vector<
   }
   const cosim::Comparison c = cosim::compare(rtl, FixedModel(img), in);
   if (c.mismatches) std::printf("long stall: %s\n", c.first.c_str());
-  std::printf("%-28s %8zu samples, %zu mismatches%s\n", "long output stalls", in.size(), c.mismatches,
-              bad ? ", in_ready high in reset" : "");
+  std::printf("%-28s %8zu samples, %zu mismatches%s\n", "long output stalls", in.size(),
+              c.mismatches, bad ? ", in_ready high in reset" : "");
   return bad + c.mismatches;
 }
 
@@ -169,8 +173,8 @@ int run(const std::string& name, size_t samples) {
   const RtlBuild& build = rtl_build_named(name);
   const DatapathConfig cfg = build.config();
   cfg.validate();
-  std::printf("configuration %s: %s (%d words, LATENCY %d, CYCLES %d)\n", name.c_str(), cfg.describe().c_str(),
-              cfg.words(), build.latency, build.cycles);
+  std::printf("configuration %s: %s (%d words, LATENCY %d, CYCLES %d)\n", name.c_str(),
+              cfg.describe().c_str(), cfg.words(), build.latency, build.cycles);
   size_t bad = 0;
   const RegImage paper = paper_image(cfg);
   const int lat = measured_latency(cfg, paper);

@@ -24,8 +24,8 @@ struct RtlRunOptions {
   double gaps = 0.0;          // probability that in_valid is low in a clock (an input gap)
   std::string trace;          // FST waveform file; empty = no tracing (no overhead)
   std::optional<StatusWindow> window;  // mag_lo/mag_hi; default StatusWindow::defaults(cfg)
-  // The build's FOLD (clocks per sample): 0 = the image's configuration (cfg.fold, 1 for every image
-  // read from a file: a register image does not depend on FOLD); 1, 2, 4, 8 = that build.
+  // The build's FOLD (clocks per sample): 0 = the image's configuration (cfg.fold, 1 for every
+  // image read from a file: a register image does not depend on FOLD); 1, 2, 4, 8 = that build.
   int fold = 0;
 };
 

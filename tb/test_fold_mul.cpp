@@ -2,10 +2,11 @@
 // The folded shift-add multiplier (rtl/acore_fold_mul.v) alone, against the contract's
 // fx::shift_add_mul (model/fixed_point.hpp, every partial product floored on its own) plus the
 // addend, in the four parameter sets Verilated by tb/CMakeLists.txt: the Horner step folded over 2
-// and over 4 clocks (signed b), the scaler's product over 4 clocks (unsigned b), and a product whose
-// right shift exceeds b's width (operand register loaded with a floored copy of a). Products start
-// every F clocks or with random gaps, with random, extreme and zero operands; each result must
-// appear exactly LATENCY clocks after its start (the module's formula), from a random initial state.
+// and over 4 clocks (signed b), the scaler's product over 4 clocks (unsigned b), and a product
+// whose right shift exceeds b's width (operand register loaded with a floored copy of a). Products
+// start every F clocks or with random gaps, with random, extreme and zero operands; each result
+// must appear exactly LATENCY clocks after its start (the module's formula), from a random initial
+// state.
 #include <gtest/gtest.h>
 #include <verilated.h>
 
@@ -41,10 +42,14 @@ int64_t random_value(std::mt19937_64& rng, int w, bool is_signed) {
   const int64_t lo = is_signed ? -(int64_t{1} << (w - 1)) : 0;
   const int64_t hi = is_signed ? (int64_t{1} << (w - 1)) - 1 : (int64_t{1} << w) - 1;
   switch (r & 7) {
-    case 0: return lo;
-    case 1: return hi;
-    case 2: return 0;
-    default: return lo + static_cast<int64_t>((r >> 3) % static_cast<uint64_t>(hi - lo + 1));
+    case 0:
+      return lo;
+    case 1:
+      return hi;
+    case 2:
+      return 0;
+    default:
+      return lo + static_cast<int64_t>((r >> 3) % static_cast<uint64_t>(hi - lo + 1));
   }
 }
 
@@ -87,11 +92,12 @@ void run(const MulParams& p, uint64_t seed, bool gaps) {
     if (!pending.empty() && pending.front().start + static_cast<uint64_t>(p.latency()) == t) {
       const Item it = pending.front();
       pending.pop_front();
-      const int64_t want = fx::shift_add_mul(it.a, it.b, p.b_w, p.b_signed != 0, p.rshift) + it.init;
+      const int64_t want =
+          fx::shift_add_mul(it.a, it.b, p.b_w, p.b_signed != 0, p.rshift) + it.init;
       const int64_t got = fx::sext(top->p_o, p.p_w);
       if (got != want && bad++ < 5)
-        ADD_FAILURE() << "a=" << it.a << " b=" << it.b << " init=" << it.init << ": rtl " << got << ", contract "
-                      << want;
+        ADD_FAILURE() << "a=" << it.a << " b=" << it.b << " init=" << it.init << ": rtl " << got
+                      << ", contract " << want;
       ++checked;
     }
     top->clk_i = 1;

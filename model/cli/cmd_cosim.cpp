@@ -62,11 +62,13 @@ void run_cosim(const CosimArgs& a) {
   const nlohmann::json j = {{"samples", codes.size()},
                             {"mismatches", bad},
                             {"first_mismatch", first},
-                            {"engine", engine_name(engine)}, {"fold", a.fold}};
+                            {"engine", engine_name(engine)},
+                            {"fold", a.fold}};
   std::cout << fmt::format(
       "cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", codes.size(), bad,
-      engine == Engine::Rtl ? (a.fold > 1 ? fmt::format("RTL folded to {} clocks a sample", a.fold) : "RTL")
-                            : "serial RTL",
+      engine == Engine::Rtl
+          ? (a.fold > 1 ? fmt::format("RTL folded to {} clocks a sample", a.fold) : "RTL")
+          : "serial RTL",
       a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
   if (!a.trace.empty()) std::cout << "waveform: " << a.trace << "\n";
   write_json(a.json, j);
@@ -83,9 +85,10 @@ void add_cosim(CLI::App& app) {
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->add_option("--engine", args->engine,
                 "rtl (pipelined top, default) | rtl-serial (serial core, rtl/acore_serial_top.v)");
-  c->add_option("--fold", args->fold,
-                "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
-                "register image does not depend on it; default 1)")
+  c->add_option(
+       "--fold", args->fold,
+       "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
+       "register image does not depend on it; default 1)")
       ->check(CLI::IsMember({1, 2, 4, 8}));
   c->add_option("--trace", args->trace, "Write an FST waveform of the RTL run");
   c->add_option("--backpressure", args->backpressure,

@@ -56,7 +56,8 @@ void run_estimate(const EstimateArgs& a) {
       const auto codes = to_codes(rec, img.in_scale, img.cfg.in_w);
       RtlRunOptions opt;
       opt.fold = a.fold;
-      const auto rows = engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
+      const auto rows =
+          engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
       s = series_from_fixed(rows, img.cfg);
       // The RTL has no uncorrected output: take it from the bit-accurate model (same front end).
       s.uncorrected = run_fixed(rec, img).uncorrected;
@@ -100,9 +101,10 @@ void add_estimate(CLI::App& app) {
   c->add_option("--in", args->in, "Recording to estimate (CSV)")->required();
   c->add_option("--engine", args->engine,
                 "float | fixed | rtl (pipelined top) | rtl-serial (serial core) (default fixed)");
-  c->add_option("--fold", args->fold,
-                "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
-                "register image does not depend on it; default 1)")
+  c->add_option(
+       "--fold", args->fold,
+       "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
+       "register image does not depend on it; default 1)")
       ->check(CLI::IsMember({1, 2, 4, 8}));
   c->add_option("--out", args->out, "Write per-sample angles (CSV)");
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
