@@ -2,7 +2,8 @@
 // acore_serial_top: the AngleCore estimator on one adder, one shifter, an accumulator and two
 // temporary registers (the paper's "simplest hardware platform"), bit for bit the chain of
 // rtl/acore_top.v and model/fixed_model.cpp (pre-filter, scaling, domain selection, Horner
-// correction, CORDIC, status flags), one sample every CYCLES clocks.
+// correction, CORDIC, status flags, with ZERO = 1 the zero position subtracted), one sample every
+// CYCLES clocks.
 //
 //   pins c1, mag_lo/hi, Q, T1, T2 --> A_q ----------------------------+
 //   pins c3, Q, T1, T2, ACC --> shifter --> B_q --> gate/negate --> ADDER --> saturate --> ACC
@@ -64,11 +65,14 @@ module acore_serial_top #(
   parameter integer CORDIC_G = 3,
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
+  // 1: one more register word (the last) holding the zero position z, angle_o = angle - z (mod a
+  // turn), one more operation a sample; 0: none (the paper's map).
+  parameter integer ZERO = 0,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K,
+  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K + ((ZERO != 0) ? 1 : 0),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
 ) (
@@ -139,7 +143,8 @@ module acore_serial_top #(
   // Clocks per sample (between two accepts at full rate) and from the accepting clock to
   // out_valid_o (see the schedule in acore_serial_ctrl.v). The testbench reads both
   // (rtl/verilator.vlt).
-  localparam integer CYCLES = 22 + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 2) + st_cmul(3, K);
+  localparam integer CYCLES = 22 + ((ZERO != 0) ? 1 : 0) + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 2) +
+                              st_cmul(3, K);
   localparam integer LATENCY = CYCLES + 1;
 
   initial begin
@@ -156,7 +161,9 @@ module acore_serial_top #(
     if (CORDIC_G < 0 || CORDIC_G > 8) $error("acore_serial_top: CORDIC_G=%0d must be 0..8 (instance %m)", CORDIC_G);
     if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_serial_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
     if (ANGLE_W < 8 || ANGLE_W > 24) $error("acore_serial_top: ANGLE_W=%0d must be 8..24 (instance %m)", ANGLE_W);
-    if (WORDS != 4 + NCOEF + K || ADDR_W != $clog2(WORDS) || MAG_W != S_W + 2 || RG_W != $clog2(REGIONS))
+    if (ZERO != 0 && (ZERO != 1 || ANGLE_W > REG_W))
+      $error("acore_serial_top: ZERO=%0d must be 0, or 1 with ANGLE_W <= REG_W (instance %m)", ZERO);
+    if (WORDS != 4 + NCOEF + K + ((ZERO != 0) ? 1 : 0) || ADDR_W != $clog2(WORDS) || MAG_W != S_W + 2 || RG_W != $clog2(REGIONS))
       $error("acore_serial_top: derived parameters overridden (instance %m)");
   end
 
@@ -174,9 +181,9 @@ module acore_serial_top #(
   wire [DA_W-1:0] raddr, waddr;
   wire [RG_W-1:0] region;
   acore_serial_ctrl #(
-    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .WORDS(WORDS),
-    .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W), .RS(RS), .SG(SCALE_G), .RN(RN), .DROP(DROP), .ACC_G(ACC_G),
-    .G(CORDIC_G)
+    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .ZERO(ZERO),
+    .WORDS(WORDS), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W), .RS(RS), .SG(SCALE_G), .RN(RN), .DROP(DROP),
+    .ACC_G(ACC_G), .G(CORDIC_G)
   ) u_ctrl (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),
     .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .host_we_i(reg_we_i),

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 // acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit).
 //
-//   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> angle, flags
-//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k
+//   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> [- zero] -> angle, flags
+//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k   ^ ZERO word
 //
 // The Fourier correction (acore_fourier_correct.v) is generated only when FOURIER_K > 0; with
 // FOURIER_K = 0 (the default) the top is the chain without it, word for word and clock for clock.
+// ZERO = 1 adds one register word after all others, the zero position z (its low ANGLE_W bits),
+// and one subtractor in the output register: angle_o = (angle - z) mod 2^ANGLE_W, the angle in the
+// reference frame of the calibration (README "Zero offset"); no extra clock.
 //
 // The correction stage is chosen by CORRECTION: 0 = acore_poly_correct (1-D in x, the paper's),
 // 1 = acore_poly2d_correct (2-D in x and the other curve), 2 = none (the scaled curves go straight
@@ -64,6 +67,9 @@ module acore_top #(
   parameter integer FOURIER_CF = 22,
   parameter integer FOURIER_W = 16,
   parameter integer FOURIER_G = 2,
+  // 1: one more register word (the last) holding the zero position, subtracted from the output
+  // angle; 0: none (the paper's map).
+  parameter integer ZERO = 0,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
@@ -72,9 +78,9 @@ module acore_top #(
   parameter integer TERMS = (CORRECTION == 2) ? 0 :
                             (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1,
   // 4 + 2 REGIONS TERMS + K (REGIONS is a power of two, so the product is a shift), plus
-  // 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0.
+  // 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0, plus the ZERO word.
   parameter integer WORDS = 4 + (TERMS << ($clog2(REGIONS) + 1)) + K +
-                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0),
+                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) + ((ZERO != 0) ? 1 : 0),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
 ) (
@@ -134,6 +140,7 @@ module acore_top #(
                                CORDIC_LATENCY + FOURIER_LATENCY + OUT_LATENCY;
   localparam integer NCOEF = top_cmul(REGIONS << 1, TERMS);
   localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
+  localparam integer NZERO = (ZERO != 0) ? 1 : 0;
 
   initial begin
     if (IN_W < 8 || IN_W > 24) $error("acore_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
@@ -153,8 +160,10 @@ module acore_top #(
     if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 || FOURIER_W < 8 ||
                           FOURIER_W > REG_W || FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
       $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, 8 <= FOURIER_W <= REG_W, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
+    if (ZERO != 0 && (ZERO != 1 || ANGLE_W > REG_W))
+      $error("acore_top: ZERO=%0d must be 0, or 1 with ANGLE_W <= REG_W (instance %m)", ZERO);
     if (TERMS != ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1) ||
-        WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
+        WORDS != 4 + NCOEF + K + NFOURIER + NZERO || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
   end
 
   // ---- handshake: one enable for the whole pipeline ----
@@ -288,13 +297,27 @@ module acore_top #(
   acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY + FOURIER_LATENCY)) u_d_pcovf (
     .clk_i(clk_i), .en_i(en), .d_i(pc_ovf13 | pc_ovf24), .q_o(pc_ovf_d));
 
-  // ---- output register: status window compare ----
+  // ---- zero position (ZERO): the last word's low ANGLE_W bits, else 0 ----
+  wire [ANGLE_W-1:0] zero_pos;
+  generate
+    if (ZERO != 0) begin : g_zero
+      localparam integer OFF_ZERO = top_cmul(WORDS - 1, REG_W);
+      wire [REG_W-1:0] zero_word = words[OFF_ZERO +: REG_W];
+      // The word's upper bits are not part of the zero position (named unused_* for lint).
+      wire unused_zero_hi = ^{1'b0, zero_word[REG_W-1:ANGLE_W-1]};
+      assign zero_pos = zero_word[ANGLE_W-1:0];
+    end else begin : g_no_zero
+      assign zero_pos = {ANGLE_W{1'b0}};
+    end
+  endgenerate
+
+  // ---- output register: angle - zero position (modulo a turn), status window compare ----
   reg [ANGLE_W-1:0] angle_q;
   reg [RG_W-1:0] region_q;
   reg ovf_q, los_q, dos_q;
   always @(posedge clk_i) begin
     if (en) begin
-      angle_q  <= angle_c;
+      angle_q  <= angle_c - zero_pos;
       region_q <= region_d;
       ovf_q    <= sc_ovf_d | pc_ovf_d;
       los_q    <= mag_c < mag_lo_i;

@@ -56,6 +56,8 @@ RegImage random_image(std::mt19937_64& rng, bool random_atan) {
   }
   if (random_atan)
     for (int i = 0; i < img.cfg.iterations; ++i) img.words[img.cfg.addr_atan(i)] = rng() & mask;
+  // The ZERO word: any REG_W bits (only the low ANGLE_W count).
+  if (img.cfg.zero_word) img.words[img.cfg.addr_zero()] = rng() & mask;
   return img;
 }
 
@@ -66,12 +68,17 @@ using cosim::random_codes;
 TEST(CosimSerial, CyclesIsTheNamedLocalparam) {
   // The schedule of rtl/acore_serial_ctrl.v, counted state by state: 22 single clocks, the two
   // scaling products (REG_W each), the two Horner evaluations (DEGREE steps of S_W bits, an add and
-  // a wait), the CORDIC (Y, X, Z per iteration). The result comes one clock after the core is idle.
+  // a wait), the CORDIC (Y, X, Z per iteration), with the ZERO word the rounding before the
+  // subtraction. The result comes one clock after the core is idle.
   const DatapathConfig& c = cfg();
-  const int expected = 22 + 2 * c.reg_w + 2 * c.degree * (c.s_w + 2) + 3 * c.iterations;
+  const int expected =
+      22 + c.zero_word + 2 * c.reg_w + 2 * c.degree * (c.s_w + 2) + 3 * c.iterations;
   EXPECT_EQ(RtlSerialHarness::cycles_per_sample(), expected);
   EXPECT_EQ(RtlSerialHarness::latency(), expected + 1);
   if (c.describe() == DatapathConfig{}.describe()) EXPECT_EQ(expected, 226);
+  DatapathConfig with_zero;
+  with_zero.zero_word = 1;
+  if (c.describe() == with_zero.describe()) EXPECT_EQ(expected, 227);
   // Measured: accept one sample, count clocks until in_ready and out_valid rise.
   RtlSerialHarness h;
   h.reset();
