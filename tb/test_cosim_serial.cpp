@@ -252,8 +252,11 @@ TEST(CosimSerial, HostPortWhileComputing) {
 TEST(CosimSerial, ResetHoldsInReadyLowAndIgnoresHostWrites) {
   // rst_i high: in_ready_o low from the first clock (random power-up state), a sample offered in
   // reset is not taken (no output follows), a host write in reset changes no word.
-  RtlSerialHarness fresh("", 2, 41);
-  EXPECT_TRUE(host_port::in_ready_low_at_power_up_reset(fresh));
+  {
+    // (One Verilated model alive at a time: Verilator 5.006 deadlocks destroying the second.)
+    RtlSerialHarness fresh("", 2, 41);
+    EXPECT_TRUE(host_port::in_ready_low_at_power_up_reset(fresh));
+  }
   RtlSerialHarness h("", 2, 42);
   const RegImage img = host_port::distinct_image(identity_image());
   const host_port::ResetBehaviour r = host_port::reset_behaviour(h, img, 8);

@@ -47,7 +47,7 @@ TEST(DatapathConfig, EachRuleOnItsEdgeAndOnePast) {
       {"REGIONS=8", "REGIONS=6"},
       {"XCENTER=1 REGIONS=8", "XCENTER=1"},
       {"XCENTER=1 REGIONS=8 CORRECTION=2", "XCENTER=2 REGIONS=8"},
-      {"S_F=3 S_W=5", "S_F=2 S_W=5"},
+      {"S_F=3 S_W=5 K=9", "S_F=2 S_W=5 K=9"},
       {"COEF_F=17", "COEF_F=18"},
       {"COEF_F=12 ACC_G=4 ACC_I=7", "COEF_F=12 ACC_G=3 ACC_I=7"},
       {"ACC_G=0 COEF_F=17", "ACC_G=-1 COEF_F=17"},
