@@ -52,10 +52,15 @@ void DatapathConfig::validate() const {
   need(s_f >= kVShift + 1, fmt::format("s_f={} must be >= {}", s_f, kVShift + 1));
   need(coef_f >= 1 && coef_f < reg_w, fmt::format("coef_f={} must be 1..reg_w-1", coef_f));
   need(acc_f() >= s_f, fmt::format("coef_f+acc_guard={} must be >= s_f={}", acc_f(), s_f));
+  // A coefficient is shifted left by acc_guard into the accumulator (a << acc_guard).
+  need(acc_guard >= 0, fmt::format("acc_guard={} must be >= 0", acc_guard));
   need(acc_int >= reg_w - coef_f + 1, fmt::format("acc_int={} too small for the coefficients", acc_int));
   need(acc_w() <= 40, fmt::format("acc_w={} must be <= 40", acc_w()));
   need(iterations >= 4 && iterations <= 24, fmt::format("iterations={} must be 4..24", iterations));
   need(cordic_guard >= 0 && cordic_guard <= 8, fmt::format("cordic_guard={} must be 0..8", cordic_guard));
+  // Stage i shifts X and Y right by i: the RTL's CORDIC trims its widths for i < xy_w.
+  need(iterations < xy_w(),
+       fmt::format("iterations={} must be < xy_w={} (s_w+2+cordic_guard)", iterations, xy_w()));
   need(z_w >= angle_w && z_w <= reg_w + 2,
        fmt::format("z_w={} must be angle_w={}..reg_w+2={} (atan(1) must fit a word)", z_w, angle_w,
                    reg_w + 2));

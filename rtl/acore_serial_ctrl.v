@@ -93,7 +93,7 @@ module acore_serial_ctrl #(
   output wire              in_ready_o,
   output wire              out_valid_o,
   input  wire              out_ready_i,
-  // The host writes the register file this clock (it owns the RAM write port).
+  // The RAM writes the host's registered word this clock (it owns the RAM write port).
   input  wire              host_we_i,
   // From the datapath: region of the sample.
   input  wire [RG_W-1:0]   region_i,
@@ -170,14 +170,24 @@ module acore_serial_ctrl #(
   localparam integer J_W = (DEGREE > 1) ? $clog2(DEGREE) : 1;
   localparam integer NCOEF = sc_cmul(REGIONS << 1, DEGREE + 1);
 
-  initial begin
-    if (BI_W > CNT_W) $error("acore_serial_ctrl: BI_W=%0d wider than the counter (instance %m)", BI_W);
-    if (WORDS != 4 + NCOEF + K + ((ZERO != 0) ? 1 : 0) || DA_W != $clog2(WORDS + 3))
-      $error("acore_serial_ctrl: WORDS/DA_W are derived (instance %m)");
-    if (LS + RS < REG_W - 1 || LS + S_F < S_W - 1 + ACC_G || LS < ACC_G || LS < G)
-      $error("acore_serial_ctrl: LS=%0d too small (instance %m)", LS);
-    if (K < 2) $error("acore_serial_ctrl: K=%0d must be >= 2 (instance %m)", K);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(BI_W <= CNT_W), .VALUE(BI_W),
+    .MSG("illegal parameter: acore_serial_ctrl: BI_W must be <= the counter's width"))
+    BI_W_must_fit_the_counter ();
+  acore_check #(.OK(WORDS == 4 + NCOEF + K + ((ZERO != 0) ? 1 : 0)), .VALUE(WORDS),
+    .MSG("illegal parameter: acore_serial_ctrl: WORDS is derived (4 + 2 REGIONS (DEGREE+1) + K + ZERO word), do not override"))
+    WORDS_is_derived ();
+  acore_check #(.OK(DA_W == $clog2(WORDS + 3)), .VALUE(DA_W),
+    .MSG("illegal parameter: acore_serial_ctrl: DA_W is derived (clog2(WORDS+3)), do not override"))
+    DA_W_is_derived ();
+  acore_check #(
+    .OK(LS + RS >= REG_W - 1 && LS + S_F >= S_W - 1 + ACC_G && LS >= ACC_G && LS >= G),
+    .VALUE(LS),
+    .MSG("illegal parameter: acore_serial_ctrl: LS too small for the left shifts"))
+    LS_must_cover_every_left_shift ();
+  acore_check #(.OK(K >= 2), .VALUE(K),
+    .MSG("illegal parameter: acore_serial_ctrl: K must be >= 2"))
+    K_must_be_at_least_2 ();
 
   // Addresses (register map of README / model/datapath_config.hpp) and the scratch words.
   localparam integer ATAN0_I = 4 + NCOEF;
@@ -256,9 +266,10 @@ module acore_serial_ctrl #(
   wire out_block = out_we_o & out_valid_q & ~out_ready_i;
   wire wr_block = ram_we_o & host_we_i;
   wire en = ~(out_block | wr_block);
-  wire accept = idle & en & in_valid_i;
+  // Nothing is taken while rst_i is high (in_ready_o low in reset, as in acore_top).
+  wire accept = idle & en & in_valid_i & ~rst_i;
   assign en_o = en;
-  assign in_ready_o = idle & en;
+  assign in_ready_o = idle & en & ~rst_i;
   assign out_valid_o = out_valid_q;
   assign dp_read_o = ~idle;
   assign bit_idx_o = cnt_q[BI_W-1:0];

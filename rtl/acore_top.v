@@ -17,10 +17,11 @@
 // Streaming: a sample is taken when in_valid_i && in_ready_o and comes out LATENCY accepted-or-
 // advancing clocks later on out_valid_o. The pipeline stalls as a whole when the output is held
 // (out_valid_o && !out_ready_i), so in_ready_o = !stall and throughput is one sample per clock
-// while out_ready_i is high; bubbles travel through with their valid bit low.
+// while out_ready_i is high; bubbles travel through with their valid bit low. in_ready_o is low
+// while rst_i is high (a sample offered in reset is not taken).
 //
 //   clk        _|~|_|~|_|~|_|~|_|~|_|~|_
-//   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !(out_valid_o && !out_ready_i)
+//   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !rst_i && !(out_valid_o && !out_ready_i)
 //   c1..c4_i    | A | B | C | D | E |
 //   out_valid_o  ... LATENCY clocks later: | A | B | C | ...
 //
@@ -86,7 +87,8 @@ module acore_top #(
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
-  // Register file host port (synchronous write; read-back two clocks after the address).
+  // Register file host port: a write taken at a clock edge lands at the next one (ignored while
+  // rst_i is high); reg_rdata_o is the word at reg_addr_i of two clocks before (0 past the last).
   input  wire [ADDR_W-1:0]  reg_addr_i,
   input  wire [REG_W-1:0]   reg_wdata_i,
   input  wire               reg_we_i,
@@ -140,37 +142,44 @@ module acore_top #(
                                CORDIC_LATENCY + FOURIER_LATENCY + OUT_LATENCY;
   localparam integer NCOEF = top_cmul(REGIONS << 1, TERMS);
   localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
-  localparam integer NZERO = (ZERO != 0) ? 1 : 0;
 
-  initial begin
-    if (IN_W < 8 || IN_W > 24) $error("acore_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
-    if (REG_W < D_W + 1 || REG_W > 30) $error("acore_top: REG_W=%0d must be IN_W+2..30 (instance %m)", REG_W);
-    if (S_W < S_F + 2 || S_W > 30) $error("acore_top: S_W=%0d must be S_F+2..30 (instance %m)", S_W);
-    if (REGIONS != 4 && REGIONS != 8) $error("acore_top: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
-    if (DEGREE < 1 || DEGREE > 7) $error("acore_top: DEGREE=%0d must be 1..7 (instance %m)", DEGREE);
-    if (CORRECTION < 0 || CORRECTION > 2) $error("acore_top: CORRECTION=%0d must be 0..2 (instance %m)", CORRECTION);
-    if (CORRECTION == 1 && DEGREE > 3) $error("acore_top: poly2d DEGREE=%0d must be 1..3 (instance %m)", DEGREE);
-    if (XCENTER != 0 && (XCENTER != 1 || REGIONS != 8 || CORRECTION == 2))
-      $error("acore_top: XCENTER=%0d must be 0, or 1 with 8 regions and a polynomial (instance %m)", XCENTER);
-    if (K < 4 || K > 24) $error("acore_top: K=%0d must be 4..24 (instance %m)", K);
-    if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
-    if (FOURIER_K < 0 || FOURIER_K > 31) $error("acore_top: FOURIER_K=%0d must be 0..31 (instance %m)", FOURIER_K);
-    if (FOURIER_K > 0 && (FOURIER_M < 4 || FOURIER_M > K))
-      $error("acore_top: FOURIER_M=%0d must be 4..K (instance %m)", FOURIER_M);
-    if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 || FOURIER_W < 8 ||
-                          FOURIER_W > REG_W || FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
-      $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, 8 <= FOURIER_W <= REG_W, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
-    if (ZERO != 0 && (ZERO != 1 || ANGLE_W > REG_W))
-      $error("acore_top: ZERO=%0d must be 0, or 1 with ANGLE_W <= REG_W (instance %m)", ZERO);
-    if (TERMS != ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1) ||
-        WORDS != 4 + NCOEF + K + NFOURIER + NZERO || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
-  end
+  // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v), and the derived
+  // parameters. An illegal configuration stops elaboration in Verilator, Icarus and Yosys.
+  acore_config_check #(
+    .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
+    .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
+    .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
+    .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
+    .FOURIER_G(FOURIER_G), .ZERO(ZERO)
+  ) u_config ();
+  acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
+    .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
+    RG_W_is_derived ();
+  // (The same expressions as the defaults: only an override differs.)
+  acore_check #(
+    .OK(TERMS == ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ?
+                  ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1)),
+    .VALUE(TERMS),
+    .MSG("illegal parameter: TERMS is derived (coefficients per region and curve), do not override"))
+    TERMS_is_derived ();
+  acore_check #(
+    .OK(WORDS == 4 + (TERMS << ($clog2(REGIONS) + 1)) + K + ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) +
+              ((ZERO != 0) ? 1 : 0)),
+    .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS is derived (4 + 2 REGIONS TERMS + K + Fourier words + ZERO word), do not override"))
+    WORDS_is_derived ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+    .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
+    MAG_W_is_derived ();
 
   // ---- handshake: one enable for the whole pipeline ----
   reg  [LATENCY-1:0] vld_q;
   wire stall = vld_q[LATENCY-1] & ~out_ready_i;
   wire en = ~stall;
-  assign in_ready_o = en;
+  assign in_ready_o = en & ~rst_i;
   always @(posedge clk_i) begin
     if (rst_i) vld_q <= {LATENCY{1'b0}};
     else if (en) vld_q <= {vld_q[LATENCY-2:0], in_valid_i};

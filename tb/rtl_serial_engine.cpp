@@ -166,6 +166,8 @@ void RtlSerialHarness::load(const RegImage& img) {
 
 uint64_t RtlSerialHarness::read_reg(int addr) {
   drive_host(addr, false, 0);
+  // Two clocks, as the pipelined top: the RAM's output register, then the read-back register.
+  tick();
   tick();
   return impl_->top->reg_rdata_o;
 }

@@ -50,9 +50,10 @@ class RtlSerialHarness {
   // Writes every word through the register port (one word per clock), then reads all back and
   // throws CheckFailed on a read-back difference. Call while the core is idle.
   void load(const RegImage& img);
-  // One word through the host read port: address, one clock, reg_rdata_o.
+  // One word through the host read port: address, two clocks, reg_rdata_o (while the core is idle).
   uint64_t read_reg(int addr);
-  // One word through the host write port (one clock), whatever the core is doing.
+  // One word through the host write port (one clock; the word lands at the next edge), whatever
+  // the core is doing.
   void write_reg(int addr, uint64_t value);
   // Drives the host port pins (address, write enable, data) without a clock.
   void drive_host(int addr, bool we, uint64_t wdata);
