@@ -14,6 +14,8 @@ namespace acore {
 namespace {
 
 constexpr size_t kMinSamples = 256;
+// The largest share of gap^2 a named explanation may leave as a slow change in time (gap.hpp).
+constexpr double kSlowShareMax = 0.02;
 
 int meta_periodicity(const Recording& r) {
   const auto it = r.meta.find("p");
@@ -43,7 +45,7 @@ void check_recording(const Recording& r, const std::string& what) {
                                  "at least one full turn is needed", what, covered));
 }
 
-// Amplitude of the gap's mechanical orders 1..max by least squares (non-uniform angles allowed).
+// Amplitude of the gap's mechanical orders 0..max by least squares (non-uniform angles allowed).
 std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::vector<double>& g, int max_order) {
   const size_t n = r.size();
   Eigen::MatrixXd X(n, 2 * max_order + 1);
@@ -56,7 +58,7 @@ std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::ve
   }
   const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(n));
   const Eigen::VectorXd b = X.colPivHouseholderQr().solve(y);
-  std::vector<std::pair<int, double>> out;
+  std::vector<std::pair<int, double>> out = {{0, std::fabs(b(0))}};
   for (int k = 1; k <= max_order; ++k) out.push_back({k, std::hypot(b(2 * k - 1), b(2 * k))});
   return out;
 }
@@ -65,6 +67,11 @@ std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::ve
 // angle-error orders n +- p; offsets give p, amplitude/phase mismatch 2p).
 std::vector<std::string> causes_of(int k, int p) {
   std::vector<std::string> c;
+  if (k == 0) {
+    c.push_back("zero_offset (a constant angle shift)");
+    c.push_back("common_delay or hysteresis (at one speed, in one direction)");
+    return c;
+  }
   if (k == p) c.push_back("offset (signal order 0)");
   if (k == 2 * p) c.push_back("amplitude or phase mismatch (signal order p)");
   if (k == 1 && p != 1) c.push_back("eccentricity (mechanical order 1)");
@@ -72,6 +79,25 @@ std::vector<std::string> causes_of(int k, int p) {
   for (int n : {k - p, k + p})
     if (n >= 2) c.push_back(fmt::format("signal harmonic of order {}", n));
   return c;
+}
+
+// `general` contains `special` as a case (equal gains are an amplitude, equal sampling times a
+// common delay): when the special one is named, the general one explaining as much is no ambiguity.
+bool generalizes(const std::string& general, const std::string& special) {
+  return (general == "gain_mismatch" && special == "amplitude") ||
+         (general == "channel_skew" && special == "common_delay");
+}
+
+// Order among effects the recording cannot tell apart at all (identical columns, e.g. a constant
+// shift, a delay and hysteresis at one constant speed): fewer parameters first, then the constant
+// shift, then the vocabulary's order.
+int tie_rank(const RankedEffect& r) {
+  const auto& names = fittable_effects();
+  const int order =
+      r.cand.effect == "zero_offset"
+          ? -1
+          : static_cast<int>(std::find(names.begin(), names.end(), r.cand.effect) - names.begin());
+  return 100 * r.cand.k + order;
 }
 
 }  // namespace
@@ -148,6 +174,19 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     if (measured(a) != measured(b)) return measured(a);
     return a.cand.delta_bic < b.cand.delta_bic;
   });
+  if (!d.ranking.empty()) {
+    const double b0 = d.ranking.front().cand.delta_bic;
+    size_t pick = 0;
+    for (size_t k = 1; k < d.ranking.size(); ++k) {
+      const RankedEffect& r = d.ranking[k];
+      const bool tie = r.cand.rejected.empty() == d.ranking.front().cand.rejected.empty() &&
+                       measured(r) == measured(d.ranking.front()) &&
+                       std::fabs(r.cand.delta_bic - b0) <= 1e-6 * std::fabs(b0) + 1e-6;
+      if (tie && tie_rank(r) < tie_rank(d.ranking[pick])) pick = k;
+    }
+    std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(pick),
+                d.ranking.begin() + static_cast<std::ptrdiff_t>(pick) + 1);
+  }
 
   // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
   // Is there a gap at all? The systematic part must stand out of what noise leaves in the projection
@@ -172,35 +211,49 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
       const RankedEffect& r = d.ranking[k];
       // A lattice settles quantization against excess noise (see the ranking above).
       const bool settled = top->cand.effect == "quantization" && r.cand.effect == "excess_noise";
-      if (!settled && r.cand.rejected.empty() && r.explained >= opt.explained_min &&
-          r.cand.delta_bic < top->cand.delta_bic + 10)
+      if (!settled && !generalizes(r.cand.effect, top->cand.effect) && r.cand.rejected.empty() &&
+          r.explained >= opt.explained_min && r.cand.delta_bic < top->cand.delta_bic + 10)
         d.ambiguous_with.push_back(r.cand.effect);
     }
 
-  // A second effect when the first leaves a clear remainder.
+  // More effects when the first leaves a clear remainder (forward selection): each step fits every
+  // other effect on top of those chosen and keeps the one that explains the most of the gap, if it
+  // explains at least 10 % more of gap^2 with dBIC < -10 on top of them; at most max_combined
+  // effects. The set is named when it reaches explained_min.
   if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
       top->cand.delta_bic < -10) {
-    double extra1 = 0;
-    const Recording base1 = predict_effect(fp, fp.predicted, top->cand, &extra1);
-    double best_expl = top->explained;
-    for (const std::string& e : fittable_effects()) {
-      if (e == top->cand.effect) continue;
-      RankedEffect r;
-      r.cand = fit_effect(fp, base1, e, extra1);
-      if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
-      const StageSeries after = evaluate(base1, r.cand, real, m, fp, extra1);
-      const double expl = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
-      if (expl > best_expl + 0.1) {
-        best_expl = expl;
+    std::vector<RankedEffect> chosen = {*top};
+    double extra = 0;
+    Recording base = predict_effect(fp, fp.predicted, top->cand, &extra);
+    double best_expl = top->explained, best_after = top->after_deg;
+    while (static_cast<int>(chosen.size()) < opt.max_combined && best_expl < opt.explained_min) {
+      std::optional<RankedEffect> pick;
+      for (const std::string& e : fittable_effects()) {
+        if (std::any_of(chosen.begin(), chosen.end(),
+                        [&](const RankedEffect& c) { return c.cand.effect == e; }))
+          continue;
+        RankedEffect r;
+        r.cand = fit_effect(fp, base, e, extra);
+        if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
+        const StageSeries after = evaluate(base, r.cand, real, m, fp, extra);
         r.after_deg = after.gap_deg;
-        r.explained = expl;
-        d.combination = {*top, r};
-        d.combination_after_deg = after.gap_deg;
-        d.combination_explained = expl;
+        r.explained = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
+        if (r.explained > best_expl + 0.1 && (!pick || r.explained > pick->explained)) pick = r;
       }
+      if (!pick) break;
+      double e = 0;
+      base = predict_effect(fp, base, pick->cand, &e);
+      extra = std::hypot(extra, e);
+      best_expl = pick->explained;
+      best_after = pick->after_deg;
+      chosen.push_back(*pick);
     }
-    if (!d.combination.empty() && d.verdict == "unexplained" && d.combination_explained >= opt.explained_min)
-      d.verdict = "explained";
+    if (chosen.size() > 1) {
+      d.combination = chosen;
+      d.combination_after_deg = best_after;
+      d.combination_explained = best_expl;
+      if (d.verdict == "unexplained" && best_expl >= opt.explained_min) d.verdict = "explained";
+    }
   }
 
   // How far it shrinks: the chosen effect(s) added to the simulation, on real and holdout.
@@ -218,6 +271,20 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     return compare(gm, *f.real, pred, extra, &f.basis);
   };
   d.after = apply_chosen(fp, m);
+  // Every effect of the vocabulary is a function of angle, speed, direction and temperature: an
+  // explanation that leaves a slow change in time (gap.hpp: a slip of the magnet, a dropout) has
+  // not found the cause, however much of gap^2 it explains.
+  const double slow_share = before2 > 0 ? d.after.slow_deg * d.after.slow_deg / before2 : 0.0;
+  if (d.verdict == "explained" && slow_share > kSlowShareMax) {
+    d.note = fmt::format(
+        "the gap changes in time in a way no effect of the vocabulary does: after the best "
+        "explanation "
+        "{:.1f} % of gap^2 is left as a slow change over time (at most {:.0f} % allowed)",
+        100 * slow_share, 100 * kSlowShareMax);
+    d.verdict = "unexplained";
+    d.ambiguous_with.clear();
+    d.after = apply_chosen(fp, m);
+  }
   if (holdout) {
     const FitProblem fh = make_fit_problem(m, *holdout);
     d.hold_before = compare(m, *holdout, fh.predicted, 0, &fh.basis);
@@ -236,8 +303,10 @@ nlohmann::json Diagnosis::to_json() const {
   json j;
   j["verdict"] = verdict;
   j["periodicity"] = periodicity;
-  j["gap"] = {{"before_deg", before.gap_deg}, {"after_deg", after.gap_deg}, {"noise_deg", before.noise_deg},
-              {"raw_rms_before_deg", before.raw_rms_deg}};
+  j["gap"] = {{"before_deg", before.gap_deg},       {"after_deg", after.gap_deg},
+              {"noise_deg", before.noise_deg},      {"raw_rms_before_deg", before.raw_rms_deg},
+              {"slow_before_deg", before.slow_deg}, {"slow_after_deg", after.slow_deg}};
+  if (!note.empty()) j["note"] = note;
   if (hold_before)
     j["holdout"] = {{"before_deg", hold_before->gap_deg}, {"after_deg", hold_after->gap_deg}};
   else
@@ -269,7 +338,9 @@ nlohmann::json Diagnosis::to_json() const {
   j["ambiguous_with"] = ambiguous_with;
   if (!combination.empty()) {
     json c = json::array();
-    for (const auto& r : combination) c.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}});
+    for (const auto& r : combination)
+      c.push_back(
+          {{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained}});
     j["combination"] = {{"effects", c}, {"explained", combination_explained}, {"after_deg", combination_after_deg}};
   }
   return j;
