@@ -6,7 +6,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
+#include "effects.hpp"
 #include "errors.hpp"
 
 namespace acore {
@@ -100,7 +103,92 @@ int tie_rank(const RankedEffect& r) {
   return 100 * r.cand.k + order;
 }
 
+// The order in which a set of effects is applied to a prediction, as simulate() does: angle shifts,
+// then eccentricity (a shift and a scaling), then amplitude (it scales what came before), then the
+// signal-domain effects in the order they were chosen.
+int apply_rank(const std::string& e) {
+  if (e == "eccentricity") return 1;
+  if (e == "amplitude") return 2;
+  return is_field_effect(e) ? 0 : 3;
+}
+
+// The model's prediction with a set of effects (all but `skip`) added in apply order; the white
+// noise they add per channel in *extra.
+Recording predict_set(const FitProblem& f, const std::vector<RankedEffect>& set, double* extra,
+                      size_t skip = SIZE_MAX) {
+  std::vector<size_t> order;
+  for (size_t k = 0; k < set.size(); ++k)
+    if (k != skip) order.push_back(k);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return apply_rank(set[a].cand.effect) < apply_rank(set[b].cand.effect);
+  });
+  Recording pred = f.predicted;
+  *extra = 0;
+  for (size_t k : order) {
+    double e = 0;
+    pred = predict_effect(f, pred, set[k].cand, &e);
+    *extra = std::hypot(*extra, e);
+  }
+  return pred;
+}
+
+// The factor the field scalings of a set (all but `skip`) that are applied after `effect` put on
+// the angle change it causes, per sample (empty: none).
+std::vector<double> later_field_scale(const FitProblem& f, const std::vector<RankedEffect>& set,
+                                      const std::string& effect, size_t skip = SIZE_MAX) {
+  std::vector<double> s;
+  for (size_t k = 0; k < set.size(); ++k) {
+    const EffectCandidate& c = set[k].cand;
+    if (k == skip || apply_rank(c.effect) <= apply_rank(effect)) continue;
+    if (c.effect != "amplitude" && c.effect != "eccentricity") continue;
+    if (s.empty()) s.assign(f.real->size(), 1.0);
+    for (size_t i = 0; i < s.size(); ++i)
+      s[i] *= c.effect == "amplitude"
+                  ? c.param("scale")
+                  : 1 + c.param("am_depth") * std::cos(f.real->theta_ref[i] - c.param("am_phase_rad"));
+  }
+  return s;
+}
+
+// Fits `effect` on top of the other effects of a set (all but `skip`), as it will act in the set.
+EffectCandidate fit_in_set(const FitProblem& f, const std::vector<RankedEffect>& set,
+                           const std::string& effect, size_t skip = SIZE_MAX) {
+  double extra = 0;
+  const Recording base = predict_set(f, set, &extra, skip);
+  const std::vector<double> scale = later_field_scale(f, set, effect, skip);
+  return fit_effect(f, base, effect, extra, scale.empty() ? nullptr : &scale);
+}
+
+// Backfitting: each effect of the set refitted on top of the others, twice, so the parameters are
+// those of the set together rather than of the order in which the effects were found.
+void refit_set(const FitProblem& f, std::vector<RankedEffect>& set) {
+  if (set.size() < 2) return;
+  for (int round = 0; round < 2; ++round)
+    for (size_t k = 0; k < set.size(); ++k) {
+      const EffectCandidate c = fit_in_set(f, set, set[k].cand.effect, k);
+      if (c.applicable && c.rejected.empty()) set[k].cand = c;
+    }
+}
+
+// The special case a general effect reduces to (empty: none).
+std::string special_case(const std::string& general) {
+  if (general == "gain_mismatch") return "amplitude";
+  if (general == "channel_skew") return "common_delay";
+  return "";
+}
+
 }  // namespace
+
+std::vector<std::string> Diagnosis::named() const {
+  std::vector<std::string> n;
+  if (verdict != "explained") return n;
+  if (!combination.empty()) {
+    for (const auto& r : combination) n.push_back(r.cand.effect);
+  } else if (!ranking.empty()) {
+    n.push_back(ranking.front().cand.effect);
+  }
+  return n;
+}
 
 Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording* holdout, const DiagnoseOptions& opt) {
   check_recording(sim, "--sim");
@@ -216,43 +304,84 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         d.ambiguous_with.push_back(r.cand.effect);
     }
 
-  // More effects when the first leaves a clear remainder (forward selection): each step fits every
-  // other effect on top of those chosen and keeps the one that explains the most of the gap, if it
-  // explains at least 10 % more of gap^2 with dBIC < -10 on top of them; at most max_combined
-  // effects. The set is named when it reaches explained_min.
+  // More effects when the first leaves a clear remainder (forward selection, at most max_combined):
+  // each step fits every other effect on top of those chosen and keeps the one that explains the
+  // most of the gap, if its dBIC on top of them is < -10 and it explains at least 10 % more of gap^2,
+  // or at least 2 % more and half of what is left; the set is then refitted together (backfitting). A
+  // general effect in the set is replaced by its special case when the set's BIC prefers it. The
+  // set is named when it reaches explained_min.
   if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
       top->cand.delta_bic < -10) {
+    const double nsig = static_cast<double>(real.size()) * (real.channels == 4 ? 4 : 2);
+    struct SetScore {
+      double explained, after_deg, bic;
+    };
+    auto score = [&](const std::vector<RankedEffect>& set) {
+      double extra = 0;
+      const Recording pred = predict_set(fp, set, &extra);
+      const StageSeries after = compare(m, real, pred, extra, &fp.basis);
+      int k = 0;
+      for (const auto& r : set) k += r.cand.k;
+      return SetScore{before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0,
+                      after.gap_deg, neg2_log_likelihood(fp, pred, extra) + k * std::log(nsig)};
+    };
+    auto in_set = [](const std::vector<RankedEffect>& set, const std::string& e) {
+      return std::any_of(set.begin(), set.end(), [&](const RankedEffect& c) {
+        return c.cand.effect == e || generalizes(c.cand.effect, e) || generalizes(e, c.cand.effect);
+      });
+    };
     std::vector<RankedEffect> chosen = {*top};
-    double extra = 0;
-    Recording base = predict_effect(fp, fp.predicted, top->cand, &extra);
-    double best_expl = top->explained, best_after = top->after_deg;
-    while (static_cast<int>(chosen.size()) < opt.max_combined && best_expl < opt.explained_min) {
+    SetScore cur{top->explained, top->after_deg, 0};
+    while (static_cast<int>(chosen.size()) < opt.max_combined) {
+      // The chosen set's prediction, once per step; each candidate is fitted and tried on top of it
+      // (with the set's later field scalings on its angle change, as it will act in the set).
+      double extra = 0;
+      const Recording base = predict_set(fp, chosen, &extra);
       std::optional<RankedEffect> pick;
       for (const std::string& e : fittable_effects()) {
-        if (std::any_of(chosen.begin(), chosen.end(),
-                        [&](const RankedEffect& c) { return c.cand.effect == e; }))
-          continue;
+        if (in_set(chosen, e)) continue;
+        const std::vector<double> scale = later_field_scale(fp, chosen, e);
+        const std::vector<double>* sp = scale.empty() ? nullptr : &scale;
         RankedEffect r;
-        r.cand = fit_effect(fp, base, e, extra);
+        r.cand = fit_effect(fp, base, e, extra, sp);
         if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
-        const StageSeries after = evaluate(base, r.cand, real, m, fp, extra);
-        r.after_deg = after.gap_deg;
-        r.explained = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
-        if (r.explained > best_expl + 0.1 && (!pick || r.explained > pick->explained)) pick = r;
+        double e2 = 0;
+        const Recording pred = predict_effect(fp, base, r.cand, &e2, sp);
+        const StageSeries after = compare(m, real, pred, std::hypot(extra, e2), &fp.basis);
+        const SetScore t{before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0, after.gap_deg, 0};
+        r.explained = t.explained;
+        r.after_deg = t.after_deg;
+        const double gain = t.explained - cur.explained;
+        const bool enough = gain >= 0.1 || (gain >= 0.02 && 1 - t.explained <= 0.5 * (1 - cur.explained));
+        if (enough && (!pick || r.explained > pick->explained)) pick = r;
       }
       if (!pick) break;
-      double e = 0;
-      base = predict_effect(fp, base, pick->cand, &e);
-      extra = std::hypot(extra, e);
-      best_expl = pick->explained;
-      best_after = pick->after_deg;
       chosen.push_back(*pick);
+      refit_set(fp, chosen);
+      cur = score(chosen);
     }
     if (chosen.size() > 1) {
+      cur = score(chosen);
+      for (size_t k = 0; k < chosen.size(); ++k) {
+        const std::string simple = special_case(chosen[k].cand.effect);
+        if (simple.empty()) continue;
+        std::vector<RankedEffect> alt = chosen;
+        alt[k].cand = fit_in_set(fp, alt, simple, k);
+        if (!alt[k].cand.applicable) continue;
+        refit_set(fp, alt);
+        const SetScore a = score(alt);
+        if (a.bic < cur.bic) chosen = alt, cur = a;
+      }
+      // Each effect's explained and after_deg: those of the set up to it.
+      for (size_t k = 0; k < chosen.size(); ++k) {
+        const SetScore p = score(std::vector<RankedEffect>(chosen.begin(), chosen.begin() + k + 1));
+        chosen[k].explained = p.explained;
+        chosen[k].after_deg = p.after_deg;
+      }
       d.combination = chosen;
-      d.combination_after_deg = best_after;
-      d.combination_explained = best_expl;
-      if (d.verdict == "unexplained" && best_expl >= opt.explained_min) d.verdict = "explained";
+      d.combination_after_deg = cur.after_deg;
+      d.combination_explained = cur.explained;
+      if (d.verdict == "unexplained" && cur.explained >= opt.explained_min) d.verdict = "explained";
     }
   }
 
@@ -260,14 +389,8 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   auto apply_chosen = [&](const FitProblem& f, const GapModel& gm) {
     double extra = 0;
     Recording pred = f.predicted;
-    if (d.verdict == "explained") {
-      const std::vector<RankedEffect> chosen = d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination;
-      for (const auto& r : chosen) {
-        double e = 0;
-        pred = predict_effect(f, pred, r.cand, &e);
-        extra = std::hypot(extra, e);
-      }
-    }
+    if (d.verdict == "explained")
+      pred = predict_set(f, d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination, &extra);
     return compare(gm, *f.real, pred, extra, &f.basis);
   };
   d.after = apply_chosen(fp, m);
@@ -336,6 +459,7 @@ nlohmann::json Diagnosis::to_json() const {
   }
   j["ranking"] = rank;
   j["ambiguous_with"] = ambiguous_with;
+  j["named"] = named();
   if (!combination.empty()) {
     json c = json::array();
     for (const auto& r : combination)

@@ -46,8 +46,9 @@ struct Diagnosis {
   std::string domain;
   std::vector<GapHarmonic> harmonics;
   std::vector<RankedEffect> ranking;  // best first, by information criterion
-  // The effects chosen one after the other (forward selection) when the best single effect leaves a
-  // clear remainder; explained and after_deg of each are those of the set up to it.
+  // The effects chosen one after the other (forward selection, then refitted together) when the best
+  // single effect leaves a clear remainder; explained and after_deg of each are those of the set up
+  // to it.
   std::vector<RankedEffect> combination;
   double combination_after_deg = 0, combination_explained = 0;
   // Other effects the recording cannot tell from the named one: they explain as much and their
@@ -57,6 +58,9 @@ struct Diagnosis {
   // reversal to separate them.
   std::vector<std::string> ambiguous_with;
   int periodicity = 1;
+  // The named effects: the combination when one was named, else the best single effect; empty
+  // unless the verdict is "explained".
+  std::vector<std::string> named() const;
   nlohmann::json to_json() const;  // DESIGN 3.3 fields and more
 };
 

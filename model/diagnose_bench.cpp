@@ -430,8 +430,8 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   const Diagnosis d = diagnose(rec.sim, rec.real, &rec.holdout);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.verdict = d.verdict;
-  r.top1 =
-      d.verdict == "explained" && !d.ranking.empty() ? d.ranking.front().cand.effect : d.verdict;
+  // The named effect: the best single one, or the first of a named combination.
+  r.top1 = d.verdict == "explained" && !d.named().empty() ? d.named().front() : d.verdict;
   r.correct = r.top1 == expected_top1(c.truth);
   if (c.truth == "none") r.confident_wrong = d.verdict == "explained";
   if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
@@ -445,7 +445,8 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   r.hold_before = d.hold_before->gap_deg;
   r.hold_after = d.hold_after->gap_deg;
   r.shrink = r.hold_before > 0 ? 1.0 - r.hold_after / r.hold_before : 0.0;
-  if (r.correct && !c.effect.effect.empty()) r.params = score(c, d.ranking.front().cand);
+  if (r.correct && !c.effect.effect.empty())
+    r.params = score(c, d.combination.empty() ? d.ranking.front().cand : d.combination.front().cand);
   return r;
 }
 

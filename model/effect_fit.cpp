@@ -78,6 +78,9 @@ std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function
 // Index of a channel around the circle (its 90-degree position): c1..c4 -> 0..3; sin, cos -> 0, 1.
 int position(int c) { return c; }
 
+// The factor on the field (later field scalings of a set, see fit_effect), 1 without one.
+double scale_at(const std::vector<double>* scale, size_t i) { return scale ? (*scale)[i] : 1.0; }
+
 // The field part of a prediction: the channel less the model's electrical offset (its constant
 // Fourier term), which field changes (amplitude, eccentricity) do not scale.
 double field_part(const FitProblem& fp, const Recording& pred, int c, size_t i) {
@@ -194,14 +197,15 @@ Fitted fit_gain(const FitProblem& fp, const Recording& base) {
 // Angle-shift effects: channel c sees theta + delta_c(i) with delta linear in the parameters.
 // basis[p](c, i) is d delta_c(i) / d phi_p; the fit is linearized (predict_effect is exact).
 Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
-                       const std::vector<std::function<double(int, size_t)>>& basis) {
+                       const std::vector<std::function<double(int, size_t)>>& basis,
+                       const std::vector<double>* scale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols;
   for (const auto& b : basis) {
     Column col(r.channels);
     for (int c = 0; c < r.channels; ++c) {
       col[c].resize(r.size());
-      for (size_t i = 0; i < r.size(); ++i) col[c][i] = fp.deriv[c][i] * b(c, i);
+      for (size_t i = 0; i < r.size(); ++i) col[c][i] = scale_at(scale, i) * fp.deriv[c][i] * b(c, i);
     }
     cols.push_back(col);
   }
@@ -231,14 +235,15 @@ Fitted fit_amplitude(const FitProblem& fp, const Recording& base) {
 
 // eccentricity: theta + u sin(theta) - v cos(theta) (u = eps cos phi0, v = eps sin phi0) and the
 // field part times 1 + a cos(theta) + b sin(theta) (a = m cos phi_m, b = m sin phi_m).
-Fitted fit_eccentricity(const FitProblem& fp, const Recording& base) {
+Fitted fit_eccentricity(const FitProblem& fp, const Recording& base,
+                        const std::vector<double>* scale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols(4, Column(r.channels));
   for (int c = 0; c < r.channels; ++c) {
     for (auto& col : cols) col[c].resize(r.size());
     for (size_t i = 0; i < r.size(); ++i) {
       const double th = r.theta_ref[i], s = std::sin(th), co = std::cos(th);
-      const double d = fp.deriv[c][i], fld = field_part(fp, base, c, i);
+      const double d = scale_at(scale, i) * fp.deriv[c][i], fld = field_part(fp, base, c, i);
       cols[0][c][i] = d * s;
       cols[1][c][i] = -d * co;
       cols[2][c][i] = fld * co;
@@ -258,7 +263,8 @@ Fitted fit_eccentricity(const FitProblem& fp, const Recording& base) {
 // phase_error: one group of channels sees the electrical angle + delta. The groups a placement or
 // orthogonality error moves: the sine pair, the cosine pair, or (four channels) one plate. The best
 // by likelihood is kept; the choice counts as a parameter (k = 2), as a harmonic's order does.
-Fitted fit_phase_error(const FitProblem& fp, const Recording& base) {
+Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
+                       const std::vector<double>* scale) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   struct Group {
@@ -274,13 +280,13 @@ Fitted fit_phase_error(const FitProblem& fp, const Recording& base) {
   double best_l = std::numeric_limits<double>::infinity();
   for (const Group& g : groups) {
     Fitted f =
-        fit_angle_shift(fp, base, {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }});
+        fit_angle_shift(fp, base, {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }}, scale);
     const double delta = f.params[0].second;
     Recording pred = base;
     for (int c = 0; c < r.channels; ++c) {
       if (!g.moves(c)) continue;
       const auto add = angle_shift(fp, c, [&](size_t) { return delta / p; });
-      for (size_t i = 0; i < r.size(); ++i) pred.ch[c][i] += add[i];
+      for (size_t i = 0; i < r.size(); ++i) pred.ch[c][i] += scale_at(scale, i) * add[i];
     }
     const double l = neg2_log_likelihood(fp, pred);
     if (l < best_l) {
@@ -521,7 +527,7 @@ double EffectCandidate::param(const std::string& name) const {
 }
 
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
-                         double* extra_sigma) {
+                         double* extra_sigma, const std::vector<double>* field_scale) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   const std::string& e = cand.effect;
@@ -530,7 +536,7 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
   auto shift = [&](const std::function<double(int, size_t)>& delta) {
     for (int c = 0; c < r.channels; ++c) {
       const auto add = angle_shift(fp, c, [&](size_t i) { return delta(c, i); });
-      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += add[i];
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += scale_at(field_scale, i) * add[i];
     }
   };
   if (e == "offset") {
@@ -610,7 +616,7 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
 }
 
 EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
-                           double base_extra) {
+                           double base_extra, const std::vector<double>* field_scale) {
   const Recording& r = *fp.real;
   Fitted f;
   if (effect == "offset") {
@@ -618,32 +624,33 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
   } else if (effect == "gain_mismatch") {
     f = fit_gain(fp, base);
   } else if (effect == "phase_error") {
-    f = fit_phase_error(fp, base);
+    f = fit_phase_error(fp, base, field_scale);
   } else if (effect == "zero_offset") {
-    f = fit_angle_shift(fp, base, {[](int, size_t) { return 1.0; }});
+    f = fit_angle_shift(fp, base, {[](int, size_t) { return 1.0; }}, field_scale);
     f.params = {{"zero_rad", f.params[0].second}};
   } else if (effect == "amplitude") {
     f = fit_amplitude(fp, base);
   } else if (effect == "harmonic") {
     f = fit_harmonic(fp, base);
   } else if (effect == "eccentricity") {
-    f = fit_eccentricity(fp, base);
+    f = fit_eccentricity(fp, base, field_scale);
   } else if (effect == "channel_skew") {
     // Channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their common part
     // included: a multiplexer's slots count from the time stamp).
     std::vector<std::function<double(int, size_t)>> basis;
     for (int k = 0; k < r.channels; ++k)
       basis.push_back([&, k](int c, size_t i) { return c == k ? fp.omega[i] : 0.0; });
-    f = fit_angle_shift(fp, base, basis);
+    f = fit_angle_shift(fp, base, basis, field_scale);
     ParamList taus;
     for (int k = 0; k < r.channels; ++k)
       taus.push_back({"tau_" + effect_channel_name(r.channels, k), f.params[k].second});
     f.params = make_effect(effect, taus, r.channels).params;
   } else if (effect == "common_delay") {
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }});
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }}, field_scale);
     f.params = {{"tau_s", f.params[0].second}};
   } else if (effect == "hysteresis") {
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }});
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }},
+                        field_scale);
     f.params = {{"h_rad", f.params[0].second}};
   } else if (effect == "drift") {
     if (fp.dtemp.empty())
@@ -670,7 +677,7 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
     return cand;
   }
   double extra = 0;
-  const Recording pred = predict_effect(fp, base, cand, &extra);
+  const Recording pred = predict_effect(fp, base, cand, &extra, field_scale);
   cand.neg2logl = neg2_log_likelihood(fp, pred, std::hypot(base_extra, extra));
   const double n = static_cast<double>(r.size()) * nsignals(r);
   cand.bic = cand.neg2logl + cand.k * std::log(n);

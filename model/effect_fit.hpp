@@ -62,18 +62,21 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction,
                            double extra_sigma = 0);
 
 // Fits one effect (a vocabulary name) on top of `base` (the model prediction, possibly already
-// carrying another effect, whose extra white noise per channel is base_extra). Throws InputError
-// for an unknown name.
+// carrying other effects, whose extra white noise per channel is base_extra). field_scale (per
+// sample, nullptr: 1): the factor that field scalings applied after this effect in a set
+// (amplitude, eccentricity's magnitude modulation) put on the angle change it causes. Throws
+// InputError for an unknown name.
 EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
-                           double base_extra = 0);
+                           double base_extra = 0, const std::vector<double>* field_scale = nullptr);
 
 // The prediction of `fp.real`'s channels with the effect added to `base` (the model prediction at
 // the same samples, possibly carrying another effect), from the candidate's parameters alone: this
 // is how a fitted effect is carried to a holdout recording without refitting. The white noise the
 // effect adds per channel is returned in *extra_sigma: excess_noise (channels unchanged) and
 // quantization (the ADC's mean output as channels, its added variance as noise); 0 for the others.
+// field_scale: as for fit_effect, the factor on the angle change it causes.
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
-                         double* extra_sigma);
+                         double* extra_sigma, const std::vector<double>* field_scale = nullptr);
 
 // The effect names fit_effect knows: effect_names() (without "unexplained").
 const std::vector<std::string>& fittable_effects();

@@ -398,6 +398,36 @@ TEST(Diagnose, EccentricityModulatesAngleAndMagnitude) {
   }
 }
 
+// Shaft run-out as real Hall encoders show it (issue 10): a constant angle shift, once-per-turn
+// angle and magnitude modulation, and a common drop of the field, all written out here. No single
+// effect explains it; the combination must name all three parts and recover their parameters.
+TEST(Diagnose, ShaftRunOutIsNamedAsItsParts) {
+  const double z = 0.01, eps = 0.015, phi0 = -0.6, m = 0.012, phim = 0.9, k = 0.9;
+  const auto angle = [&](int, double th, double, double) { return z + eps * std::sin(th - phi0); };
+  const auto field = [&](double* c, double th, double) {
+    for (int ch = 0; ch < 4; ++ch) c[ch] *= k * (1 + m * std::cos(th - phim));
+  };
+  const Recording hold = make(20000, 4, 0.01, angle, field);
+  const Diagnosis d = diagnose(sim(), make(20000, 3, 0.01, angle, field), &hold);
+  ASSERT_EQ(d.verdict, "explained") << d.to_json().dump(1);
+  std::vector<std::string> named = d.named();
+  std::sort(named.begin(), named.end());
+  EXPECT_EQ(named, (std::vector<std::string>{"amplitude", "eccentricity", "zero_offset"}))
+      << d.to_json()["combination"].dump(1);
+  for (const RankedEffect& r : d.combination) {
+    const EffectCandidate& c = r.cand;
+    if (c.effect == "amplitude") EXPECT_NEAR(c.param("scale"), k, 0.002);
+    if (c.effect == "zero_offset") EXPECT_NEAR(c.param("zero_rad"), z, 0.05 * z);
+    if (c.effect == "eccentricity") {
+      EXPECT_NEAR(std::abs(std::polar(c.param("epsilon_rad"), c.param("phi0_rad")) - std::polar(eps, phi0)),
+                  0, 0.1 * eps);
+      EXPECT_NEAR(std::abs(std::polar(c.param("am_depth"), c.param("am_phase_rad")) - std::polar(m, phim)),
+                  0, 0.1 * m);
+    }
+  }
+  EXPECT_LT(d.hold_after->gap_deg, 0.1 * d.hold_before->gap_deg);
+}
+
 // The magnet slips on the shaft by J early in a recording at constant speed: from then on every
 // channel sees theta + J. A zero offset explains 95 % of gap^2, but the rest is a step in time that
 // no effect of the vocabulary makes (they are functions of angle, speed, direction, temperature):
