@@ -17,8 +17,6 @@ namespace acore {
 namespace {
 
 constexpr size_t kMinSamples = 256;
-// The largest share of gap^2 a named explanation may leave as a slow change in time (gap.hpp).
-constexpr double kSlowShareMax = 0.02;
 
 int meta_periodicity(const Recording& r) {
   const auto it = r.meta.find("p");
@@ -398,12 +396,12 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   // explanation that leaves a slow change in time (gap.hpp: a slip of the magnet, a dropout) has
   // not found the cause, however much of gap^2 it explains.
   const double slow_share = before2 > 0 ? d.after.slow_deg * d.after.slow_deg / before2 : 0.0;
-  if (d.verdict == "explained" && slow_share > kSlowShareMax) {
+  if (d.verdict == "explained" && slow_share > opt.slow_share_max) {
     d.note = fmt::format(
         "the gap changes in time in a way no effect of the vocabulary does: after the best "
         "explanation "
         "{:.1f} % of gap^2 is left as a slow change over time (at most {:.0f} % allowed)",
-        100 * slow_share, 100 * kSlowShareMax);
+        100 * slow_share, 100 * opt.slow_share_max);
     d.verdict = "unexplained";
     d.ambiguous_with.clear();
     d.after = apply_chosen(fp, m);

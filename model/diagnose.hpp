@@ -16,6 +16,8 @@ namespace acore {
 struct DiagnoseOptions {
   int fourier_order = 12;     // harmonics of the static sensor model fitted to the simulation
   bool try_pairs = true;      // combinations of effects when one leaves a clear remainder
+  double slow_share_max = 0.01;  // the most of gap^2 a named explanation may leave as a slow
+                                 // change in time (gap.hpp): more is a slip, a dropout
   int max_combined = 3;       // effects in a combination at most (run-out: zero_offset,
                               // eccentricity and amplitude together)
   double explained_min =

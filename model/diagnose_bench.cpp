@@ -437,6 +437,7 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
   r.ambiguous_with = d.ambiguous_with;
   r.slow_veto = !d.note.empty();
+  r.slow_share = d.before.gap_deg > 0 ? std::pow(d.before.slow_deg / d.before.gap_deg, 2) : 0.0;
   r.best_explained = d.combination.empty() ? 0.0 : d.combination_explained;
   for (const auto& e : d.ranking)
     if (e.cand.rejected.empty()) r.best_explained = std::max(r.best_explained, e.explained);
@@ -639,8 +640,9 @@ std::string BenchSummary::text() const {
       "(naming needs 90 %)\n",
       100 * outside_best_explained);
   t += fmt::format(
-      "explanations refused because they left a slow change in time (more than 2 % of gap^2): {}\n",
-      slow_vetoed);
+      "explanations refused because they left a slow change in time (more than {:.0f} % of gap^2): "
+      "{}\n",
+      100 * DiagnoseOptions{}.slow_share_max, slow_vetoed);
   double total = 0, worst = 0;
   for (const auto& r : cases) total += r.seconds, worst = std::max(worst, r.seconds);
   t += fmt::format(
@@ -698,6 +700,7 @@ nlohmann::json BenchSummary::to_json() const {
     c["shrink"] = r.shrink;
     c["best_explained"] = r.best_explained;
     c["slow_veto"] = r.slow_veto;
+    c["slow_share"] = r.slow_share;
     json sc = json::array();
     for (const auto& q : r.params)
       sc.push_back(

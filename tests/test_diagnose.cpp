@@ -452,9 +452,9 @@ TEST(Diagnose, ASlipOfTheMagnetIsNotNamed) {
   EXPECT_GE(d.ranking.front().explained, 0.9);
   EXPECT_NE(d.note.find("changes in time"), std::string::npos) << d.note;
   // The step's part that is not a constant: (1 - t0/T) t0/T = 4.75 % of gap^2, less what the
-  // basis's angle harmonics catch of the first 0.3 turn; the rule refuses above 2 %.
+  // basis's angle harmonics catch of the first 0.3 turn; the rule refuses above 1 %.
   const double slow = std::pow(d.before.slow_deg / d.before.gap_deg, 2);
-  EXPECT_GT(slow, 0.02);
+  EXPECT_GT(slow, DiagnoseOptions{}.slow_share_max);
   EXPECT_LT(slow, 0.0475);
 }
 
