@@ -141,9 +141,10 @@ std::vector<double> later_field_scale(const FitProblem& f, const std::vector<Ran
     if (c.effect != "amplitude" && c.effect != "eccentricity") continue;
     if (s.empty()) s.assign(f.real->size(), 1.0);
     for (size_t i = 0; i < s.size(); ++i)
-      s[i] *= c.effect == "amplitude"
-                  ? c.param("scale")
-                  : 1 + c.param("am_depth") * std::cos(f.real->theta_ref[i] - c.param("am_phase_rad"));
+      s[i] *=
+          c.effect == "amplitude"
+              ? c.param("scale")
+              : 1 + c.param("am_depth") * std::cos(f.real->theta_ref[i] - c.param("am_phase_rad"));
   }
   return s;
 }
@@ -304,10 +305,10 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
 
   // More effects when the first leaves a clear remainder (forward selection, at most max_combined):
   // each step fits every other effect on top of those chosen and keeps the one that explains the
-  // most of the gap, if its dBIC on top of them is < -10 and it explains at least 10 % more of gap^2,
-  // or at least 2 % more and half of what is left; the set is then refitted together (backfitting). A
-  // general effect in the set is replaced by its special case when the set's BIC prefers it. The
-  // set is named when it reaches explained_min.
+  // most of the gap, if its dBIC on top of them is < -10 and it explains at least 10 % more of
+  // gap^2, or at least 2 % more and half of what is left; the set is then refitted together
+  // (backfitting). A general effect in the set is replaced by its special case when the set's BIC
+  // prefers it. The set is named when it reaches explained_min.
   if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
       top->cand.delta_bic < -10) {
     const double nsig = static_cast<double>(real.size()) * (real.channels == 4 ? 4 : 2);
@@ -346,11 +347,13 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         double e2 = 0;
         const Recording pred = predict_effect(fp, base, r.cand, &e2, sp);
         const StageSeries after = compare(m, real, pred, std::hypot(extra, e2), &fp.basis);
-        const SetScore t{before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0, after.gap_deg, 0};
+        const SetScore t{before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0,
+                         after.gap_deg, 0};
         r.explained = t.explained;
         r.after_deg = t.after_deg;
         const double gain = t.explained - cur.explained;
-        const bool enough = gain >= 0.1 || (gain >= 0.02 && 1 - t.explained <= 0.5 * (1 - cur.explained));
+        const bool enough =
+            gain >= 0.1 || (gain >= 0.02 && 1 - t.explained <= 0.5 * (1 - cur.explained));
         if (enough && (!pick || r.explained > pick->explained)) pick = r;
       }
       if (!pick) break;
@@ -388,7 +391,8 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     double extra = 0;
     Recording pred = f.predicted;
     if (d.verdict == "explained")
-      pred = predict_set(f, d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination, &extra);
+      pred = predict_set(f, d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination,
+                         &extra);
     return compare(gm, *f.real, pred, extra, &f.basis);
   };
   d.after = apply_chosen(fp, m);

@@ -18,8 +18,8 @@ struct DiagnoseOptions {
   bool try_pairs = true;      // combinations of effects when one leaves a clear remainder
   double slow_share_max = 0.01;  // the most of gap^2 a named explanation may leave as a slow
                                  // change in time (gap.hpp): more is a slip, a dropout
-  int max_combined = 3;       // effects in a combination at most (run-out: zero_offset,
-                              // eccentricity and amplitude together)
+  int max_combined = 3;          // effects in a combination at most (run-out: zero_offset,
+                                 // eccentricity and amplitude together)
   double explained_min =
       0.9;  // the best effect (or pair) must explain this share of gap^2 to be named
 };
@@ -48,9 +48,9 @@ struct Diagnosis {
   std::string domain;
   std::vector<GapHarmonic> harmonics;
   std::vector<RankedEffect> ranking;  // best first, by information criterion
-  // The effects chosen one after the other (forward selection, then refitted together) when the best
-  // single effect leaves a clear remainder; explained and after_deg of each are those of the set up
-  // to it.
+  // The effects chosen one after the other (forward selection, then refitted together) when the
+  // best single effect leaves a clear remainder; explained and after_deg of each are those of the
+  // set up to it.
   std::vector<RankedEffect> combination;
   double combination_after_deg = 0, combination_explained = 0;
   // Other effects the recording cannot tell from the named one: they explain as much and their

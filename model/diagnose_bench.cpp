@@ -447,7 +447,8 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   r.hold_after = d.hold_after->gap_deg;
   r.shrink = r.hold_before > 0 ? 1.0 - r.hold_after / r.hold_before : 0.0;
   if (r.correct && !c.effect.effect.empty())
-    r.params = score(c, d.combination.empty() ? d.ranking.front().cand : d.combination.front().cand);
+    r.params =
+        score(c, d.combination.empty() ? d.ranking.front().cand : d.combination.front().cand);
   return r;
 }
 

@@ -104,9 +104,9 @@ struct BenchCaseResult {
   double shrink = 0;          // 1 - hold_after / hold_before
   double best_explained =
       0;  // the largest share of gap^2 any acceptable effect or combination explained
-  double slow_share = 0;  // (slow / gap)^2 of the real recording before any effect (gap.hpp)
-  bool slow_veto = false;          // an explanation explained enough but left a slow change in time
-                                   // (Diagnosis::note)
+  double slow_share = 0;   // (slow / gap)^2 of the real recording before any effect (gap.hpp)
+  bool slow_veto = false;  // an explanation explained enough but left a slow change in time
+                           // (Diagnosis::note)
   std::vector<BenchParam> params;  // when the right effect is named (top-1)
   double seconds = 0;              // wall time of the diagnosis
 };

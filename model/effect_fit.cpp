@@ -205,7 +205,8 @@ Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
     Column col(r.channels);
     for (int c = 0; c < r.channels; ++c) {
       col[c].resize(r.size());
-      for (size_t i = 0; i < r.size(); ++i) col[c][i] = scale_at(scale, i) * fp.deriv[c][i] * b(c, i);
+      for (size_t i = 0; i < r.size(); ++i)
+        col[c][i] = scale_at(scale, i) * fp.deriv[c][i] * b(c, i);
     }
     cols.push_back(col);
   }
@@ -279,8 +280,8 @@ Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
   Fitted best;
   double best_l = std::numeric_limits<double>::infinity();
   for (const Group& g : groups) {
-    Fitted f =
-        fit_angle_shift(fp, base, {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }}, scale);
+    Fitted f = fit_angle_shift(fp, base,
+                               {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }}, scale);
     const double delta = f.params[0].second;
     Recording pred = base;
     for (int c = 0; c < r.channels; ++c) {

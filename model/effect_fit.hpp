@@ -4,16 +4,16 @@
 // simulation's own noise level.
 //
 // The residual r = real - model is compared on "signals" whose noise is nearly independent:
-// four-channel: d13 = c1 - c3, d24 = c2 - c4, m13 = (c1 + c3)/2, m24 = (c2 + c4)/2 (common-mode noise
-// lives in m, so it cannot hide an effect on d); two-channel: sin, cos. Each signal s has the noise
-// sigma_s the simulation shows. For a deterministic effect with parameters phi,
+// four-channel: d13 = c1 - c3, d24 = c2 - c4, m13 = (c1 + c3)/2, m24 = (c2 + c4)/2 (common-mode
+// noise lives in m, so it cannot hide an effect on d); two-channel: sin, cos. Each signal s has the
+// noise sigma_s the simulation shows. For a deterministic effect with parameters phi,
 //   -2 log L = sum_s sum_i (r_s,i - J_s,i phi)^2 / sigma_s^2          (Gaussian, known sigma)
-// linear (or linearized about no effect) in phi, so least squares with Eigen solves it. Effects that
-// are not linear (quantization, saturation) are fitted by a search over their parameter; excess
-// noise by its variance; a phase error once per group of channels it can move (either pair, one
-// plate), the best kept. Field scalings (amplitude, eccentricity's magnitude modulation) act on the
-// model's field part: the channel less its constant Fourier term. Each is scored by the Bayesian
-// information criterion
+// linear (or linearized about no effect) in phi, so least squares with Eigen solves it. Effects
+// that are not linear (quantization, saturation) are fitted by a search over their parameter;
+// excess noise by its variance; a phase error once per group of channels it can move (either pair,
+// one plate), the best kept. Field scalings (amplitude, eccentricity's magnitude modulation) act on
+// the model's field part: the channel less its constant Fourier term. Each is scored by the
+// Bayesian information criterion
 //   BIC = -2 log L + k ln N,   compared to the model without any effect.
 #pragma once
 #include <string>

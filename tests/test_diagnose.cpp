@@ -419,10 +419,12 @@ TEST(Diagnose, ShaftRunOutIsNamedAsItsParts) {
     if (c.effect == "amplitude") EXPECT_NEAR(c.param("scale"), k, 0.002);
     if (c.effect == "zero_offset") EXPECT_NEAR(c.param("zero_rad"), z, 0.05 * z);
     if (c.effect == "eccentricity") {
-      EXPECT_NEAR(std::abs(std::polar(c.param("epsilon_rad"), c.param("phi0_rad")) - std::polar(eps, phi0)),
-                  0, 0.1 * eps);
-      EXPECT_NEAR(std::abs(std::polar(c.param("am_depth"), c.param("am_phase_rad")) - std::polar(m, phim)),
-                  0, 0.1 * m);
+      EXPECT_NEAR(
+          std::abs(std::polar(c.param("epsilon_rad"), c.param("phi0_rad")) - std::polar(eps, phi0)),
+          0, 0.1 * eps);
+      EXPECT_NEAR(
+          std::abs(std::polar(c.param("am_depth"), c.param("am_phase_rad")) - std::polar(m, phim)),
+          0, 0.1 * m);
     }
   }
   EXPECT_LT(d.hold_after->gap_deg, 0.1 * d.hold_before->gap_deg);

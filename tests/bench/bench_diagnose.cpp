@@ -41,10 +41,13 @@ void BM_Diagnose_RunOut4(benchmark::State& state) {
   const acore::Recording sim = acore::simulate(s, kSamples, 1);
   acore::Scenario r = c.model;
   r.temperature = {true, c.real_temp[0], c.real_temp[1]};
-  r.effects = {acore::make_effect("zero_offset", {{"zero_rad", 0.02}}, 4),
-               acore::make_effect("eccentricity",
-                                  {{"epsilon_rad", 0.015}, {"phi0_rad", 0.5}, {"am_depth", 0.012}, {"am_phase_rad", 0.9}}, 4),
-               acore::make_effect("amplitude", {{"scale", 0.8}}, 4)};
+  r.effects = {
+      acore::make_effect("zero_offset", {{"zero_rad", 0.02}}, 4),
+      acore::make_effect(
+          "eccentricity",
+          {{"epsilon_rad", 0.015}, {"phi0_rad", 0.5}, {"am_depth", 0.012}, {"am_phase_rad", 0.9}},
+          4),
+      acore::make_effect("amplitude", {{"scale", 0.8}}, 4)};
   r.trajectory = c.real_traj;
   r.trajectory.sample_rate_hz = fs;
   const acore::Recording real = acore::simulate(r, kSamples, 2);
