@@ -160,6 +160,17 @@ StageSeries compare(const GapModel& m, const Recording& rec, const Recording& pr
   }
   const double exc2 = sum / n;
   const double se = std::sqrt(std::max(0.0, sum2 / n - exc2 * exc2) / n);
+  // The residual's block means, in sample (time) order.
+  constexpr size_t kBlocks = 16;
+  double slow2 = 0;
+  for (size_t b = 0; b < kBlocks; ++b) {
+    const size_t lo = s.g.size() * b / kBlocks, hi = s.g.size() * (b + 1) / kBlocks;
+    double m = 0;
+    for (size_t i = lo; i < hi; ++i) m += s.g[i] - fit(static_cast<Eigen::Index>(i));
+    if (hi > lo) slow2 += m * m / static_cast<double>(hi - lo);
+  }
+  slow2 = slow2 / n - static_cast<double>(kBlocks) / n * nv;
+  s.slow_deg = std::sqrt(std::max(0.0, slow2));
   s.systematic_deg = std::sqrt(std::max(0.0, sys2));
   s.excess_noise_deg = exc2 > 4 * se ? std::sqrt(exc2) : 0.0;
   s.gap_deg = std::hypot(s.systematic_deg, s.excess_noise_deg);
