@@ -102,13 +102,25 @@ module acore_fold_cordic #(
     end
   endfunction
 
-  initial begin
-    if (Z_W < ANGLE_W) $error("acore_fold_cordic: Z_W=%0d < ANGLE_W=%0d (instance %m)", Z_W, ANGLE_W);
-    if (AT_W > Z_W) $error("acore_fold_cordic: AT_W=%0d > Z_W=%0d (instance %m)", AT_W, Z_W);
-    if (K < 1 || K >= XY_W) $error("acore_fold_cordic: K=%0d must be 1..XY_W-1 (instance %m)", K);
-    if (N < 2 || (1 << PW) != N) $error("acore_fold_cordic: N=%0d must be a power of two >= 2 (instance %m)", N);
-    if (XY_W != IN_W + 2 + G || MAG_W != IN_W + 2) $error("acore_fold_cordic: XY_W/MAG_W are derived (instance %m)");
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(Z_W >= ANGLE_W), .VALUE(Z_W),
+    .MSG("illegal parameter: acore_fold_cordic: Z_W must be >= ANGLE_W"))
+    Z_W_must_be_at_least_ANGLE_W ();
+  acore_check #(.OK(AT_W <= Z_W), .VALUE(AT_W),
+    .MSG("illegal parameter: acore_fold_cordic: AT_W must be <= Z_W"))
+    AT_W_must_be_at_most_Z_W ();
+  acore_check #(.OK(K >= 1 && K < XY_W), .VALUE(K),
+    .MSG("illegal parameter: acore_fold_cordic: K must be 1..XY_W-1"))
+    K_must_be_1_to_XY_W_minus_1 ();
+  acore_check #(.OK(N >= 2 && (1 << PW) == N), .VALUE(N),
+    .MSG("illegal parameter: acore_fold_cordic: N must be a power of two >= 2"))
+    N_must_be_a_power_of_two ();
+  acore_check #(.OK(XY_W == IN_W + 2 + G), .VALUE(XY_W),
+    .MSG("illegal parameter: acore_fold_cordic: XY_W is derived (IN_W+2+G), do not override"))
+    XY_W_is_derived ();
+  acore_check #(.OK(MAG_W == IN_W + 2), .VALUE(MAG_W),
+    .MSG("illegal parameter: acore_fold_cordic: MAG_W is derived (IN_W+2), do not override"))
+    MAG_W_is_derived ();
 
   // Registers after the pre-rotation (index 0) and of every unit (index u + 1). X is never
   // negative (no sign bit kept); Y of unit u holds the results of iterations uN.. and is computed on

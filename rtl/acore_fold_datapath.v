@@ -44,8 +44,10 @@ module acore_fold_datapath #(
   parameter integer ANGLE_W = 16,
   // Clocks per sample (2, 4 or 8).
   parameter integer FOLD = 2,
-  // Register file: words (4 + 2 REGIONS (DEGREE+1) + K, or 4 + K without a polynomial) and the
-  // power-up image.
+  // 1: the register file's last word is the ZERO word (after the arctangent words), on last_o.
+  parameter integer ZERO = 0,
+  // Register file: words (4 + 2 REGIONS (DEGREE+1) + K, or 4 + K without a polynomial, plus ZERO)
+  // and the power-up image.
   parameter integer WORDS = 52,
   parameter INIT_FILE = "",
   // Derived, do not override.
@@ -54,7 +56,7 @@ module acore_fold_datapath #(
   parameter integer MAG_W = S_W + 2
 ) (
   clk_i, rst_i, reg_addr_i, reg_wdata_i, reg_we_i, reg_rdata_o, accept_i, c1_i, c2_i, c3_i, c4_i,
-  valid_o, angle_o, mag_o, region_o, ovf_o
+  valid_o, angle_o, mag_o, region_o, ovf_o, last_o
 );
 
   // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
@@ -91,7 +93,7 @@ module acore_fold_datapath #(
   localparam integer PA_W = fd_cmul(PORTS, ADDR_W);
   localparam integer PD_W = fd_cmul(PORTS, REG_W);
   localparam integer AT_BUS_W = fd_cmul(K, REG_W);
-  localparam integer ATAN_BASE = WORDS - K;
+  localparam integer ATAN_BASE = WORDS - K - ZERO;
 
   input  wire                  clk_i;
   // Synchronous reset of the valid bits (and of the register file's write enable).
@@ -114,6 +116,9 @@ module acore_fold_datapath #(
   output wire [MAG_W-1:0]      mag_o;
   output wire [RG_W-1:0]       region_o;
   output wire                  ovf_o;
+  // The register file's last word (ZERO = 1: the ZERO word, from flops; else zero), for the top's
+  // output register.
+  output wire [REG_W-1:0]      last_o;
 
   // Derived, do not override: stage latencies (each module documents its own) and the schedule.
   localparam integer D_W = IN_W + 1;
@@ -144,12 +149,16 @@ module acore_fold_datapath #(
     end
   endfunction
 
-  initial begin
-    if (ADDR_W < AT_IDX_W) $error("acore_fold_datapath: ADDR_W=%0d < %0d (instance %m)", ADDR_W, AT_IDX_W);
-    if (FOLD != 2 && FOLD != 4 && FOLD != 8) $error("acore_fold_datapath: FOLD=%0d must be 2, 4 or 8 (instance %m)", FOLD);
-    if (CORRECTION != 0 && CORRECTION != 2)
-      $error("acore_fold_datapath: CORRECTION=%0d: only poly (0) and none (2) are folded (instance %m)", CORRECTION);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
+    .MSG("illegal parameter: acore_fold_datapath: FOLD must be 2, 4 or 8"))
+    FOLD_must_be_2_4_or_8 ();
+  acore_check #(.OK(CORRECTION == 0 || CORRECTION == 2), .VALUE(CORRECTION),
+    .MSG("illegal parameter: acore_fold_datapath: CORRECTION must be 0 (poly) or 2 (none): poly2d is not folded"))
+    CORRECTION_must_be_0_or_2 ();
+  acore_check #(.OK(ZERO == 0 || ZERO == 1), .VALUE(ZERO),
+    .MSG("illegal parameter: acore_fold_datapath: ZERO must be 0 or 1"))
+    ZERO_must_be_0_or_1 ();
 
   // ---- register file: read ports [0, PP) Horner, PP offset, PP+1 reciprocal, then CORDIC units ----
   wire [PA_W-1:0]     raddr;
@@ -157,10 +166,10 @@ module acore_fold_datapath #(
   wire [AT_BUS_W-1:0] atan;
   acore_fold_regs #(
     .REG_W(REG_W), .WORDS(WORDS), .ATAN_BASE(ATAN_BASE), .K(K), .PORTS(PORTS),
-    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .INIT_FILE(INIT_FILE)
+    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .LAST_FLOP(ZERO), .INIT_FILE(INIT_FILE)
   ) u_regs (
     .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
-    .rdata_o(reg_rdata_o), .atan_o(atan), .raddr_i(raddr), .rdata_p_o(rdata));
+    .rdata_o(reg_rdata_o), .atan_o(atan), .last_o(last_o), .raddr_i(raddr), .rdata_p_o(rdata));
 
   // ---- valid bits: v[t] is high t clocks after the accepting edge (t = 0 the next clock) ----
   reg [LATENCY:0] v_q;
@@ -274,6 +283,9 @@ module acore_fold_datapath #(
 
   // ---- 5: CORDIC from clock C, x = corrected cosine curve, y = corrected sine curve ----
   localparam integer AT_IDX_W = $clog2(fd_cmul(U, FOLD));
+  acore_check #(.OK(ADDR_W >= AT_IDX_W), .VALUE(ADDR_W),
+    .MSG("illegal parameter: acore_fold_datapath: ADDR_W must be >= clog2(CORDIC iterations on the units)"))
+    ADDR_W_must_index_the_CORDIC_iterations ();
   wire [fd_cmul(U, AT_IDX_W)-1:0] at_idx;
   wire [fd_cmul(U, REG_W)-1:0]    at_word;
   acore_fold_cordic #(

@@ -32,9 +32,10 @@ module acore_fold_fifo #(
 
   localparam integer AW = $clog2(DEPTH);
 
-  initial begin
-    if ((1 << AW) != DEPTH || AW < 1) $error("acore_fold_fifo: DEPTH=%0d must be a power of two >= 2 (instance %m)", DEPTH);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(AW >= 1 && (1 << AW) == DEPTH), .VALUE(DEPTH),
+    .MSG("illegal parameter: acore_fold_fifo: DEPTH must be a power of two >= 2"))
+    DEPTH_must_be_a_power_of_two ();
 
   // A read never meets a write of the same word (the read word is stored, the written one free).
   (* no_rw_check, ram_style = "block" *)

@@ -75,12 +75,16 @@ module acore_fold_mul #(
   // Bits the exact product can need (as acore_shift_add_mul), plus one for init.
   localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
 
-  initial begin
-    if (F < 1) $error("acore_fold_mul: F=%0d must be >= 1 (instance %m)", F);
-    if (F > 1 && B < 2) $error("acore_fold_mul: B_W=%0d over F=%0d clocks leaves fewer than 2 bits a clock (instance %m)", B_W, F);
-    if (P_W < NEED_W + 1 || P_W < INIT_W + 1)
-      $error("acore_fold_mul: P_W=%0d cannot hold init + product (need %0d) (instance %m)", P_W, NEED_W + 1);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(F >= 1), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_mul: F must be >= 1"))
+    F_must_be_at_least_1 ();
+  acore_check #(.OK(F == 1 || B >= 2), .VALUE(B_W),
+    .MSG("illegal parameter: acore_fold_mul: B_W over F clocks must leave at least 2 bits a clock"))
+    B_W_must_leave_2_bits_a_clock ();
+  acore_check #(.OK(P_W >= NEED_W + 1 && P_W >= INIT_W + 1), .VALUE(P_W),
+    .MSG("illegal parameter: acore_fold_mul: P_W cannot hold init + product"))
+    P_W_must_hold_init_plus_product ();
 
   wire [P_W-1:0] init_ext = {{(P_W-INIT_W){init_i[INIT_W-1]}}, init_i};
 

@@ -92,14 +92,22 @@ module acore_fold_poly #(
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
   localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
 
-  initial begin
-    if (ACC_F < S_F) $error("acore_fold_poly: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
-    if (ACC_I < REG_W - COEF_F + 1) $error("acore_fold_poly: ACC_I=%0d too small (instance %m)", ACC_I);
-    if (DEGREE < 1) $error("acore_fold_poly: DEGREE=%0d must be >= 1 (instance %m)", DEGREE);
-    if (XCENTER != 0 && (XCENTER != 1 || S_F < 3))
-      $error("acore_fold_poly: XCENTER=%0d must be 0, or 1 with S_F >= 3 (instance %m)", XCENTER);
-    if (F != 1 && F != 2 && F != 4) $error("acore_fold_poly: F=%0d must be 1, 2 or 4 (instance %m)", F);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(ACC_F >= S_F), .VALUE(ACC_F),
+    .MSG("illegal parameter: acore_fold_poly: COEF_F+ACC_G must be >= S_F"))
+    COEF_F_plus_ACC_G_must_be_at_least_S_F ();
+  acore_check #(.OK(ACC_I >= REG_W - COEF_F + 1), .VALUE(ACC_I),
+    .MSG("illegal parameter: acore_fold_poly: ACC_I must be >= REG_W-COEF_F+1"))
+    ACC_I_must_be_at_least_REG_W_minus_COEF_F_plus_1 ();
+  acore_check #(.OK(DEGREE >= 1), .VALUE(DEGREE),
+    .MSG("illegal parameter: acore_fold_poly: DEGREE must be >= 1"))
+    DEGREE_must_be_at_least_1 ();
+  acore_check #(.OK(XCENTER == 0 || (XCENTER == 1 && S_F >= 3)), .VALUE(XCENTER),
+    .MSG("illegal parameter: acore_fold_poly: XCENTER must be 0, or 1 with S_F >= 3"))
+    XCENTER_must_be_0_or_1 ();
+  acore_check #(.OK(F == 1 || F == 2 || F == 4), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_poly: F must be 1, 2 or 4"))
+    F_must_be_1_2_or_4 ();
 
   // A coefficient word, sign-extended and shifted to ACC_F fraction bits.
   function automatic [ACC_W-1:0] coef_acc(input [REG_W-1:0] w);

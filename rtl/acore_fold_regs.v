@@ -7,7 +7,8 @@
 //     words, one copy per read port): the host read-back reads one copy, and PORTS datapath read
 //     ports read theirs, each one clock after its address;
 //   - with ATAN_FLOPS, the K arctangent words (from ATAN_BASE) are also kept in flops, on atan_o,
-//     for a datapath that needs them all at once.
+//     for a datapath that needs them all at once; with LAST_FLOP, the last word (the ZERO word) on
+//     last_o, for the top's output register.
 // The host read-back of a word in the clock it is written returns the old word, as the flops of
 // acore_coef_regfile do. A datapath port reading a word in the very clock the host writes it may
 // see the old or the new word (iCE40 block RAM leaves a read-write collision undefined; checking
@@ -26,12 +27,14 @@ module acore_fold_regs #(
   parameter integer PORTS = 4,
   // 1: the arctangent words also in flops, on atan_o (else atan_o is zero).
   parameter integer ATAN_FLOPS = 1,
+  // 1: the last word also in flops, on last_o (else last_o is zero).
+  parameter integer LAST_FLOP = 0,
   // $readmemh image for the initial contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(WORDS)
 ) (
-  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, atan_o, raddr_i, rdata_p_o
+  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, atan_o, last_o, raddr_i, rdata_p_o
 );
 
   // Constant product by repeated addition, for widths and offsets at elaboration only.
@@ -57,14 +60,16 @@ module acore_fold_regs #(
   output reg  [REG_W-1:0]    rdata_o;
   // The arctangent words (ATAN_FLOPS), word 0 in the low bits.
   output wire [AT_BUS_W-1:0] atan_o;
+  // The last word (LAST_FLOP).
+  output wire [REG_W-1:0]    last_o;
   // Datapath read ports: address of port p at bits [p ADDR_W +: ADDR_W], its word one clock later.
   input  wire [PA_W-1:0]     raddr_i;
   output wire [PD_W-1:0]     rdata_p_o;
 
-  initial begin
-    if (ATAN_BASE < 4 || ATAN_BASE + K > WORDS)
-      $error("acore_fold_regs: arctangent words %0d..%0d outside the map (instance %m)", ATAN_BASE, ATAN_BASE + K - 1);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(ATAN_BASE >= 4 && ATAN_BASE + K <= WORDS), .VALUE(ATAN_BASE),
+    .MSG("illegal parameter: acore_fold_regs: the arctangent words ATAN_BASE..ATAN_BASE+K-1 must be inside the map"))
+    ATAN_words_must_be_inside_the_map ();
 
   localparam integer LAST_I = WORDS - 1;
   localparam [ADDR_W:0] LAST = LAST_I[ADDR_W:0];
@@ -115,19 +120,21 @@ module acore_fold_regs #(
       always @(posedge clk_i) rd_q <= dp_mem_q[raddr_i[fr_cmul(p, ADDR_W) +: ADDR_W]];
       assign rdata_p_o[fr_cmul(p, REG_W) +: REG_W] = rd_q;
     end
-    if (ATAN_FLOPS != 0) begin : g_flops
-      // A flop copy of every word, written with the memories; only the arctangent words are read
-      // (synthesis keeps those alone).
+    if (ATAN_FLOPS != 0 || LAST_FLOP != 0) begin : g_flops
+      // A flop copy of every word, written with the memories; only the arctangent words and the
+      // last word are read (synthesis keeps those alone).
       reg [REG_W-1:0] flop_q [0:WORDS-1];
       initial begin
         if (INIT_FILE != "") $readmemh(INIT_FILE, flop_q);
       end
       always @(posedge clk_i) if (we_q) flop_q[waddr_q] <= wdata_q;
       for (a = 0; a < K; a = a + 1) begin : g_atan
-        assign atan_o[fr_cmul(a, REG_W) +: REG_W] = flop_q[ATAN_BASE + a];
+        assign atan_o[fr_cmul(a, REG_W) +: REG_W] = (ATAN_FLOPS != 0) ? flop_q[ATAN_BASE + a] : {REG_W{1'b0}};
       end
+      assign last_o = (LAST_FLOP != 0) ? flop_q[WORDS - 1] : {REG_W{1'b0}};
     end else begin : g_no_flops
       assign atan_o = {AT_BUS_W{1'b0}};
+      assign last_o = {REG_W{1'b0}};
     end
   endgenerate
 

@@ -46,12 +46,16 @@ module acore_fold_scaler #(
   localparam integer ML = (F == 1) ? $clog2(REG_W) + 1 : $clog2(MUL_B) + 1 + F;
   localparam integer LATENCY = ML + 2;
 
-  initial begin
-    if (SCALE_G < 0 || SCALE_G > R_SHIFT)
-      $error("acore_fold_scaler: need 0 <= SCALE_G=%0d <= R_SHIFT=%0d (instance %m)", SCALE_G, R_SHIFT);
-    if (S_W > P_W - SCALE_G) $error("acore_fold_scaler: S_W=%0d wider than the product (instance %m)", S_W);
-    if (F != 1 && F != 2 && F != 4) $error("acore_fold_scaler: F=%0d must be 1, 2 or 4 (instance %m)", F);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),
+    .MSG("illegal parameter: acore_fold_scaler: SCALE_G must be 0..R_SHIFT"))
+    SCALE_G_must_be_0_to_R_SHIFT ();
+  acore_check #(.OK(S_W <= P_W - SCALE_G), .VALUE(S_W),
+    .MSG("illegal parameter: acore_fold_scaler: S_W must not be wider than the product"))
+    S_W_must_fit_the_product ();
+  acore_check #(.OK(F == 1 || F == 2 || F == 4), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_scaler: F must be 1, 2 or 4"))
+    F_must_be_1_2_or_4 ();
 
   reg [T_W-1:0]   t_q;
   reg [REG_W-1:0] r_q;

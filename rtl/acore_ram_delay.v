@@ -30,9 +30,10 @@ module acore_ram_delay #(
   localparam integer BACK_I = DEPTH - 2;
   localparam [AW-1:0] BACK = BACK_I[AW-1:0];
 
-  initial begin
-    if (DEPTH < 3 || DEPTH > 257) $error("acore_ram_delay: DEPTH=%0d must be 3..257 (instance %m)", DEPTH);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(DEPTH >= 3 && DEPTH <= 257), .VALUE(DEPTH),
+    .MSG("illegal parameter: acore_ram_delay: DEPTH must be 3..257"))
+    DEPTH_must_be_3_to_257 ();
 
   (* no_rw_check, ram_style = "block" *)
   reg [W-1:0] mem_q [0:(1<<AW)-1];

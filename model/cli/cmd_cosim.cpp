@@ -15,7 +15,7 @@
 #include "estimator.hpp"
 #include "fixed_model.hpp"
 #include "rtl_engine.hpp"
-#include "rtl_serial_engine.hpp"
+#include "rtl_serial_builds.hpp"
 
 namespace acore::cli {
 
@@ -49,7 +49,7 @@ void run_cosim(const CosimArgs& a) {
   opt.gaps = a.backpressure;
   opt.fold = a.fold;
   const std::vector<FixedSample> rtl =
-      engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
+      engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial_for(img, codes, opt);
   const FixedModel model(img);
   size_t bad = 0;
   nlohmann::json first = nullptr;
