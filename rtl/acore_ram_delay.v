@@ -39,9 +39,12 @@ module acore_ram_delay #(
   reg [W-1:0] mem_q [0:(1<<AW)-1];
   reg [AW-1:0] wp_q;
   reg [W-1:0] rd_q;
+  // The read address modulo 2^AW as a net of its own: an index expression's arithmetic is not
+  // wrapped to AW bits by every simulator (Icarus 11 reads out of range, X).
+  wire [AW-1:0] rp = wp_q - BACK;
   always @(posedge clk_i) begin
     mem_q[wp_q] <= d_i;
-    rd_q <= mem_q[wp_q - BACK];
+    rd_q <= mem_q[rp];
     q_o <= rd_q;
     if (rst_i) wp_q <= {AW{1'b0}};
     else wp_q <= wp_q + 1'b1;
