@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Install every Debian package AngleCore needs, only when something is missing.
+# Install every Debian package AngleCore needs, only when something is missing, then the pinned
+# PyPI packages into the virtual environment .venv (magpylib: the independent field model that the
+# CTest physics_field_vs_magpylib checks model/physics_magnet.cpp against).
 # Idempotent and quiet when all is there; uses sudo when not root.
 set -euo pipefail
 
@@ -9,18 +11,27 @@ packages=(
   verilator iverilog yosys nextpnr-ice40 fpga-icestorm
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-venv
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
 
-echo "setup: installing ${missing[*]}" >&2
-sudo_cmd=()
-[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# PyPI, pinned, in .venv at the repository root (Debian's python3, never the system site).
+magpylib_version=5.1.1
+venv="$(cd "$(dirname "$0")/.." && pwd)/.venv"
+if ! "$venv/bin/python" -c "import magpylib, sys; sys.exit(magpylib.__version__ != '$magpylib_version')" 2>/dev/null; then
+  echo "setup: installing magpylib $magpylib_version into $venv" >&2
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "magpylib==$magpylib_version"
+fi
