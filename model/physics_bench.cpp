@@ -97,7 +97,9 @@ void perturb(BenchDraw& d, PhysicsCase& c) {
     r.sensor.elements[static_cast<size_t>(ch)].offset += o;
     p = {{"channel", ch + 1}, {"offset", o}};
   } else if (s == "air_gap") {
-    const double mm = d.sign() * d.u(0.2, 0.5);
+    // The magnet backs off (end play, wear): every channel smaller by 12..35 %. (Closer, the
+    // channels grow and only the angle noise falls: nothing a gap measure can see.)
+    const double mm = d.u(0.2, 0.6);
     r.air_gap_m += mm * kMm;
     p = {{"gap_change_mm", mm}};
   } else if (s == "stray_axial" || s == "stray_inplane") {
@@ -208,7 +210,9 @@ const std::vector<PhysicsScenario>& physics_scenarios() {
          "c2 moved on the ring (hall4) or the cos axis turned (tmr2): the cosine pair's phase");
     both("plate_gain", "gain_mismatch", "one element's sensitivity");
     both("plate_offset", "offset", "one element's offset");
-    both("air_gap", "amplitude", "every element sees the field scaled alike");
+    both("air_gap", "amplitude",
+         "the magnet backs off: every element sees the field scaled alike (smaller), so the angle "
+         "noise grows");
     both("stray_axial", "no_gap",
          "hall4: the same Bz on every plate cancels in c1 - c3; tmr2: in-plane elements do not "
          "see Bz");
