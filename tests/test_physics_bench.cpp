@@ -51,10 +51,8 @@ TEST(PhysicsBench, DrawsPerturbOnlyTheirScenarioWithinRange) {
     if (s != "mux") EXPECT_TRUE(r.mux_order.empty());
     if (s != "encoder_zero") EXPECT_EQ(r.encoder_zero_rad, 0);
     if (s != "rc_filter" && s != "rc_mismatch") EXPECT_TRUE(r.rc_tau_s.empty());
-    EXPECT_EQ(n.magnet.br_per_C, 0);  // the remanence is held except in the temperature scenarios
-    if (s == "magnet_temperature") in(-r.magnet.br_per_C, 0.0009, 0.0013);
-    if (s == "temperature") EXPECT_EQ(r.magnet.br_per_C, -0.0012);
-    if (s != "magnet_temperature" && s != "temperature") EXPECT_EQ(r.magnet.br_per_C, 0);
+    EXPECT_EQ(n.magnet.br_per_C, 0);  // the remanence is held except in the temperature scenario
+    EXPECT_EQ(r.magnet.br_per_C, s == "temperature" ? -0.0012 : 0.0);
     if (s == "runout") in(r.runout_m, 0.3e-3, 0.6e-3);
     if (s == "runout_offaxis") {
       in(r.runout_m, 0.15e-3, 0.4e-3);
