@@ -40,8 +40,8 @@ SensorLayout inplane_pair(double sensitivity) {
 
 double element_output(const SensingElement& e, const Eigen::Vector3d& b, double temp_C) {
   const double dt = temp_C - 25;
-  return e.sensitivity * (1 + e.sensitivity_per_C * dt) * b.dot(e.direction) + e.offset +
-         e.offset_per_C * dt;
+  const double x = e.sensitivity * (1 + e.sensitivity_per_C * dt) * b.dot(e.direction);
+  return x + e.cubic * x * x * x + e.offset + e.offset_per_C * dt;
 }
 
 }  // namespace acore

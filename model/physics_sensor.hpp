@@ -5,8 +5,9 @@
 //
 // The lab frame: z is the rotation axis, pointing from the sensor to the magnet; the sensing plane
 // is z = 0. Each element measures the field along its own unit direction n at its own position:
-//   out = S (1 + kS (T - 25)) (B . n) + O + kO (T - 25)
-// (S sensitivity per tesla, O offset, kS and kO their temperature coefficients, T in degC), plus
+//   x = S (1 + kS (T - 25)) (B . n),   out = x + a3 x^3 + O + kO (T - 25)
+// (S sensitivity per tesla, a3 a cubic nonlinearity of the element and its amplifier, O offset, kS
+// and kO temperature coefficients, T in degC), plus
 // white noise of sigma `noise` at the ADC input (the chain's noise, referred there).
 //
 // Layouts (nominal; the magnetization points at theta + 90 deg, physics_rig.hpp, so that c1 = sin):
@@ -31,6 +32,7 @@ struct SensingElement {
   double offset = 0;                   // output units
   double sensitivity_per_C = 0;        // relative change of the sensitivity per degC from 25 degC
   double offset_per_C = 0;             // output units per degC from 25 degC
+  double cubic = 0;                    // a3, per output unit squared (negative: soft saturation)
   double noise = 0;                    // white noise sigma at the ADC input, output units
 };
 

@@ -163,6 +163,19 @@ TEST(PhysicsSensor, APlateMovedOnTheRingShiftsItsPairsPhaseByHalf) {
     EXPECT_NEAR(pair(r, m, th).imag(), std::cos(d / 2) * std::sin(th - d / 2), 1e-9);
 }
 
+TEST(PhysicsSensor, ACubicNonlinearityIsAThirdHarmonicSeenFromEveryPosition) {
+  // x - a x^3 with x = sin t: (1 - 3a/4) sin t + (a/4) sin 3t, on every element alike.
+  for (const char* kind : {"hall4", "tmr2"}) {
+    PhysicsRig r = nominal(kind);
+    for (auto& e : r.sensor.elements) e.cubic = -0.04;
+    const DiametricCylinder m = make_magnet(r.magnet);
+    for (double th = 0; th < 2 * M_PI; th += 0.37) {
+      EXPECT_NEAR(rig_output(r, m, 0, th, 25), 0.97 * std::sin(th) + 0.01 * std::sin(3 * th), 1e-9);
+      EXPECT_NEAR(rig_output(r, m, 1, th, 25), 0.97 * std::cos(th) - 0.01 * std::cos(3 * th), 1e-9);
+    }
+  }
+}
+
 TEST(PhysicsChain, RcFilterLagsARampByTauAndFollowsTheSineResponse) {
   const double tau = 1e-3, h = 1e-4;
   RcFilter f(tau, h);

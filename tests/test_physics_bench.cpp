@@ -53,7 +53,21 @@ TEST(PhysicsBench, DrawsPerturbOnlyTheirScenarioWithinRange) {
     if (s != "rc_filter" && s != "rc_mismatch") EXPECT_TRUE(r.rc_tau_s.empty());
     EXPECT_EQ(n.magnet.br_per_C, 0);  // the remanence is held except in the temperature scenario
     EXPECT_EQ(r.magnet.br_per_C, s == "temperature" ? -0.0012 : 0.0);
-    if (s == "runout") in(r.runout_m, 0.3e-3, 0.6e-3);
+    for (const auto& e : r.sensor.elements)
+      EXPECT_EQ(e.cubic, s == "nonlinearity" ? r.sensor.elements[0].cubic : 0.0);
+    if (s == "nonlinearity") in(-r.sensor.elements[0].cubic, 0.02, 0.08);
+    if (s == "runout") {
+      in(r.runout_m, 0.3e-3, 0.6e-3);
+      // The physics of the truth (zero_offset): a constant angle shift carrying >= 90 % of the
+      // clean angle error's square.
+      double shift = 0, rms = 0;
+      for (const auto& [k, v] : c.params) {
+        if (k == "angle_shift_deg") shift = v;
+        if (k == "angle_error_rms_deg") rms = v;
+      }
+      EXPECT_GE(std::fabs(shift), 0.05);
+      EXPECT_GE(shift * shift, 0.9 * rms * rms);
+    }
     if (s == "runout_offaxis") {
       in(r.runout_m, 0.15e-3, 0.4e-3);
       in(n.sensor_shift_m.norm(), 0.3e-3, 0.5e-3);
