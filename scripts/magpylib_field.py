@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """The field of a diametrically magnetized cylinder from magpylib (an independent implementation:
-its closed-form solution for the cylinder), for tests/physics_field_vs_magpylib.cpp.
+its analytic solution for the cylinder), for tests/physics_field_vs_magpylib.cpp.
 
 usage: magpylib_field.py IN.json OUT.json
 IN:  {"cases": [{"radius_m": R, "height_m": h, "br_T": Br, "points": [[x, y, z], ...]}, ...]}
