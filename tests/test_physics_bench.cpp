@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The physics benchmark (model/physics_bench.hpp): its draws perturb exactly what each scenario
-// says, within the documented ranges, blind; and a fixed-seed small run of the diagnosis on it
-// gets the physics truth where it holds today (README "Physics benchmark" lists what fails and
-// why). The truth is decided by the physics (and tested in test_physics.cpp), never by what the
-// diagnosis computes.
+// says, within the documented ranges, blind; and a fixed-seed run of the diagnosis over every
+// scenario meets issue 10's targets (README "Physics benchmark" lists what fails and why). The
+// truth is decided by the physics (and tested in test_physics.cpp), never by what the diagnosis
+// computes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,28 +95,38 @@ TEST(PhysicsBench, DrawsPerturbOnlyTheirScenarioWithinRange) {
   EXPECT_FALSE(rec.real.temp.empty());
 }
 
-TEST(PhysicsBench, FixedSeedSmallRunGetsThePhysicsTruth) {
-  // The scenarios that hold today (6000 samples, one case each). no_gap where the physics cancels
-  // the perturbation in the pairs; the named effect elsewhere.
-  const std::vector<std::string> labels = {
-      "nominal/hall4",      "stray_axial/hall4", "stray_axial/tmr2", "stray_inplane/hall4",
-      "placement_c1/hall4", "plate_gain/hall4",  "adc/tmr2",         "temperature/tmr2"};
+TEST(PhysicsBench, FixedSeedSmallRunMeetsTheIssueTargets) {
+  // Every scenario once (seed 7, 6000 samples; about 9 s of CPU). Issue 10's targets: top-1 >= 90 %
+  // with median holdout shrink >= 70 %; a constant angle shift (run-out of a magnet over a sensor
+  // whose shift carries the error, a reference encoder's zero) named zero_offset; channels sampled
+  // in a random slot order or through mismatched RC filters named channel_skew. Measured on this
+  // run: 35 of 35, median shrink 100 %, lowest 71 % (README "Physics benchmark"; 350 recordings:
+  // 99.7 %, 99.9 %). The margins: one wrong case, a median of 90 %, no case under 50 %.
   BenchOptions opt;
   opt.per_effect = 1;
   opt.seed = 7;
   opt.samples = 6000;
-  for (const auto& l : labels) opt.only.push_back(index_of(l));
+  opt.jobs = 1;
   const BenchSummary s = run_physics_bench(opt);
-  ASSERT_EQ(s.cases.size(), labels.size());
+  ASSERT_EQ(s.cases.size(), physics_scenarios().size());
+  int wrong = 0;
   for (const auto& r : s.cases) {
-    EXPECT_TRUE(r.correct) << r.label << ": expected " << r.expected << ", got " << r.top1;
+    wrong += !r.correct;
     EXPECT_FALSE(r.confident_wrong) << r.label;
-    if (r.effect_case) EXPECT_GE(r.shrink, 0.7) << r.label;
+    const std::string name = r.label.substr(0, r.label.find('/'));
+    if (name == "runout" || name == "encoder_zero" || name == "mux" || name == "rc_mismatch")
+      EXPECT_TRUE(r.correct) << r.label << ": expected " << r.expected << ", got " << r.top1;
+    if (r.effect_case && r.correct) EXPECT_GE(r.shrink, 0.5) << r.label;
   }
+  EXPECT_LE(wrong, 1);
+  EXPECT_GE(s.top1_accuracy, 0.9);
+  EXPECT_GE(s.median_shrink, 0.9);
+  EXPECT_EQ(s.confident_wrong, 0);
+  EXPECT_TRUE(s.met()) << (s.missed().empty() ? "" : s.missed().front());
   int total = 0;
   for (const auto& row : s.confusion)
     for (int v : row) total += v;
-  EXPECT_EQ(total, static_cast<int>(labels.size()));
+  EXPECT_EQ(total, static_cast<int>(s.cases.size()));
   EXPECT_EQ(s.rows.size(), physics_scenarios().size());
 }
 
