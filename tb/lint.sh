@@ -3,7 +3,8 @@
 # verilator --lint-only -Wall over rtl/: every module in rtl/files.f as the top (default
 # parameters), with the waivers of rtl/verilator.vlt; the top in every named configuration of
 # rtl/configs.txt; the 16-bit normalizing CORDIC of rtl/cordic16.cfg;
-# the serial core in rtl/serial_n5r8.cfg. Exit 1 on any warning.
+# the serial core in rtl/serial_n5r8.cfg; the APB shell around the serial core (in its default,
+# around the pipelined top) and around the named configurations' tops. Exit 1 on any warning.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root/rtl"
@@ -25,9 +26,12 @@ while read -r name params; do
   gargs=()
   for p in $params; do gargs+=("-G$p"); done
   run "acore_top config $name" --top-module acore_top "${gargs[@]}"
+  [ "$name" = default ] || run "acore_apb config $name" --top-module acore_apb "${gargs[@]}"
 done < <(grep -E '^[a-z]' configs.txt)
 mapfile -t c16 < <(grep -E '^[A-Z_]+=' cordic16.cfg | sed 's/^/-G/')
 run "acore_cordic cordic16.cfg" --top-module acore_cordic "${c16[@]}"
 mapfile -t sn5r8 < <(grep -E '^[A-Z_]+=' serial_n5r8.cfg | sed 's/^/-G/')
 run "acore_serial_top serial_n5r8.cfg" --top-module acore_serial_top "${sn5r8[@]}"
+run "acore_apb SERIAL=1" --top-module acore_apb -GSERIAL=1
+run "acore_apb SERIAL=1 serial_n5r8.cfg" --top-module acore_apb -GSERIAL=1 "${sn5r8[@]}"
 exit $fail

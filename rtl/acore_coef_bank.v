@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// acore_coef_bank: safe coefficient updates for either top (rtl/acore_top.v, rtl/acore_serial_top.v)
+// through its raw host port: a shadow bank the host writes at any time, a commit that replaces the
+// active words only between samples and only when the shadow's CRC-32 is right, a generation tag
+// for the outputs, and the background scrubber (rtl/acore_coef_scrub.v) that checks the active words.
+//
+// Commit (commit_i, one clock; ignored while busy_o):
+//   INIT    one clock: the CRC engine restarts.                          busy_o (and the shell gates
+//   CHECK   the shadow's words, 0..WORDS-1, through the CRC engine       in_ready) from here on
+//           (32/CRC_W clocks a word) while the samples in flight drain: the shell takes no new sample
+//           and counts accepted - emitted (accept_i, emit_i), so the tops need no new port. Both done:
+//           check_i and CRC != crc_expected_i -> refused: the active words stay, refused_o, done_o;
+//           otherwise:
+//   STREAM  the shadow's words into the top's register file through its host write port, one a clock;
+//   SETTLE  SETTLE clocks for the last write to land (acore_top registers its port), then the tag
+//           (bank_o) flips, the image's CRC becomes the scrubber's reference, done_o, busy_o falls.
+//
+//   commit_i   _/‾\_________________________________________________________
+//   busy_o     ___/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\_____
+//   state         |I| CHECK: CRC pass || drain (max of both) | STREAM WORDS |SETTLE|
+//   top_we_o   ___________________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾\______
+//   bank_o     ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\_____   (new tag)
+//
+// No sample is in flight while the words change, so every output was computed with exactly one
+// image, the one its tag (bank_o when it leaves) names. Busy time: 1 + max(WORDS 32/CRC_W + 2,
+// drain) + WORDS + 1 + SETTLE clocks (drain: until the last accepted sample has left the top).
+//
+// The top's host port belongs to the commit while it streams and to the scrubber otherwise; the
+// host never drives it (the shell's register map has no window on the active words). The shadow's
+// read port belongs to the commit while busy_o, to the register block otherwise.
+`resetall
+`default_nettype none
+
+module acore_coef_bank #(
+  parameter integer REG_W = 18,
+  // Coefficient words of the top.
+  parameter integer WORDS = 52,
+  // Clocks from the top's host address to its reg_rdata_o.
+  parameter integer RD_LAT = 2,
+  // CRC bits per clock (rtl/acore_crc32.v).
+  parameter integer CRC_W = 8,
+  // Width of the in-flight sample counter: must hold the most samples the top holds at once.
+  parameter integer CNT_W = 8,
+  // Clocks after the last host write before samples flow again.
+  parameter integer SETTLE = 2,
+  // $readmemh image: the shadow's power-up contents (the shell gives the top the same one).
+  parameter INIT_FILE = "",
+  // Derived, do not override.
+  parameter integer ADDR_W = $clog2(WORDS)
+) (
+  input  wire              clk_i,
+  input  wire              rst_i,
+  // Shadow bank, register block side: write, and read (q one clock after sh_re_i) while !busy_o.
+  input  wire              sh_we_i,
+  input  wire [ADDR_W-1:0] sh_waddr_i,
+  input  wire [REG_W-1:0]  sh_wdata_i,
+  input  wire              sh_re_i,
+  input  wire [ADDR_W-1:0] sh_raddr_i,
+  output wire [REG_W-1:0]  sh_rdata_o,
+  // Control: commit request (one clock), CRC check and scrubbing enables, the expected CRC.
+  input  wire              commit_i,
+  input  wire              check_i,
+  input  wire              scrub_i,
+  input  wire [31:0]       crc_expected_i,
+  // A sample entered the top / a result left it (handshakes at the top's ports).
+  input  wire              accept_i,
+  input  wire              emit_i,
+  // Live state.
+  output wire              busy_o,
+  output wire              bank_o,
+  output wire              ref_valid_o,
+  // CRC of the shadow at the last commit, of the active image (the last applied commit's), and of
+  // the scrubber's last pass; completed passes (wrapping).
+  output reg  [31:0]       crc_shadow_o,
+  output reg  [31:0]       crc_ref_o,
+  output reg  [31:0]       crc_scrub_o,
+  output reg  [15:0]       scrub_passes_o,
+  // Events, one clock each: a commit ended (applied or refused); it was refused (CRC); a scrub
+  // pass found the active words changed.
+  output wire              done_o,
+  output wire              refused_o,
+  output wire              scrub_err_o,
+  // The top's raw host port.
+  output reg  [ADDR_W-1:0] top_addr_o,
+  output reg  [REG_W-1:0]  top_wdata_o,
+  output reg               top_we_o,
+  input  wire [REG_W-1:0]  top_rdata_i,
+  // The top serves a host read given in this clock (acore_top: 1; serial core: in_ready_o).
+  input  wire              top_rd_ok_i
+);
+
+  initial begin
+    if (WORDS < 2 || ADDR_W != $clog2(WORDS)) $error("acore_coef_bank: WORDS=%0d, ADDR_W derived (instance %m)", WORDS);
+    if (REG_W < 2 || REG_W > 32) $error("acore_coef_bank: REG_W=%0d must be 2..32 (instance %m)", REG_W);
+    if (SETTLE < 1 || SETTLE > 15) $error("acore_coef_bank: SETTLE=%0d must be 1..15 (instance %m)", SETTLE);
+  end
+
+  localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3, C_SETTLE = 3'd4;
+  localparam [ADDR_W:0] END_A = WORDS[ADDR_W:0];
+  localparam [3:0] SETTLE_LAST = SETTLE[3:0] - 4'd1;
+
+  reg [2:0] state_q;
+  assign busy_o = (state_q != C_IDLE);
+
+  // ---- shadow bank ----
+  // ra_q: the next word the commit reads (END_A: all read); qv_q: the RAM output holds a word the
+  // commit has not used yet.
+  reg [ADDR_W:0] ra_q;
+  reg qv_q;
+  wire [REG_W-1:0] q;
+  wire c_load;
+  wire c_re = (state_q == C_CHECK) ? ((~qv_q | c_load) & (ra_q != END_A)) :
+              (state_q == C_STREAM) & (ra_q != END_A);
+  acore_sync_ram #(.W(REG_W), .DEPTH(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
+    .clk_i(clk_i), .we_i(sh_we_i), .waddr_i(sh_waddr_i), .wdata_i(sh_wdata_i),
+    .re_i(busy_o ? c_re : sh_re_i), .raddr_i(busy_o ? ra_q[ADDR_W-1:0] : sh_raddr_i), .q_o(q));
+  assign sh_rdata_o = q;
+
+  // ---- CRC engine, the commit's while busy, the scrubber's otherwise ----
+  wire crc_ready;
+  wire [31:0] crc;
+  wire s_init, s_load, s_pass;
+  wire [31:0] s_word;
+  wire [ADDR_W-1:0] s_addr;
+  assign c_load = (state_q == C_CHECK) & qv_q & crc_ready;
+  acore_crc32 #(.CRC_W(CRC_W)) u_crc (
+    .clk_i(clk_i), .rst_i(rst_i),
+    .init_i(busy_o ? (state_q == C_INIT) : s_init),
+    .load_i(busy_o ? c_load : s_load),
+    .word_i(busy_o ? {{(32-REG_W){1'b0}}, q} : s_word),
+    .ready_o(crc_ready), .crc_o(crc));
+
+  acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT)) u_scrub (
+    .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_o), .addr_o(s_addr), .rdata_i(top_rdata_i),
+    .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
+    .crc_ready_i(crc_ready), .pass_o(s_pass));
+
+  // ---- samples in the top: accepted - emitted ----
+  reg [CNT_W-1:0] inflight_q;
+  always @(posedge clk_i) begin
+    if (rst_i) inflight_q <= {CNT_W{1'b0}};
+    else if (accept_i && !emit_i) inflight_q <= inflight_q + 1'b1;
+    else if (emit_i && !accept_i) inflight_q <= inflight_q - 1'b1;
+  end
+  wire drained = (inflight_q == {CNT_W{1'b0}});
+
+  // ---- the commit ----
+  reg crc_done_q, bank_q, ref_valid_q, pend_q;
+  reg [ADDR_W-1:0] pend_addr_q;
+  reg [3:0] settle_q;
+  wire crc_end = (state_q == C_CHECK) & ~crc_done_q & (ra_q == END_A) & ~qv_q & crc_ready;
+  wire decide = (state_q == C_CHECK) & crc_done_q & drained;
+  wire refuse = decide & check_i & (crc_shadow_o != crc_expected_i);
+  wire apply = (state_q == C_SETTLE) & (settle_q == 4'd0);
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      state_q <= C_IDLE;
+      bank_q <= 1'b0;
+      ref_valid_q <= 1'b0;
+      top_we_o <= 1'b0;
+      pend_q <= 1'b0;
+    end else begin
+      top_we_o <= (state_q == C_STREAM) & pend_q;
+      pend_q <= (state_q == C_STREAM) & c_re;
+      case (state_q)
+        C_IDLE: if (commit_i) state_q <= C_INIT;
+        C_INIT: begin
+          ra_q <= {(ADDR_W+1){1'b0}};
+          qv_q <= 1'b0;
+          crc_done_q <= 1'b0;
+          state_q <= C_CHECK;
+        end
+        C_CHECK: begin
+          if (c_re) ra_q <= ra_q + 1'b1;
+          qv_q <= c_re | (qv_q & ~c_load);
+          if (crc_end) crc_done_q <= 1'b1;
+          if (decide) begin
+            ra_q <= {(ADDR_W+1){1'b0}};
+            state_q <= refuse ? C_IDLE : C_STREAM;
+          end
+        end
+        C_STREAM: begin
+          if (c_re) ra_q <= ra_q + 1'b1;
+          if (ra_q == END_A && !pend_q) begin
+            settle_q <= SETTLE_LAST;
+            state_q <= C_SETTLE;
+          end
+        end
+        default: begin  // C_SETTLE
+          settle_q <= settle_q - 4'd1;
+          if (apply) begin
+            bank_q <= ~bank_q;
+            ref_valid_q <= 1'b1;
+            state_q <= C_IDLE;
+          end
+        end
+      endcase
+    end
+  end
+  // The CRC registers read 0 until the first commit (and pass).
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      crc_shadow_o <= 32'd0;
+      crc_ref_o <= 32'd0;
+    end else begin
+      if (crc_end) crc_shadow_o <= crc;
+      if (apply) crc_ref_o <= crc_shadow_o;
+    end
+  end
+  always @(posedge clk_i) begin
+    pend_addr_q <= ra_q[ADDR_W-1:0];
+    // The top's port: the streamed word, or the scrubber's address.
+    top_addr_o <= ((state_q == C_STREAM) & pend_q) ? pend_addr_q : s_addr;
+    top_wdata_o <= q;
+  end
+
+  // ---- scrubber passes ----
+  wire scrub_bad = s_pass & ref_valid_q & (crc != crc_ref_o);
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      scrub_passes_o <= 16'd0;
+      crc_scrub_o <= 32'd0;
+    end else if (s_pass) begin
+      scrub_passes_o <= scrub_passes_o + 16'd1;
+      crc_scrub_o <= crc;
+    end
+  end
+
+  assign bank_o = bank_q;
+  assign ref_valid_o = ref_valid_q;
+  assign done_o = apply | refuse;
+  assign refused_o = refuse;
+  assign scrub_err_o = scrub_bad;
+
+endmodule
+
+`resetall
