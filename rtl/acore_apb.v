@@ -88,9 +88,11 @@ module acore_apb #(
   // Clocks from the top's host address to its reg_rdata_o: 2 for acore_top; the serial core reads
   // back after one clock today (two once both tops share one host-port timing, issue 11 item 2).
   parameter integer HOST_RD_LAT = (SERIAL != 0) ? 1 : 2,
-  // CRC bits per clock: the commit's CRC pass takes WORDS 32/CRC_W clocks. 32 keeps the pass
-  // shorter than the pipelined top's drain; 8 is smaller and hidden by the serial core's drain.
-  parameter integer CRC_W = (SERIAL != 0) ? 8 : 32,
+  // CRC bits per clock: the commit's CRC pass takes WORDS 32/CRC_W clocks. 16 keeps the CRC off
+  // the pipelined top's critical path (32 would shorten a commit by ~50 clocks but its fold is the
+  // slowest path of the shell, ~105-111 MHz on an HX8K); 8 is smaller and hidden by the serial
+  // core's drain.
+  parameter integer CRC_W = (SERIAL != 0) ? 8 : 16,
   // APB byte address width (>= 11: registers below 0x100, the shadow window at 0x400).
   parameter integer APB_AW = 12,
   // Reset values of the LOS/DOS window (MAG_W bits): the default never flags.
@@ -289,14 +291,27 @@ module acore_apb #(
     endcase
   end
 
-  // Setup phase: the answer (error, register data, or the shadow word from the RAM next clock).
-  reg err_q, win_q;
+  // Setup phase: the answer (error, register data, or the shadow word from the RAM next clock) and
+  // which register an error-free write will change. rdata_q depends on the register index alone
+  // (PRDATA is gated below), and the access phase's write enables are one gate from these flops,
+  // so the address decode stays off the data registers' enables.
+  // A write without error, by the conditions that apply to each target (no window compare on the
+  // register paths).
+  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);
+  wire ok_reg_wr = ok_wr & in_regs;
+  reg err_q, win_q, w_ctrl_q, w_status_q, w_mag_lo_q, w_mag_hi_q, w_crc_q, w_win_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
     if (setup) begin
       err_q <= err_d;
       win_q <= in_win;
-      rdata_q <= (err_d | pwrite_i | ~in_regs) ? 32'd0 : rd_d;
+      rdata_q <= rd_d;
+      w_ctrl_q <= ok_reg_wr & (ridx == R_CTRL) & ~(busy & pwdata_i[0]);
+      w_status_q <= ok_reg_wr & (ridx == R_STATUS);
+      w_mag_lo_q <= ok_reg_wr & (ridx == R_MAG_LO);
+      w_mag_hi_q <= ok_reg_wr & (ridx == R_MAG_HI);
+      w_crc_q <= ok_reg_wr & (ridx == R_CRC_EXP) & ~busy;
+      w_win_q <= ok_wr & in_win & ~busy;
     end
   end
   wire [REG_W-1:0] sh_rdata;
@@ -306,11 +321,10 @@ module acore_apb #(
   assign pslverr_o = access & err_q;
 
   // Access phase: the write.
-  wire wr = access & pwrite_i & ~err_q;
-  wire wr_reg = wr & in_regs;
-  wire commit = wr_reg & (ridx == R_CTRL) & pwdata_i[0];
-  wire clear = wr_reg & (ridx == R_CTRL) & pwdata_i[1];
-  wire [5:0] w1c = (wr_reg && ridx == R_STATUS) ? pwdata_i[5:0] : 6'd0;
+  wire wr_ctrl = access & w_ctrl_q;
+  wire commit = wr_ctrl & pwdata_i[0];
+  wire clear = wr_ctrl & pwdata_i[1];
+  wire [5:0] w1c = (access && w_status_q) ? pwdata_i[5:0] : 6'd0;
   localparam [MAG_W-1:0] MAG_LO_R = MAG_LO_RESET[MAG_W-1:0];
   localparam [MAG_W-1:0] MAG_HI_R = MAG_HI_RESET[MAG_W-1:0];
   // Events of this clock (set wins over a clear in the same clock: no event is lost).
@@ -325,14 +339,14 @@ module acore_apb #(
       mag_hi_q <= MAG_HI_R;
       crc_exp_q <= 32'd0;
     end else begin
-      if (wr_reg && ridx == R_CTRL) begin
+      if (wr_ctrl) begin
         check_q <= pwdata_i[2];
         scrub_q <= pwdata_i[3];
         irq_en_q <= pwdata_i[13:8];
       end
-      if (wr_reg && ridx == R_MAG_LO) mag_lo_q <= pwdata_i[MAG_W-1:0];
-      if (wr_reg && ridx == R_MAG_HI) mag_hi_q <= pwdata_i[MAG_W-1:0];
-      if (wr_reg && ridx == R_CRC_EXP) crc_exp_q <= pwdata_i;
+      if (access && w_mag_lo_q) mag_lo_q <= pwdata_i[MAG_W-1:0];
+      if (access && w_mag_hi_q) mag_hi_q <= pwdata_i[MAG_W-1:0];
+      if (access && w_crc_q) crc_exp_q <= pwdata_i;
       sticky_q <= (sticky_q & ~(w1c | {6{clear}})) | events;
     end
   end
@@ -343,8 +357,10 @@ module acore_apb #(
     .INIT_FILE(INIT_FILE)
   ) u_bank (
     .clk_i(clk_i), .rst_i(rst_i),
-    .sh_we_i(wr & in_win), .sh_waddr_i(widx[ADDR_W-1:0]), .sh_wdata_i(pwdata_i[REG_W-1:0]),
-    .sh_re_i(setup & ~pwrite_i & in_win & ~busy), .sh_raddr_i(widx[ADDR_W-1:0]), .sh_rdata_o(sh_rdata),
+    .sh_we_i(access & w_win_q), .sh_waddr_i(widx[ADDR_W-1:0]), .sh_wdata_i(pwdata_i[REG_W-1:0]),
+    // Every setup phase reads the shadow (used only for a window read): the address decode stays
+    // off the RAM's read enable.
+    .sh_re_i(setup), .sh_raddr_i(widx[ADDR_W-1:0]), .sh_rdata_o(sh_rdata),
     .commit_i(commit), .check_i(check_q), .scrub_i(scrub_q), .crc_expected_i(crc_exp_q),
     .accept_i(accept), .emit_i(emit),
     .busy_o(busy), .bank_o(bank), .ref_valid_o(ref_valid),

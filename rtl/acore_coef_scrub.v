@@ -47,6 +47,7 @@ module acore_coef_scrub #(
   output wire              crc_load_o,
   output wire [31:0]       crc_word_o,
   input  wire              crc_ready_i,
+  input  wire              crc_idle_i,
   // A pass over all WORDS words ends in this clock: the engine's crc_o is its CRC.
   output wire              pass_o
 );
@@ -68,6 +69,8 @@ module acore_coef_scrub #(
   reg [WAIT_W-1:0] wait_q;
   reg [RD_LAT-1:0] ok_q;
   reg [REG_W-1:0] word_q;
+  // addr_o is the last word (a flop, so the state's next value is a few gates from flops).
+  reg last_q;
 
   // The read-back now is the word at addr_o, read in a clock the top served.
   wire served = (wait_q == DUE) && ok_q[RD_LAT-1];
@@ -88,6 +91,7 @@ module acore_coef_scrub #(
       case (state_q)
         ST_START: begin
           addr_o <= {ADDR_W{1'b0}};
+          last_q <= 1'b0;
           wait_q <= {WAIT_W{1'b0}};
           state_q <= ST_READ;
         end
@@ -102,16 +106,17 @@ module acore_coef_scrub #(
         ST_LOAD: begin
           if (crc_ready_i) begin
             wait_q <= {WAIT_W{1'b0}};
-            if (addr_o == LAST) begin
+            if (last_q) begin
               state_q <= ST_END;
             end else begin
               addr_o <= addr_o + 1'b1;
+              last_q <= (addr_o == LAST - 1'b1);
               state_q <= ST_READ;
             end
           end
         end
-        default: begin  // ST_END: the last word folded in
-          if (crc_ready_i) state_q <= ST_START;
+        default: begin  // ST_END: until the last word is folded in
+          if (crc_idle_i) state_q <= ST_START;
         end
       endcase
     end
@@ -120,7 +125,7 @@ module acore_coef_scrub #(
   assign crc_init_o = (state_q == ST_START);
   assign crc_load_o = (state_q == ST_LOAD);
   assign crc_word_o = {{(32-REG_W){1'b0}}, word_q};
-  assign pass_o = (state_q == ST_END) && crc_ready_i;
+  assign pass_o = (state_q == ST_END) && crc_idle_i;
 
 endmodule
 

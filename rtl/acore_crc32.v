@@ -8,13 +8,17 @@
 //   crc = zlib.crc32(b"".join(w.to_bytes(4, "little") for w in words))
 // The coefficient image (REG_W-bit words) is fed zero-extended to 32 bits, in address order.
 //
-//   init_i  ‾\___________________________     crc_o = CRC of the words loaded since init_i
-//   load_i  __/‾\_______/‾\______________     a word is taken when load_i && ready_o
-//   ready_o ‾‾‾‾‾\_____/‾‾‾\_____/‾‾‾‾‾‾‾     low for 32/CRC_W - 1 clocks after a load
+//   init_i  ‾\_______________________________   crc_o = CRC of the words taken since init_i,
+//   load_i  __/‾\_______/‾\__________________   valid while idle_o is high
+//   ready_o ‾‾‾‾‾\_____/‾‾‾\_____/‾‾‾‾‾‾‾‾‾‾‾   a word is taken when load_i && ready_o
+//   idle_o  ‾‾‾‾‾\_____________________/‾‾‾‾‾‾   (CRC_W = 8: four clocks a word)
 //
-// One clock per word at CRC_W = 32 (a 32-input XOR network per CRC bit, ~6 LUT4 each), four at
-// CRC_W = 8 (a few LUT4 per bit). The register is a data flop initialised by init_i; only the
-// chunk counter is reset.
+// A word taken is registered first and folded in over the next 32/CRC_W clocks, so the fold sees
+// only flops. At CRC_W >= 16 the chunk's part of the fold is computed one clock ahead of the CRC
+// register's (the fold is linear), so each clock's logic is half of the wide XOR network (the
+// shell around acore_top then keeps the top's clock rate). A new word is taken in the clock of
+// the last chunk: one word a clock at CRC_W = 32, one per four clocks at CRC_W = 8. The CRC
+// register is a data flop set by init_i; only the chunk counters are reset.
 `resetall
 `default_nettype none
 
@@ -33,7 +37,8 @@ module acore_crc32 #(
   input  wire        load_i,
   input  wire [31:0] word_i,
   output wire        ready_o,
-  // CRC-32 of every word taken since init_i (valid while ready_o is high).
+  // Every word taken is folded in: crc_o is their CRC-32.
+  output wire        idle_o,
   output wire [31:0] crc_o
 );
 
@@ -54,38 +59,49 @@ module acore_crc32 #(
     end
   endfunction
 
-  reg [31:0] c_q;
-  wire busy;
+  // The word in work and how many of its chunks are still to fold (0: none).
+  reg [31:0] c_q, sh_q;
+  reg [STEP_W:0] left_q;
+  localparam [STEP_W:0] ALL = STEPS[STEP_W:0];
+  wire take = load_i & ready_o;
+  wire folding = (left_q != {(STEP_W+1){1'b0}});
+  assign ready_o = (left_q <= {{STEP_W{1'b0}}, 1'b1});
+  always @(posedge clk_i) begin
+    if (rst_i || init_i) left_q <= {(STEP_W+1){1'b0}};
+    else if (take) left_q <= ALL;
+    else if (folding) left_q <= left_q - 1'b1;
+  end
+  always @(posedge clk_i) begin
+    if (take) sh_q <= word_i;
+    else if (folding) sh_q <= sh_q >> CRC_W;
+  end
+  wire dv;
   generate
-    if (STEPS == 1) begin : g_word
-      assign busy = 1'b0;
-      wire unused_rst = rst_i;
+    if (CRC_W >= 16) begin : g_split
+      // The fold is linear, fold(c, d) = fold(c, 0) ^ fold(0, d): the chunk's part is computed one
+      // clock ahead (d_q, valid dv_q), so each clock's logic is half of a wide XOR network.
+      reg [31:0] d_q;
+      reg dv_q;
       always @(posedge clk_i) begin
-        if (init_i) c_q <= 32'hFFFFFFFF;
-        else if (load_i) c_q <= fold(c_q, word_i);
-      end
-    end else begin : g_chunks
-      // The loaded word's bits not yet folded in, and how many chunks remain.
-      reg [31:0] sh_q;
-      reg [STEP_W-1:0] left_q;
-      localparam [STEP_W-1:0] LAST = STEPS[STEP_W-1:0] - 1'b1;
-      assign busy = (left_q != {STEP_W{1'b0}});
-      always @(posedge clk_i) begin
-        if (rst_i || init_i) left_q <= {STEP_W{1'b0}};
-        else if (load_i && !busy) left_q <= LAST;
-        else if (busy) left_q <= left_q - 1'b1;
+        if (rst_i || init_i) dv_q <= 1'b0;
+        else dv_q <= folding;
+        d_q <= fold(32'd0, sh_q[CRC_W-1:0]);
       end
       always @(posedge clk_i) begin
         if (init_i) c_q <= 32'hFFFFFFFF;
-        else if (load_i && !busy) c_q <= fold(c_q, word_i[CRC_W-1:0]);
-        else if (busy) c_q <= fold(c_q, sh_q[CRC_W-1:0]);
-        if (load_i && !busy) sh_q <= word_i >> CRC_W;
-        else sh_q <= sh_q >> CRC_W;
+        else if (dv_q) c_q <= fold(c_q, {CRC_W{1'b0}}) ^ d_q;
       end
+      assign dv = dv_q;
+    end else begin : g_direct
+      // Narrow chunks: one fold a clock is shallow enough.
+      always @(posedge clk_i) begin
+        if (init_i) c_q <= 32'hFFFFFFFF;
+        else if (folding) c_q <= fold(c_q, sh_q[CRC_W-1:0]);
+      end
+      assign dv = 1'b0;
     end
   endgenerate
-
-  assign ready_o = ~busy;
+  assign idle_o = ~folding & ~dv;
   assign crc_o = ~c_q;
 
 endmodule
