@@ -5,8 +5,9 @@
 // for the outputs, and the background scrubber (rtl/acore_coef_scrub.v) that checks the active words.
 //
 // Commit (commit_i, one clock; ignored while busy_o):
-//   INIT    one clock: the CRC engine restarts.                          busy_o (and the shell gates
-//   CHECK   the shadow's words, 0..WORDS-1, through the CRC engine       in_ready) from here on
+//   REQ     one clock: the request registered.                           busy_o (and the shell gates
+//   INIT    one clock: the CRC engine restarts.                          in_ready) from here on
+//   CHECK   the shadow's words, 0..WORDS-1, through the CRC engine
 //           (32/CRC_W clocks a word) while the samples in flight drain: the shell takes no new sample
 //           and counts accepted - emitted (accept_i, emit_i), so the tops need no new port. Both done:
 //           check_i and CRC != crc_expected_i -> refused: the active words stay, refused_o, done_o;
@@ -17,13 +18,13 @@
 //
 //   commit_i   _/‾\_________________________________________________________
 //   busy_o     ___/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\_____
-//   state         |I| CHECK: CRC pass || drain (max of both) | STREAM WORDS |SETTLE|
+//   state         |R|I| CHECK: CRC pass || drain (max of both) | STREAM WORDS |SETTLE|
 //   top_we_o   ___________________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾\______
 //   bank_o     ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\_____   (new tag)
 //
 // No sample is in flight while the words change, so every output was computed with exactly one
 // image, the one its tag (bank_o when it leaves) names. Busy time from the clock of commit_i:
-// max(6 + P + WORDS 32/CRC_W, drain) + WORDS + 2 + SETTLE clocks (P = 1 when CRC_W >= 16 splits
+// max(7 + P + WORDS 32/CRC_W, drain) + WORDS + 2 + SETTLE clocks (P = 1 when CRC_W >= 16 splits
 // the CRC's fold over two clocks, else 0; drain = clocks until the one after the last accepted
 // sample has left the top; tb/test_apb_shell.cpp checks this form).
 //
@@ -109,9 +110,14 @@ module acore_coef_bank #(
   localparam [SC_W-1:0] SC_LAST = STEPS[SC_W-1:0] - 1'b1;
 
   // state_q, and busy_q = (state_q != C_IDLE) as a flop: it selects the RAM's and the engine's inputs.
+  // req_q: the commit request, registered (it comes from the APB write decode); busy_o covers it.
   reg [2:0] state_q;
-  reg busy_q;
-  assign busy_o = busy_q;
+  reg busy_q, req_q;
+  assign busy_o = busy_q | req_q;
+  always @(posedge clk_i) begin
+    if (rst_i) req_q <= 1'b0;
+    else req_q <= commit_i & ~busy_q & ~req_q;
+  end
 
   // ---- shadow bank ----
   // ra_q: the next word the commit reads; more_q: words left to read; sc_q: clocks to the next
@@ -195,7 +201,7 @@ module acore_coef_bank #(
       end
       case (state_q)
         C_IDLE: begin
-          if (commit_i) begin
+          if (req_q) begin
             state_q <= C_INIT;
             busy_q <= 1'b1;
           end

@@ -244,12 +244,13 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
 }
 
 TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
-  // busy = max(6 + P + WORDS 32/CRC_W, drain) + WORDS + 4 clocks from the clock of the CTRL write:
-  // INIT 1, CHECK until both the CRC pass and its check (5 + P + WORDS 32/CRC_W clocks; P = 1 when CRC_W >= 16
-  // splits the fold over two clocks) and the drain are done, the drain ending one clock after the
-  // last sample in flight has left; STREAM WORDS + 2, SETTLE 2.
+  // busy = max(7 + P + WORDS 32/CRC_W, drain) + WORDS + 4 clocks from the clock of the CTRL write:
+  // request 1, INIT 1, CHECK until both the CRC pass and its check (5 + P + WORDS 32/CRC_W clocks;
+  // P = 1 when CRC_W >= 16 splits the fold over two clocks) and the drain are done, the drain
+  // ending one clock after the last sample in flight has left; STREAM WORDS + 2, SETTLE 2.
   // Measured as the clocks with in_ready low (out_ready high throughout).
-  const uint32_t words = cfg().words(), steps = 32 / crc_w(), pass = 6 + (crc_w() >= 16) + words * steps;
+  const uint32_t words = cfg().words(), steps = 32 / crc_w(),
+                 pass = 7 + (crc_w() >= 16) + words * steps;
   ShellDriver d(GetParam());
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
@@ -475,9 +476,13 @@ TEST_P(Shell, ResetValuesAndReadWriteOfEveryRegister) {
   EXPECT_EQ(d.read(sh::kMagHi), mag_mask);
   EXPECT_EQ(d.read(sh::kCrcExpected), 0u);
   EXPECT_FALSE(d.pins().irq());
-  // The scrubber runs from reset (SCRUB = 1).
-  const uint32_t p0 = d.read(sh::kScrubPasses);
-  wait_passes(d, p0, 1);
+  // The scrubber runs from reset (SCRUB = 1); a pass over the idle core's words takes (polled
+  // every two clocks):
+  const uint32_t p1 = wait_passes(d, d.read(sh::kScrubPasses), 1);
+  const uint64_t t1 = d.cycles();
+  wait_passes(d, p1, 4);
+  std::printf("%s: a scrubber pass takes %.1f clocks (idle core)\n", shell_top_name(GetParam()),
+              (d.cycles() - t1) / 4.0);
   std::mt19937_64 rng(21);
   for (int k = 0; k < 20; ++k) {
     const uint32_t v = static_cast<uint32_t>(rng());
