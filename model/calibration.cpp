@@ -34,7 +34,7 @@ std::vector<double> fit_fourier(const Recording& rec, const FloatCoefficients& f
       basis(i, 2 * k - 1) = std::cos(k * theta);
       basis(i, 2 * k) = std::sin(k * theta);
     }
-    err(i) = std::remainder(theta - opt.periodicity * rec.theta_ref[i], 2 * M_PI);
+    err(i) = std::remainder(theta - opt.periodicity * rec.theta_ref[i] - fc.zero_offset, 2 * M_PI);
   }
   const Eigen::VectorXd sol = basis.colPivHouseholderQr().solve(err);
   return std::vector<double>(sol.data(), sol.data() + cols);
@@ -95,6 +95,25 @@ double correction_poly(const FloatCoefficients& fc, int r, int c, double x, doub
   return acc;
 }
 
+double zero_offset_estimate(const std::vector<double>& s13, const std::vector<double>& s24,
+                            const std::vector<double>& theta_ref, int periodicity) {
+  // Sum of unit vectors e^{i (atan2(s13, s24) - p theta)} = (s24 + i s13) e^{-i p theta} / |s|.
+  double re = 0, im = 0;
+  for (size_t i = 0; i < s13.size(); ++i) {
+    const double r = std::hypot(s13[i], s24[i]);
+    if (!(r > 0)) continue;  // the zero vector has no angle
+    const double e = periodicity * theta_ref[i];
+    const double c = std::cos(e), s = std::sin(e);
+    re += (s24[i] * c + s13[i] * s) / r;
+    im += (s13[i] * c - s24[i] * s) / r;
+  }
+  if (!(std::hypot(re, im) > 1e-9 * static_cast<double>(s13.size())))
+    throw InputError(
+        "calibration: the angle error against theta_ref has no mean direction (is theta_ref the "
+        "sensor's angle?): cannot estimate the zero offset");
+  return wrap_pi(std::atan2(im, re));
+}
+
 FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
   if (!rec.has_theta()) throw InputError("calibration needs a theta_ref column");
   const size_t n = rec.size();
@@ -144,6 +163,11 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
     ys[i] = x_is_sine(r, opt.regions) ? s24[i] : s13[i];
     members[r].push_back(i);
   }
+  // Zero offset, from the uncorrected scaled curves (README "Zero offset": iterating it once more
+  // after the fit moves it by 0.01 deg on the paper scenario and changes no figure).
+  fc.zero_offset = opt.estimate_zero
+                       ? zero_offset_estimate(s13, s24, rec.theta_ref, opt.periodicity)
+                       : wrap_pi(opt.zero_offset);
   for (int r = 0; r < opt.regions && terms > 0; ++r) {
     const auto& m = members[r];
     if (m.size() < static_cast<size_t>(2 * terms))
@@ -157,7 +181,8 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
       double basis[64];
       correction_basis(shape, xs[i], ys[i], basis);
       for (int j = 0; j < terms; ++j) V(k, j) = basis[j];
-      const double e = opt.periodicity * rec.theta_ref[i];
+      const double e =
+          opt.periodicity * rec.theta_ref[i] + fc.zero_offset;  // the aligned reference
       rhs(k, 0) = s13[i] - std::sin(e);  // Eq. 6: measured scaled curve minus the ideal one
       rhs(k, 1) = s24[i] - std::cos(e);
     }
@@ -188,7 +213,9 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
   RegImage img;
   img.cfg = cfg;
   img.in_scale = in_scale;
+  img.zero_offset = wrap_pi(fc.zero_offset);
   img.words.assign(cfg.words(), 0);
+  if (cfg.zero_word) img.set_unsigned(cfg.addr_zero(), img.zero_offset_code());
   for (int c = 0; c < 2; ++c) {
     const char* curve = c ? "c24" : "c13";
     // The offset and amplitude are in codes of the pre-filtered curve d (D_W bits).
@@ -297,6 +324,9 @@ FloatCoefficients dequantize(const RegImage& img) {
   for (int j = 0; j < cfg.fourier_words(); ++j)
     fc.fourier.push_back(2 * M_PI * (j == 0 ? 1.0 : gain) *
                          std::ldexp(static_cast<double>(img.fourier(j)), -cfg.fourier_coef_f));
+  // With the ZERO word the chain subtracts the word's value (what the hardware holds).
+  fc.zero_word = cfg.zero_word;
+  fc.zero_offset = img.applied_zero_offset();
   return fc;
 }
 

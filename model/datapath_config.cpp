@@ -52,15 +52,24 @@ void DatapathConfig::validate() const {
   need(s_f >= kVShift + 1, fmt::format("s_f={} must be >= {}", s_f, kVShift + 1));
   need(coef_f >= 1 && coef_f < reg_w, fmt::format("coef_f={} must be 1..reg_w-1", coef_f));
   need(acc_f() >= s_f, fmt::format("coef_f+acc_guard={} must be >= s_f={}", acc_f(), s_f));
+  // A coefficient is shifted left by acc_guard into the accumulator (a << acc_guard).
+  need(acc_guard >= 0, fmt::format("acc_guard={} must be >= 0", acc_guard));
   need(acc_int >= reg_w - coef_f + 1, fmt::format("acc_int={} too small for the coefficients", acc_int));
   need(acc_w() <= 40, fmt::format("acc_w={} must be <= 40", acc_w()));
   need(iterations >= 4 && iterations <= 24, fmt::format("iterations={} must be 4..24", iterations));
   need(cordic_guard >= 0 && cordic_guard <= 8, fmt::format("cordic_guard={} must be 0..8", cordic_guard));
+  // Stage i shifts X and Y right by i: the RTL's CORDIC trims its widths for i < xy_w.
+  need(iterations < xy_w(),
+       fmt::format("iterations={} must be < xy_w={} (s_w+2+cordic_guard)", iterations, xy_w()));
   need(z_w >= angle_w && z_w <= reg_w + 2,
        fmt::format("z_w={} must be angle_w={}..reg_w+2={} (atan(1) must fit a word)", z_w, angle_w,
                    reg_w + 2));
   need(angle_w >= 8 && angle_w <= 24, fmt::format("angle_w={} must be 8..24", angle_w));
   need(fourier_k >= 0 && fourier_k <= 31, fmt::format("fourier_k={} must be 0..31", fourier_k));
+  need(zero_word == 0 || zero_word == 1, fmt::format("zero_word={} must be 0 or 1", zero_word));
+  need(!zero_word || angle_w <= reg_w, fmt::format("zero_word=1 needs angle_w={} <= reg_w={} (the "
+                                                   "zero position is an angle code in one word)",
+                                                   angle_w, reg_w));
   if (fourier_k == 0) return;
   need(fourier_iterations >= 4 && fourier_iterations <= iterations,
        fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
@@ -101,9 +110,11 @@ std::string DatapathConfig::describe() const {
                           fourier_k, fourier_iterations, fourier_coef_f, fourier_word_w, fourier_guard);
   return fmt::format(
       "correction={} in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} "
-      "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} angle_w={}{}",
+      "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} "
+      "angle_w={}{}{}",
       correction_name(correction), in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions,
-      xcenter, coef_f, acc_guard, acc_int, iterations, cordic_guard, z_w, angle_w, fourier);
+      xcenter, coef_f, acc_guard, acc_int, iterations, cordic_guard, z_w, angle_w, fourier,
+      zero_word ? " zero_word=1" : "");
 }
 
 namespace {
@@ -134,6 +145,7 @@ const std::vector<std::pair<const char*, Field>>& rtl_param_table() {
       {"FOURIER_CF", &DatapathConfig::fourier_coef_f},
       {"FOURIER_W", &DatapathConfig::fourier_word_w},
       {"FOURIER_G", &DatapathConfig::fourier_guard},
+      {"ZERO", &DatapathConfig::zero_word},
   };
   return t;
 }

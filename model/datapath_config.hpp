@@ -52,6 +52,11 @@ struct DatapathConfig {
   int fourier_word_w = 16;       // FOURIER_W: significant bits of a harmonic's word (signed; the
                                  // register word's upper bits must repeat its sign); a_0 uses REG_W
   int fourier_guard = 2;         // FOURIER_G: guard fraction bits of the rotation x/y registers
+  // --- zero position (README "Zero offset") ---
+  // ZERO: 1 = one more register word, after every other, holding the zero position z (the low
+  // ANGLE_W bits, an angle code); the output is angle_out = (angle - z) mod 2^ANGLE_W, one adder
+  // after the CORDIC (after the Fourier correction). 0 = no word, no adder (no header key).
+  int zero_word = 0;
 
   // Derived, do not set.
   int d_w() const { return in_w + 1; }              // D_W: c1 - c3
@@ -62,7 +67,8 @@ struct DatapathConfig {
   int coef_per_curve() const;
   int poly_words() const { return 2 * regions * coef_per_curve(); }
   int fourier_words() const { return fourier_k > 0 ? 2 * fourier_k + 1 : 0; }
-  int words() const { return 4 + poly_words() + iterations + fourier_words(); }
+  int zero_words() const { return zero_word ? 1 : 0; }
+  int words() const { return 4 + poly_words() + iterations + fourier_words() + zero_words(); }
   int xy_w() const { return s_w + 2 + cordic_guard; }  // XY_W: CORDIC x/y (gain 1.65 * sqrt 2)
   int fourier_f() const { return fourier_coef_f + fourier_guard; }  // FOURIER_F: Delta fraction bits (turns)
   int fourier_xy_w() const { return fourier_word_w + 2 + fourier_guard; }  // FOURIER_XY_W: rotation x/y
@@ -80,10 +86,13 @@ struct DatapathConfig {
   int addr_atan(int i) const { return 4 + poly_words() + i; }
   // Fourier words after the CORDIC constants: j = 0: a_0; j = 2k-1, 2k: a_k, b_k (k = 1..K).
   int addr_fourier(int j) const { return 4 + poly_words() + iterations + j; }
+  // The ZERO word: the last word of the map (after the atan words and the Fourier words).
+  int addr_zero() const { return 4 + poly_words() + iterations + fourier_words(); }
 
   // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
   void validate() const;
-  // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0).
+  // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0,
+  // zero_word only when it is 1).
   std::string describe() const;
 
   // Every field as its RTL parameter (name in upper case as in rtl/acore_top.v, value), in the

@@ -6,7 +6,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
+#include "effects.hpp"
 #include "errors.hpp"
 
 namespace acore {
@@ -43,7 +46,7 @@ void check_recording(const Recording& r, const std::string& what) {
                                  "at least one full turn is needed", what, covered));
 }
 
-// Amplitude of the gap's mechanical orders 1..max by least squares (non-uniform angles allowed).
+// Amplitude of the gap's mechanical orders 0..max by least squares (non-uniform angles allowed).
 std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::vector<double>& g, int max_order) {
   const size_t n = r.size();
   Eigen::MatrixXd X(n, 2 * max_order + 1);
@@ -56,7 +59,7 @@ std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::ve
   }
   const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(n));
   const Eigen::VectorXd b = X.colPivHouseholderQr().solve(y);
-  std::vector<std::pair<int, double>> out;
+  std::vector<std::pair<int, double>> out = {{0, std::fabs(b(0))}};
   for (int k = 1; k <= max_order; ++k) out.push_back({k, std::hypot(b(2 * k - 1), b(2 * k))});
   return out;
 }
@@ -65,6 +68,11 @@ std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::ve
 // angle-error orders n +- p; offsets give p, amplitude/phase mismatch 2p).
 std::vector<std::string> causes_of(int k, int p) {
   std::vector<std::string> c;
+  if (k == 0) {
+    c.push_back("zero_offset (a constant angle shift)");
+    c.push_back("common_delay or hysteresis (at one speed, in one direction)");
+    return c;
+  }
   if (k == p) c.push_back("offset (signal order 0)");
   if (k == 2 * p) c.push_back("amplitude or phase mismatch (signal order p)");
   if (k == 1 && p != 1) c.push_back("eccentricity (mechanical order 1)");
@@ -74,7 +82,112 @@ std::vector<std::string> causes_of(int k, int p) {
   return c;
 }
 
+// `general` contains `special` as a case (equal gains are an amplitude, equal sampling times a
+// common delay): when the special one is named, the general one explaining as much is no ambiguity.
+bool generalizes(const std::string& general, const std::string& special) {
+  return (general == "gain_mismatch" && special == "amplitude") ||
+         (general == "channel_skew" && special == "common_delay");
+}
+
+// Order among effects the recording cannot tell apart at all (identical columns, e.g. a constant
+// shift, a delay and hysteresis at one constant speed): fewer parameters first, then the constant
+// shift, then the vocabulary's order.
+int tie_rank(const RankedEffect& r) {
+  const auto& names = fittable_effects();
+  const int order =
+      r.cand.effect == "zero_offset"
+          ? -1
+          : static_cast<int>(std::find(names.begin(), names.end(), r.cand.effect) - names.begin());
+  return 100 * r.cand.k + order;
+}
+
+// The order in which a set of effects is applied to a prediction, as simulate() does: angle shifts,
+// then eccentricity (a shift and a scaling), then amplitude (it scales what came before), then the
+// signal-domain effects in the order they were chosen.
+int apply_rank(const std::string& e) {
+  if (e == "eccentricity") return 1;
+  if (e == "amplitude") return 2;
+  return is_field_effect(e) ? 0 : 3;
+}
+
+// The model's prediction with a set of effects (all but `skip`) added in apply order; the white
+// noise they add per channel in *extra.
+Recording predict_set(const FitProblem& f, const std::vector<RankedEffect>& set, double* extra,
+                      size_t skip = SIZE_MAX) {
+  std::vector<size_t> order;
+  for (size_t k = 0; k < set.size(); ++k)
+    if (k != skip) order.push_back(k);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return apply_rank(set[a].cand.effect) < apply_rank(set[b].cand.effect);
+  });
+  Recording pred = f.predicted;
+  *extra = 0;
+  for (size_t k : order) {
+    double e = 0;
+    pred = predict_effect(f, pred, set[k].cand, &e);
+    *extra = std::hypot(*extra, e);
+  }
+  return pred;
+}
+
+// The factor the field scalings of a set (all but `skip`) that are applied after `effect` put on
+// the angle change it causes, per sample (empty: none).
+std::vector<double> later_field_scale(const FitProblem& f, const std::vector<RankedEffect>& set,
+                                      const std::string& effect, size_t skip = SIZE_MAX) {
+  std::vector<double> s;
+  for (size_t k = 0; k < set.size(); ++k) {
+    const EffectCandidate& c = set[k].cand;
+    if (k == skip || apply_rank(c.effect) <= apply_rank(effect)) continue;
+    if (c.effect != "amplitude" && c.effect != "eccentricity") continue;
+    if (s.empty()) s.assign(f.real->size(), 1.0);
+    for (size_t i = 0; i < s.size(); ++i)
+      s[i] *=
+          c.effect == "amplitude"
+              ? c.param("scale")
+              : 1 + c.param("am_depth") * std::cos(f.real->theta_ref[i] - c.param("am_phase_rad"));
+  }
+  return s;
+}
+
+// Fits `effect` on top of the other effects of a set (all but `skip`), as it will act in the set.
+EffectCandidate fit_in_set(const FitProblem& f, const std::vector<RankedEffect>& set,
+                           const std::string& effect, size_t skip = SIZE_MAX) {
+  double extra = 0;
+  const Recording base = predict_set(f, set, &extra, skip);
+  const std::vector<double> scale = later_field_scale(f, set, effect, skip);
+  return fit_effect(f, base, effect, extra, scale.empty() ? nullptr : &scale);
+}
+
+// Backfitting: each effect of the set refitted on top of the others, twice, so the parameters are
+// those of the set together rather than of the order in which the effects were found.
+void refit_set(const FitProblem& f, std::vector<RankedEffect>& set) {
+  if (set.size() < 2) return;
+  for (int round = 0; round < 2; ++round)
+    for (size_t k = 0; k < set.size(); ++k) {
+      const EffectCandidate c = fit_in_set(f, set, set[k].cand.effect, k);
+      if (c.applicable && c.rejected.empty()) set[k].cand = c;
+    }
+}
+
+// The special case a general effect reduces to (empty: none).
+std::string special_case(const std::string& general) {
+  if (general == "gain_mismatch") return "amplitude";
+  if (general == "channel_skew") return "common_delay";
+  return "";
+}
+
 }  // namespace
+
+std::vector<std::string> Diagnosis::named() const {
+  std::vector<std::string> n;
+  if (verdict != "explained") return n;
+  if (!combination.empty()) {
+    for (const auto& r : combination) n.push_back(r.cand.effect);
+  } else if (!ranking.empty()) {
+    n.push_back(ranking.front().cand.effect);
+  }
+  return n;
+}
 
 Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording* holdout, const DiagnoseOptions& opt) {
   check_recording(sim, "--sim");
@@ -148,6 +261,19 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     if (measured(a) != measured(b)) return measured(a);
     return a.cand.delta_bic < b.cand.delta_bic;
   });
+  if (!d.ranking.empty()) {
+    const double b0 = d.ranking.front().cand.delta_bic;
+    size_t pick = 0;
+    for (size_t k = 1; k < d.ranking.size(); ++k) {
+      const RankedEffect& r = d.ranking[k];
+      const bool tie = r.cand.rejected.empty() == d.ranking.front().cand.rejected.empty() &&
+                       measured(r) == measured(d.ranking.front()) &&
+                       std::fabs(r.cand.delta_bic - b0) <= 1e-6 * std::fabs(b0) + 1e-6;
+      if (tie && tie_rank(r) < tie_rank(d.ranking[pick])) pick = k;
+    }
+    std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(pick),
+                d.ranking.begin() + static_cast<std::ptrdiff_t>(pick) + 1);
+  }
 
   // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
   // Is there a gap at all? The systematic part must stand out of what noise leaves in the projection
@@ -172,52 +298,118 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
       const RankedEffect& r = d.ranking[k];
       // A lattice settles quantization against excess noise (see the ranking above).
       const bool settled = top->cand.effect == "quantization" && r.cand.effect == "excess_noise";
-      if (!settled && r.cand.rejected.empty() && r.explained >= opt.explained_min &&
-          r.cand.delta_bic < top->cand.delta_bic + 10)
+      if (!settled && !generalizes(r.cand.effect, top->cand.effect) && r.cand.rejected.empty() &&
+          r.explained >= opt.explained_min && r.cand.delta_bic < top->cand.delta_bic + 10)
         d.ambiguous_with.push_back(r.cand.effect);
     }
 
-  // A second effect when the first leaves a clear remainder.
+  // More effects when the first leaves a clear remainder (forward selection, at most max_combined):
+  // each step fits every other effect on top of those chosen and keeps the one that explains the
+  // most of the gap, if its dBIC on top of them is < -10 and it explains at least 10 % more of
+  // gap^2, or at least 2 % more and half of what is left; the set is then refitted together
+  // (backfitting). A general effect in the set is replaced by its special case when the set's BIC
+  // prefers it. The set is named when it reaches explained_min.
   if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
       top->cand.delta_bic < -10) {
-    double extra1 = 0;
-    const Recording base1 = predict_effect(fp, fp.predicted, top->cand, &extra1);
-    double best_expl = top->explained;
-    for (const std::string& e : fittable_effects()) {
-      if (e == top->cand.effect) continue;
-      RankedEffect r;
-      r.cand = fit_effect(fp, base1, e, extra1);
-      if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
-      const StageSeries after = evaluate(base1, r.cand, real, m, fp, extra1);
-      const double expl = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
-      if (expl > best_expl + 0.1) {
-        best_expl = expl;
-        r.after_deg = after.gap_deg;
-        r.explained = expl;
-        d.combination = {*top, r};
-        d.combination_after_deg = after.gap_deg;
-        d.combination_explained = expl;
+    const double nsig = static_cast<double>(real.size()) * (real.channels == 4 ? 4 : 2);
+    struct SetScore {
+      double explained, after_deg, bic;
+    };
+    auto score = [&](const std::vector<RankedEffect>& set) {
+      double extra = 0;
+      const Recording pred = predict_set(fp, set, &extra);
+      const StageSeries after = compare(m, real, pred, extra, &fp.basis);
+      int k = 0;
+      for (const auto& r : set) k += r.cand.k;
+      return SetScore{before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0,
+                      after.gap_deg, neg2_log_likelihood(fp, pred, extra) + k * std::log(nsig)};
+    };
+    auto in_set = [](const std::vector<RankedEffect>& set, const std::string& e) {
+      return std::any_of(set.begin(), set.end(), [&](const RankedEffect& c) {
+        return c.cand.effect == e || generalizes(c.cand.effect, e) || generalizes(e, c.cand.effect);
+      });
+    };
+    std::vector<RankedEffect> chosen = {*top};
+    SetScore cur{top->explained, top->after_deg, 0};
+    while (static_cast<int>(chosen.size()) < opt.max_combined) {
+      // The chosen set's prediction, once per step; each candidate is fitted and tried on top of it
+      // (with the set's later field scalings on its angle change, as it will act in the set).
+      double extra = 0;
+      const Recording base = predict_set(fp, chosen, &extra);
+      std::optional<RankedEffect> pick;
+      for (const std::string& e : fittable_effects()) {
+        if (in_set(chosen, e)) continue;
+        const std::vector<double> scale = later_field_scale(fp, chosen, e);
+        const std::vector<double>* sp = scale.empty() ? nullptr : &scale;
+        RankedEffect r;
+        r.cand = fit_effect(fp, base, e, extra, sp);
+        if (!r.cand.applicable || !r.cand.rejected.empty() || r.cand.delta_bic > -10) continue;
+        double e2 = 0;
+        const Recording pred = predict_effect(fp, base, r.cand, &e2, sp);
+        const StageSeries after = compare(m, real, pred, std::hypot(extra, e2), &fp.basis);
+        const SetScore t{before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0,
+                         after.gap_deg, 0};
+        r.explained = t.explained;
+        r.after_deg = t.after_deg;
+        const double gain = t.explained - cur.explained;
+        const bool enough =
+            gain >= 0.1 || (gain >= 0.02 && 1 - t.explained <= 0.5 * (1 - cur.explained));
+        if (enough && (!pick || r.explained > pick->explained)) pick = r;
       }
+      if (!pick) break;
+      chosen.push_back(*pick);
+      refit_set(fp, chosen);
+      cur = score(chosen);
     }
-    if (!d.combination.empty() && d.verdict == "unexplained" && d.combination_explained >= opt.explained_min)
-      d.verdict = "explained";
+    if (chosen.size() > 1) {
+      cur = score(chosen);
+      for (size_t k = 0; k < chosen.size(); ++k) {
+        const std::string simple = special_case(chosen[k].cand.effect);
+        if (simple.empty()) continue;
+        std::vector<RankedEffect> alt = chosen;
+        alt[k].cand = fit_in_set(fp, alt, simple, k);
+        if (!alt[k].cand.applicable) continue;
+        refit_set(fp, alt);
+        const SetScore a = score(alt);
+        if (a.bic < cur.bic) chosen = alt, cur = a;
+      }
+      // Each effect's explained and after_deg: those of the set up to it.
+      for (size_t k = 0; k < chosen.size(); ++k) {
+        const SetScore p = score(std::vector<RankedEffect>(chosen.begin(), chosen.begin() + k + 1));
+        chosen[k].explained = p.explained;
+        chosen[k].after_deg = p.after_deg;
+      }
+      d.combination = chosen;
+      d.combination_after_deg = cur.after_deg;
+      d.combination_explained = cur.explained;
+      if (d.verdict == "unexplained" && cur.explained >= opt.explained_min) d.verdict = "explained";
+    }
   }
 
   // How far it shrinks: the chosen effect(s) added to the simulation, on real and holdout.
   auto apply_chosen = [&](const FitProblem& f, const GapModel& gm) {
     double extra = 0;
     Recording pred = f.predicted;
-    if (d.verdict == "explained") {
-      const std::vector<RankedEffect> chosen = d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination;
-      for (const auto& r : chosen) {
-        double e = 0;
-        pred = predict_effect(f, pred, r.cand, &e);
-        extra = std::hypot(extra, e);
-      }
-    }
+    if (d.verdict == "explained")
+      pred = predict_set(f, d.combination.empty() ? std::vector<RankedEffect>{*top} : d.combination,
+                         &extra);
     return compare(gm, *f.real, pred, extra, &f.basis);
   };
   d.after = apply_chosen(fp, m);
+  // Every effect of the vocabulary is a function of angle, speed, direction and temperature: an
+  // explanation that leaves a slow change in time (gap.hpp: a slip of the magnet, a dropout) has
+  // not found the cause, however much of gap^2 it explains.
+  const double slow_share = before2 > 0 ? d.after.slow_deg * d.after.slow_deg / before2 : 0.0;
+  if (d.verdict == "explained" && slow_share > opt.slow_share_max) {
+    d.note = fmt::format(
+        "the gap changes in time in a way no effect of the vocabulary does: after the best "
+        "explanation "
+        "{:.1f} % of gap^2 is left as a slow change over time (at most {:.0f} % allowed)",
+        100 * slow_share, 100 * opt.slow_share_max);
+    d.verdict = "unexplained";
+    d.ambiguous_with.clear();
+    d.after = apply_chosen(fp, m);
+  }
   if (holdout) {
     const FitProblem fh = make_fit_problem(m, *holdout);
     d.hold_before = compare(m, *holdout, fh.predicted, 0, &fh.basis);
@@ -236,8 +428,10 @@ nlohmann::json Diagnosis::to_json() const {
   json j;
   j["verdict"] = verdict;
   j["periodicity"] = periodicity;
-  j["gap"] = {{"before_deg", before.gap_deg}, {"after_deg", after.gap_deg}, {"noise_deg", before.noise_deg},
-              {"raw_rms_before_deg", before.raw_rms_deg}};
+  j["gap"] = {{"before_deg", before.gap_deg},       {"after_deg", after.gap_deg},
+              {"noise_deg", before.noise_deg},      {"raw_rms_before_deg", before.raw_rms_deg},
+              {"slow_before_deg", before.slow_deg}, {"slow_after_deg", after.slow_deg}};
+  if (!note.empty()) j["note"] = note;
   if (hold_before)
     j["holdout"] = {{"before_deg", hold_before->gap_deg}, {"after_deg", hold_after->gap_deg}};
   else
@@ -267,9 +461,12 @@ nlohmann::json Diagnosis::to_json() const {
   }
   j["ranking"] = rank;
   j["ambiguous_with"] = ambiguous_with;
+  j["named"] = named();
   if (!combination.empty()) {
     json c = json::array();
-    for (const auto& r : combination) c.push_back({{"effect", r.cand.effect}, {"params", params_json(r.cand)}});
+    for (const auto& r : combination)
+      c.push_back(
+          {{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained}});
     j["combination"] = {{"effects", c}, {"explained", combination_explained}, {"after_deg", combination_after_deg}};
   }
   return j;

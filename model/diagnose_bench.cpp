@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kDuration = 2.0;  // seconds per recording: the sample rate is samples / kDuration
 constexpr double kDriftSpanC = 40.0;  // drift coefficients are drawn as a change over this span
+// amplitude: |scale - 1| drawn in this range (enough to move the calibrated correction, README).
+constexpr double kAmplitudeMin = 0.05, kAmplitudeMax = 0.30;
 constexpr double kVisible =
     0.01;  // a four-channel draw must move c1 - c3 or c2 - c4 this much (x A)
 
@@ -123,13 +126,40 @@ Effect draw_effect(Draw& d, const BenchCase& c) {
     for (int ch = 0; ch < nch; ++ch)
       if (g[ch] != 0) p.push_back({"gain_" + name(ch), 1.0 + g[ch]});
   } else if (e == "phase_error") {
-    p = {{"delta_rad", d.sign() * d.u(0.5, 5) * kDeg}};
+    // The sine pair, the cosine pair or (four channels) one plate.
+    const double delta = d.sign() * d.u(0.5, 5) * kDeg;
+    const int target = d.i(0, nch == 4 ? 5 : 1);
+    p = {{target == 0   ? "delta_rad"
+          : target == 1 ? "delta_cos_rad"
+                        : "phase_" + name(target - 2),
+          delta}};
+  } else if (e == "zero_offset") {
+    p = {{"zero_rad", d.sign() * d.u(0.2, 3) * kDeg}};
+  } else if (e == "amplitude") {
+    p = {{"scale", 1 + d.sign() * d.u(kAmplitudeMin, kAmplitudeMax)}};
   } else if (e == "harmonic") {
     const int order = nch == 4 ? 2 * d.i(1, 3) + 1 : d.i(2, 5);
     p = {{"order", order}, {"amplitude", d.u(0.01, 0.05)}, {"phase_rad", d.u(-kPi, kPi)}};
   } else if (e == "eccentricity") {
-    p = {{"epsilon_rad", d.u(0.2, 2) * kDeg}, {"phi0_rad", d.u(-kPi, kPi)}};
-  } else if (e == "channel_skew" || e == "common_delay") {
+    // Magnitude modulation up to 1.5 eps, its phase within 90 degrees of phi0 (the other half-plane
+    // is what an offset does to a two-channel sensor, see effects.hpp).
+    const double eps = d.u(0.2, 2) * kDeg, phi0 = d.u(-kPi, kPi);
+    p = {{"epsilon_rad", eps},
+         {"phi0_rad", phi0},
+         {"am_depth", eps * d.u(0, 1.5)},
+         {"am_phase_rad", std::remainder(phi0 + d.u(-kPi / 2, kPi / 2), 2 * kPi)}};
+  } else if (e == "channel_skew") {
+    // A multiplexed ADC: the channels in a random slot order, tau apart; 360 v tau degrees is the
+    // angle between neighbouring slots at the top speed.
+    const double tau = d.u(0.2, 3) / (360.0 * top_speed(c.real_traj));
+    std::vector<int> slot(static_cast<size_t>(nch));
+    for (int k = 0; k < nch; ++k) slot[static_cast<size_t>(k)] = k;
+    for (int k = nch - 1; k > 0; --k)
+      std::swap(slot[static_cast<size_t>(k)], slot[static_cast<size_t>(d.i(0, k))]);
+    for (int ch = 0; ch < nch; ++ch)
+      if (slot[static_cast<size_t>(ch)] != 0)
+        p.push_back({"tau_" + name(ch), slot[static_cast<size_t>(ch)] * tau});
+  } else if (e == "common_delay") {
     // The angle the effect moves at the top speed: 360 v tau degrees.
     p = {{"tau_s", d.u(0.2, 3) / (360.0 * top_speed(c.real_traj))}};
   } else if (e == "drift") {
@@ -255,14 +285,31 @@ std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
       if (k == name) return given(name) != v;
     return false;
   };
-  if (e.effect == "offset" || e.effect == "drift" || e.effect == "phase_error" ||
-      e.effect == "channel_skew" || e.effect == "common_delay" || e.effect == "excess_noise" ||
-      e.effect == "hysteresis") {
+  // A vector of per-channel values, compared as a whole: |fitted - true| / |true|.
+  auto add_vector = [&](const std::string& name, const std::array<double, 4>& t,
+                        const std::array<double, 4>& f) {
+    double dt = 0, nt = 0, nf = 0;
+    for (size_t k = 0; k < 4; ++k)
+      dt += (f[k] - t[k]) * (f[k] - t[k]), nt += t[k] * t[k], nf += f[k] * f[k];
+    out.push_back({name, std::sqrt(nt), std::sqrt(nf), std::sqrt(dt / nt)});
+  };
+  // The fitted per-channel quantities (phase_error, channel_skew) as the simulator reads them.
+  auto fitted = [&] { return make_effect(e.effect, cand.params, c.channels); };
+  if (e.effect == "offset" || e.effect == "drift" || e.effect == "common_delay" ||
+      e.effect == "excess_noise" || e.effect == "hysteresis" || e.effect == "zero_offset") {
     for (const auto& [k, v] : e.params)
       if (drawn(k)) add(k, v, cand.param(k));
   } else if (e.effect == "gain_mismatch") {
     for (const auto& [k, v] : e.params)
       if (drawn(k)) add(k + " - 1", v - 1, cand.param(k) - 1);
+  } else if (e.effect == "amplitude") {
+    add("scale - 1", e.param("scale") - 1, cand.param("scale") - 1);
+  } else if (e.effect == "phase_error") {
+    add_vector("phase per channel", phase_error_shifts(e, c.channels),
+               phase_error_shifts(fitted(), c.channels));
+  } else if (e.effect == "channel_skew") {
+    add_vector("time per channel", channel_skew_offsets(e, c.channels),
+               channel_skew_offsets(fitted(), c.channels));
   } else if (e.effect == "harmonic") {
     const std::complex<double> t = std::polar(e.param("amplitude"), e.param("phase_rad"));
     const std::complex<double> f =
@@ -272,9 +319,14 @@ std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
     out.push_back({fmt::format("order {} a e^(i psi)", e.param("order")), std::abs(t), std::abs(f),
                    std::abs(f - t) / std::abs(t)});
   } else if (e.effect == "eccentricity") {
-    const std::complex<double> t = std::polar(e.param("epsilon_rad"), e.param("phi0_rad"));
-    const std::complex<double> f = std::polar(cand.param("epsilon_rad"), cand.param("phi0_rad"));
-    out.push_back({"eps e^(i phi0)", std::abs(t), std::abs(f), std::abs(f - t) / std::abs(t)});
+    // Angle and magnitude modulation together: the vector (eps e^(i phi0), m e^(i phi_m)).
+    const std::complex<double> ta = std::polar(e.param("epsilon_rad"), e.param("phi0_rad")),
+                               tm = std::polar(e.param("am_depth"), e.param("am_phase_rad"));
+    const std::complex<double> fa = std::polar(cand.param("epsilon_rad"), cand.param("phi0_rad")),
+                               fm = std::polar(cand.param("am_depth"), cand.param("am_phase_rad"));
+    const double nt = std::hypot(std::abs(ta), std::abs(tm));
+    out.push_back({"(eps e^(i phi0), m e^(i phi_m))", nt, std::hypot(std::abs(fa), std::abs(fm)),
+                   std::hypot(std::abs(fa - ta), std::abs(fm - tm)) / nt});
   } else if (e.effect == "quantization") {
     add("step", 2 * e.param("full_scale") / std::ldexp(1.0, static_cast<int>(e.param("bits"))),
         cand.param("step"));
@@ -378,12 +430,14 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   const Diagnosis d = diagnose(rec.sim, rec.real, &rec.holdout);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.verdict = d.verdict;
-  r.top1 =
-      d.verdict == "explained" && !d.ranking.empty() ? d.ranking.front().cand.effect : d.verdict;
+  // The named effect: the best single one, or the first of a named combination.
+  r.top1 = d.verdict == "explained" && !d.named().empty() ? d.named().front() : d.verdict;
   r.correct = r.top1 == expected_top1(c.truth);
   if (c.truth == "none") r.confident_wrong = d.verdict == "explained";
   if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
   r.ambiguous_with = d.ambiguous_with;
+  r.slow_veto = !d.note.empty();
+  r.slow_share = d.before.gap_deg > 0 ? std::pow(d.before.slow_deg / d.before.gap_deg, 2) : 0.0;
   r.best_explained = d.combination.empty() ? 0.0 : d.combination_explained;
   for (const auto& e : d.ranking)
     if (e.cand.rejected.empty()) r.best_explained = std::max(r.best_explained, e.explained);
@@ -392,7 +446,9 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   r.hold_before = d.hold_before->gap_deg;
   r.hold_after = d.hold_after->gap_deg;
   r.shrink = r.hold_before > 0 ? 1.0 - r.hold_after / r.hold_before : 0.0;
-  if (r.correct && !c.effect.effect.empty()) r.params = score(c, d.ranking.front().cand);
+  if (r.correct && !c.effect.effect.empty())
+    r.params =
+        score(c, d.combination.empty() ? d.ranking.front().cand : d.combination.front().cand);
   return r;
 }
 
@@ -476,6 +532,7 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
     s.ambiguous += !r.ambiguous_with.empty();
     if (r.drawn.truth == "outside")
       s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
+    s.slow_vetoed += r.slow_veto;
     if (!r.drawn.effect.effect.empty()) {
       ++effect_cases;
       correct_effects += r.correct;
@@ -523,8 +580,8 @@ std::string short_name(const std::string& s) {
       {"harmonic", "harm"},      {"eccentricity", "ecc"},   {"channel_skew", "skew"},
       {"common_delay", "delay"}, {"drift", "drift"},        {"quantization", "quant"},
       {"saturation", "sat"},     {"excess_noise", "noise"}, {"hysteresis", "hyst"},
-      {"no_gap", "nogap"},       {"unexplained", "unexpl"}, {"none", "none"},
-      {"outside", "outside"}};
+      {"zero_offset", "zero"},   {"amplitude", "ampl"},     {"no_gap", "nogap"},
+      {"unexplained", "unexpl"}, {"none", "none"},          {"outside", "outside"}};
   for (const auto& [a, b] : k)
     if (a == s) return b;
   return s;
@@ -580,9 +637,13 @@ std::string BenchSummary::text() const {
   t += fmt::format("confident wrong answers on none/outside recordings: {}\n", confident_wrong);
   t += fmt::format("named effects the diagnosis flagged as ambiguous: {}\n", ambiguous);
   t += fmt::format(
-      "outside the vocabulary, the best effect or pair explained at most {:.1f} % of gap^2 (naming "
-      "needs 90 %)\n",
+      "outside the vocabulary, the best effect or combination explained at most {:.1f} % of gap^2 "
+      "(naming needs 90 %)\n",
       100 * outside_best_explained);
+  t += fmt::format(
+      "explanations refused because they left a slow change in time (more than {:.0f} % of gap^2): "
+      "{}\n",
+      100 * DiagnoseOptions{}.slow_share_max, slow_vetoed);
   double total = 0, worst = 0;
   for (const auto& r : cases) total += r.seconds, worst = std::max(worst, r.seconds);
   t += fmt::format(
@@ -605,6 +666,7 @@ nlohmann::json BenchSummary::to_json() const {
   j["confident_wrong"] = confident_wrong;
   j["ambiguous"] = ambiguous;
   j["outside_best_explained"] = outside_best_explained;
+  j["slow_vetoed"] = slow_vetoed;
   j["params"] = {{"scored", params_scored},
                  {"within", params_within},
                  {"median_rel_error", param_median},
@@ -638,6 +700,8 @@ nlohmann::json BenchSummary::to_json() const {
     c["holdout_deg"] = {{"before", r.hold_before}, {"after", r.hold_after}};
     c["shrink"] = r.shrink;
     c["best_explained"] = r.best_explained;
+    c["slow_veto"] = r.slow_veto;
+    c["slow_share"] = r.slow_share;
     json sc = json::array();
     for (const auto& q : r.params)
       sc.push_back(

@@ -7,41 +7,48 @@
 //   real     the model plus ONE effect (make_effect), a speed ramp through a reversal, a
 //            temperature ramp, another noise seed
 //   holdout  the same effect and parameters, another ramp, temperature ramp and seed
-// The truth is one of the 12 effects of DESIGN 3.4, "none" (real differs by fresh noise only) or
-// "outside" (an effect outside the vocabulary, applied to the simulated real/holdout recordings
-// here: a slip of the angle, a channel that freezes, amplitude modulation of the sine pair at a
-// frequency unrelated to the angle, mains pick-up on one channel). The diagnosis runs blind.
+// The truth is one of the 14 effects of the vocabulary (effect_names()), "none" (real differs by
+// fresh noise only) or "outside" (an effect outside the vocabulary, applied to the simulated
+// real/holdout recordings here: a slip of the angle, a channel that freezes, amplitude modulation
+// of the sine pair at a frequency unrelated to the angle, mains pick-up on one channel). The
+// diagnosis runs blind.
 //
 // Ranges (A = amplitude 1, P = the largest |channel| of the clean model, sigma = the model's
 // independent noise, v = the real recording's top speed in rev/s, p = 1):
 //   offset         1..5 % of A on a random subset of channels, either sign
 //   gain_mismatch  gain - 1 = 1..5 % on a random subset of channels, either sign
-//   phase_error    0.5..5 deg, either sign
+//   phase_error    0.5..5 deg, either sign, on the sine pair, the cosine pair or (four
+//                  channels) one channel, drawn uniformly
 //   harmonic       1..5 % of A, order 2..5 (two channels) or 3, 5, 7 (four: even orders cancel in
 //                  c1 - c3 and cause no angle error), any phase
-//   eccentricity   0.2..2 deg, any phi0
-//   channel_skew   tau with 360 * v * tau = 0.2..3 deg (the phase between neighbouring channels at
-//   v) common_delay   tau with 360 * v * tau = 0.2..3 deg (the angle lag at v) drift          on a
-//   random subset of channels, offset and/or gain coefficients whose change over
-//                  40 degC is 1..5 % of A
+//   eccentricity   eps 0.2..2 deg, any phi0; magnitude modulation m = 0..1.5 eps (eps in rad),
+//                  phi_m within 90 deg of phi0
+//   channel_skew   the channels in a random slot order, slots tau apart, 360 v tau = 0.2..3 deg
+//   common_delay   tau with 360 * v * tau = 0.2..3 deg (the angle lag at v)
+//   drift          on a random subset of channels, offset and/or gain coefficients whose
+//                  change over 40 degC is 1..5 % of A
 //   quantization   6..10 bits over a full scale of 1.05..1.5 P
 //   saturation     level 80..95 % of P
 //   excess_noise   2..5 sigma
 //   hysteresis     0.1..1 deg, either sign
+//   zero_offset    0.2..3 deg, either sign
+//   amplitude      scale - 1 = 5..30 %, either sign
 // Four-channel draws are redrawn until they change what the estimator sees (c1 - c3, c2 - c4) by at
 // least 1 % of A: an offset or gain common to both channels of a pair is invisible to the angle.
 //
 // "Strong enough to matter" (the parameters whose recovery is scored): every parameter drawn by the
-// rules above, i.e. each drawn (non-default) per-channel value, tau, delta, epsilon, the harmonic,
-// h, sigma, the ADC step and the clipped depth; never a parameter left at its no-op default. Each
-// is compared as a relative error |fitted - true| / |true| of the quantity that carries the effect:
-//   offset, drift, tau, delta, h, sigma   the parameter itself
-//   gain_mismatch                         gain - 1 (the mismatch, not the gain)
-//   harmonic                              the complex amplitude a e^{i psi} (order must match
-//   exactly) eccentricity                          the complex eps e^{i phi0} quantization the ADC
-//   step 2 full_scale / 2^bits (bits and full scale
-//                                         are not separately observable)
-//   saturation                            the clipped depth 1 - level / P
+// rules above, never a parameter left at its no-op default. Each is compared as a relative error
+// |fitted - true| / |true| of the quantity that carries the effect:
+//   offset, drift, tau, h, sigma, zero  the parameter itself
+//   gain_mismatch     gain - 1 (the mismatch, not the gain)
+//   amplitude         scale - 1
+//   phase_error       the vector of per-channel phase shifts (phase_error_shifts)
+//   channel_skew      the vector of per-channel sampling times (channel_skew_offsets)
+//   harmonic          the complex amplitude a e^{i psi} (the order must match exactly)
+//   eccentricity      the vector (eps e^{i phi0}, m e^{i phi_m})
+//   quantization      the ADC step 2 full_scale / 2^bits (bits and full scale are not
+//                     separately observable)
+//   saturation        the clipped depth 1 - level / P
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -95,7 +102,11 @@ struct BenchCaseResult {
   std::vector<std::string> ambiguous_with;  // the diagnosis's own doubt (Diagnosis::ambiguous_with)
   double real_before = 0, real_after = 0, hold_before = 0, hold_after = 0;
   double shrink = 0;          // 1 - hold_after / hold_before
-  double best_explained = 0;  // the largest share of gap^2 any acceptable effect or pair explained
+  double best_explained =
+      0;  // the largest share of gap^2 any acceptable effect or combination explained
+  double slow_share = 0;   // (slow / gap)^2 of the real recording before any effect (gap.hpp)
+  bool slow_veto = false;  // an explanation explained enough but left a slow change in time
+                           // (Diagnosis::note)
   std::vector<BenchParam> params;  // when the right effect is named (top-1)
   double seconds = 0;              // wall time of the diagnosis
 };
@@ -127,6 +138,7 @@ struct BenchSummary {
   double median_shrink = 0, min_shrink = 0;
   int confident_wrong = 0;
   int ambiguous = 0;  // named effects the diagnosis itself flagged as ambiguous
+  int slow_vetoed = 0;  // cases whose explanation the slow-change rule refused (Diagnosis::note)
   double outside_best_explained =
       0;  // the most any effect or pair explained on an outside recording
   int params_scored = 0, params_within = 0;  // scored parameters, those within param_rel_max
@@ -145,11 +157,11 @@ std::string expected_top1(const std::string& truth);
 // Scores one diagnosed case against its truth (params compared as documented above).
 BenchCaseResult run_bench_case(const BenchCase& c, size_t samples);
 
-// The 14 * per_effect cases of a run: per_effect of each effect, then none, then outside (cycling
-// through its kinds); channel counts alternate 4, 2, 4, ...
+// The (effects + 2) * per_effect cases of a run: per_effect of each effect, then none, then outside
+// (cycling through its kinds); channel counts alternate 4, 2, 4, ...
 std::vector<BenchCase> draw_bench_cases(const BenchOptions& opt);
 
-// Draws and diagnoses 14 * per_effect cases on `jobs` threads, then summarizes.
+// Draws and diagnoses (effects + 2) * per_effect cases on `jobs` threads, then summarizes.
 BenchSummary run_diagnose_bench(const BenchOptions& opt,
                                 const BenchTargets& targets = BenchTargets{});
 

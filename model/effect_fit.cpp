@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 
+#include "effects.hpp"
 #include "errors.hpp"
 
 namespace acore {
@@ -77,14 +78,18 @@ std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function
 // Index of a channel around the circle (its 90-degree position): c1..c4 -> 0..3; sin, cos -> 0, 1.
 int position(int c) { return c; }
 
+// The factor on the field (later field scalings of a set, see fit_effect), 1 without one.
+double scale_at(const std::vector<double>* scale, size_t i) { return scale ? (*scale)[i] : 1.0; }
+
+// The field part of a prediction: the channel less the model's electrical offset (its constant
+// Fourier term), which field changes (amplitude, eccentricity) do not scale.
+double field_part(const FitProblem& fp, const Recording& pred, int c, size_t i) {
+  return pred.ch[c][i] - fp.model->sensor.coef[c][0];
+}
+
 }  // namespace
 
-const std::vector<std::string>& fittable_effects() {
-  static const std::vector<std::string> names = {
-      "offset",       "gain_mismatch", "phase_error", "harmonic",     "eccentricity",  "channel_skew",
-      "common_delay", "drift",         "quantization", "saturation", "excess_noise", "hysteresis"};
-  return names;
-}
+const std::vector<std::string>& fittable_effects() { return effect_names(); }
 
 FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
   FitProblem fp;
@@ -192,14 +197,16 @@ Fitted fit_gain(const FitProblem& fp, const Recording& base) {
 // Angle-shift effects: channel c sees theta + delta_c(i) with delta linear in the parameters.
 // basis[p](c, i) is d delta_c(i) / d phi_p; the fit is linearized (predict_effect is exact).
 Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
-                       const std::vector<std::function<double(int, size_t)>>& basis) {
+                       const std::vector<std::function<double(int, size_t)>>& basis,
+                       const std::vector<double>* scale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols;
   for (const auto& b : basis) {
     Column col(r.channels);
     for (int c = 0; c < r.channels; ++c) {
       col[c].resize(r.size());
-      for (size_t i = 0; i < r.size(); ++i) col[c][i] = fp.deriv[c][i] * b(c, i);
+      for (size_t i = 0; i < r.size(); ++i)
+        col[c][i] = scale_at(scale, i) * fp.deriv[c][i] * b(c, i);
     }
     cols.push_back(col);
   }
@@ -211,6 +218,88 @@ Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
 }
 
 bool sine_pair(const Recording& r, int c) { return r.channels == 4 ? (c == 0 || c == 2) : c == 0; }
+
+// amplitude: every channel's field part scaled by 1 + phi.
+Fitted fit_amplitude(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  Column col(r.channels);
+  for (int c = 0; c < r.channels; ++c) {
+    col[c].resize(r.size());
+    for (size_t i = 0; i < r.size(); ++i) col[c][i] = field_part(fp, base, c, i);
+  }
+  const auto [phi, _] = solve_linear(fp, base, {col});
+  Fitted f;
+  f.params = {{"scale", 1.0 + phi(0)}};
+  f.k = 1;
+  return f;
+}
+
+// eccentricity: theta + u sin(theta) - v cos(theta) (u = eps cos phi0, v = eps sin phi0) and the
+// field part times 1 + a cos(theta) + b sin(theta) (a = m cos phi_m, b = m sin phi_m).
+Fitted fit_eccentricity(const FitProblem& fp, const Recording& base,
+                        const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols(4, Column(r.channels));
+  for (int c = 0; c < r.channels; ++c) {
+    for (auto& col : cols) col[c].resize(r.size());
+    for (size_t i = 0; i < r.size(); ++i) {
+      const double th = r.theta_ref[i], s = std::sin(th), co = std::cos(th);
+      const double d = scale_at(scale, i) * fp.deriv[c][i], fld = field_part(fp, base, c, i);
+      cols[0][c][i] = d * s;
+      cols[1][c][i] = -d * co;
+      cols[2][c][i] = fld * co;
+      cols[3][c][i] = fld * s;
+    }
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  f.params = {{"epsilon_rad", std::hypot(phi(0), phi(1))},
+              {"phi0_rad", std::atan2(phi(1), phi(0))},
+              {"am_depth", std::hypot(phi(2), phi(3))},
+              {"am_phase_rad", std::atan2(phi(3), phi(2))}};
+  f.k = 4;
+  return f;
+}
+
+// phase_error: one group of channels sees the electrical angle + delta. The groups a placement or
+// orthogonality error moves: the sine pair, the cosine pair, or (four channels) one plate. The best
+// by likelihood is kept; the choice counts as a parameter (k = 2), as a harmonic's order does.
+Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
+                       const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  struct Group {
+    std::string param;
+    std::function<bool(int)> moves;
+  };
+  std::vector<Group> groups = {{"delta_rad", [&](int c) { return sine_pair(r, c); }},
+                               {"delta_cos_rad", [&](int c) { return !sine_pair(r, c); }}};
+  if (r.channels == 4)
+    for (int k = 0; k < 4; ++k)
+      groups.push_back({"phase_" + effect_channel_name(4, k), [k](int c) { return c == k; }});
+  Fitted best;
+  double best_l = std::numeric_limits<double>::infinity();
+  for (const Group& g : groups) {
+    Fitted f = fit_angle_shift(fp, base,
+                               {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }}, scale);
+    const double delta = f.params[0].second;
+    Recording pred = base;
+    for (int c = 0; c < r.channels; ++c) {
+      if (!g.moves(c)) continue;
+      const auto add = angle_shift(fp, c, [&](size_t) { return delta / p; });
+      for (size_t i = 0; i < r.size(); ++i) pred.ch[c][i] += scale_at(scale, i) * add[i];
+    }
+    const double l = neg2_log_likelihood(fp, pred);
+    if (l < best_l) {
+      best_l = l;
+      best.params = effect_defaults("phase_error", r.channels);
+      for (auto& kv : best.params)
+        if (kv.first == g.param) kv.second = delta;
+      best.k = 2;
+    }
+  }
+  return best;
+}
 
 Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
   const Recording& r = *fp.real;
@@ -439,7 +528,7 @@ double EffectCandidate::param(const std::string& name) const {
 }
 
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
-                         double* extra_sigma) {
+                         double* extra_sigma, const std::vector<double>* field_scale) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   const std::string& e = cand.effect;
@@ -448,7 +537,7 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
   auto shift = [&](const std::function<double(int, size_t)>& delta) {
     for (int c = 0; c < r.channels; ++c) {
       const auto add = angle_shift(fp, c, [&](size_t i) { return delta(c, i); });
-      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += add[i];
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += scale_at(field_scale, i) * add[i];
     }
   };
   if (e == "offset") {
@@ -458,8 +547,16 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
     for (int c = 0; c < r.channels; ++c)
       for (auto& v : out.ch[c]) v *= cand.param("gain_" + chan_name(r, c));
   } else if (e == "phase_error") {
-    const double d = cand.param("delta_rad") / p;
-    shift([&](int c, size_t) { return sine_pair(r, c) ? d : 0.0; });
+    const std::array<double, 4> d =
+        phase_error_shifts(make_effect(e, cand.params, r.channels), r.channels);
+    shift([&](int c, size_t) { return d[static_cast<size_t>(c)] / p; });
+  } else if (e == "zero_offset") {
+    const double z = cand.param("zero_rad");
+    shift([&](int, size_t) { return z; });
+  } else if (e == "amplitude") {
+    const double k = cand.param("scale");
+    for (int c = 0; c < r.channels; ++c)
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += (k - 1) * field_part(fp, base, c, i);
   } else if (e == "harmonic") {
     const int n = static_cast<int>(cand.param("order"));
     const double amp = cand.param("amplitude"), ph = cand.param("phase_rad");
@@ -468,10 +565,17 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
         out.ch[c][i] += amp * std::sin(n * (p * r.theta_ref[i] + position(c) * M_PI / 2) + ph);
   } else if (e == "eccentricity") {
     const double eps = cand.param("epsilon_rad"), phi0 = cand.param("phi0_rad");
+    const double m = cand.param("am_depth"), phim = cand.param("am_phase_rad");
     shift([&](int, size_t i) { return eps * std::sin(r.theta_ref[i] - phi0); });
+    // The field part, at the shifted angle, times 1 + m cos(theta - phi_m).
+    if (m != 0)
+      for (int c = 0; c < r.channels; ++c)
+        for (size_t i = 0; i < r.size(); ++i)
+          out.ch[c][i] += m * std::cos(r.theta_ref[i] - phim) * field_part(fp, out, c, i);
   } else if (e == "channel_skew") {
-    const double tau = cand.param("tau_s");
-    shift([&](int c, size_t i) { return fp.omega[i] * position(c) * tau; });
+    const std::array<double, 4> tau =
+        channel_skew_offsets(make_effect(e, cand.params, r.channels), r.channels);
+    shift([&](int c, size_t i) { return fp.omega[i] * tau[static_cast<size_t>(c)]; });
   } else if (e == "common_delay") {
     const double tau = cand.param("tau_s");
     shift([&](int, size_t i) { return -fp.omega[i] * tau; });
@@ -513,35 +617,41 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
 }
 
 EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
-                           double base_extra) {
+                           double base_extra, const std::vector<double>* field_scale) {
   const Recording& r = *fp.real;
-  const int p = fp.model->periodicity;
   Fitted f;
   if (effect == "offset") {
     f = fit_offset(fp, base);
   } else if (effect == "gain_mismatch") {
     f = fit_gain(fp, base);
   } else if (effect == "phase_error") {
-    // The sine pair sees the electrical angle + delta: mechanical shift delta / p.
-    f = fit_angle_shift(fp, base, {[&](int c, size_t) { return sine_pair(r, c) ? 1.0 / p : 0.0; }});
-    f.params = {{"delta_rad", f.params[0].second}};
+    f = fit_phase_error(fp, base, field_scale);
+  } else if (effect == "zero_offset") {
+    f = fit_angle_shift(fp, base, {[](int, size_t) { return 1.0; }}, field_scale);
+    f.params = {{"zero_rad", f.params[0].second}};
+  } else if (effect == "amplitude") {
+    f = fit_amplitude(fp, base);
   } else if (effect == "harmonic") {
     f = fit_harmonic(fp, base);
   } else if (effect == "eccentricity") {
-    // theta + eps sin(theta - phi0) = theta + u sin(theta) - v cos(theta), u = eps cos phi0, v = eps sin phi0
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return std::sin(r.theta_ref[i]); },
-                                   [&](int, size_t i) { return -std::cos(r.theta_ref[i]); }});
-    const double u = f.params[0].second, v = f.params[1].second;
-    f.params = {{"epsilon_rad", std::hypot(u, v)}, {"phi0_rad", std::atan2(v, u)}};
+    f = fit_eccentricity(fp, base, field_scale);
   } else if (effect == "channel_skew") {
-    // Channel at position c is sampled at t + c tau: theta + omega c tau.
-    f = fit_angle_shift(fp, base, {[&](int c, size_t i) { return fp.omega[i] * position(c); }});
-    f.params = {{"tau_s", f.params[0].second}};
+    // Channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their common part
+    // included: a multiplexer's slots count from the time stamp).
+    std::vector<std::function<double(int, size_t)>> basis;
+    for (int k = 0; k < r.channels; ++k)
+      basis.push_back([&, k](int c, size_t i) { return c == k ? fp.omega[i] : 0.0; });
+    f = fit_angle_shift(fp, base, basis, field_scale);
+    ParamList taus;
+    for (int k = 0; k < r.channels; ++k)
+      taus.push_back({"tau_" + effect_channel_name(r.channels, k), f.params[k].second});
+    f.params = make_effect(effect, taus, r.channels).params;
   } else if (effect == "common_delay") {
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }});
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }}, field_scale);
     f.params = {{"tau_s", f.params[0].second}};
   } else if (effect == "hysteresis") {
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }});
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }},
+                        field_scale);
     f.params = {{"h_rad", f.params[0].second}};
   } else if (effect == "drift") {
     if (fp.dtemp.empty())
@@ -568,7 +678,7 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
     return cand;
   }
   double extra = 0;
-  const Recording pred = predict_effect(fp, base, cand, &extra);
+  const Recording pred = predict_effect(fp, base, cand, &extra, field_scale);
   cand.neg2logl = neg2_log_likelihood(fp, pred, std::hypot(base_extra, extra));
   const double n = static_cast<double>(r.size()) * nsignals(r);
   cand.bic = cand.neg2logl + cand.k * std::log(n);

@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
-// Fitting the effects of DESIGN 3.4 to the difference between a real recording and the static
-// sensor model (gap.hpp), by maximum likelihood under the simulation's own noise level.
+// Fitting the effects of the vocabulary (effects.hpp, DESIGN 3.4 widened) to the difference between
+// a real recording and the static sensor model (gap.hpp), by maximum likelihood under the
+// simulation's own noise level.
 //
 // The residual r = real - model is compared on "signals" whose noise is nearly independent:
-// four-channel: d13 = c1 - c3, d24 = c2 - c4, m13 = (c1 + c3)/2, m24 = (c2 + c4)/2 (common-mode noise
-// lives in m, so it cannot hide an effect on d); two-channel: sin, cos. Each signal s has the noise
-// sigma_s the simulation shows. For a deterministic effect with parameters phi,
+// four-channel: d13 = c1 - c3, d24 = c2 - c4, m13 = (c1 + c3)/2, m24 = (c2 + c4)/2 (common-mode
+// noise lives in m, so it cannot hide an effect on d); two-channel: sin, cos. Each signal s has the
+// noise sigma_s the simulation shows. For a deterministic effect with parameters phi,
 //   -2 log L = sum_s sum_i (r_s,i - J_s,i phi)^2 / sigma_s^2          (Gaussian, known sigma)
-// linear (or linearized about no effect) in phi, so least squares with Eigen solves it. Effects that
-// are not linear (quantization, saturation) are fitted by a search over their parameter; excess
-// noise by its variance. Each is scored by the Bayesian information criterion
+// linear (or linearized about no effect) in phi, so least squares with Eigen solves it. Effects
+// that are not linear (quantization, saturation) are fitted by a search over their parameter;
+// excess noise by its variance; a phase error once per group of channels it can move (either pair,
+// one plate), the best kept. Field scalings (amplitude, eccentricity's magnitude modulation) act on
+// the model's field part: the channel less its constant Fourier term. Each is scored by the
+// Bayesian information criterion
 //   BIC = -2 log L + k ln N,   compared to the model without any effect.
 #pragma once
 #include <string>
@@ -25,7 +29,7 @@ using ParamList = std::vector<std::pair<std::string, double>>;
 struct EffectCandidate {
   double param(const std::string& name) const;  // throws std::out_of_range when absent
 
-  std::string effect;  // DESIGN 3.4 name
+  std::string effect;  // vocabulary name (effect_names())
   ParamList params;    // in the simulator's parametrization (model/effects.hpp)
   int k = 0;           // number of fitted parameters
   double neg2logl = 0;
@@ -57,21 +61,24 @@ FitProblem make_fit_problem(const GapModel& m, const Recording& real);
 double neg2_log_likelihood(const FitProblem& fp, const Recording& prediction,
                            double extra_sigma = 0);
 
-// Fits one effect (DESIGN 3.4 name) on top of `base` (the model prediction, possibly already
-// carrying another effect, whose extra white noise per channel is base_extra). Throws InputError
-// for an unknown name.
+// Fits one effect (a vocabulary name) on top of `base` (the model prediction, possibly already
+// carrying other effects, whose extra white noise per channel is base_extra). field_scale (per
+// sample, nullptr: 1): the factor that field scalings applied after this effect in a set
+// (amplitude, eccentricity's magnitude modulation) put on the angle change it causes. Throws
+// InputError for an unknown name.
 EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
-                           double base_extra = 0);
+                           double base_extra = 0, const std::vector<double>* field_scale = nullptr);
 
 // The prediction of `fp.real`'s channels with the effect added to `base` (the model prediction at
 // the same samples, possibly carrying another effect), from the candidate's parameters alone: this
 // is how a fitted effect is carried to a holdout recording without refitting. The white noise the
 // effect adds per channel is returned in *extra_sigma: excess_noise (channels unchanged) and
 // quantization (the ADC's mean output as channels, its added variance as noise); 0 for the others.
+// field_scale: as for fit_effect, the factor on the angle change it causes.
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
-                         double* extra_sigma);
+                         double* extra_sigma, const std::vector<double>* field_scale = nullptr);
 
-// The effect names fit_effect knows, in DESIGN 3.4 order (without "unexplained").
+// The effect names fit_effect knows: effect_names() (without "unexplained").
 const std::vector<std::string>& fittable_effects();
 
 }  // namespace acore

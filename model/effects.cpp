@@ -21,23 +21,41 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
-// Adds the clean-sensor change of an angle shift (electrical, per channel and sample) to the channels.
-void shift_phase(Recording& rec, EffectContext& ctx, const std::string& effect,
-                 const std::function<double(int, size_t)>& delta) {
-  if (!ctx.sensor) throw InputError(fmt::format("effect '{}': needs the sensor model (angle-domain effect)", effect));
+// The channel's mean over an electrical turn: its electrical offset, which no field change scales.
+double sensor_dc(const EffectContext& ctx, int c) {
+  constexpr int kPoints = 64;  // exact for sensor harmonics below 64
+  double s = 0;
+  for (int k = 0; k < kPoints; ++k) s += ctx.sensor(c, 2 * kPi * k / kPoints);
+  return s / kPoints;
+}
+
+// A field-domain change: channel c at sample i sees the electrical angle shifted by delta(c, i) and
+// its field part multiplied by factor(c, i) (nullptr: 1). Adds the change of the sensor's field
+// part to the channel and updates the context.
+void change_field(Recording& rec, EffectContext& ctx, const std::string& effect,
+                  const std::function<double(int, size_t)>& delta,
+                  const std::function<double(int, size_t)>& factor = nullptr) {
+  if (!ctx.sensor)
+    throw InputError(
+        fmt::format("effect '{}': needs the sensor model (field-domain effect)", effect));
   const size_t n = rec.size();
   for (int c = 0; c < rec.channels; ++c) {
     auto& ph = ctx.phase[static_cast<size_t>(c)];
+    auto& g = ctx.field_gain[static_cast<size_t>(c)];
     auto& x = rec.ch[static_cast<size_t>(c)];
     if (ph.size() != n)
       throw InputError(fmt::format("effect '{}': context has {} phases for channel {}, the recording {} samples",
                                    effect, ph.size(), c + 1, n));
+    if (g.size() != n) g.assign(n, 1.0);
+    const double dc = factor ? sensor_dc(ctx, c) : 0.0;
     for (size_t i = 0; i < n; ++i) {
-      const double d = delta(c, i);
-      if (d == 0) continue;
-      const double nph = ph[i] + d;
-      x[i] += ctx.sensor(c, nph) - ctx.sensor(c, ph[i]);
-      ph[i] = nph;
+      const double d = delta(c, i), f = factor ? factor(c, i) : 1.0;
+      if (d == 0 && f == 1) continue;
+      const double old_field = ctx.sensor(c, ph[i]) - dc;
+      const double new_field = d == 0 ? old_field : ctx.sensor(c, ph[i] + d) - dc;
+      x[i] += g[i] * (f * new_field - old_field);
+      ph[i] += d;
+      g[i] *= f;
     }
   }
 }
@@ -59,14 +77,15 @@ double Effect::param(const std::string& name) const {
 
 const std::vector<std::string>& effect_names() {
   static const std::vector<std::string> names = {
-      "offset",       "gain_mismatch", "phase_error",  "harmonic",   "eccentricity", "channel_skew",
-      "common_delay", "drift",         "quantization", "saturation", "excess_noise", "hysteresis"};
+      "offset",       "gain_mismatch", "phase_error", "harmonic",     "eccentricity",
+      "channel_skew", "common_delay",  "drift",       "quantization", "saturation",
+      "excess_noise", "hysteresis",    "zero_offset", "amplitude"};
   return names;
 }
 
-bool is_angle_effect(const std::string& e) {
+bool is_field_effect(const std::string& e) {
   return e == "phase_error" || e == "eccentricity" || e == "channel_skew" || e == "common_delay" ||
-         e == "hysteresis";
+         e == "hysteresis" || e == "zero_offset" || e == "amplitude";
 }
 
 std::string effect_channel_name(int channels, int c) {
@@ -84,13 +103,21 @@ ParamList effect_defaults(const std::string& e, int channels) {
     per_channel("offset_", 0.0);
   } else if (e == "gain_mismatch") {
     per_channel("gain_", 1.0);
+  } else if (e == "amplitude") {
+    p = {{"scale", 1.0}};
   } else if (e == "phase_error") {
-    p = {{"delta_rad", 0.0}};
+    p = {{"delta_rad", 0.0}, {"delta_cos_rad", 0.0}};
+    per_channel("phase_", 0.0);
   } else if (e == "harmonic") {
     p = {{"order", 3.0}, {"amplitude", 0.0}, {"phase_rad", 0.0}};
   } else if (e == "eccentricity") {
-    p = {{"epsilon_rad", 0.0}, {"phi0_rad", 0.0}};
-  } else if (e == "channel_skew" || e == "common_delay") {
+    p = {{"epsilon_rad", 0.0}, {"phi0_rad", 0.0}, {"am_depth", 0.0}, {"am_phase_rad", 0.0}};
+  } else if (e == "zero_offset") {
+    p = {{"zero_rad", 0.0}};
+  } else if (e == "channel_skew") {
+    p = {{"tau_s", 0.0}};
+    per_channel("tau_", 0.0);
+  } else if (e == "common_delay") {
     p = {{"tau_s", 0.0}};
   } else if (e == "drift") {
     per_channel("offset_per_C_", 0.0);
@@ -134,8 +161,28 @@ Effect make_effect(const std::string& e, const ParamList& given, int channels) {
     if (out.param("level") <= 0) bad("parameter 'level' must be > 0");
   } else if (e == "excess_noise") {
     if (out.param("sigma") < 0) bad("parameter 'sigma' must be >= 0");
+  } else if (e == "amplitude") {
+    if (out.param("scale") <= 0) bad("parameter 'scale' must be > 0");
+  } else if (e == "eccentricity") {
+    if (std::fabs(out.param("am_depth")) >= 1) bad("parameter 'am_depth' must be in (-1, 1)");
   }
   return out;
+}
+
+std::array<double, 4> phase_error_shifts(const Effect& e, int channels) {
+  std::array<double, 4> s{};
+  for (int c = 0; c < channels; ++c)
+    s[static_cast<size_t>(c)] = e.param(c % 2 == 0 ? "delta_rad" : "delta_cos_rad") +
+                                e.param("phase_" + effect_channel_name(channels, c));
+  return s;
+}
+
+std::array<double, 4> channel_skew_offsets(const Effect& e, int channels) {
+  std::array<double, 4> s{};
+  for (int c = 0; c < channels; ++c)
+    s[static_cast<size_t>(c)] =
+        c * e.param("tau_s") + e.param("tau_" + effect_channel_name(channels, c));
+  return s;
 }
 
 EffectContext make_effect_context(const Recording& rec, int p, std::function<double(int, double)> sensor,
@@ -164,8 +211,6 @@ void apply_effect(const Effect& ef, Recording& rec, EffectContext& ctx) {
   const int nch = rec.channels;
   auto chan = [&](int c) -> std::vector<double>& { return rec.ch[static_cast<size_t>(c)]; };
   auto cname = [&](int c) { return effect_channel_name(nch, c); };
-  // Sine channels: c1, c3 (positions 0, 2) or sin.
-  auto sine_channel = [&](int c) { return c % 2 == 0; };
   if (e == "offset") {
     for (int c = 0; c < nch; ++c) {
       const double o = ef.param("offset_" + cname(c));
@@ -176,9 +221,16 @@ void apply_effect(const Effect& ef, Recording& rec, EffectContext& ctx) {
       const double g = ef.param("gain_" + cname(c));
       for (auto& v : chan(c)) v *= g;
     }
+  } else if (e == "amplitude") {
+    const double k = ef.param("scale");
+    change_field(
+        rec, ctx, e, [](int, size_t) { return 0.0; }, [&](int, size_t) { return k; });
   } else if (e == "phase_error") {
-    const double d = ef.param("delta_rad");
-    shift_phase(rec, ctx, e, [&](int c, size_t) { return sine_channel(c) ? d : 0.0; });
+    const std::array<double, 4> d = phase_error_shifts(ef, nch);
+    change_field(rec, ctx, e, [&](int c, size_t) { return d[static_cast<size_t>(c)]; });
+  } else if (e == "zero_offset") {
+    const double z = ctx.p * ef.param("zero_rad");
+    change_field(rec, ctx, e, [&](int, size_t) { return z; });
   } else if (e == "harmonic") {
     const double order = ef.param("order"), a = ef.param("amplitude"), psi = ef.param("phase_rad");
     for (int c = 0; c < nch; ++c) {
@@ -188,18 +240,19 @@ void apply_effect(const Effect& ef, Recording& rec, EffectContext& ctx) {
     }
   } else if (e == "eccentricity") {
     const double eps = ef.param("epsilon_rad"), phi0 = ef.param("phi0_rad");
-    // The per-sample shift is computed from the channel's angle before the shift.
-    shift_phase(rec, ctx, e, [&](int c, size_t i) {
-      const double theta = ctx.phase[static_cast<size_t>(c)][i] / ctx.p;
-      return ctx.p * eps * std::sin(theta - phi0);
-    });
+    const double m = ef.param("am_depth"), phim = ef.param("am_phase_rad");
+    // Shift and factor from the channel's angle before this effect.
+    auto theta = [&](int c, size_t i) { return ctx.phase[static_cast<size_t>(c)][i] / ctx.p; };
+    change_field(
+        rec, ctx, e, [&](int c, size_t i) { return ctx.p * eps * std::sin(theta(c, i) - phi0); },
+        [&](int c, size_t i) { return 1.0 + m * std::cos(theta(c, i) - phim); });
   } else if (e == "channel_skew") {
-    const double tau = ef.param("tau_s");
-    if (tau == 0) return;
+    const std::array<double, 4> tau = channel_skew_offsets(ef, nch);
+    if (std::all_of(tau.begin(), tau.end(), [](double v) { return v == 0; })) return;
     need_time(rec, ctx, e);
-    shift_phase(rec, ctx, e, [&](int c, size_t i) {
-      if (c == 0) return 0.0;
-      return ctx.p * (ctx.theta_at(rec.t[i] + c * tau) - ctx.theta_at(rec.t[i]));
+    change_field(rec, ctx, e, [&](int c, size_t i) {
+      const double tc = tau[static_cast<size_t>(c)];
+      return tc == 0 ? 0.0 : ctx.p * (ctx.theta_at(rec.t[i] + tc) - ctx.theta_at(rec.t[i]));
     });
   } else if (e == "common_delay") {
     const double tau = ef.param("tau_s");
@@ -208,11 +261,12 @@ void apply_effect(const Effect& ef, Recording& rec, EffectContext& ctx) {
     // theta_at(t) is shared by every channel: evaluate once per sample.
     std::vector<double> d(n);
     for (size_t i = 0; i < n; ++i) d[i] = ctx.p * (ctx.theta_at(rec.t[i] - tau) - ctx.theta_at(rec.t[i]));
-    shift_phase(rec, ctx, e, [&](int, size_t i) { return d[i]; });
+    change_field(rec, ctx, e, [&](int, size_t i) { return d[i]; });
   } else if (e == "hysteresis") {
     const double h = ef.param("h_rad");
     if (ctx.direction.size() != n) throw InputError("effect 'hysteresis': the context has no rotation direction");
-    shift_phase(rec, ctx, e, [&](int, size_t i) { return ctx.p * h * (ctx.direction[i] >= 0 ? 1.0 : -1.0); });
+    change_field(rec, ctx, e,
+                 [&](int, size_t i) { return ctx.p * h * (ctx.direction[i] >= 0 ? 1.0 : -1.0); });
   } else if (e == "drift") {
     if (!rec.has_temp()) throw InputError("effect 'drift': the recording has no 'temp' column");
     for (int c = 0; c < nch; ++c) {

@@ -16,11 +16,15 @@ enum class Engine { Float, Fixed, Rtl, RtlSerial };
 Engine parse_engine(const std::string& name);  // throws InputError
 const char* engine_name(Engine e);
 
+// Angles in the reference frame (README "Zero offset"): the chain's output minus the zero offset,
+// which the ZERO word subtracts in the chain or, without it, these functions in software.
 struct AngleSeries {
-  std::vector<double> angle;        // corrected electrical angle, rad [0, 2 pi)
-  std::vector<double> uncorrected;  // the chain without the polynomial correction, rad
+  std::vector<double> angle;        // corrected electrical angle - zero offset, rad [0, 2 pi)
+  std::vector<double> uncorrected;  // without the polynomial correction - zero offset, rad
   std::vector<int> region;
   std::vector<unsigned> flags;      // bit 0 ovf, 1 los, 2 dos (fixed/RTL engines)
+  double zero_offset = 0;           // the zero offset removed (rad, [-pi, pi)) ...
+  bool zero_word = false;           // ... by the ZERO word (true) or in software (false)
 };
 
 // The recording's channels as input codes: round(v * in_scale) saturated to IN_W bits;
@@ -29,7 +33,7 @@ std::vector<ChannelCodes> to_codes(const Recording& rec, double in_scale, int in
 
 AngleSeries run_float(const Recording& rec, const FloatCoefficients& fc);
 AngleSeries run_fixed(const Recording& rec, const RegImage& img);
-// Converts bit-accurate rows (model or RTL) into angles.
-AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const DatapathConfig& cfg);
+// Converts bit-accurate rows (model or RTL) of this image into angles in the reference frame.
+AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const RegImage& img);
 
 }  // namespace acore

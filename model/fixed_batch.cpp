@@ -190,6 +190,13 @@ void output_chunk(const uint32_t* angle, const int32_t* mag, const int32_t* regi
   }
 }
 
+// The ZERO word's adder after everything else: angle - zero modulo a turn.
+ACORE_VECTOR_CLONES
+void zero_chunk(FixedOutput* out, size_t n, uint32_t zero, int angle_w) {
+  const uint32_t mask = (uint32_t{1} << angle_w) - 1;
+  for (size_t i = 0; i < n; ++i) out[i].angle = (out[i].angle - zero) & mask;
+}
+
 }  // namespace
 
 bool FixedModel::batch_fits_int32() const {
@@ -239,6 +246,7 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
   }
   if (cfg.fourier_k > 0)
     for (size_t i = 0; i < n; ++i) out[i].angle = fourier_correct(out[i].angle, fourier_.data(), atan_.data(), cfg);
+  if (cfg.zero_word) zero_chunk(out, n, zero_, cfg.angle_w);
 }
 
 }  // namespace acore

@@ -41,6 +41,7 @@ FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), wi
       for (int t = 0; t < cfg.coef_per_curve(); ++t) coef_.push_back(img_.poly(r, c, t));
   for (int i = 0; i < cfg.iterations; ++i) atan_.push_back(img_.atan(i));
   for (int j = 0; j < cfg.fourier_words(); ++j) fourier_.push_back(img_.fourier(j));
+  if (cfg.zero_word) zero_ = img_.zero_position();
 }
 
 CordicConfig FixedModel::cordic_config() const {
@@ -95,6 +96,11 @@ FixedSample FixedModel::step(const ChannelCodes& c) const {
   out.los = r.magnitude < window_.mag_lo;
   out.dos = r.magnitude > window_.mag_hi;
   out.uncorrected_angle = cordic_vector(out.s24, out.s13, cc, atan_.data()).angle;
+  if (cfg.zero_word) {  // the ZERO word's adder, modulo a turn (on both angles)
+    const uint32_t mask = (uint32_t{1} << cfg.angle_w) - 1;
+    out.angle = (out.angle - zero_) & mask;
+    out.uncorrected_angle = (out.uncorrected_angle - zero_) & mask;
+  }
   return out;
 }
 

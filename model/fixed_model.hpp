@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The bit-accurate model of the whole chain: pre-filter -> scaler -> region select -> polynomial
-// correction -> CORDIC (-> Fourier correction when fourier_k > 0), exactly the RTL's widths and
-// roundings (rtl/acore_top.v), one sample at a time.
+// correction -> CORDIC (-> Fourier correction when fourier_k > 0) (-> angle - zero position with
+// the ZERO word), exactly the RTL's widths and roundings (rtl/acore_top.v), one sample at a time.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -31,7 +31,7 @@ struct FixedSample {
   int64_t s13 = 0, s24 = 0;  // scaled curves (Q2.16)
   int64_t y13 = 0, y24 = 0;  // corrected curves (Q2.16)
   int64_t magnitude = 0;     // CORDIC X_K >>> G
-  uint32_t uncorrected_angle = 0;  // CORDIC of (s24, s13): the chain without correction
+  uint32_t uncorrected_angle = 0;  // CORDIC of (s24, s13) (- zero): the chain without correction
   uint32_t cordic_angle = 0;       // CORDIC of (y24, y13): the angle before the Fourier correction
   bool operator==(const FixedSample& o) const;  // the RTL-visible fields: angle, region, flags
 };
@@ -69,6 +69,7 @@ class FixedModel {
   std::vector<int64_t> coef_;   // sign-extended polynomial words, [region][curve][power]
   std::vector<int64_t> atan_;   // CORDIC constants
   std::vector<int64_t> fourier_;  // sign-extended Fourier words (empty when fourier_k = 0)
+  uint32_t zero_ = 0;             // the ZERO word's zero position (zero_word = 1)
 };
 
 }  // namespace acore

@@ -29,6 +29,10 @@ FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc) 
     if (o.angle < 0) o.angle += 2 * M_PI;
   }
   o.uncorrected = wrap_turn(std::atan2(o.s13, o.s24));
+  if (fc.zero_word) {  // the ZERO word's adder, on both outputs
+    o.angle = wrap_turn(std::fmod(o.angle - fc.zero_offset, 2 * M_PI));
+    o.uncorrected = wrap_turn(std::fmod(o.uncorrected - fc.zero_offset, 2 * M_PI));
+  }
   return o;
 }
 

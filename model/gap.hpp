@@ -9,6 +9,10 @@
 //   sys^2 = mean((X beta)^2) - (cols/N) mean(sigma_i^2)        the systematic part, noise removed
 //   exc^2 = mean(r^2) - mean(sigma_i^2), kept only when 4 standard errors above 0 (extra noise)
 //   gap   = sqrt(max(0, sys^2) + max(0, exc^2))
+//   slow^2 = sum_b n_b mean_b(r)^2 / N - (B/N) mean(sigma_i^2),  B = 16 blocks of samples in order:
+//            the part of r that changes slowly in time. No effect of the vocabulary makes it (they
+//            are functions of angle, speed, direction and temperature, all in the basis); a slip
+//            of the magnet or a dropout does.
 // where sigma_i^2 is the angle-noise variance the simulation's own noise level causes at sample i,
 // through the estimator itself (region switches included; Monte-Carlo, fixed seed). Fresh noise
 // alone gives a gap near 0; the projection keeps the rare large errors of region switches (noise
@@ -44,6 +48,7 @@ struct StageSeries {
   double noise_deg = 0;               // sqrt(mean(noise_var))
   double systematic_deg = 0;          // sqrt(max(0, sys^2))
   double excess_noise_deg = 0;        // sqrt(max(0, exc^2)) when significant
+  double slow_deg = 0;  // sqrt(max(0, slow^2)): the excess that changes slowly in time
   std::vector<double> g_systematic;   // X beta: the smooth part of g, for plots
 };
 

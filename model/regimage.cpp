@@ -39,6 +39,9 @@ std::map<std::string, int DatapathConfig::*> config_fields() {
           {"angle_w", &DatapathConfig::angle_w}};
 }
 
+// Written only when 1, so images without the ZERO word keep their exact text.
+constexpr const char* kZeroWordKey = "zero_word";
+
 // The Fourier stage's keys: written only when fourier_k > 0, so images without the stage keep
 // their exact text.
 std::map<std::string, int DatapathConfig::*> fourier_fields() {
@@ -68,6 +71,32 @@ int64_t RegImage::fourier(int j) const {
   return fx::sext(words.at(cfg.addr_fourier(j)), j == 0 ? cfg.reg_w : cfg.fourier_word_w);
 }
 
+uint32_t RegImage::zero_position() const {
+  return static_cast<uint32_t>(words.at(cfg.addr_zero()) & word_mask(cfg.angle_w));
+}
+
+uint32_t RegImage::zero_offset_code() const { return angle_code(zero_offset, cfg.angle_w); }
+
+double RegImage::applied_zero_offset() const {
+  return cfg.zero_word ? code_angle(zero_position(), cfg.angle_w) : zero_offset;
+}
+
+double wrap_pi(double rad) {
+  const double w = rad - 2 * M_PI * std::floor((rad + M_PI) / (2 * M_PI));
+  return w >= M_PI ? w - 2 * M_PI : w;  // rounding can land on +pi
+}
+
+uint32_t angle_code(double rad, int angle_w) {
+  const double turns = rad / (2 * M_PI) - std::floor(rad / (2 * M_PI));  // [0, 1]
+  return static_cast<uint32_t>(std::llround(std::ldexp(turns, angle_w)) &
+                               static_cast<int64_t>(word_mask(angle_w)));
+}
+
+double code_angle(uint32_t code, int angle_w) {
+  const int64_t c = fx::sext(code, angle_w);  // [-2^(A-1), 2^(A-1)): [-pi, pi)
+  return std::ldexp(static_cast<double>(c), -angle_w) * 2 * M_PI;
+}
+
 void RegImage::set_signed(int addr, int64_t value) {
   if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))
     throw InputError(fmt::format("register {}: value {} does not fit a signed {}-bit word", addr, value,
@@ -95,12 +124,16 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
   RegImage img;
   auto fields = config_fields();
   fields.merge(fourier_fields());
+  fields.emplace(kZeroWordKey, &DatapathConfig::zero_word);
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
   bool in_scale_seen = false;
   int crc_line = 0;  // line of the crc32 key (0: absent; images before the key have none)
   uint32_t crc_header = 0;
+  // The zero offset's two keys (rad, and the code of angle_w bits), checked once angle_w is known.
+  int rad_line = 0, code_line = 0;
+  long long zero_code = 0;
   while (std::getline(in, line)) {
     ++lineno;
     std::string comment;
@@ -127,6 +160,15 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
           crc_header = static_cast<uint32_t>(std::stoul(val.substr(2), &used, 16));
           used += 2;
           crc_line = lineno;
+        } else if (key == "zero_offset_rad") {
+          img.zero_offset = std::stod(val, &used);
+          if (!(std::fabs(img.zero_offset) <= M_PI)) used = 0;  // also NaN: an angle in [-pi, pi]
+          if (img.zero_offset >= M_PI) img.zero_offset -= 2 * M_PI;
+          rad_line = lineno;
+        } else if (key == "zero_offset_code") {
+          zero_code = std::stoll(val, &used);
+          if (zero_code < 0 || val[0] == '-' || val[0] == '+') used = 0;
+          code_line = lineno;
         } else if (key == "correction") {
           img.cfg.correction = parse_correction(val);  // absent: poly (images before the field)
           used = val.size();
@@ -155,6 +197,19 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
     throw InputError(fmt::format("{}: header: {}", name, e.what()));
   }
   if (!in_scale_seen) throw InputError(fmt::format("{}: header: missing 'acore: in_scale=...'", name));
+  if (code_line) {
+    const long long max = (1LL << img.cfg.angle_w) - 1;
+    if (zero_code > max)
+      throw InputError(
+          fmt::format("{}:{}: header field 'zero_offset_code': {} does not fit angle_w={} bits",
+                      name, code_line, zero_code, img.cfg.angle_w));
+    if (!rad_line) img.zero_offset = code_angle(static_cast<uint32_t>(zero_code), img.cfg.angle_w);
+    if (img.zero_offset_code() != static_cast<uint32_t>(zero_code))
+      throw InputError(fmt::format(
+          "{}:{}: header field 'zero_offset_code': {} is not zero_offset_rad={} as a "
+          "{}-bit angle code ({})",
+          name, code_line, zero_code, img.zero_offset, img.cfg.angle_w, img.zero_offset_code()));
+  }
   if (static_cast<int>(img.words.size()) != img.cfg.words())
     throw InputError(fmt::format("{}: {} words, but the header's configuration needs {} ({})", name,
                                  img.words.size(), img.cfg.words(), img.cfg.describe()));
@@ -188,6 +243,15 @@ std::string format_regimage(const RegImage& img) {
   for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
   if (c.fourier_k > 0)
     for (const auto& [key, field] : fourier_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  if (c.zero_word) out += fmt::format("// acore: {}=1\n", kZeroWordKey);
+  if (img.zero_offset != 0.0 || c.zero_word) {
+    out += fmt::format("// acore: zero_offset_rad={}\n", img.zero_offset);
+    out += fmt::format("// acore: zero_offset_code={}\n", img.zero_offset_code());
+    out += fmt::format(
+        "// zero offset = {:+.6f} deg electrical (sensor angle - p theta_ref), {}\n",
+        img.zero_offset * 180 / M_PI,
+        c.zero_word ? "subtracted by the ZERO word" : "subtracted by `estimate` in software");
+  }
   const int digits = (c.reg_w + 3) / 4;
   auto line = [&](int addr, const std::string& what) {
     out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
@@ -222,6 +286,10 @@ std::string format_regimage(const RegImage& img) {
       line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)", j % 2 ? "a" : "b",
                                           (j + 1) / 2, deg * gain));
   }
+  if (c.zero_word)
+    line(c.addr_zero(),
+         fmt::format("zero position = {} = {:+.6f} deg (angle_out = angle - zero)",
+                     img.zero_position(), code_angle(img.zero_position(), c.angle_w) * 180 / M_PI));
   return out;
 }
 

@@ -16,6 +16,10 @@ struct RegImage {
   double in_scale = 8192.0;     // input codes per recording unit (the "ADC" gain), a power of two
   std::vector<uint64_t> words;  // REG_W-bit words, unsigned, in address order
   std::vector<std::string> provenance;  // free text lines for the header (command, date, ...)
+  // The calibration's constant electrical angle offset, sensor angle - p theta_ref, in rad, wrapped
+  // to [-pi, pi) (README "Zero offset"); header keys zero_offset_rad and zero_offset_code, absent
+  // (images made before) = 0. The estimate subtracts it in software unless the ZERO word does.
+  double zero_offset = 0.0;
 
   // Field accessors (sign-extended where the field is signed).
   int64_t offset(int curve) const;
@@ -24,6 +28,15 @@ struct RegImage {
   int64_t atan(int i) const;
   // Fourier word j: a_0 (REG_W bits), a'_1, b'_1, ... (their low fourier_word_w bits), signed.
   int64_t fourier(int j) const;
+  // The ZERO word's zero position: its low ANGLE_W bits (cfg.zero_word = 1 only).
+  uint32_t zero_position() const;
+  // zero_offset as an ANGLE_W-bit angle code: round(zero_offset / 2 pi * 2^ANGLE_W) mod 2^ANGLE_W.
+  uint32_t zero_offset_code() const;
+  // The offset the estimate subtracts in software to bring the chain's output into the reference
+  // frame: zero_offset without the ZERO word, 0 with it (the hardware subtracts the word).
+  double software_zero_offset() const { return cfg.zero_word ? 0.0 : zero_offset; }
+  // The offset the whole chain removes (rad, wrapped): the ZERO word's value, or zero_offset.
+  double applied_zero_offset() const;
   void set_signed(int addr, int64_t value);  // throws InputError when value does not fit REG_W
   void set_unsigned(int addr, int64_t value);
 };
@@ -32,6 +45,12 @@ struct RegImage {
 // 802.3) over each word zero-extended to 32 bits, four little-endian bytes, in address order. The
 // image text carries it as `// acore: crc32=0x...`; a reader checks it when present.
 uint32_t image_crc32(const RegImage& img);
+// rad wrapped to [-pi, pi).
+double wrap_pi(double rad);
+// An angle in rad as an ANGLE_W-bit code, rounded, modulo a turn (the ZERO word's format).
+uint32_t angle_code(double rad, int angle_w);
+// An ANGLE_W-bit code as an angle in rad, wrapped to [-pi, pi).
+double code_angle(uint32_t code, int angle_w);
 
 RegImage read_regimage(const std::string& path);
 RegImage parse_regimage(const std::string& text, const std::string& name);

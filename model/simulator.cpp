@@ -414,7 +414,7 @@ Recording simulate(const Scenario& s, size_t samples, uint64_t seed) {
     }
   }
   for (const Effect& e : s.effects)
-    if (is_angle_effect(e.effect)) apply_effect(e, rec, ctx);
+    if (is_field_effect(e.effect)) apply_effect(e, rec, ctx);
 
   // Noise: per sample, the common draw first, then one per channel.
   if (s.sigma_common > 0 || s.sigma_indep > 0) {
@@ -428,7 +428,7 @@ Recording simulate(const Scenario& s, size_t samples, uint64_t seed) {
     }
   }
   for (const Effect& e : s.effects)
-    if (!is_angle_effect(e.effect)) apply_effect(e, rec, ctx);
+    if (!is_field_effect(e.effect)) apply_effect(e, rec, ctx);
 
   rec.meta["scenario"] = s.name;
   rec.meta["seed"] = std::to_string(seed);

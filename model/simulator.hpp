@@ -9,19 +9,20 @@
 // plus noise: one Gaussian draw per sample common to all channels (sigma_common, cancels in c1-c3)
 // and one per channel (sigma_indep). Two channels: sin = A1 sin(phi) + e1, cos = A2 cos(phi) + e2.
 //
-// simulate() builds the clean recording on the trajectory, applies the angle-domain effects (list
+// simulate() builds the clean recording on the trajectory, applies the field-domain effects (list
 // order), adds the noise, then applies the signal-domain effects (list order), so an ADC
 // (quantization) or clipping (saturation) sees the noisy signal.
 //
 // Scenario JSON (every field optional, defaults as below; unknown fields are errors):
 // {
 //   "name": "custom", "description": "", "channels": 4, "p": 1,
-//   "sensor": [{"amplitude": 1, "offset": 0, "AF": [..], "BF": [..]}, ... one per channel (2 or 4)],
-//   "sigma_common": 0, "sigma_indep": 0,
-//   "trajectory": {"kind": "turn", "sample_rate_hz": 0, "theta0_rad": 0, "turns": 1, "speed_rps": 0,
+//   "sensor": [{"amplitude": 1, "offset": 0, "AF": [..], "BF": [..]}, ... one per channel (2 or
+//   4)], "sigma_common": 0, "sigma_indep": 0, "trajectory": {"kind": "turn", "sample_rate_hz": 0,
+//   "theta0_rad": 0, "turns": 1, "speed_rps": 0,
 //                  "speed_end_rps": 0, "sweep_turns": 1, "cycles": 1},
 //   "temperature": {"enabled": false, "start_C": 25, "end_C": 25},
-//   "effects": [{"effect": "offset", "offset_c1": 0.01, ...}, ...]          (effects.hpp parameters)
+//   "effects": [{"effect": "offset", "offset_c1": 0.01, ...}, ...]          (effects.hpp
+//   parameters)
 // }
 #pragma once
 #include <array>

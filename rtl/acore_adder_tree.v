@@ -37,9 +37,10 @@ module acore_adder_tree #(
   input  wire [BUS_W-1:0] terms_i;
   output wire [W-1:0]     sum_o;
 
-  initial begin
-    if (N < 2) $error("acore_adder_tree: N=%0d must be >= 2 (instance %m)", N);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(N >= 2), .VALUE(N),
+    .MSG("illegal parameter: acore_adder_tree: N must be >= 2"))
+    N_must_be_at_least_2 ();
 
   // Level l holds ceil(N / 2^l) partial sums; unused slots are zero.
   wire [BUS_W-1:0] lvl [0:LEVELS];

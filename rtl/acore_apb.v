@@ -79,15 +79,12 @@ module acore_apb #(
   parameter integer FOURIER_CF = 22,
   parameter integer FOURIER_W = 16,
   parameter integer FOURIER_G = 2,
-  // Fold factor of acore_top and its ZERO word (issue 11 item 1, issue 10): reported in CONFIG0;
-  // until the tops have these parameters only FOLD = 1 and ZERO = 0 are built.
-  parameter integer FOLD = 1,
+  // 1: the ZERO word (the zero position, last register word; both tops): WORDS counts it.
   parameter integer ZERO = 0,
+  // Fold factor of acore_top (issue 11 item 1), reported in CONFIG0: 1 until the top has one.
+  parameter integer FOLD = 1,
   // $readmemh register image: power-up contents of the top's words and of the shadow ("" = none).
   parameter INIT_FILE = "",
-  // Clocks from the top's host address to its reg_rdata_o: 2 for acore_top; the serial core reads
-  // back after one clock today (two once both tops share one host-port timing, issue 11 item 2).
-  parameter integer HOST_RD_LAT = (SERIAL != 0) ? 1 : 2,
   // CRC bits per clock: the commit's CRC pass takes WORDS 32/CRC_W clocks. 16 keeps the CRC off
   // the pipelined top's critical path (32 would shorten a commit by ~50 clocks but its fold is the
   // slowest path of the shell, ~105-111 MHz on an HX8K); 8 is smaller and hidden by the serial
@@ -98,7 +95,7 @@ module acore_apb #(
   // Reset values of the LOS/DOS window (MAG_W bits): the default never flags.
   parameter integer MAG_LO_RESET = 0,
   parameter integer MAG_HI_RESET = -1,
-  // Derived, do not override (the tops' formulas; WORDS is handed to the top, whose own check
+  // Derived, do not override (the tops' formulas; WORDS is handed to the top, whose own rule
   // then confirms it).
   parameter integer RG_W = $clog2(REGIONS),
   parameter integer TERMS = (CORRECTION == 2) ? 0 :
@@ -155,26 +152,58 @@ module acore_apb #(
       ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? 6 + apb_cmul(DEGREE, $clog2(S_W) + 2) :
                                                    4 + apb_cmul(DEGREE, $clog2(S_W) + 2)) +
       (K + 2) + ((FOURIER_K > 0) ? $clog2(FOURIER_KB) + 1 + FOURIER_M + $clog2(FOURIER_K + 1) + 1 : 0) + 1;
-  localparam integer SERIAL_CYCLES = 22 + (REG_W << 1) + apb_cmul(DEGREE << 1, S_W + 2) + apb_cmul(3, K);
+  localparam integer SERIAL_CYCLES = 22 + ((ZERO != 0) ? 1 : 0) + (REG_W << 1) + apb_cmul(DEGREE << 1, S_W + 2) +
+                                     apb_cmul(3, K);
   localparam integer LATENCY = (SERIAL != 0) ? SERIAL_CYCLES + 1 : TOP_LATENCY;
   localparam integer CYCLES = (SERIAL != 0) ? SERIAL_CYCLES : FOLD;
   // Samples the top can hold at once: one per pipeline stage, or the serial core's one in work
   // and one result waiting.
   localparam integer CNT_W = $clog2(LATENCY + 2);
 
-  initial begin
-    if (SERIAL != 0 && SERIAL != 1) $error("acore_apb: SERIAL=%0d must be 0 or 1 (instance %m)", SERIAL);
-    if (SERIAL != 0 && (CORRECTION != 0 || XCENTER != 0 || FOURIER_K != 0))
-      $error("acore_apb: the serial core has CORRECTION=0, XCENTER=0, FOURIER_K=0 only (instance %m)");
-    if (FOLD != 1 || ZERO != 0)
-      $error("acore_apb: FOLD=%0d ZERO=%0d: the tops have no such parameter yet (instance %m)", FOLD, ZERO);
-    if (HOST_RD_LAT < 1 || HOST_RD_LAT > 4) $error("acore_apb: HOST_RD_LAT=%0d must be 1..4 (instance %m)", HOST_RD_LAT);
-    if (WORDS > 256) $error("acore_apb: WORDS=%0d exceeds the 256-word shadow window (instance %m)", WORDS);
-    if (APB_AW < 11 || APB_AW > 32) $error("acore_apb: APB_AW=%0d must be 11..32 (instance %m)", APB_AW);
-    if (MAG_W > 32 || REG_W > 30) $error("acore_apb: MAG_W=%0d, REG_W=%0d must fit a 32-bit register (instance %m)", MAG_W, REG_W);
-    if (ADDR_W != $clog2(WORDS) || MAG_W != S_W + 2 || RG_W != $clog2(REGIONS))
-      $error("acore_apb: derived parameters overridden (instance %m)");
-  end
+  // Clocks from the top's host address to its reg_rdata_o: both tops share this port timing.
+  localparam integer HOST_RD_LAT = 2;
+
+  // Parameter rules of the shell (rtl/acore_check.v: they stop Verilator, Icarus and Yosys); the
+  // datapath's own rules are the top's (acore_config_check), applied when it is built below.
+  acore_check #(.OK(SERIAL == 0 || SERIAL == 1), .VALUE(SERIAL),
+    .MSG("illegal parameter: SERIAL must be 0 (acore_top) or 1 (acore_serial_top)"))
+    SERIAL_must_be_0_or_1 ();
+  acore_check #(.OK(SERIAL == 0 || CORRECTION == 0), .VALUE(CORRECTION),
+    .MSG("illegal parameter: CORRECTION must be 0 with SERIAL=1 (the serial core is the 1-D polynomial)"))
+    CORRECTION_must_be_0_with_SERIAL ();
+  acore_check #(.OK(SERIAL == 0 || XCENTER == 0), .VALUE(XCENTER),
+    .MSG("illegal parameter: XCENTER must be 0 with SERIAL=1 (the serial core is the 1-D polynomial)"))
+    XCENTER_must_be_0_with_SERIAL ();
+  acore_check #(.OK(SERIAL == 0 || FOURIER_K == 0), .VALUE(FOURIER_K),
+    .MSG("illegal parameter: FOURIER_K must be 0 with SERIAL=1 (the serial core has no Fourier stage)"))
+    FOURIER_K_must_be_0_with_SERIAL ();
+  acore_check #(.OK(FOLD == 1), .VALUE(FOLD),
+    .MSG("illegal parameter: FOLD must be 1 (acore_top has no fold factor in this build)"))
+    FOLD_must_be_1 ();
+  acore_check #(.OK(WORDS <= 256), .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS must be at most 256 (the shadow window)"))
+    WORDS_must_fit_the_shadow_window ();
+  acore_check #(.OK(APB_AW >= 11 && APB_AW <= 32), .VALUE(APB_AW),
+    .MSG("illegal parameter: APB_AW must be 11..32 (registers at 0x000, the shadow window at 0x400)"))
+    APB_AW_must_be_11_to_32 ();
+  acore_check #(.OK(CRC_W == 1 || CRC_W == 2 || CRC_W == 4 || CRC_W == 8 || CRC_W == 16 || CRC_W == 32),
+    .VALUE(CRC_W), .MSG("illegal parameter: CRC_W must be 1, 2, 4, 8, 16 or 32"))
+    CRC_W_must_divide_32 ();
+  acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
+    .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
+    RG_W_is_derived ();
+  acore_check #(
+    .OK(TERMS == ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ?
+                  ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1)),
+    .VALUE(TERMS),
+    .MSG("illegal parameter: TERMS is derived (coefficients per region and curve), do not override"))
+    TERMS_is_derived ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+    .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
+    MAG_W_is_derived ();
 
   // ---- identification and configuration (constants) ----
   localparam [31:0] ID = 32'h4143_0100;
@@ -204,7 +233,8 @@ module acore_apb #(
       acore_serial_top #(
         .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
         .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K),
-        .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .INIT_FILE(INIT_FILE), .WORDS(WORDS)
+        .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .ZERO(ZERO), .INIT_FILE(INIT_FILE),
+        .WORDS(WORDS)
       ) u_top (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(top_addr), .reg_wdata_i(top_wdata), .reg_we_i(top_we),
         .reg_rdata_o(top_rdata), .mag_lo_i(mag_lo_q), .mag_hi_i(mag_hi_q),
@@ -217,7 +247,7 @@ module acore_apb #(
         .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
         .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
         .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
-        .FOURIER_G(FOURIER_G), .INIT_FILE(INIT_FILE), .WORDS(WORDS)
+        .FOURIER_G(FOURIER_G), .ZERO(ZERO), .INIT_FILE(INIT_FILE), .WORDS(WORDS)
       ) u_top (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(top_addr), .reg_wdata_i(top_wdata), .reg_we_i(top_we),
         .reg_rdata_o(top_rdata), .mag_lo_i(mag_lo_q), .mag_hi_i(mag_hi_q),

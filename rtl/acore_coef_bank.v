@@ -92,11 +92,19 @@ module acore_coef_bank #(
   input  wire              top_rd_ok_i
 );
 
-  initial begin
-    if (WORDS < 2 || ADDR_W != $clog2(WORDS)) $error("acore_coef_bank: WORDS=%0d, ADDR_W derived (instance %m)", WORDS);
-    if (REG_W < 2 || REG_W > 32) $error("acore_coef_bank: REG_W=%0d must be 2..32 (instance %m)", REG_W);
-    if (SETTLE < 1 || SETTLE > 15) $error("acore_coef_bank: SETTLE=%0d must be 1..15 (instance %m)", SETTLE);
-  end
+  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
+  acore_check #(.OK(WORDS >= 2), .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS must be at least 2"))
+    WORDS_must_be_at_least_2 ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(REG_W >= 2 && REG_W <= 32), .VALUE(REG_W),
+    .MSG("illegal parameter: REG_W must be 2..32"))
+    REG_W_must_be_2_to_32 ();
+  acore_check #(.OK(SETTLE >= 1 && SETTLE <= 15), .VALUE(SETTLE),
+    .MSG("illegal parameter: SETTLE must be 1..15"))
+    SETTLE_must_be_1_to_15 ();
 
   localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3, C_SETTLE = 3'd4;
   localparam integer LAST_I = WORDS - 1;

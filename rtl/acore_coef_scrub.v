@@ -52,10 +52,16 @@ module acore_coef_scrub #(
   output wire              pass_o
 );
 
-  initial begin
-    if (RD_LAT < 1 || RD_LAT > 4) $error("acore_coef_scrub: RD_LAT=%0d must be 1..4 (instance %m)", RD_LAT);
-    if (WORDS < 2 || ADDR_W != $clog2(WORDS)) $error("acore_coef_scrub: WORDS=%0d, ADDR_W derived (instance %m)", WORDS);
-  end
+  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
+  acore_check #(.OK(RD_LAT >= 1 && RD_LAT <= 4), .VALUE(RD_LAT),
+    .MSG("illegal parameter: RD_LAT must be 1..4"))
+    RD_LAT_must_be_1_to_4 ();
+  acore_check #(.OK(WORDS >= 2), .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS must be at least 2"))
+    WORDS_must_be_at_least_2 ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
 
   localparam [1:0] ST_START = 2'd0, ST_READ = 2'd1, ST_LOAD = 2'd2, ST_END = 2'd3;
   localparam integer WAIT_W = $clog2(RD_LAT + 2);

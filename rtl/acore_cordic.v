@@ -30,7 +30,7 @@ module acore_cordic #(
   parameter integer ANGLE_W = 16,
   // Iterations = pipeline stages.
   parameter integer K = 16,
-  // Width of one arctangent word on atan_i (unsigned, zero-extended to Z_W).
+  // Width of one arctangent word on atan_i (unsigned, zero-extended to Z_W, or used modulo 2^Z_W).
   parameter integer AT_W = 18,
   // 1: leading-bit normalization so short vectors keep full angle precision.
   parameter integer NORM = 0,
@@ -71,12 +71,19 @@ module acore_cordic #(
   output reg  [MAG_W-1:0]    mag_o;
   localparam integer DROP = Z_W - ANGLE_W;
 
-  initial begin
-    if (Z_W < ANGLE_W) $error("acore_cordic: Z_W=%0d < ANGLE_W=%0d (instance %m)", Z_W, ANGLE_W);
-    if (AT_W > Z_W) $error("acore_cordic: AT_W=%0d > Z_W=%0d (instance %m)", AT_W, Z_W);
-    if (K < 1 || K >= XY_W) $error("acore_cordic: K=%0d must be 1..XY_W-1 (instance %m)", K);
-    if (XY_W != IN_W + 2 + G || MAG_W != IN_W + 2) $error("acore_cordic: XY_W/MAG_W are derived (instance %m)");
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(Z_W >= ANGLE_W), .VALUE(Z_W),
+    .MSG("illegal parameter: acore_cordic: Z_W must be >= ANGLE_W"))
+    Z_W_must_be_at_least_ANGLE_W ();
+  acore_check #(.OK(K >= 1 && K < XY_W), .VALUE(K),
+    .MSG("illegal parameter: acore_cordic: K must be 1..XY_W-1"))
+    K_must_be_1_to_XY_W_minus_1 ();
+  acore_check #(.OK(XY_W == IN_W + 2 + G), .VALUE(XY_W),
+    .MSG("illegal parameter: acore_cordic: XY_W is derived (IN_W+2+G), do not override"))
+    XY_W_is_derived ();
+  acore_check #(.OK(MAG_W == IN_W + 2), .VALUE(MAG_W),
+    .MSG("illegal parameter: acore_cordic: MAG_W is derived (IN_W+2), do not override"))
+    MAG_W_is_derived ();
 
   // ---- normalization (optional) and quadrant pre-rotation -> x_q[0], y_q[0], z_q[0] ----
   // X never goes negative and stays below 2^(XY_W-1) (|x| <= 2^(IN_W-1), gain < 2.33 with the
@@ -206,7 +213,15 @@ module acore_cordic #(
       wire [XY_W-1:0] ys_full = $signed(y_q[i]) >>> i;
       wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
       localparam integer AT_OFF = co_cmul(i, AT_W);
-      wire [Z_W-1:0]  at = {{(Z_W-AT_W){1'b0}}, atan_i[AT_OFF +: AT_W]};
+      wire [Z_W-1:0]  at;
+      if (AT_W > Z_W) begin : g_at_low
+        // Z counts modulo a turn (2^Z_W), so a word's bits above Z_W do not change it (the model
+        // adds the whole word and wraps): a word wider than Z (REG_W > Z_W) is used modulo a turn.
+        assign at = atan_i[AT_OFF +: Z_W];
+        wire unused_at_high = ^atan_i[AT_OFF + Z_W +: AT_W - Z_W];
+      end else begin : g_at_ext
+        assign at = {{(Z_W-AT_W){1'b0}}, atan_i[AT_OFF +: AT_W]};
+      end
       // Adder inputs a + b + c: X += s ? -(Y>>>i) : (Y>>>i) is X + ((Y>>>i) ^ {s}) + s.
       wire [XY_W-2:0] x_a, x_b;
       wire [Z_W-1:0]  z_a, z_b;

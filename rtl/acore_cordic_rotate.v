@@ -57,11 +57,10 @@ module acore_cordic_rotate #(
   // X after M stages, LATENCY = M advancing clocks after x_i/y_i/z_i.
   output wire [XY_W-1:0]     x_o;
 
-  initial begin
-    if (M < 2 || M >= XY_W || M > Z_W - 4)
-      $error("acore_cordic_rotate: M=%0d must be 2..min(XY_W-1, Z_W-4) (instance %m)", M);
-    if (AT_W > Z_W) $error("acore_cordic_rotate: AT_W=%0d > Z_W=%0d (instance %m)", AT_W, Z_W);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(M >= 2 && M < XY_W && M <= Z_W - 4), .VALUE(M),
+    .MSG("illegal parameter: acore_cordic_rotate: M must be 2..min(XY_W-1, Z_W-4)"))
+    M_must_be_2_to_min_XY_W_minus_1_Z_W_minus_4 ();
 
   // Stage registers (stage i reads x_q[i], ...; stage 0 reads the inputs). z is stored
   // sign-extended to ZI_W bits; only its low ZW(i) bits are computed.
@@ -95,7 +94,13 @@ module acore_cordic_rotate #(
         wire [XY_W-1:0] xs = $signed(x_c) >>> i;
         wire [XY_W:0] y_sum = {y_c, 1'b1} + {xs ^ {XY_W{~s}}, ~s};
         localparam integer AT_OFF = cr_cmul(i, AT_W);
-        wire [Z_W-1:0] at = {{(Z_W-AT_W){1'b0}}, atan_i[AT_OFF +: AT_W]};
+        // Only the low bits count (z wraps modulo a turn): a word wider than Z_W is cut.
+        wire [Z_W-1:0] at;
+        if (AT_W > Z_W) begin : g_at_low
+          assign at = atan_i[AT_OFF +: Z_W];
+        end else begin : g_at_ext
+          assign at = {{(Z_W-AT_W){1'b0}}, atan_i[AT_OFF +: AT_W]};
+        end
         wire [ZWN:0] z_sum = {z_c[ZWN-1:0], 1'b1} + {at[ZWN-1:0] ^ {ZWN{~s}}, ~s};
         always @(posedge clk_i) begin
           if (en_i) begin

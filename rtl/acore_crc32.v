@@ -42,11 +42,13 @@ module acore_crc32 #(
   output wire [31:0] crc_o
 );
 
-  initial begin
-    if (CRC_W != 1 && CRC_W != 2 && CRC_W != 4 && CRC_W != 8 && CRC_W != 16 && CRC_W != 32)
-      $error("acore_crc32: CRC_W=%0d must be 1, 2, 4, 8, 16 or 32 (instance %m)", CRC_W);
-    if (STEPS != 32 / CRC_W) $error("acore_crc32: STEPS is derived (instance %m)");
-  end
+  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
+  acore_check #(.OK(CRC_W == 1 || CRC_W == 2 || CRC_W == 4 || CRC_W == 8 || CRC_W == 16 || CRC_W == 32), .VALUE(CRC_W),
+    .MSG("illegal parameter: CRC_W must be 1, 2, 4, 8, 16 or 32"))
+    CRC_W_must_divide_32 ();
+  acore_check #(.OK(STEPS == 32 / CRC_W), .VALUE(STEPS),
+    .MSG("illegal parameter: STEPS is derived (32/CRC_W), do not override"))
+    STEPS_is_derived ();
 
   localparam [31:0] POLY = 32'hEDB88320;
 

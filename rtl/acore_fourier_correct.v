@@ -83,13 +83,22 @@ module acore_fourier_correct #(
   // Corrected angle, LATENCY advancing clocks after angle_i.
   output reg  [ANGLE_W-1:0]    angle_o;
 
-  initial begin
-    if (K < 1 || K > 31) $error("acore_fourier_correct: K=%0d must be 1..31 (instance %m)", K);
-    if (S < 1) $error("acore_fourier_correct: CF+G=%0d must exceed ANGLE_W=%0d (instance %m)", F, ANGLE_W);
-    if (CF < REG_W - 1) $error("acore_fourier_correct: CF=%0d must be >= REG_W-1 (instance %m)", CF);
-    if (Z_W <= ANGLE_W || ANGLE_W < 4) $error("acore_fourier_correct: need 4 <= ANGLE_W < Z_W (instance %m)");
-    if (W < 8 || W > REG_W) $error("acore_fourier_correct: W=%0d must be 8..REG_W (instance %m)", W);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(K >= 1 && K <= 31), .VALUE(K),
+    .MSG("illegal parameter: acore_fourier_correct: K must be 1..31"))
+    K_must_be_1_to_31 ();
+  acore_check #(.OK(S >= 1), .VALUE(F),
+    .MSG("illegal parameter: acore_fourier_correct: CF+G must exceed ANGLE_W"))
+    CF_plus_G_must_exceed_ANGLE_W ();
+  acore_check #(.OK(CF >= REG_W - 1), .VALUE(CF),
+    .MSG("illegal parameter: acore_fourier_correct: CF must be >= REG_W-1"))
+    CF_must_be_at_least_REG_W_minus_1 ();
+  acore_check #(.OK(ANGLE_W >= 4 && ANGLE_W < Z_W), .VALUE(ANGLE_W),
+    .MSG("illegal parameter: acore_fourier_correct: ANGLE_W must be 4..Z_W-1"))
+    ANGLE_W_must_be_4_to_Z_W_minus_1 ();
+  acore_check #(.OK(W >= 8 && W <= REG_W), .VALUE(W),
+    .MSG("illegal parameter: acore_fourier_correct: W must be 8..REG_W"))
+    W_must_be_8_to_REG_W ();
 
   // ---- per harmonic: k theta, quadrant and start vector, rotation ----
   localparam integer TERMS_W = fc_cmul(K + 1, F);

@@ -103,16 +103,31 @@ module acore_poly2d_correct #(
   localparam integer CBASE = p2_cmul(p2_cmul(CURVE, TERMS), REG_W);
   localparam [S_W-1:0] ONE = {{(S_W-S_F-1){1'b0}}, 1'b1, {S_F{1'b0}}};
 
-  initial begin
-    if (DEGREE < 1 || DEGREE > 3) $error("acore_poly2d_correct: DEGREE=%0d must be 1..3 (instance %m)", DEGREE);
-    if (REGIONS != 4 && REGIONS != 8) $error("acore_poly2d_correct: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
-    if (XCENTER != 0 && (XCENTER != 1 || REGIONS != 8))
-      $error("acore_poly2d_correct: XCENTER=%0d must be 0, or 1 with 8 regions (instance %m)", XCENTER);
-    if (S_F < 3 || S_W < S_F + 2) $error("acore_poly2d_correct: need S_F >= 3 and S_W >= S_F+2 (instance %m)");
-    if (ACC_F < S_F) $error("acore_poly2d_correct: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
-    if (ACC_I < REG_W - COEF_F + 1) $error("acore_poly2d_correct: ACC_I=%0d too small (instance %m)", ACC_I);
-    if (CURVE != 0 && CURVE != 1) $error("acore_poly2d_correct: CURVE=%0d must be 0 or 1 (instance %m)", CURVE);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(DEGREE >= 1 && DEGREE <= 3), .VALUE(DEGREE),
+    .MSG("illegal parameter: acore_poly2d_correct: DEGREE must be 1..3"))
+    DEGREE_must_be_1_to_3 ();
+  acore_check #(.OK(REGIONS == 4 || REGIONS == 8), .VALUE(REGIONS),
+    .MSG("illegal parameter: acore_poly2d_correct: REGIONS must be 4 or 8"))
+    REGIONS_must_be_4_or_8 ();
+  acore_check #(.OK(XCENTER == 0 || (XCENTER == 1 && REGIONS == 8)), .VALUE(XCENTER),
+    .MSG("illegal parameter: acore_poly2d_correct: XCENTER must be 0, or 1 with REGIONS=8"))
+    XCENTER_must_be_0_or_1_with_8_regions ();
+  acore_check #(.OK(S_F >= 3), .VALUE(S_F),
+    .MSG("illegal parameter: acore_poly2d_correct: S_F must be >= 3"))
+    S_F_must_be_at_least_3 ();
+  acore_check #(.OK(S_W >= S_F + 2), .VALUE(S_W),
+    .MSG("illegal parameter: acore_poly2d_correct: S_W must be >= S_F+2"))
+    S_W_must_be_at_least_S_F_plus_2 ();
+  acore_check #(.OK(ACC_F >= S_F), .VALUE(ACC_F),
+    .MSG("illegal parameter: acore_poly2d_correct: COEF_F+ACC_G must be >= S_F"))
+    COEF_F_plus_ACC_G_must_be_at_least_S_F ();
+  acore_check #(.OK(ACC_I >= REG_W - COEF_F + 1), .VALUE(ACC_I),
+    .MSG("illegal parameter: acore_poly2d_correct: ACC_I must be >= REG_W-COEF_F+1"))
+    ACC_I_must_be_at_least_REG_W_minus_COEF_F_plus_1 ();
+  acore_check #(.OK(CURVE == 0 || CURVE == 1), .VALUE(CURVE),
+    .MSG("illegal parameter: acore_poly2d_correct: CURVE must be 0 or 1"))
+    CURVE_must_be_0_or_1 ();
 
   // Coefficient of term t for region r of this curve, sign-extended and shifted to ACC_F bits.
   function automatic [ACC_W-1:0] coef_acc(input [COEF_BUS_W-1:0] bus, input [RG_W-1:0] r,

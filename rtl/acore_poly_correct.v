@@ -78,13 +78,19 @@ module acore_poly_correct #(
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
   localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
 
-  initial begin
-    if (ACC_F < S_F) $error("acore_poly_correct: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
-    if (ACC_I < REG_W - COEF_F + 1) $error("acore_poly_correct: ACC_I=%0d too small (instance %m)", ACC_I);
-    if (DEGREE < 1) $error("acore_poly_correct: DEGREE=%0d must be >= 1 (instance %m)", DEGREE);
-    if (XCENTER != 0 && (XCENTER != 1 || REGIONS != 8 || S_F < 3))
-      $error("acore_poly_correct: XCENTER=%0d must be 0, or 1 with 8 regions and S_F >= 3 (instance %m)", XCENTER);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(ACC_F >= S_F), .VALUE(ACC_F),
+    .MSG("illegal parameter: acore_poly_correct: COEF_F+ACC_G must be >= S_F"))
+    COEF_F_plus_ACC_G_must_be_at_least_S_F ();
+  acore_check #(.OK(ACC_I >= REG_W - COEF_F + 1), .VALUE(ACC_I),
+    .MSG("illegal parameter: acore_poly_correct: ACC_I must be >= REG_W-COEF_F+1"))
+    ACC_I_must_be_at_least_REG_W_minus_COEF_F_plus_1 ();
+  acore_check #(.OK(DEGREE >= 1), .VALUE(DEGREE),
+    .MSG("illegal parameter: acore_poly_correct: DEGREE must be >= 1"))
+    DEGREE_must_be_at_least_1 ();
+  acore_check #(.OK(XCENTER == 0 || (XCENTER == 1 && REGIONS == 8 && S_F >= 3)), .VALUE(XCENTER),
+    .MSG("illegal parameter: acore_poly_correct: XCENTER must be 0, or 1 with REGIONS=8 and S_F >= 3"))
+    XCENTER_must_be_0_or_1_with_8_regions_and_S_F_at_least_3 ();
 
   // Per step m: inputs of the step (accumulator, argument, curve, region, overflow so far).
   wire [ACC_W-1:0] acc [0:DEGREE];

@@ -27,9 +27,10 @@ module acore_prefilter #(
 
   localparam integer LATENCY = 1;
 
-  initial begin
-    if (D_W != IN_W + 1) $error("acore_prefilter: D_W=%0d must be IN_W+1 (instance %m)", D_W);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(D_W == IN_W + 1), .VALUE(D_W),
+    .MSG("illegal parameter: acore_prefilter: D_W is derived (IN_W+1), do not override"))
+    D_W_is_derived ();
 
   always @(posedge clk_i) begin
     if (en_i) begin

@@ -34,10 +34,13 @@ module acore_region_select #(
 
   localparam integer LATENCY = 2;
 
-  initial begin
-    if (REGIONS != 4 && REGIONS != 8) $error("acore_region_select: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
-    if (RG_W != $clog2(REGIONS)) $error("acore_region_select: RG_W must be clog2(REGIONS) (instance %m)");
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(REGIONS == 4 || REGIONS == 8), .VALUE(REGIONS),
+    .MSG("illegal parameter: acore_region_select: REGIONS must be 4 or 8"))
+    REGIONS_must_be_4_or_8 ();
+  acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
+    .MSG("illegal parameter: acore_region_select: RG_W is derived (clog2(REGIONS)), do not override"))
+    RG_W_is_derived ();
 
   // Clock 1: magnitudes as unsigned S_W-bit numbers (|-2^(S_W-1)| = 2^(S_W-1) still fits).
   // Clock 2: compare and select. One carry chain per clock.

@@ -43,11 +43,10 @@ module acore_scaler #(
   localparam integer MUL_LATENCY = $clog2(REG_W);
   localparam integer LATENCY = MUL_LATENCY + 3;
 
-  initial begin
-    if (SCALE_G < 0 || SCALE_G > R_SHIFT)
-      $error("acore_scaler: need 0 <= SCALE_G=%0d <= R_SHIFT=%0d (instance %m)", SCALE_G, R_SHIFT);
-    if (S_W > P_W + 1 - SCALE_G) $error("acore_scaler: S_W=%0d wider than the product (instance %m)", S_W);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),
+    .MSG("illegal parameter: acore_scaler: SCALE_G must be 0..R_SHIFT"))
+    SCALE_G_must_be_0_to_R_SHIFT ();
 
   reg [T_W-1:0] t_q;
   always @(posedge clk_i) begin

@@ -39,12 +39,15 @@
 //   CB     1  K times    T1 = T1 +- (ACC >>> i)            (X, with the old Y)        atan_i
 //   CZ     1 /           T2 = [half turn if neg | T2] +- atan_i (Z, by the sign CB saw)
 //   LOS    1             los = mag_lo - (T1 >>> G) - 1 >= 0
-//   DOS    1             dos = mag_hi - (T1 >>> G) < 0
+//   ZR     ZERO          T2 = (T2 >>> DROP) + rbit (the rounded angle; ZERO = 1 only)
+//   DOS    1             dos = mag_hi - (T1 >>> G) < 0                              ZERO (ZERO = 1)
 //   OUT    1             angle = (T2 >>> DROP) + rbit, region, flags -> output registers
+//                        (ZERO = 1: angle = T2 - Q, the rounded angle minus the zero position)
 //
 // OUT's stage 2 runs in the next IDLE clock, which can accept the next sample: one sample every
-// CYCLES = 22 + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K clocks; the result appears LATENCY = CYCLES + 1
-// clocks after its accepting clock (acore_serial_top.v).
+// CYCLES = 22 + ZERO + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K clocks; the result appears
+// LATENCY = CYCLES + 1 clocks after its accepting clock (acore_serial_top.v). The output takes the
+// low ANGLE_W bits of T2 - Q, so the word's bits above ANGLE_W do not reach the angle.
 // Stalls (en_o = 0: nothing changes, the RAM output holds): stage 2 of OUT while the previous
 // result is still held (out_valid_o && !out_ready_i), and stage 2 of a scratch write (RND, HY of
 // curve 0) in a clock where the host writes the register file (the host owns the write port).
@@ -62,7 +65,9 @@ module acore_serial_ctrl #(
   parameter integer DEGREE = 3,
   parameter integer REGIONS = 4,
   parameter integer K = 16,
-  // Words of the coefficient map: 4 + 2 REGIONS (DEGREE + 1) + K.
+  // 1: the ZERO word (the map's last word) and the ZR operation.
+  parameter integer ZERO = 0,
+  // Words of the coefficient map: 4 + 2 REGIONS (DEGREE + 1) + K (+ 1 with ZERO).
   parameter integer WORDS = 52,
   // Shift amounts: sh_amt = LS - k for a shift by k (k < 0: right), see acore_serial_datapath.v.
   parameter integer LS = 8,
@@ -88,7 +93,7 @@ module acore_serial_ctrl #(
   output wire              in_ready_o,
   output wire              out_valid_o,
   input  wire              out_ready_i,
-  // The host writes the register file this clock (it owns the RAM write port).
+  // The RAM writes the host's registered word this clock (it owns the RAM write port).
   input  wire              host_we_i,
   // From the datapath: region of the sample.
   input  wire [RG_W-1:0]   region_i,
@@ -157,7 +162,7 @@ module acore_serial_ctrl #(
                    ST_RS2 = 5'd10, ST_RSB = 5'd11, ST_HB = 5'd12, ST_HC = 5'd13, ST_HCB = 5'd14,
                    ST_HCL = 5'd15, ST_HY = 5'd16, ST_HYB = 5'd17, ST_CR0 = 5'd18, ST_CR1 = 5'd19,
                    ST_CRB = 5'd20, ST_CA = 5'd21, ST_CB = 5'd22, ST_CZ = 5'd23, ST_LOS = 5'd24,
-                   ST_DOS = 5'd25, ST_OUT = 5'd26;
+                   ST_DOS = 5'd25, ST_OUT = 5'd26, ST_ZR = 5'd27;
 
   // Counter widths: cnt runs over the REG_W bits of R, the S_W bits of x, the K iterations.
   localparam integer CNT_N = sc_max(sc_max(REG_W, S_W), K);
@@ -165,14 +170,24 @@ module acore_serial_ctrl #(
   localparam integer J_W = (DEGREE > 1) ? $clog2(DEGREE) : 1;
   localparam integer NCOEF = sc_cmul(REGIONS << 1, DEGREE + 1);
 
-  initial begin
-    if (BI_W > CNT_W) $error("acore_serial_ctrl: BI_W=%0d wider than the counter (instance %m)", BI_W);
-    if (WORDS != 4 + NCOEF + K || DA_W != $clog2(WORDS + 3))
-      $error("acore_serial_ctrl: WORDS/DA_W are derived (instance %m)");
-    if (LS + RS < REG_W - 1 || LS + S_F < S_W - 1 + ACC_G || LS < ACC_G || LS < G)
-      $error("acore_serial_ctrl: LS=%0d too small (instance %m)", LS);
-    if (K < 2) $error("acore_serial_ctrl: K=%0d must be >= 2 (instance %m)", K);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(BI_W <= CNT_W), .VALUE(BI_W),
+    .MSG("illegal parameter: acore_serial_ctrl: BI_W must be <= the counter's width"))
+    BI_W_must_fit_the_counter ();
+  acore_check #(.OK(WORDS == 4 + NCOEF + K + ((ZERO != 0) ? 1 : 0)), .VALUE(WORDS),
+    .MSG("illegal parameter: acore_serial_ctrl: WORDS is derived (4 + 2 REGIONS (DEGREE+1) + K + ZERO word), do not override"))
+    WORDS_is_derived ();
+  acore_check #(.OK(DA_W == $clog2(WORDS + 3)), .VALUE(DA_W),
+    .MSG("illegal parameter: acore_serial_ctrl: DA_W is derived (clog2(WORDS+3)), do not override"))
+    DA_W_is_derived ();
+  acore_check #(
+    .OK(LS + RS >= REG_W - 1 && LS + S_F >= S_W - 1 + ACC_G && LS >= ACC_G && LS >= G),
+    .VALUE(LS),
+    .MSG("illegal parameter: acore_serial_ctrl: LS too small for the left shifts"))
+    LS_must_cover_every_left_shift ();
+  acore_check #(.OK(K >= 2), .VALUE(K),
+    .MSG("illegal parameter: acore_serial_ctrl: K must be >= 2"))
+    K_must_be_at_least_2 ();
 
   // Addresses (register map of README / model/datapath_config.hpp) and the scratch words.
   localparam integer ATAN0_I = 4 + NCOEF;
@@ -180,6 +195,8 @@ module acore_serial_ctrl #(
   localparam integer S13_I = WORDS, S24_I = WORDS + 1, Y13_I = WORDS + 2;
   localparam [DA_W-1:0] AD_S13 = S13_I[DA_W-1:0], AD_S24 = S24_I[DA_W-1:0], AD_Y13 = Y13_I[DA_W-1:0];
   localparam [DA_W-1:0] AD_ATAN0 = ATAN0_I[DA_W-1:0];
+  localparam integer ZERO_I = WORDS - 1;  // the ZERO word (ZERO = 1 only)
+  localparam [DA_W-1:0] AD_ZERO = ZERO_I[DA_W-1:0];
   localparam integer STRIDE_I = DEGREE + 1, J_N_I = DEGREE;
   localparam [DA_W-1:0] STRIDE = STRIDE_I[DA_W-1:0], J_N = J_N_I[DA_W-1:0], AD_POLY0 = 4;
 
@@ -249,9 +266,10 @@ module acore_serial_ctrl #(
   wire out_block = out_we_o & out_valid_q & ~out_ready_i;
   wire wr_block = ram_we_o & host_we_i;
   wire en = ~(out_block | wr_block);
-  wire accept = idle & en & in_valid_i;
+  // Nothing is taken while rst_i is high (in_ready_o low in reset, as in acore_top).
+  wire accept = idle & en & in_valid_i & ~rst_i;
   assign en_o = en;
-  assign in_ready_o = idle & en;
+  assign in_ready_o = idle & en & ~rst_i;
   assign out_valid_o = out_valid_q;
   assign dp_read_o = ~idle;
   assign bit_idx_o = cnt_q[BI_W-1:0];
@@ -514,6 +532,14 @@ module acore_serial_ctrl #(
         sub_sel_o = S_SUB;
         cin_sel_o = C_ZERO;
         los_we_d = 1'b1;
+        state_d = (ZERO != 0) ? ST_ZR : ST_DOS;
+      end
+      ST_ZR: begin
+        // The angle rounded into T2, for OUT to subtract the zero position from.
+        b_sel_o = B_T2;
+        sh_amt_o = AM_DROP;
+        cin_sel_o = C_RND;
+        t2_we_d = 1'b1;
         state_d = ST_DOS;
       end
       ST_DOS: begin
@@ -522,12 +548,21 @@ module acore_serial_ctrl #(
         sh_amt_o = AM_GR;
         sub_sel_o = S_SUB;
         dos_we_d = 1'b1;
+        if (ZERO != 0) raddr_o = AD_ZERO;
         state_d = ST_OUT;
       end
       ST_OUT: begin
-        b_sel_o = B_T2;
-        sh_amt_o = AM_DROP;
-        cin_sel_o = C_RND;
+        if (ZERO != 0) begin
+          // The rounded angle (ZR) minus the zero position (DOS issued its address).
+          a_sel_o = A_T2;
+          b_sel_o = B_Q;
+          q_ext_o = Q_PU;
+          sub_sel_o = S_SUB;
+        end else begin
+          b_sel_o = B_T2;
+          sh_amt_o = AM_DROP;
+          cin_sel_o = C_RND;
+        end
         out_we_d = 1'b1;
         state_d = ST_IDLE;
       end

@@ -121,12 +121,18 @@ module acore_serial_datapath #(
   localparam integer BW = W + LS + 1;  // shifter width
   localparam integer NB = 1 << BI_W;   // bit-select vector width
 
-  initial begin
-    if (W < ACC_W + 1 || W < S_W + 2 || W < Z_W || W < REG_W + 1 || W < MAG_W + 1 || W < IN_W + 2)
-      $error("acore_serial_datapath: W=%0d too narrow (instance %m)", W);
-    if (NB < REG_W || NB < S_W) $error("acore_serial_datapath: BI_W=%0d too small (instance %m)", BI_W);
-    if (MEM_W < REG_W || MEM_W < S_W) $error("acore_serial_datapath: MEM_W=%0d too small (instance %m)", MEM_W);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(
+    .OK(W >= ACC_W + 1 && W >= S_W + 2 && W >= Z_W && W >= REG_W + 1 && W >= MAG_W + 1 && W >= IN_W + 2),
+    .VALUE(W),
+    .MSG("illegal parameter: acore_serial_datapath: W too narrow for an intermediate"))
+    W_must_hold_every_intermediate ();
+  acore_check #(.OK(NB >= REG_W && NB >= S_W), .VALUE(BI_W),
+    .MSG("illegal parameter: acore_serial_datapath: BI_W too small to index a REG_W or S_W-bit operand"))
+    BI_W_must_index_every_bit ();
+  acore_check #(.OK(MEM_W >= REG_W && MEM_W >= S_W), .VALUE(MEM_W),
+    .MSG("illegal parameter: acore_serial_datapath: MEM_W must be >= REG_W and >= S_W"))
+    MEM_W_must_hold_REG_W_and_S_W ();
 
   reg [W-1:0] acc_q, t1_q, t2_q;
 

@@ -8,15 +8,18 @@
 //   addresses WORDS .. WORDS+SCRATCH-1 scratch, datapath only (MEM_W bits, signed values stored
 //                                      sign-extended)
 //
+// Host port: the timing of rtl/acore_coef_regfile.v (and so of acore_top). A write is registered
+// first (address, data, enable; ignored while rst_i is high or past the last word) and lands one
+// clock after the edge that takes it; host_rdata_o is the word at host_addr_i of two clocks before
+// (the RAM's output register, then a host read-back register).
 // Arbitration (one port each way):
 //   read:  dp_read_i = 1 (the core is computing a sample): the datapath's address; otherwise the
-//          host's. host_rdata_o = word at the host address of the previous clock when the host had
-//          the port in that clock and the address was in range, zero otherwise (so the host reads
-//          back while the core is idle, i.e. in_ready_o high, exactly as from acore_coef_regfile).
-//          dp_re_i = 0 holds q_o (the datapath stalls).
-//   write: the host wins. A datapath write in the same clock as a host write is not done; the
-//          controller sees host_we_i and stalls that clock (acore_serial_ctrl.v), so it is retried.
-//          Host writes past the last word are ignored.
+//          host's. host_rdata_o = the word at the host address of two clocks before when the host
+//          had the port in that clock and the address was in range, zero otherwise (so the host
+//          reads back while the core is idle, i.e. in_ready_o high). dp_re_i = 0 holds q_o (the
+//          datapath stalls).
+//   write: the host's registered write wins. A datapath write in the same clock is not done; the
+//          controller sees host_wr_o and stalls that clock (acore_serial_ctrl.v), so it is retried.
 // INIT_FILE ($readmemh image, e.g. from `anglecore calibrate`) sets the power-up coefficients.
 `resetall
 `default_nettype none
@@ -38,11 +41,14 @@ module acore_serial_ram #(
 ) (
   input  wire              clk_i,
   input  wire              rst_i,
-  // Host port: synchronous write, read-back one clock after the address (while the core is idle).
+  // Host port: write lands one clock after the edge that takes it (ignored in reset); read-back
+  // two clocks after the address (while the core is idle).
   input  wire [ADDR_W-1:0] host_addr_i,
   input  wire [REG_W-1:0]  host_wdata_i,
   input  wire              host_we_i,
-  output wire [REG_W-1:0]  host_rdata_o,
+  output reg  [REG_W-1:0]  host_rdata_o,
+  // The registered host write takes the write port this clock (the datapath's write waits).
+  output wire              host_wr_o,
   // Datapath port.
   // 1: the datapath owns the read port this clock.
   input  wire              dp_read_i,
@@ -58,11 +64,16 @@ module acore_serial_ram #(
 
   localparam integer DEPTH = WORDS + SCRATCH;
 
-  initial begin
-    if (MEM_W < REG_W) $error("acore_serial_ram: MEM_W=%0d < REG_W=%0d (instance %m)", MEM_W, REG_W);
-    if (ADDR_W != $clog2(WORDS) || DA_W != $clog2(DEPTH) || DA_W < ADDR_W)
-      $error("acore_serial_ram: ADDR_W/DA_W are derived (instance %m)");
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(MEM_W >= REG_W), .VALUE(MEM_W),
+    .MSG("illegal parameter: acore_serial_ram: MEM_W must be >= REG_W"))
+    MEM_W_must_be_at_least_REG_W ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: acore_serial_ram: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(DA_W == $clog2(DEPTH) && DA_W >= ADDR_W), .VALUE(DA_W),
+    .MSG("illegal parameter: acore_serial_ram: DA_W is derived (clog2(WORDS+SCRATCH)), do not override"))
+    DA_W_is_derived ();
 
   reg [MEM_W-1:0] mem_q [0:DEPTH-1];
   reg [MEM_W-1:0] q_q;
@@ -77,9 +88,21 @@ module acore_serial_ram #(
   wire host_in_range = ({1'b0, host_addr_i} <= LAST);
   wire [DA_W-1:0] host_addr = {{(DA_W-ADDR_W){1'b0}}, host_addr_i};
 
-  wire             we    = host_we_i ? host_in_range : dp_we_i;
-  wire [DA_W-1:0]  waddr = host_we_i ? host_addr : dp_waddr_i;
-  wire [MEM_W-1:0] wdata = host_we_i ? {{(MEM_W-REG_W){1'b0}}, host_wdata_i} : dp_wdata_i;
+  // Host write, registered first (as in acore_coef_regfile.v): address, data, and the enable with
+  // its range check and the reset.
+  reg [DA_W-1:0] host_waddr_q;
+  reg [REG_W-1:0] host_wdata_q;
+  reg host_we_q;
+  always @(posedge clk_i) begin
+    host_waddr_q <= host_addr;
+    host_wdata_q <= host_wdata_i;
+    host_we_q <= host_we_i && host_in_range && !rst_i;
+  end
+  assign host_wr_o = host_we_q;
+
+  wire             we    = host_we_q | dp_we_i;
+  wire [DA_W-1:0]  waddr = host_we_q ? host_waddr_q : dp_waddr_i;
+  wire [MEM_W-1:0] wdata = host_we_q ? {{(MEM_W-REG_W){1'b0}}, host_wdata_q} : dp_wdata_i;
   wire [DA_W-1:0]  raddr = dp_read_i ? dp_raddr_i : host_addr;
   wire             re    = dp_read_i ? dp_re_i : 1'b1;
 
@@ -89,13 +112,14 @@ module acore_serial_ram #(
   end
   assign q_o = q_q;
 
-  // The host's read-back is valid when the host had the read port (control flop, reset).
+  // The host's read-back is valid when the host had the read port (control flop, reset); the
+  // second clock registers it (the host port's two-clock read-back).
   reg host_rd_q;
   always @(posedge clk_i) begin
     if (rst_i) host_rd_q <= 1'b0;
     else host_rd_q <= ~dp_read_i & host_in_range;
   end
-  assign host_rdata_o = q_q[REG_W-1:0] & {REG_W{host_rd_q}};
+  always @(posedge clk_i) host_rdata_o <= q_q[REG_W-1:0] & {REG_W{host_rd_q}};
 
 endmodule
 

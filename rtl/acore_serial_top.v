@@ -2,7 +2,8 @@
 // acore_serial_top: the AngleCore estimator on one adder, one shifter, an accumulator and two
 // temporary registers (the paper's "simplest hardware platform"), bit for bit the chain of
 // rtl/acore_top.v and model/fixed_model.cpp (pre-filter, scaling, domain selection, Horner
-// correction, CORDIC, status flags), one sample every CYCLES clocks.
+// correction, CORDIC, status flags, with ZERO = 1 the zero position subtracted), one sample every
+// CYCLES clocks.
 //
 //   pins c1, mag_lo/hi, Q, T1, T2 --> A_q ----------------------------+
 //   pins c3, Q, T1, T2, ACC --> shifter --> B_q --> gate/negate --> ADDER --> saturate --> ACC
@@ -15,9 +16,9 @@
 // the core keeps the sample's small state in flops: region (2-3 bits), the x choice, the
 // pre-rotation sign, ovf/LOS/DOS, and the output registers.
 //
-// Streaming: in_ready_o is high while the core is idle; a sample is taken when in_valid_i &&
-// in_ready_o, in_ready_o drops the next clock and returns CYCLES clocks after the accepting clock;
-// the result appears on out_valid_o LATENCY = CYCLES + 1 clocks after it. With in_valid_i and
+// Streaming: in_ready_o is high while the core is idle and rst_i is low; a sample is taken when
+// in_valid_i && in_ready_o, in_ready_o drops the next clock and returns CYCLES clocks after the
+// accepting clock; the result appears on out_valid_o LATENCY = CYCLES + 1 clocks after it. With in_valid_i and
 // out_ready_i high the core takes one sample every CYCLES clocks. A result is held until
 // out_ready_i; the next result waits for it (the core stalls in its last clock, in_ready_o low).
 //
@@ -28,13 +29,14 @@
 //   out_valid_o ___________________ ... _________/‾‾‾‾‾‾   (LATENCY clocks after S0 is taken)
 //   angle_o                                      =X A0 X
 //
-// Register port: the same map and host port as acore_top (synchronous write; read-back one clock
-// after the address). The RAM has one read port: the host reads while the core is idle (in_ready_o
-// high in the clock of the address); while a sample is computed the datapath owns it and
-// reg_rdata_o reads zero. A host write always happens at once; in the two clocks a sample writes a
-// scratch word (stage 2 of RND and of the first HY), a simultaneous host write delays the sample by
-// one clock. Writing coefficients while a sample is in flight gives that sample a mix of old and
-// new words.
+// Register port: the same map and host port timing as acore_top: a write taken at a clock edge
+// lands at the next one (writes while rst_i is high are ignored), and reg_rdata_o is the word at
+// reg_addr_i of two clocks before. The RAM has one read port: the host reads while the core is idle
+// (in_ready_o high in the clock of the address); while a sample is computed the datapath owns it
+// and the read-back is zero. Every host write lands; in the two clocks a sample writes a scratch
+// word (stage 2 of RND and of the first HY), a host write landing in the same clock delays the
+// sample by one clock. Writing coefficients while a sample is in flight gives that sample a mix of
+// old and new words.
 //
 // Only control flops are reset (rst_i synchronous, active high); the outputs are forced to zero
 // while out_valid_o is low.
@@ -64,17 +66,22 @@ module acore_serial_top #(
   parameter integer CORDIC_G = 3,
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
+  // 1: one more register word (the last) holding the zero position z, angle_o = angle - z (mod a
+  // turn), one more operation a sample; 0: none (the paper's map).
+  parameter integer ZERO = 0,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K,
+  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K + ((ZERO != 0) ? 1 : 0),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
-  // Register file host port (synchronous write; read-back one clock after the address, while idle).
+  // Register file host port, timed as acore_top's: a write taken at a clock edge lands at the next
+  // one (ignored while rst_i is high); reg_rdata_o is the word at reg_addr_i of two clocks before
+  // if the core was idle in that clock (0 otherwise, and past the last word).
   input  wire [ADDR_W-1:0]  reg_addr_i,
   input  wire [REG_W-1:0]   reg_wdata_i,
   input  wire               reg_we_i,
@@ -134,36 +141,40 @@ module acore_serial_top #(
                                    st_max(st_max(DROP, CORDIC_G), K - 1));
   localparam integer SHA_W = $clog2(LS + MAXR + 1);
   localparam integer BI_W = $clog2(st_max(REG_W, S_W));
-  localparam integer NCOEF = st_cmul(REGIONS << 1, DEGREE + 1);
 
   // Clocks per sample (between two accepts at full rate) and from the accepting clock to
   // out_valid_o (see the schedule in acore_serial_ctrl.v). The testbench reads both
   // (rtl/verilator.vlt).
-  localparam integer CYCLES = 22 + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 2) + st_cmul(3, K);
+  localparam integer CYCLES = 22 + ((ZERO != 0) ? 1 : 0) + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 2) +
+                              st_cmul(3, K);
   localparam integer LATENCY = CYCLES + 1;
 
-  initial begin
-    if (IN_W < 8 || IN_W > 24) $error("acore_serial_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
-    if (REG_W < D_W + 1 || REG_W > 30) $error("acore_serial_top: REG_W=%0d must be IN_W+2..30 (instance %m)", REG_W);
-    if (S_W < S_F + 2 || S_W > 30) $error("acore_serial_top: S_W=%0d must be S_F+2..30 (instance %m)", S_W);
-    if (SCALE_G < 0 || SCALE_G > R_SHIFT) $error("acore_serial_top: need 0 <= SCALE_G <= R_SHIFT (instance %m)");
-    if (REGIONS != 4 && REGIONS != 8) $error("acore_serial_top: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
-    if (DEGREE < 1 || DEGREE > 7) $error("acore_serial_top: DEGREE=%0d must be 1..7 (instance %m)", DEGREE);
-    if (COEF_F < 1 || COEF_F >= REG_W) $error("acore_serial_top: COEF_F=%0d must be 1..REG_W-1 (instance %m)", COEF_F);
-    if (ACC_F < S_F) $error("acore_serial_top: COEF_F+ACC_G=%0d < S_F=%0d (instance %m)", ACC_F, S_F);
-    if (ACC_I < REG_W - COEF_F + 1) $error("acore_serial_top: ACC_I=%0d too small (instance %m)", ACC_I);
-    if (K < 4 || K > 24) $error("acore_serial_top: K=%0d must be 4..24 (instance %m)", K);
-    if (CORDIC_G < 0 || CORDIC_G > 8) $error("acore_serial_top: CORDIC_G=%0d must be 0..8 (instance %m)", CORDIC_G);
-    if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_serial_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
-    if (ANGLE_W < 8 || ANGLE_W > 24) $error("acore_serial_top: ANGLE_W=%0d must be 8..24 (instance %m)", ANGLE_W);
-    if (WORDS != 4 + NCOEF + K || ADDR_W != $clog2(WORDS) || MAG_W != S_W + 2 || RG_W != $clog2(REGIONS))
-      $error("acore_serial_top: derived parameters overridden (instance %m)");
-  end
+  // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v; the serial core
+  // is the 1-D polynomial correction without Fourier stage: those parameters keep their defaults),
+  // and the derived parameters. An illegal configuration stops Verilator, Icarus and Yosys.
+  acore_config_check #(
+    .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
+    .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K),
+    .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .ZERO(ZERO)
+  ) u_config ();
+  acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
+    .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
+    RG_W_is_derived ();
+  acore_check #(.OK(WORDS == 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K + ((ZERO != 0) ? 1 : 0)),
+    .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS is derived (4 + 2 REGIONS (DEGREE+1) + K + ZERO word), do not override"))
+    WORDS_is_derived ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+    .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
+    MAG_W_is_derived ();
 
   localparam integer DA_W = $clog2(WORDS + 3);
 
   // ---- sequencer ----
-  wire en, dp_read, ram_we;
+  wire en, dp_read, ram_we, host_wr;
   wire a_half, t1_mv, t2_mv, t2_mv_src;
   wire a_acc, acc_we, t1_we, t2_we, t2_we_u13, ovf_clr, region_we, neg_we;
   wire los_we, dos_we, out_we;
@@ -174,12 +185,12 @@ module acore_serial_top #(
   wire [DA_W-1:0] raddr, waddr;
   wire [RG_W-1:0] region;
   acore_serial_ctrl #(
-    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .WORDS(WORDS),
-    .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W), .RS(RS), .SG(SCALE_G), .RN(RN), .DROP(DROP), .ACC_G(ACC_G),
-    .G(CORDIC_G)
+    .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .ZERO(ZERO),
+    .WORDS(WORDS), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W), .RS(RS), .SG(SCALE_G), .RN(RN), .DROP(DROP),
+    .ACC_G(ACC_G), .G(CORDIC_G)
   ) u_ctrl (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),
-    .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .host_we_i(reg_we_i),
+    .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .host_we_i(host_wr),
     .region_i(region), .en_o(en),
     .a_sel_o(a_sel), .a_half_o(a_half), .b_sel_o(b_sel), .q_ext_o(q_ext), .sh_amt_o(sh_amt),
     .gate_sel_o(gate_sel), .bit_idx_o(bit_idx), .t1_mv_o(t1_mv), .t1_mv_src_o(t1_mv_src),
@@ -196,7 +207,7 @@ module acore_serial_top #(
     .REG_W(REG_W), .MEM_W(MEM_W), .WORDS(WORDS), .SCRATCH(3), .INIT_FILE(INIT_FILE)
   ) u_ram (
     .clk_i(clk_i), .rst_i(rst_i), .host_addr_i(reg_addr_i), .host_wdata_i(reg_wdata_i),
-    .host_we_i(reg_we_i), .host_rdata_o(reg_rdata_o), .dp_read_i(dp_read), .dp_re_i(en),
+    .host_we_i(reg_we_i), .host_rdata_o(reg_rdata_o), .host_wr_o(host_wr), .dp_read_i(dp_read), .dp_re_i(en),
     .dp_raddr_i(raddr), .dp_we_i(ram_we & en), .dp_waddr_i(waddr), .dp_wdata_i(wdata), .q_o(q));
 
   // ---- datapath ----

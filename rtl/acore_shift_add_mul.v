@@ -48,11 +48,13 @@ module acore_shift_add_mul #(
   // Bits the exact product can need: |a| 2^(B_W - RSHIFT) plus floor slack, plus sign.
   localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
 
-  initial begin
-    if (P_W < NEED_W)
-      $error("acore_shift_add_mul: P_W=%0d cannot hold the product (need %0d) (instance %m)", P_W, NEED_W);
-    if (B_W < 2) $error("acore_shift_add_mul: B_W=%0d must be >= 2 (instance %m)", B_W);
-  end
+  // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
+  acore_check #(.OK(P_W >= NEED_W), .VALUE(P_W),
+    .MSG("illegal parameter: acore_shift_add_mul: P_W cannot hold the product"))
+    P_W_must_hold_the_product ();
+  acore_check #(.OK(B_W >= 2), .VALUE(B_W),
+    .MSG("illegal parameter: acore_shift_add_mul: B_W must be >= 2"))
+    B_W_must_be_at_least_2 ();
 
   // Entries per level: level l holds ceil(B_W / 2^l) partial sums; unused slots are zero.
   localparam integer LVL_W = sam_cmul(B_W, P_W);

@@ -26,9 +26,13 @@ module acore_sync_ram #(
   output reg  [W-1:0]      q_o
 );
 
-  initial begin
-    if (DEPTH < 2 || ADDR_W != $clog2(DEPTH)) $error("acore_sync_ram: DEPTH=%0d, ADDR_W derived (instance %m)", DEPTH);
-  end
+  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
+  acore_check #(.OK(DEPTH >= 2), .VALUE(DEPTH),
+    .MSG("illegal parameter: DEPTH must be at least 2"))
+    DEPTH_must_be_at_least_2 ();
+  acore_check #(.OK(ADDR_W == $clog2(DEPTH)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(DEPTH)), do not override"))
+    ADDR_W_is_derived ();
 
   reg [W-1:0] mem_q [0:DEPTH-1];
 

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 // acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit).
 //
-//   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> angle, flags
-//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k
+//   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> [- zero] -> angle, flags
+//                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k   ^ ZERO word
 //
 // The Fourier correction (acore_fourier_correct.v) is generated only when FOURIER_K > 0; with
 // FOURIER_K = 0 (the default) the top is the chain without it, word for word and clock for clock.
+// ZERO = 1 adds one register word after all others, the zero position z (its low ANGLE_W bits),
+// and one subtractor in the output register: angle_o = (angle - z) mod 2^ANGLE_W, the angle in the
+// reference frame of the calibration (README "Zero offset"); no extra clock.
 //
 // The correction stage is chosen by CORRECTION: 0 = acore_poly_correct (1-D in x, the paper's),
 // 1 = acore_poly2d_correct (2-D in x and the other curve), 2 = none (the scaled curves go straight
@@ -14,10 +17,11 @@
 // Streaming: a sample is taken when in_valid_i && in_ready_o and comes out LATENCY accepted-or-
 // advancing clocks later on out_valid_o. The pipeline stalls as a whole when the output is held
 // (out_valid_o && !out_ready_i), so in_ready_o = !stall and throughput is one sample per clock
-// while out_ready_i is high; bubbles travel through with their valid bit low.
+// while out_ready_i is high; bubbles travel through with their valid bit low. in_ready_o is low
+// while rst_i is high (a sample offered in reset is not taken).
 //
 //   clk        _|~|_|~|_|~|_|~|_|~|_|~|_
-//   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !(out_valid_o && !out_ready_i)
+//   in_valid_i  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾      in_ready_o = !rst_i && !(out_valid_o && !out_ready_i)
 //   c1..c4_i    | A | B | C | D | E |
 //   out_valid_o  ... LATENCY clocks later: | A | B | C | ...
 //
@@ -64,6 +68,9 @@ module acore_top #(
   parameter integer FOURIER_CF = 22,
   parameter integer FOURIER_W = 16,
   parameter integer FOURIER_G = 2,
+  // 1: one more register word (the last) holding the zero position, subtracted from the output
+  // angle; 0: none (the paper's map).
+  parameter integer ZERO = 0,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override.
@@ -72,15 +79,16 @@ module acore_top #(
   parameter integer TERMS = (CORRECTION == 2) ? 0 :
                             (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1,
   // 4 + 2 REGIONS TERMS + K (REGIONS is a power of two, so the product is a shift), plus
-  // 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0.
+  // 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0, plus the ZERO word.
   parameter integer WORDS = 4 + (TERMS << ($clog2(REGIONS) + 1)) + K +
-                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0),
+                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) + ((ZERO != 0) ? 1 : 0),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = S_W + 2
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
-  // Register file host port (synchronous write; read-back two clocks after the address).
+  // Register file host port: a write taken at a clock edge lands at the next one (ignored while
+  // rst_i is high); reg_rdata_o is the word at reg_addr_i of two clocks before (0 past the last).
   input  wire [ADDR_W-1:0]  reg_addr_i,
   input  wire [REG_W-1:0]   reg_wdata_i,
   input  wire               reg_we_i,
@@ -135,33 +143,43 @@ module acore_top #(
   localparam integer NCOEF = top_cmul(REGIONS << 1, TERMS);
   localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
 
-  initial begin
-    if (IN_W < 8 || IN_W > 24) $error("acore_top: IN_W=%0d must be 8..24 (instance %m)", IN_W);
-    if (REG_W < D_W + 1 || REG_W > 30) $error("acore_top: REG_W=%0d must be IN_W+2..30 (instance %m)", REG_W);
-    if (S_W < S_F + 2 || S_W > 30) $error("acore_top: S_W=%0d must be S_F+2..30 (instance %m)", S_W);
-    if (REGIONS != 4 && REGIONS != 8) $error("acore_top: REGIONS=%0d must be 4 or 8 (instance %m)", REGIONS);
-    if (DEGREE < 1 || DEGREE > 7) $error("acore_top: DEGREE=%0d must be 1..7 (instance %m)", DEGREE);
-    if (CORRECTION < 0 || CORRECTION > 2) $error("acore_top: CORRECTION=%0d must be 0..2 (instance %m)", CORRECTION);
-    if (CORRECTION == 1 && DEGREE > 3) $error("acore_top: poly2d DEGREE=%0d must be 1..3 (instance %m)", DEGREE);
-    if (XCENTER != 0 && (XCENTER != 1 || REGIONS != 8 || CORRECTION == 2))
-      $error("acore_top: XCENTER=%0d must be 0, or 1 with 8 regions and a polynomial (instance %m)", XCENTER);
-    if (K < 4 || K > 24) $error("acore_top: K=%0d must be 4..24 (instance %m)", K);
-    if (Z_W < ANGLE_W || Z_W > REG_W + 2) $error("acore_top: Z_W=%0d must be ANGLE_W..REG_W+2 (instance %m)", Z_W);
-    if (FOURIER_K < 0 || FOURIER_K > 31) $error("acore_top: FOURIER_K=%0d must be 0..31 (instance %m)", FOURIER_K);
-    if (FOURIER_K > 0 && (FOURIER_M < 4 || FOURIER_M > K))
-      $error("acore_top: FOURIER_M=%0d must be 4..K (instance %m)", FOURIER_M);
-    if (FOURIER_K > 0 && (FOURIER_G < 0 || FOURIER_G > 8 || FOURIER_CF < REG_W - 1 || FOURIER_W < 8 ||
-                          FOURIER_W > REG_W || FOURIER_CF + FOURIER_G <= ANGLE_W || Z_W <= ANGLE_W))
-      $error("acore_top: need 0 <= FOURIER_G <= 8, FOURIER_CF >= REG_W-1, 8 <= FOURIER_W <= REG_W, FOURIER_CF+FOURIER_G > ANGLE_W, Z_W > ANGLE_W (instance %m)");
-    if (TERMS != ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1) ||
-        WORDS != 4 + NCOEF + K + NFOURIER || MAG_W != S_W + 2) $error("acore_top: derived parameters overridden (instance %m)");
-  end
+  // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v), and the derived
+  // parameters. An illegal configuration stops elaboration in Verilator, Icarus and Yosys.
+  acore_config_check #(
+    .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
+    .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
+    .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
+    .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
+    .FOURIER_G(FOURIER_G), .ZERO(ZERO)
+  ) u_config ();
+  acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
+    .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
+    RG_W_is_derived ();
+  // (The same expressions as the defaults: only an override differs.)
+  acore_check #(
+    .OK(TERMS == ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ?
+                  ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1)),
+    .VALUE(TERMS),
+    .MSG("illegal parameter: TERMS is derived (coefficients per region and curve), do not override"))
+    TERMS_is_derived ();
+  acore_check #(
+    .OK(WORDS == 4 + (TERMS << ($clog2(REGIONS) + 1)) + K + ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) +
+              ((ZERO != 0) ? 1 : 0)),
+    .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS is derived (4 + 2 REGIONS TERMS + K + Fourier words + ZERO word), do not override"))
+    WORDS_is_derived ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+    .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
+    MAG_W_is_derived ();
 
   // ---- handshake: one enable for the whole pipeline ----
   reg  [LATENCY-1:0] vld_q;
   wire stall = vld_q[LATENCY-1] & ~out_ready_i;
   wire en = ~stall;
-  assign in_ready_o = en;
+  assign in_ready_o = en & ~rst_i;
   always @(posedge clk_i) begin
     if (rst_i) vld_q <= {LATENCY{1'b0}};
     else if (en) vld_q <= {vld_q[LATENCY-2:0], in_valid_i};
@@ -288,13 +306,27 @@ module acore_top #(
   acore_delay #(.W(1), .DEPTH(CORDIC_LATENCY + FOURIER_LATENCY)) u_d_pcovf (
     .clk_i(clk_i), .en_i(en), .d_i(pc_ovf13 | pc_ovf24), .q_o(pc_ovf_d));
 
-  // ---- output register: status window compare ----
+  // ---- zero position (ZERO): the last word's low ANGLE_W bits, else 0 ----
+  wire [ANGLE_W-1:0] zero_pos;
+  generate
+    if (ZERO != 0) begin : g_zero
+      localparam integer OFF_ZERO = top_cmul(WORDS - 1, REG_W);
+      wire [REG_W-1:0] zero_word = words[OFF_ZERO +: REG_W];
+      // The word's upper bits are not part of the zero position (named unused_* for lint).
+      wire unused_zero_hi = ^{1'b0, zero_word[REG_W-1:ANGLE_W-1]};
+      assign zero_pos = zero_word[ANGLE_W-1:0];
+    end else begin : g_no_zero
+      assign zero_pos = {ANGLE_W{1'b0}};
+    end
+  endgenerate
+
+  // ---- output register: angle - zero position (modulo a turn), status window compare ----
   reg [ANGLE_W-1:0] angle_q;
   reg [RG_W-1:0] region_q;
   reg ovf_q, los_q, dos_q;
   always @(posedge clk_i) begin
     if (en) begin
-      angle_q  <= angle_c;
+      angle_q  <= angle_c - zero_pos;
       region_q <= region_d;
       ovf_q    <= sc_ovf_d | pc_ovf_d;
       los_q    <= mag_c < mag_lo_i;

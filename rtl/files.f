@@ -1,3 +1,5 @@
+acore_check.v
+acore_config_check.v
 acore_delay.v
 acore_saturate.v
 acore_shift_add_mul.v

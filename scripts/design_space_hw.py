@@ -13,7 +13,7 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
          Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage) also
          get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
          same parameters, placed and routed whole (it fits an HX8K); cycles = its CYCLES localparam,
-         22 + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K (tb/test_cosim_serial checks the formula).
+         22 + ZERO + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K (tb/test_cosim_serial checks the formula).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
 """
@@ -30,7 +30,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 # The parameters of rtl/acore_serial_top.v (the pipelined top's, without the correction modes).
 SERIAL_PARAMS = {"IN_W", "REG_W", "S_W", "S_F", "R_SHIFT", "SCALE_G", "DEGREE", "REGIONS", "COEF_F", "ACC_G", "ACC_I",
-                 "K", "CORDIC_G", "Z_W", "ANGLE_W"}
+                 "K", "CORDIC_G", "Z_W", "ANGLE_W", "ZERO"}
 
 
 def rtl_files(root):
@@ -80,7 +80,8 @@ def measure(root, cache, params):
         if out.returncode != 0:
             raise RuntimeError("stage_fmax.py --whole acore_serial_top failed for " + params + ": " + out.stderr.strip())
         sr = json.loads(out.stdout)
-        sr["cycles"] = 22 + 2 * int(p["REG_W"]) + 2 * int(p["DEGREE"]) * (int(p["S_W"]) + 2) + 3 * int(p["K"])
+        sr["cycles"] = (22 + int(p.get("ZERO", 0)) + 2 * int(p["REG_W"]) + 2 * int(p["DEGREE"]) * (int(p["S_W"]) + 2)
+                        + 3 * int(p["K"]))
         res["serial"] = sr
     with open(path, "w") as f:
         json.dump(res, f)

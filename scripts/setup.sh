@@ -1,26 +1,40 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Install every Debian package AngleCore needs, only when something is missing.
+# Install every Debian package AngleCore needs, only when something is missing, and the PyPI tools
+# (FuseSoC and edalize, pinned) into the project's virtual environment .venv/.
 # Idempotent and quiet when all is there; uses sudo when not root.
 set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
   cmake ninja-build g++ make pkg-config git
   verilator iverilog yosys nextpnr-ice40 fpga-icestorm
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev zlib1g-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-venv
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
 
-echo "setup: installing ${missing[*]}" >&2
-sudo_cmd=()
-[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# FuseSoC (rtl/anglecore.core; tb/fusesoc.sh runs its targets) in .venv, with Debian's Python.
+fusesoc_version=2.4.7
+edalize_version=0.6.8
+venv=$root/.venv
+installed=$("$venv/bin/python" -c "from importlib.metadata import version as v; print(v('fusesoc'), v('edalize'))" \
+  2>/dev/null || true)
+if [ "$installed" != "$fusesoc_version $edalize_version" ]; then
+  echo "setup: installing fusesoc $fusesoc_version, edalize $edalize_version into $venv" >&2
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check "fusesoc==$fusesoc_version" "edalize==$edalize_version"
+fi

@@ -61,10 +61,10 @@ TOP[scaler_pnr]=acore_scaler_pinwrap;      READ[scaler_pnr]="$stage_reads"
 TOP[poly_pnr]=acore_poly_pinwrap;          READ[poly_pnr]="$stage_reads"
 TOP[region_pnr]=acore_region_pinwrap;      READ[region_pnr]="$stage_reads"
 TOP[cordic_top_pnr]=acore_cordic_top_pinwrap; READ[cordic_top_pnr]="$stage_reads"
-TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $root/rtl/acore_cordic.v $syn/acore_cordic16.v"
+TOP[cordic16]=acore_cordic16;       READ[cordic16]="read_verilog -sv -I$build $root/rtl/acore_check.v $root/rtl/acore_cordic.v $syn/acore_cordic16.v"
 c16_chparam="chparam"
 for k in IN_W G Z_W ANGLE_W K AT_W NORM SPLIT; do c16_chparam+=" -set $k ${C16[$k]}"; done
-TOP[cordic16_bus]=acore_cordic;     READ[cordic16_bus]="read_verilog -sv $root/rtl/acore_cordic.v"$'\n'"$c16_chparam acore_cordic"
+TOP[cordic16_bus]=acore_cordic;     READ[cordic16_bus]="read_verilog -sv $root/rtl/acore_check.v $root/rtl/acore_cordic.v"$'\n'"$c16_chparam acore_cordic"
 TOP[poly2d_pnr]=acore_poly2d_pinwrap;      READ[poly2d_pnr]="$stage_reads"
 TOP[poly2d1_pnr]=acore_poly2d_pinwrap;     READ[poly2d1_pnr]="$stage_reads"$'\n'"chparam -set DEGREE 1 acore_poly2d_pinwrap"
 TOP[serial]=acore_serial_top;       READ[serial]="$rtl_reads"
@@ -116,8 +116,11 @@ run_yosys() {  # run_yosys FLOW DESIGN
 }
 run_pnr() {  # run_pnr DESIGN
   local d=$1
+  # The pin-wrapped tops are placed with their pin constraints; the stage wrappers unconstrained.
+  local pins=(--pcf-allow-unconstrained)
+  case $d in top_pnr|serial_pnr) pins=(--pcf "$syn/acore_hx8k_ct256.pcf") ;; esac
   nextpnr-ice40 --hx8k --package ct256 --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
-    --pcf-allow-unconstrained --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1 \
+    "${pins[@]}" --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1 \
     || echo "nextpnr $d: failed (see synth/reports/nextpnr_$d.log)"
   echo "nextpnr $d: done"
 }

@@ -44,14 +44,16 @@ RegImage paper_image(const DatapathConfig& cfg) {
 }
 
 // Every word random below the CORDIC constants (half the time tamed to sane offsets and gains), and
-// every Fourier word; with the Fourier stage, every other image also gets random CORDIC constants
-// (its rotations' trimmed angle registers then wrap, in the model as in the RTL).
+// every Fourier word and the ZERO word; with the Fourier stage, every other image also gets random
+// CORDIC constants (its rotations' trimmed angle registers then wrap, in the model as in the RTL).
 RegImage random_image(const RegImage& base, std::mt19937_64& rng) {
   RegImage img = base;
   const DatapathConfig& cfg = img.cfg;
   const uint64_t mask = (uint64_t{1} << cfg.reg_w) - 1;
   for (int a = 0; a < cfg.addr_atan(0); ++a) img.words[a] = rng() & mask;
   for (int j = 0; j < cfg.fourier_words(); ++j) img.words[cfg.addr_fourier(j)] = rng() & mask;
+  if (cfg.zero_word)
+    img.words[cfg.addr_zero()] = rng() & mask;  // any bits: only the low ANGLE_W count
   if (cfg.fourier_k > 0 && (rng() & 1))
     for (int i = 0; i < cfg.iterations; ++i) img.words[cfg.addr_atan(i)] = rng() & mask;
   if (rng() & 1)

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Test vectors for the Icarus bench (tb/acore_tb_icarus.v) from the bit-accurate model.
-// usage: acore_gen_vectors DIR FRAME   writes DIR/regs.hex, DIR/in.hex, DIR/exp.hex, DIR/meta.txt
+// usage: acore_gen_vectors DIR FRAME [N]   writes DIR/regs.hex, DIR/in.hex, DIR/exp.hex, DIR/meta.txt
 //   (meta.txt: samples, mag_lo, mag_hi, the image's CRC-32 in hex for the shell bench)
-//   FRAME 0: the paper scenario's calibrated image; paper samples, then random and extreme codes
+//   FRAME 0: the paper scenario's calibrated image; paper samples (a turn), then random and extreme
+//            codes
 //   FRAME 1: a random register image with random inputs (saturation paths)
+//   N: samples in all (default: frame 0 7501 = 5000 paper samples, 2500 random codes and the zero
+//      vector; frame 1 2501); with N, half of frame 0's are paper samples. tb/vectors/ holds `acore_gen_vectors tb/vectors 0 1000` (FuseSoC's
+//      sim target; tests/fusesoc.sh checks it is current).
 #include <cstdio>
 #include <fstream>
 #include <random>
@@ -16,24 +20,30 @@
 #include "regimage.hpp"
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s DIR FRAME\n", argv[0]);
+  if (argc != 3 && argc != 4) {
+    std::fprintf(stderr, "usage: %s DIR FRAME [N]\n", argv[0]);
     return 2;
   }
   const std::string dir = argv[1];
   const int frame = std::stoi(argv[2]);
+  const int total = argc == 4 ? std::stoi(argv[3]) : frame == 0 ? 7501 : 2501;
+  if (total < 4) {
+    std::fprintf(stderr, "%s: N=%d must be >= 4\n", argv[0], total);
+    return 2;
+  }
+  const int n_paper = argc == 4 ? total / 2 : 5000;
   const acore::Recording cal = acore::test::paper_recording(4000, true);
   acore::RegImage img =
       acore::quantize(acore::calibrate(cal, acore::CalOptions{}), acore::DatapathConfig{}, acore::choose_in_scale(cal, 16));
   std::mt19937_64 rng(1234 + frame);
   std::vector<acore::ChannelCodes> in;
   if (frame == 0) {
-    in = acore::to_codes(acore::test::paper_recording(5000, true), img.in_scale, 16);
+    in = acore::to_codes(acore::test::paper_recording(n_paper, true), img.in_scale, 16);
   } else {
     const uint64_t mask = (uint64_t{1} << img.cfg.reg_w) - 1;
     for (int a = 0; a < img.cfg.addr_atan(0); ++a) img.words[a] = rng() & mask;
   }
-  for (int k = 0; k < 2500; ++k) {
+  while (static_cast<int>(in.size()) < total - 1) {
     acore::ChannelCodes c;
     for (int j = 0; j < 4; ++j) {
       const uint64_t r = rng();

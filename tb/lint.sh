@@ -3,8 +3,9 @@
 # verilator --lint-only -Wall over rtl/: every module in rtl/files.f as the top (default
 # parameters), with the waivers of rtl/verilator.vlt; the top in every named configuration of
 # rtl/configs.txt; the 16-bit normalizing CORDIC of rtl/cordic16.cfg;
-# the serial core in rtl/serial_n5r8.cfg; the APB shell around the serial core (in its default,
-# around the pipelined top) and around the named configurations' tops. Exit 1 on any warning.
+# the serial core in every rtl/serial_*.cfg; the APB shell around the serial core (in its default
+# and every rtl/serial_*.cfg), around the pipelined top (default) and around the named
+# configurations' tops. Exit 1 on any warning.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root/rtl"
@@ -30,8 +31,10 @@ while read -r name params; do
 done < <(grep -E '^[a-z]' configs.txt)
 mapfile -t c16 < <(grep -E '^[A-Z_]+=' cordic16.cfg | sed 's/^/-G/')
 run "acore_cordic cordic16.cfg" --top-module acore_cordic "${c16[@]}"
-mapfile -t sn5r8 < <(grep -E '^[A-Z_]+=' serial_n5r8.cfg | sed 's/^/-G/')
-run "acore_serial_top serial_n5r8.cfg" --top-module acore_serial_top "${sn5r8[@]}"
 run "acore_apb SERIAL=1" --top-module acore_apb -GSERIAL=1
-run "acore_apb SERIAL=1 serial_n5r8.cfg" --top-module acore_apb -GSERIAL=1 "${sn5r8[@]}"
+for cfg in serial_*.cfg; do
+  mapfile -t sargs < <(grep -E '^[A-Z_]+=' "$cfg" | sed 's/^/-G/')
+  run "acore_serial_top $cfg" --top-module acore_serial_top "${sargs[@]}"
+  run "acore_apb SERIAL=1 $cfg" --top-module acore_apb -GSERIAL=1 "${sargs[@]}"
+done
 exit $fail

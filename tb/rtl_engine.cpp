@@ -9,7 +9,6 @@
 
 namespace acore {
 
-
 namespace {
 std::string available_builds() {
   std::string s;
@@ -102,28 +101,33 @@ void RtlHarness::reset(int cycles) {
   set_reset(false);
 }
 
+void RtlHarness::drive_host(int addr, bool we, uint64_t wdata) {
+  impl_->top->set_reg(static_cast<uint32_t>(addr), wdata, we);
+  impl_->eval();
+}
+
+void RtlHarness::write_reg(int addr, uint64_t value) {
+  drive_host(addr, true, value);
+  tick();
+  drive_host(addr, false, 0);
+}
+
 void RtlHarness::load(const RegImage& img) {
-  RtlPins& t = *impl_->top;
-  for (size_t a = 0; a < img.words.size(); ++a) {
-    t.set_reg(static_cast<uint32_t>(a), img.words[a], true);
-    impl_->eval();
-    tick();
-  }
-  t.set_reg(0, 0, false);
+  for (size_t a = 0; a < img.words.size(); ++a) write_reg(static_cast<int>(a), img.words[a]);
   for (size_t a = 0; a < img.words.size(); ++a)
     if (read_reg(static_cast<int>(a)) != img.words[a])
       throw CheckFailed("RTL register " + std::to_string(a) + " read back differs from the image");
 }
 
 uint64_t RtlHarness::read_reg(int addr) {
-  RtlPins& t = *impl_->top;
-  t.set_reg(static_cast<uint32_t>(addr), 0, false);
-  impl_->eval();
+  drive_host(addr, false, 0);
   // The read-back is pipelined over two clocks (rtl/acore_coef_regfile.v).
   tick();
   tick();
-  return t.reg_rdata();
+  return impl_->top->reg_rdata();
 }
+
+uint64_t RtlHarness::reg_rdata() const { return impl_->top->reg_rdata(); }
 
 void RtlHarness::set_window(const StatusWindow& w) {
   const int64_t max = (int64_t{1} << (impl_->cfg.s_w + 2)) - 1;

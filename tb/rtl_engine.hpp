@@ -46,7 +46,14 @@ class RtlHarness {
   // Writes every word through the register port (one word per clock), then reads all back and
   // throws CheckFailed on a read-back difference.
   void load(const RegImage& img);
+  // One word through the host read port: address, two clocks, reg_rdata_o (the host port timing of
+  // both tops: README "RTL").
   uint64_t read_reg(int addr);
+  // One word through the host write port (one clock; the word lands at the next edge).
+  void write_reg(int addr, uint64_t value);
+  // Drives the host port pins (address, write enable, data) without a clock.
+  void drive_host(int addr, bool we, uint64_t wdata);
+  uint64_t reg_rdata() const;  // the current reg_rdata_o pins
   void set_window(const StatusWindow& w);
 
   // Pin-level access: drive inputs, advance one clock, sample outputs (after the edge).

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Compiled once per named configuration of the serial core (tb/CMakeLists.txt): ACORE_SERIAL_V is
 // the Verilated class, ACORE_SERIAL_HDR / ACORE_SERIAL_PUB_HDR its headers, ACORE_SERIAL_PUB the
-// class holding the public CYCLES, ACORE_SERIAL_<PARAM> the -G overrides of the build.
+// class holding the public CYCLES, ACORE_SERIAL_<PARAM> the -G overrides of the build,
+// ACORE_SERIAL_NS the build's namespace (rtl_serial_engine.hpp).
 #include "rtl_serial_engine.hpp"
 
 #include <verilated.h>
@@ -14,6 +15,7 @@
 #include "errors.hpp"
 
 namespace acore {
+inline namespace ACORE_SERIAL_NS {
 
 using SerialTop = ACORE_SERIAL_V;
 
@@ -77,6 +79,9 @@ DatapathConfig rtl_serial_config() {
 #endif
 #ifdef ACORE_SERIAL_ANGLE_W
   ACORE_SERIAL_SET(ACORE_SERIAL_ANGLE_W, angle_w)
+#endif
+#ifdef ACORE_SERIAL_ZERO
+  ACORE_SERIAL_SET(ACORE_SERIAL_ZERO, zero_word)
 #endif
 #undef ACORE_SERIAL_SET
   return c;
@@ -161,6 +166,8 @@ void RtlSerialHarness::load(const RegImage& img) {
 
 uint64_t RtlSerialHarness::read_reg(int addr) {
   drive_host(addr, false, 0);
+  // Two clocks, as the pipelined top: the RAM's output register, then the read-back register.
+  tick();
   tick();
   return impl_->top->reg_rdata_o;
 }
@@ -241,4 +248,5 @@ std::vector<FixedSample> run_rtl_serial(const RegImage& img, const std::vector<C
   return h.stream(in, opt.gaps, opt.backpressure, rng);
 }
 
+}  // namespace ACORE_SERIAL_NS
 }  // namespace acore

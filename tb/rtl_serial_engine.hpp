@@ -6,8 +6,11 @@
 // RtlSerialHarness is the pin-level driver underneath, for testbenches.
 //
 // tb/rtl_serial_engine.cpp is compiled once per named configuration of the serial core: the default
-// (library acore_rtl_serial, linked into anglecore) and rtl/serial_n5r8.cfg (acore_rtl_serial_n5r8,
-// test only); rtl_serial_config() is the configuration of the one linked in.
+// (library acore_rtl_serial) and rtl/serial_<name>.cfg (acore_rtl_serial_<name>); each build's
+// code sits in its own inline namespace acore::serial_<name> (ACORE_SERIAL_NS, default
+// serial_default), so a program can link several: a test sees the one it defines ACORE_SERIAL_NS
+// for, rtl_serial_config() is that build's configuration, and rtl_serial_builds.hpp picks a build
+// by a register image's configuration (what anglecore does).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -19,7 +22,12 @@
 #include "regimage.hpp"
 #include "rtl_engine.hpp"
 
+#ifndef ACORE_SERIAL_NS
+#define ACORE_SERIAL_NS serial_default
+#endif
+
 namespace acore {
+inline namespace ACORE_SERIAL_NS {
 
 // Throws InputError when the image's configuration is not the one the serial RTL was built with.
 std::vector<FixedSample> run_rtl_serial(const RegImage& img, const std::vector<ChannelCodes>& in,
@@ -42,9 +50,10 @@ class RtlSerialHarness {
   // Writes every word through the register port (one word per clock), then reads all back and
   // throws CheckFailed on a read-back difference. Call while the core is idle.
   void load(const RegImage& img);
-  // One word through the host read port: address, one clock, reg_rdata_o.
+  // One word through the host read port: address, two clocks, reg_rdata_o (while the core is idle).
   uint64_t read_reg(int addr);
-  // One word through the host write port (one clock), whatever the core is doing.
+  // One word through the host write port (one clock; the word lands at the next edge), whatever
+  // the core is doing.
   void write_reg(int addr, uint64_t value);
   // Drives the host port pins (address, write enable, data) without a clock.
   void drive_host(int addr, bool we, uint64_t wdata);
@@ -74,4 +83,5 @@ class RtlSerialHarness {
   std::unique_ptr<Impl> impl_;
 };
 
+}  // namespace ACORE_SERIAL_NS
 }  // namespace acore

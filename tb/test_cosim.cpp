@@ -15,6 +15,7 @@
 #include "errors.hpp"
 #include "estimator.hpp"
 #include "fixed_model.hpp"
+#include "host_port_checks.hpp"
 #include "paper_signals.hpp"
 #include "rtl_engine.hpp"
 
@@ -132,7 +133,13 @@ TEST(Cosim, OutputsZeroWhileInvalidAndResetMidStream) {
     if (!did_reset && next == 2000) {
       // Reset with the pipeline full: everything in flight is dropped.
       did_reset = true;
-      h.reset(3);
+      // The sample on the pins stays offered: in_ready_o must be low in every reset clock.
+      h.set_reset(true);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_FALSE(h.in_ready());
+        h.tick();
+      }
+      h.set_reset(false);
       EXPECT_FALSE(h.out_valid());
       first_after_reset = next;
       next = out.size();  // samples accepted but not delivered are lost: send them again
@@ -162,6 +169,39 @@ TEST(Cosim, RegisterReprogrammingBetweenFrames) {
   }
   // Read-back port: addresses past the last word read as zero and ignore writes.
   EXPECT_EQ(h.read_reg(60), 0u);
+}
+
+TEST(Cosim, ResetHoldsInReadyLowAndIgnoresHostWrites) {
+  // rst_i high: in_ready_o low from the first clock (random power-up state), a sample offered in
+  // reset is not taken (no output follows), a host write in reset changes no word.
+  {
+    // (One Verilated model alive at a time: Verilator 5.006 deadlocks destroying the second.)
+    RtlHarness fresh("", 2, 41);
+    EXPECT_TRUE(host_port::in_ready_low_at_power_up_reset(fresh));
+  }
+  RtlHarness h("", 2, 42);
+  const RegImage img = host_port::distinct_image(identity_image());
+  const host_port::ResetBehaviour r = host_port::reset_behaviour(h, img, 8);
+  EXPECT_EQ(r.in_ready_high, 0);
+  EXPECT_EQ(r.out_valid_after, 0);
+  EXPECT_EQ(r.words_changed, 0);
+}
+
+TEST(Cosim, HostPortTimingIsTheTopsShared) {
+  // Both tops: reg_rdata_o is the word at the address of two clocks before, at one address per
+  // clock; a write lands at the edge after the one that takes it, so a read whose address comes
+  // one clock after the write returns the old word and two clocks after it the new one.
+  RtlHarness h("", 2, 43);
+  h.reset();
+  const RegImage img = host_port::distinct_image(identity_image());
+  h.load(img);
+  EXPECT_EQ(host_port::read_latency(h, img, 1, 2), 2);
+  EXPECT_EQ(host_port::read_latency(h, img, 2, static_cast<int>(img.words.size()) - 1), 2);
+  EXPECT_EQ(host_port::streamed_read_errors(h, img, 2, 500, 7), 0);
+  EXPECT_GT(host_port::streamed_read_errors(h, img, 1, 500, 7), 400);
+  EXPECT_EQ(host_port::read_after_write(h, 5, img.words[5] ^ 1, 1), img.words[5]);
+  EXPECT_EQ(h.read_reg(5), img.words[5] ^ 1);
+  EXPECT_EQ(host_port::read_after_write(h, 6, img.words[6] ^ 1, 2), img.words[6] ^ 1);
 }
 
 TEST(Cosim, CornerInputs) {

@@ -18,6 +18,7 @@
 #include "errors.hpp"
 #include "estimator.hpp"
 #include "fixed_model.hpp"
+#include "host_port_checks.hpp"
 #include "paper_signals.hpp"
 #include "rtl_serial_engine.hpp"
 
@@ -56,6 +57,8 @@ RegImage random_image(std::mt19937_64& rng, bool random_atan) {
   }
   if (random_atan)
     for (int i = 0; i < img.cfg.iterations; ++i) img.words[img.cfg.addr_atan(i)] = rng() & mask;
+  // The ZERO word: any REG_W bits (only the low ANGLE_W count).
+  if (img.cfg.zero_word) img.words[img.cfg.addr_zero()] = rng() & mask;
   return img;
 }
 
@@ -66,12 +69,17 @@ using cosim::random_codes;
 TEST(CosimSerial, CyclesIsTheNamedLocalparam) {
   // The schedule of rtl/acore_serial_ctrl.v, counted state by state: 22 single clocks, the two
   // scaling products (REG_W each), the two Horner evaluations (DEGREE steps of S_W bits, an add and
-  // a wait), the CORDIC (Y, X, Z per iteration). The result comes one clock after the core is idle.
+  // a wait), the CORDIC (Y, X, Z per iteration), with the ZERO word the rounding before the
+  // subtraction. The result comes one clock after the core is idle.
   const DatapathConfig& c = cfg();
-  const int expected = 22 + 2 * c.reg_w + 2 * c.degree * (c.s_w + 2) + 3 * c.iterations;
+  const int expected =
+      22 + c.zero_word + 2 * c.reg_w + 2 * c.degree * (c.s_w + 2) + 3 * c.iterations;
   EXPECT_EQ(RtlSerialHarness::cycles_per_sample(), expected);
   EXPECT_EQ(RtlSerialHarness::latency(), expected + 1);
   if (c.describe() == DatapathConfig{}.describe()) EXPECT_EQ(expected, 226);
+  DatapathConfig with_zero;
+  with_zero.zero_word = 1;
+  if (c.describe() == with_zero.describe()) EXPECT_EQ(expected, 227);
   // Measured: accept one sample, count clocks until in_ready and out_valid rise.
   RtlSerialHarness h;
   h.reset();
@@ -153,7 +161,13 @@ TEST(CosimSerial, OutputsZeroWhileInvalidAndResetMidStream) {
     if (!did_reset && next == 700 && !h.in_ready()) {
       // Reset with a sample in flight (and maybe a result waiting): both are dropped.
       did_reset = true;
-      h.reset(3);
+      // The sample on the pins stays offered: in_ready_o must be low in every reset clock.
+      h.set_reset(true);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_FALSE(h.in_ready());
+        h.tick();
+      }
+      h.set_reset(false);
       EXPECT_FALSE(h.out_valid());
       EXPECT_TRUE(h.in_ready());
       next = out.size();  // samples accepted but not delivered are lost: send them again
@@ -188,11 +202,11 @@ TEST(CosimSerial, RegisterReprogrammingBetweenFrames) {
 }
 
 TEST(CosimSerial, HostPortWhileComputing) {
-  // The RAM's one read port belongs to the datapath while a sample is computed: reg_rdata_o reads
-  // zero for an address given in a busy clock and the word for one given in an idle clock. Host
-  // writes go through in any clock; one that meets a scratch write delays the sample by a clock.
-  // Rewriting the loaded words (same values) in random clocks of a stream must leave every result
-  // equal to the model's and cost at most one clock per write.
+  // The RAM's one read port belongs to the datapath while a sample is computed: reg_rdata_o, two
+  // clocks after an address, reads zero for an address given in a busy clock and the word for one
+  // given in an idle clock. Host writes land in any clock; one that meets a scratch write delays
+  // the sample by a clock. Rewriting the loaded words (same values) in random clocks of a stream
+  // must leave every result equal to the model's and cost at most one clock per write.
   const RegImage img = paper_image();
   const auto in = paper_codes(img, 300);
   std::mt19937_64 rng(17);
@@ -203,6 +217,8 @@ TEST(CosimSerial, HostPortWhileComputing) {
   std::vector<FixedSample> out;
   size_t next = 0, writes = 0, busy_reads = 0, busy_nonzero = 0, idle_reads = 0, idle_wrong = 0;
   const int words = static_cast<int>(img.words.size());
+  bool prev_idle = false;
+  int prev_addr = -1;
   while (out.size() < in.size() && h.cycles() - start < 1000000) {
     const bool idle = h.in_ready();
     const int addr = static_cast<int>(rng() % words);
@@ -213,13 +229,18 @@ TEST(CosimSerial, HostPortWhileComputing) {
     if (h.out_valid()) out.push_back(h.output());
     h.tick();
     writes += we;
-    if (idle) {
-      ++idle_reads;
-      idle_wrong += h.reg_rdata() != img.words[addr];
-    } else {
-      ++busy_reads;
-      busy_nonzero += h.reg_rdata() != 0;
+    // After this edge the pins show the read of the previous clock's address.
+    if (prev_addr >= 0) {
+      if (prev_idle) {
+        ++idle_reads;
+        idle_wrong += h.reg_rdata() != img.words[prev_addr];
+      } else {
+        ++busy_reads;
+        busy_nonzero += h.reg_rdata() != 0;
+      }
     }
+    prev_idle = idle;
+    prev_addr = addr;
   }
   h.drive_host(0, false, 0);
   EXPECT_EQ(mismatches(out, FixedModel(img), in, "host port while computing"), 0u);
@@ -233,6 +254,39 @@ TEST(CosimSerial, HostPortWhileComputing) {
   EXPECT_EQ(busy_nonzero, 0u);
   EXPECT_GE(idle_reads, in.size());
   EXPECT_EQ(idle_wrong, 0u);
+}
+
+TEST(CosimSerial, ResetHoldsInReadyLowAndIgnoresHostWrites) {
+  // rst_i high: in_ready_o low from the first clock (random power-up state), a sample offered in
+  // reset is not taken (no output follows), a host write in reset changes no word.
+  {
+    // (One Verilated model alive at a time: Verilator 5.006 deadlocks destroying the second.)
+    RtlSerialHarness fresh("", 2, 41);
+    EXPECT_TRUE(host_port::in_ready_low_at_power_up_reset(fresh));
+  }
+  RtlSerialHarness h("", 2, 42);
+  const RegImage img = host_port::distinct_image(identity_image());
+  const host_port::ResetBehaviour r = host_port::reset_behaviour(h, img, 8);
+  EXPECT_EQ(r.in_ready_high, 0);
+  EXPECT_EQ(r.out_valid_after, 0);
+  EXPECT_EQ(r.words_changed, 0);
+}
+
+TEST(CosimSerial, HostPortTimingIsTheTopsShared) {
+  // Both tops: reg_rdata_o is the word at the address of two clocks before, at one address per
+  // clock; a write lands at the edge after the one that takes it, so a read whose address comes
+  // one clock after the write returns the old word and two clocks after it the new one.
+  RtlSerialHarness h("", 2, 43);
+  h.reset();
+  const RegImage img = host_port::distinct_image(identity_image());
+  h.load(img);
+  EXPECT_EQ(host_port::read_latency(h, img, 1, 2), 2);
+  EXPECT_EQ(host_port::read_latency(h, img, 2, static_cast<int>(img.words.size()) - 1), 2);
+  EXPECT_EQ(host_port::streamed_read_errors(h, img, 2, 500, 7), 0);
+  EXPECT_GT(host_port::streamed_read_errors(h, img, 1, 500, 7), 400);
+  EXPECT_EQ(host_port::read_after_write(h, 5, img.words[5] ^ 1, 1), img.words[5]);
+  EXPECT_EQ(h.read_reg(5), img.words[5] ^ 1);
+  EXPECT_EQ(host_port::read_after_write(h, 6, img.words[6] ^ 1, 2), img.words[6] ^ 1);
 }
 
 TEST(CosimSerial, CornerInputs) {

@@ -38,7 +38,22 @@ done
 first=$(grep -m1 '"effect"' "$tmp/d.json" | tr -d ' ",' | cut -d: -f2)
 expect_eq first-effect "$first" offset
 
+# The vocabulary through files: a constant angle shift written in the scenario (zero_offset) is
+# named zero_offset, not a delay or hysteresis (the ramp changes speed and reverses).
+scenario '{"kind": "ramp", "speed_rps": 4, "speed_end_rps": -6, "sample_rate_hz": 4000}' \
+  '[{"effect": "zero_offset", "zero_rad": 0.02}]' >"$tmp/zero.json"
+check zero-sim 0 "$bin" simulate --config "$tmp/zero.json" --samples 8000 --seed 4 --out "$tmp/zero.csv"
+check zero 0 "$bin" diagnose --sim "$tmp/sim.csv" --real "$tmp/zero.csv" --json "$tmp/z.json"
+first=$(grep -m1 '"effect"' "$tmp/z.json" | tr -d ' ",' | cut -d: -f2)
+expect_eq zero-first "$first" zero_offset
+
 # Bad input, exit 2 with a message that says what is wrong.
+scenario '{"kind": "constant", "turns": 3}' '[{"effect": "amplitude", "scale": 0}]' >"$tmp/bad-scale.json"
+check bad-scale 2 "$bin" simulate --config "$tmp/bad-scale.json" --samples 100 --out "$tmp/x.csv"
+expect_text bad-scale-msg "$tmp/err" "effects[0]"
+scenario '{"kind": "constant", "turns": 3}' '[{"effect": "channel_skew", "tau_c1": 1e-4}]' >"$tmp/bad-tau.json"
+check bad-tau 2 "$bin" simulate --config "$tmp/bad-tau.json" --samples 100 --out "$tmp/x.csv"
+expect_text bad-tau-msg "$tmp/err" "tau_sin, tau_cos"
 check sim4 0 "$bin" simulate --scenario paper --samples 4096 --out "$tmp/sim4.csv"
 check channels 2 "$bin" diagnose --sim "$tmp/sim4.csv" --real "$tmp/real.csv"
 expect_text channels-msg "$tmp/err" "channel sets differ"
@@ -60,15 +75,15 @@ check missing 2 "$bin" diagnose --sim "$tmp/nope.csv" --real "$tmp/real.csv"
 check no-real 2 "$bin" diagnose --sim "$tmp/sim.csv"
 
 # diagnose-bench: two cases of a small run, their recordings saved, the summary in JSON.
-check bench 0 "$bin" diagnose-bench --per-effect 1 --samples 4000 --only 0 12 --save "$tmp/cases" --json "$tmp/b.json" --check
+check bench 0 "$bin" diagnose-bench --per-effect 1 --samples 4000 --only 0 14 --save "$tmp/cases" --json "$tmp/b.json" --check
 expect_text bench-met "$tmp/out" "all targets met"
 expect_text bench-matrix "$tmp/out" "confusion matrix"
 for f in confusion top1_accuracy median_holdout_shrink confident_wrong recovery; do expect_text "bench-$f" "$tmp/b.json" "\"$f\""; done
 expect_eq bench-saved "$(ls "$tmp/cases" | wc -l | tr -d ' ')" 6
-check bench-rerun 0 "$bin" diagnose --sim "$tmp/cases/case012_sim.csv" --real "$tmp/cases/case012_real.csv"
+check bench-rerun 0 "$bin" diagnose --sim "$tmp/cases/case014_sim.csv" --real "$tmp/cases/case014_real.csv"
 expect_text bench-none "$tmp/out" "verdict: no_gap"
 check bench-zero 2 "$bin" diagnose-bench --per-effect 0
-check bench-only 2 "$bin" diagnose-bench --per-effect 1 --only 14
+check bench-only 2 "$bin" diagnose-bench --per-effect 1 --only 16
 check bench-samples 2 "$bin" diagnose-bench --samples 10
 
 echo "$passes passed, $fails failed"

@@ -6,6 +6,8 @@
 // vocabulary. The truth is the drawn effect, never what the diagnosis computes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "diagnose_bench.hpp"
@@ -31,11 +33,37 @@ TEST(DiagnoseBench, DrawsAreReproducibleAndInTheirRanges) {
         EXPECT_GE(x, lo * (1 - 1e-12)) << e << " #" << k;
         EXPECT_LE(x, hi * (1 + 1e-12)) << e << " #" << k;
       };
-      if (e == "phase_error") in(std::fabs(c.effect.param("delta_rad")) / kDeg, 0.5, 5);
       if (e == "harmonic") in(c.effect.param("amplitude"), 0.01, 0.05);
       if (e == "harmonic" && ch == 4) EXPECT_EQ(std::fmod(c.effect.param("order"), 2), 1);
-      if (e == "eccentricity") in(c.effect.param("epsilon_rad") / kDeg, 0.2, 2);
-      if (e == "channel_skew" || e == "common_delay") in(360 * v * c.effect.param("tau_s"), 0.2, 3);
+      if (e == "eccentricity") {
+        in(c.effect.param("epsilon_rad") / kDeg, 0.2, 2);
+        in(c.effect.param("am_depth") / c.effect.param("epsilon_rad"), 0, 1.5);
+        in(std::fabs(std::remainder(c.effect.param("am_phase_rad") - c.effect.param("phi0_rad"),
+                                    2 * M_PI)),
+           0, M_PI / 2);
+      }
+      if (e == "common_delay") in(360 * v * c.effect.param("tau_s"), 0.2, 3);
+      if (e == "channel_skew") {
+        // A slot order: the channels' times are 0, tau, 2 tau, ... in some order.
+        EXPECT_EQ(c.effect.param("tau_s"), 0);
+        std::array<double, 4> t = channel_skew_offsets(c.effect, ch);
+        std::sort(t.begin(), t.begin() + ch);
+        in(360 * v * t[1], 0.2, 3);
+        for (int k = 1; k < ch; ++k) EXPECT_NEAR(t[k], k * t[1], 1e-12 * t[1]) << e << " #" << k;
+        EXPECT_EQ(t[0], 0);
+      }
+      if (e == "phase_error") {
+        // One group moves: the sine pair, the cosine pair, or one channel (four channels).
+        int moved = 0;
+        for (const auto& [name, value] : c.effect.params) {
+          if (value == 0) continue;
+          ++moved;
+          in(std::fabs(value) / kDeg, 0.5, 5);
+        }
+        EXPECT_EQ(moved, 1) << e << " #" << k;
+      }
+      if (e == "zero_offset") in(std::fabs(c.effect.param("zero_rad")) / kDeg, 0.2, 3);
+      if (e == "amplitude") in(std::fabs(c.effect.param("scale") - 1), 0.05, 0.3);
       if (e == "quantization") in(c.effect.param("bits"), 6, 10);
       if (e == "saturation") in(c.effect.param("level") / c.peak, 0.8, 0.95);
       if (e == "excess_noise") in(c.effect.param("sigma") / c.model.sigma_indep, 2, 5);
@@ -64,10 +92,11 @@ TEST(DiagnoseBench, FixedSeedSmallRunMeetsTheTargets) {
   opt.seed = 7;
   opt.samples = 6000;
   const BenchSummary s = run_diagnose_bench(opt);
-  ASSERT_EQ(s.cases.size(), 14u * 4);
+  const size_t groups = effect_names().size() + 2;  // the effects, none, outside
+  ASSERT_EQ(s.cases.size(), groups * 4);
   EXPECT_GE(s.top1_accuracy, 0.9) << s.text();
   EXPECT_GE(s.median_shrink, 0.7) << s.text();
-  EXPECT_GT(s.params_scored, 12 * 4 / 2);
+  EXPECT_GT(s.params_scored, effect_names().size() * 4 / 2);
   EXPECT_EQ(s.params_within, s.params_scored) << s.text();
   EXPECT_EQ(s.confident_wrong, 0) << s.text();
   EXPECT_TRUE(s.met()) << s.text();
@@ -75,7 +104,7 @@ TEST(DiagnoseBench, FixedSeedSmallRunMeetsTheTargets) {
   int total = 0;
   for (const auto& row : s.confusion)
     for (int v : row) total += v;
-  EXPECT_EQ(total, 14 * 4);
+  EXPECT_EQ(total, static_cast<int>(groups * 4));
 }
 
 }  // namespace

@@ -84,5 +84,26 @@ TEST(FixedBatch, MatchesStepInTheOtherCorrectionModes) {
   }
 }
 
+// The ZERO word's subtraction, after the vectorized chain, the Fourier stage and in the fallback:
+// random images (the zero word's upper bits too) and random inputs.
+TEST(FixedBatch, MatchesStepWithTheZeroWord) {
+  std::mt19937_64 rng(9);
+  for (const char* p :
+       {"ZERO=1", "CORRECTION=2 FOURIER_K=4 ZERO=1", "CORRECTION=1 ZERO=1", "ANGLE_W=12 ZERO=1"}) {
+    const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
+    RegImage img;
+    img.cfg = cfg;
+    img.words.assign(cfg.words(), 0);
+    std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
+    for (auto& w : img.words) w = word(rng);
+    img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    std::uniform_int_distribution<int32_t> code(-32768, 32767);
+    std::vector<ChannelCodes> codes(2000);
+    for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
+    expect_same(FixedModel(img), codes);
+  }
+}
+
 }  // namespace
 }  // namespace acore

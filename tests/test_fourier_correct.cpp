@@ -174,11 +174,17 @@ TEST(FourierCalibration, RecoversAKnownDistortionExactly) {
     CalOptions o;
     o.correction = kNone;
     o.fourier_k = k;
+    // With the zero offset estimated, it takes a share of a_0 and leaves the rest exactly.
+    const FloatCoefficients aligned = calibrate(rec, o);
+    EXPECT_NEAR(aligned.fourier[0] + aligned.zero_offset, truth[0], 1e-12) << "K=" << k;
+    o.estimate_zero = false;  // the reference is theta_est - Delta exactly: a_0 is the series'
     const FloatCoefficients fc = calibrate(rec, o);
     ASSERT_EQ(fc.fourier_k(), k);
-    for (size_t j = 0; j < fc.fourier.size(); ++j)
+    for (size_t j = 0; j < fc.fourier.size(); ++j) {
       EXPECT_NEAR(fc.fourier[j], j < truth.size() ? truth[j] : 0.0, 1e-12)
           << "K=" << k << " j=" << j;
+      if (j > 0) EXPECT_NEAR(aligned.fourier[j], fc.fourier[j], 1e-12) << "K=" << k << " j=" << j;
+    }
     // Quantized: every word within half an LSB (times the gain) of the value.
     const RegImage img = quantize(fc, DatapathConfig{}, 8192);
     const FloatCoefficients back = dequantize(img);

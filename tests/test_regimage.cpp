@@ -85,8 +85,8 @@ TEST(RegImage, BadInputNamesFileLineAndField) {
   deg.replace(deg.find("degree=3"), 8, "degree=9");
   expect_error(deg, "degree=9 must be 1..7");
   std::string wide = good;
-  const auto p = wide.find("\n", wide.find("acore: z_w=")) + 1;  // first word line
-  wide.replace(p, 5, "fffff");                                   // 20 bits in an 18-bit word
+  const auto p = wide.rfind("\n", wide.find("//   0 offset")) + 1;  // first word line
+  wide.replace(p, 5, "fffff");  // 20 bits in an 18-bit word
   expect_error(wide, "does not fit 18 bits");
   EXPECT_THROW(read_regimage("/nonexistent/regs.hex"), InputError);
 }
@@ -158,7 +158,7 @@ TEST(RegImage, Crc32HeaderRoundTripsAndCatchesAChangedWord) {
   // One bit of one word changed in the text: the reader names the file, the key's line and field.
   const int line_no = static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
   std::string flipped = text;
-  const size_t w = flipped.find("\n", flipped.find("acore: z_w=")) + 1 + 4;  // last digit of word 0
+  const size_t w = flipped.rfind("\n", flipped.find("//   0 offset")) + 1 + 4;  // word 0's last digit
   flipped[w] = flipped[w] == '0' ? '1' : '0';
   expect_error(flipped, "regs.hex:" + std::to_string(line_no) + ": header field 'crc32'");
   // Without the key (images written before it) the same text parses.
@@ -169,6 +169,99 @@ TEST(RegImage, Crc32HeaderRoundTripsAndCatchesAChangedWord) {
   std::string bad = text;
   bad.replace(at + 16, 2, "0z");
   expect_error(bad, "header field 'crc32': bad value");
+}
+
+// The ZERO word is the last word in every mode (after the atan words and the Fourier words), and
+// without it every map is what it was.
+TEST(RegImage, ZeroWordIsTheLastWordOfEveryMap) {
+  for (const char* p : {"", "DEGREE=5 REGIONS=8", "CORRECTION=1", "CORRECTION=2", "FOURIER_K=8",
+                        "CORRECTION=2 FOURIER_K=4", "DEGREE=7 REGIONS=8 XCENTER=1",
+                        "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20"}) {
+    const DatapathConfig off = DatapathConfig{}.with_rtl_params(p);
+    const DatapathConfig on = off.with_rtl_params("ZERO=1");
+    on.validate();
+    EXPECT_EQ(on.words(), off.words() + 1) << p;
+    EXPECT_EQ(on.addr_zero(), off.words()) << p;
+    EXPECT_EQ(on.addr_atan(0), off.addr_atan(0)) << p;
+    if (off.fourier_k) EXPECT_EQ(on.addr_fourier(0), off.addr_fourier(0)) << p;
+    EXPECT_EQ(off.describe().find("zero_word"), std::string::npos) << p;
+    EXPECT_NE(on.describe().find("zero_word=1"), std::string::npos) << p;
+  }
+  EXPECT_EQ(DatapathConfig{}.words(), 52);
+  EXPECT_EQ(DatapathConfig{}.with_rtl_params("ZERO=1").addr_zero(), 52);
+  DatapathConfig wide =
+      DatapathConfig{}.with_rtl_params("ANGLE_W=20 Z_W=20 ZERO=1");  // 20-bit code, 18-bit word
+  EXPECT_THROW(wide.validate(), InputError);
+}
+
+TEST(RegImage, ZeroOffsetRoundTripsAndOlderImagesReadAsZero) {
+  const Recording rec = test::paper_recording(4096);
+  for (Recording r : {rec}) {
+    for (double& t : r.theta_ref) t += 160 * M_PI / 180;
+    for (int zero_word : {0, 1}) {
+      DatapathConfig cfg;
+      cfg.zero_word = zero_word;
+      const RegImage a = quantize(calibrate(r, CalOptions{}), cfg, choose_in_scale(r, 16));
+      const std::string text = format_regimage(a);
+      EXPECT_NE(text.find("// acore: zero_offset_rad="), std::string::npos);
+      EXPECT_NE(text.find("// acore: zero_offset_code="), std::string::npos);
+      EXPECT_NE(text.find("// zero offset = -166.94"), std::string::npos) << text.substr(0, 1500);
+      EXPECT_EQ(text.find("// acore: zero_word=1") != std::string::npos, zero_word == 1);
+      const RegImage b = parse_regimage(text, "x");
+      EXPECT_EQ(b.zero_offset, a.zero_offset);  // exactly: the shortest round-trip decimal
+      EXPECT_EQ(b.words, a.words);
+      EXPECT_EQ(b.cfg.describe(), a.cfg.describe());
+      if (zero_word) {
+        EXPECT_EQ(b.zero_position(), b.zero_offset_code());
+        EXPECT_NE(text.find("zero position = "), std::string::npos);
+      }
+    }
+  }
+  // An image made before the zero offset (no keys) reads as offset 0; and one calibrated against
+  // theta_ref itself (offset exactly 0, no ZERO word) is written without the keys, as before.
+  std::string old = format_regimage(paper_image());
+  for (const char* key :
+       {"// acore: zero_offset_rad=", "// acore: zero_offset_code=", "// zero offset ="}) {
+    const auto b = old.find(key);
+    ASSERT_NE(b, std::string::npos);
+    old.erase(b, old.find('\n', b) + 1 - b);
+  }
+  EXPECT_EQ(parse_regimage(old, "old.hex").zero_offset, 0.0);
+  CalOptions as_printed;
+  as_printed.estimate_zero = false;
+  const RegImage z =
+      quantize(calibrate(rec, as_printed), DatapathConfig{}, choose_in_scale(rec, 16));
+  EXPECT_EQ(format_regimage(z).find("zero_offset"), std::string::npos);
+  // Only the code given: the offset is the code's angle.
+  const RegImage c = parse_regimage(old + "// acore: zero_offset_code=32768\n", "c.hex");
+  EXPECT_DOUBLE_EQ(c.zero_offset, -M_PI);
+}
+
+TEST(RegImage, MalformedZeroOffsetNamesLineAndField) {
+  std::string good = format_regimage(paper_image());
+  const auto b = good.find("// acore: zero_offset_rad=");
+  ASSERT_NE(b, std::string::npos);
+  int line = 1;
+  for (size_t i = 0; i < b; ++i) line += good[i] == '\n';
+  const std::string head = good.substr(0, b), tail = good.substr(good.find('\n', b) + 1);
+  const std::string at = "regs.hex:" + std::to_string(line) + ": header field 'zero_offset_rad'";
+  expect_error(head + "// acore: zero_offset_rad=north\n" + tail, at);
+  expect_error(head + "// acore: zero_offset_rad=4\n" + tail, at);
+  expect_error(head + "// acore: zero_offset_rad=nan\n" + tail, at);
+  expect_error(head + "// acore: zero_offset_rad=0.1\n" + tail, "header field 'zero_offset_code'");
+  std::string code = good;
+  const auto cb = code.find("// acore: zero_offset_code=");
+  code.replace(cb, code.find('\n', cb) - cb, "// acore: zero_offset_code=65536");
+  expect_error(code, "regs.hex:" + std::to_string(line + 1) +
+                         ": header field 'zero_offset_code': 65536 does not fit");
+  code.replace(cb, code.find('\n', cb) - cb, "// acore: zero_offset_code=-3");
+  expect_error(code, "header field 'zero_offset_code': bad value '-3'");
+  std::string zw = good;
+  zw.replace(zw.find("// acore: angle_w=16"), 20, "// acore: angle_w=16\n// acore: zero_word=2");
+  expect_error(zw, "zero_word=2 must be 0 or 1");
+  zw = good;
+  zw.replace(zw.find("// acore: angle_w=16"), 20, "// acore: angle_w=16\n// acore: zero_word=1");
+  expect_error(zw, "53");  // the header now asks for the ZERO word the image lacks
 }
 
 TEST(RegImage, QuantizeRejectsCoefficientsOutOfRange) {

@@ -4,6 +4,7 @@
 // trajectories, two-channel sensors, and the scenario JSON round trip and errors.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -191,7 +192,7 @@ Scenario ideal_with(const std::string& effect, const ParamList& params, int chan
 }
 
 TEST(Effects, NamesParametersAndErrors) {
-  EXPECT_EQ(effect_names().size(), 12u);
+  EXPECT_EQ(effect_names().size(), 14u);
   for (const auto& e : effect_names()) {
     EXPECT_FALSE(effect_defaults(e, 4).empty()) << e;
     // Defaults are a no-op on the ideal sensor (quantization and saturation excepted).
@@ -212,8 +213,13 @@ TEST(Effects, NamesParametersAndErrors) {
   EXPECT_THROW(make_effect("harmonic", {{"order", 2.5}}, 4), InputError);
   EXPECT_THROW(make_effect("saturation", {{"level", -1}}, 4), InputError);
   EXPECT_THROW(make_effect("offset", {{"offset_c1", 1}}, 4).param("gain_c1"), InputError);
-  EXPECT_TRUE(is_angle_effect("hysteresis"));
-  EXPECT_FALSE(is_angle_effect("offset"));
+  EXPECT_THROW(make_effect("amplitude", {{"scale", 0}}, 4), InputError);
+  EXPECT_THROW(make_effect("eccentricity", {{"am_depth", 1}}, 4), InputError);
+  EXPECT_THROW(make_effect("channel_skew", {{"tau_c1", 1e-4}}, 2), InputError);  // sin, cos
+  EXPECT_TRUE(is_field_effect("zero_offset"));
+  EXPECT_TRUE(is_field_effect("amplitude"));
+  EXPECT_TRUE(is_field_effect("hysteresis"));
+  EXPECT_FALSE(is_field_effect("offset"));
 }
 
 TEST(Effects, OffsetAndGainMismatch) {
@@ -276,6 +282,76 @@ TEST(Effects, Eccentricity) {
   }
 }
 
+// The magnitude part of eccentricity and the amplitude effect scale the field part only: a
+// channel's electrical offset (C0) stays.
+TEST(Effects, EccentricityModulatesTheMagnitudeToo) {
+  const double eps = 0.01, phi0 = 0.7, m = 0.02, phim = -0.4, c0 = 0.1;
+  Scenario s = ideal_with(
+      "eccentricity",
+      {{"epsilon_rad", eps}, {"phi0_rad", phi0}, {"am_depth", m}, {"am_phase_rad", phim}});
+  s.p = 2;
+  s.sensor[0].offset = c0;
+  const Recording r = simulate(s, 300, 1);
+  for (size_t i = 0; i < 300; ++i) {
+    const double th = r.theta_ref[i], seen = th + eps * std::sin(th - phi0),
+                 k = 1 + m * std::cos(th - phim);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(r.ch[static_cast<size_t>(c)][i], (c == 0 ? c0 : 0.0) + k * ideal(c, 2 * seen),
+                  1e-14);
+  }
+}
+
+TEST(Effects, AmplitudeAndZeroOffset) {
+  const double k = 0.7, z = 0.03, c0 = -0.05;
+  for (int channels : {4, 2}) {
+    Scenario a = ideal_with("amplitude", {{"scale", k}}, channels);
+    a.sensor[1].offset = c0;
+    Scenario zs = ideal_with("zero_offset", {{"zero_rad", z}}, channels);
+    zs.p = 3;  // the shift is mechanical: the electrical angle moves by p z
+    const Recording ra = simulate(a, 200, 1), rz = simulate(zs, 200, 1);
+    for (size_t i = 0; i < 200; ++i)
+      for (int c = 0; c < channels; ++c) {
+        EXPECT_NEAR(ra.ch[static_cast<size_t>(c)][i],
+                    (c == 1 ? c0 : 0.0) + k * ideal(c, ra.theta_ref[i]), 1e-14);
+        EXPECT_NEAR(rz.ch[static_cast<size_t>(c)][i], ideal(c, 3 * (rz.theta_ref[i] + z)), 1e-14);
+      }
+  }
+  // Field scalings compose, in either order.
+  Scenario both = ideal_with("amplitude", {{"scale", k}});
+  both.effects.push_back(make_effect("eccentricity", {{"am_depth", 0.1}}, 4));
+  Scenario swapped = both;
+  std::swap(swapped.effects[0], swapped.effects[1]);
+  const Recording b = simulate(both, 100, 1), w = simulate(swapped, 100, 1);
+  for (size_t c = 0; c < 4; ++c) EXPECT_LT(max_diff(b.ch[c], w.ch[c]), 1e-14);
+  for (size_t i = 0; i < 100; ++i)
+    EXPECT_NEAR(b.ch[0][i], k * (1 + 0.1 * std::cos(b.theta_ref[i])) * std::sin(b.theta_ref[i]),
+                1e-14);
+}
+
+// phase_error per channel: one plate moved (c2 alone), the cosine pair, and delta_rad as before;
+// the pair and channel parameters add.
+TEST(Effects, PhaseErrorOnEitherPairOrOneChannel) {
+  const double d = 0.03, e = -0.01;
+  const Recording r =
+      simulate(ideal_with("phase_error", {{"delta_cos_rad", d}, {"phase_c2", e}}), 200, 1);
+  for (size_t i = 0; i < 200; ++i) {
+    const double phi = r.theta_ref[i];
+    EXPECT_NEAR(r.ch[0][i], std::sin(phi), 1e-14);
+    EXPECT_NEAR(r.ch[1][i], std::cos(phi + d + e), 1e-14);
+    EXPECT_NEAR(r.ch[3][i], -std::cos(phi + d), 1e-14);
+    // One plate moved by e: c2 - c4 is 2 cos(e/2) cos(phi + d + e/2) (half the shift, and smaller).
+    EXPECT_NEAR(r.d24(i), 2 * std::cos(e / 2) * std::cos(phi + d + e / 2), 1e-14);
+  }
+  // delta_rad is the sine pair's shift, the same as phase_c1 = phase_c3.
+  const Recording a = simulate(ideal_with("phase_error", {{"delta_rad", d}}), 100, 1);
+  const Recording b =
+      simulate(ideal_with("phase_error", {{"phase_c1", d}, {"phase_c3", d}}), 100, 1);
+  for (size_t c = 0; c < 4; ++c) EXPECT_LT(max_diff(a.ch[c], b.ch[c]), 1e-15);
+  const std::array<double, 4> sh =
+      phase_error_shifts(make_effect("phase_error", {{"delta_rad", d}, {"phase_c4", e}}, 4), 4);
+  EXPECT_EQ(sh, (std::array<double, 4>{d, 0, d, e}));
+}
+
 Scenario constant_speed(double speed_rps, double fs) {
   Scenario s = builtin_scenario("ideal");
   s.trajectory.kind = "constant";
@@ -306,6 +382,50 @@ TEST(Effects, ChannelSkewAndCommonDelay) {
   Scenario fast = constant_speed(4 * v, 2000);
   fast.effects = s.effects;
   EXPECT_GT(stats(uncorrected_error(simulate(fast, n, 1))).rms, 3 * stats(uncorrected_error(r)).rms);
+}
+
+// A multiplexed ADC in any slot order: tau_X per channel; tau_s (slots 0, tau, 2 tau, 3 tau in
+// channel order) is the same as tau_c2 = tau, tau_c3 = 2 tau, tau_c4 = 3 tau.
+TEST(Effects, ChannelSkewPerChannel) {
+  const double tau = 1e-4, v = 5.0;
+  const size_t n = 800;
+  Scenario s = constant_speed(v, 2000);
+  s.effects.push_back(
+      make_effect("channel_skew", {{"tau_c1", 2 * tau}, {"tau_c3", 3 * tau}, {"tau_c4", tau}}, 4));
+  const Recording r = simulate(s, n, 1);
+  const double slot[4] = {2, 0, 3, 1};
+  for (size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(r.ch[static_cast<size_t>(c)][i], ideal(c, 2 * kPi * v * (r.t[i] + slot[c] * tau)),
+                  1e-12);
+  Scenario a = constant_speed(v, 2000), b = a;
+  a.effects.push_back(make_effect("channel_skew", {{"tau_s", tau}}, 4));
+  b.effects.push_back(
+      make_effect("channel_skew", {{"tau_c2", tau}, {"tau_c3", 2 * tau}, {"tau_c4", 3 * tau}}, 4));
+  const Recording ra = simulate(a, n, 1), rb = simulate(b, n, 1);
+  for (size_t c = 0; c < 4; ++c) EXPECT_LT(max_diff(ra.ch[c], rb.ch[c]), 1e-15);
+  // Two channels: sin, cos.
+  Scenario two = constant_speed(v, 2000);
+  two.channels = 2;
+  two.effects.push_back(make_effect("channel_skew", {{"tau_sin", tau}}, 2));
+  const Recording r2 = simulate(two, n, 1);
+  for (size_t i = 0; i < n; ++i) {
+    EXPECT_NEAR(r2.ch[0][i], std::sin(2 * kPi * v * (r2.t[i] + tau)), 1e-12);
+    EXPECT_NEAR(r2.ch[1][i], std::cos(2 * kPi * v * r2.t[i]), 1e-12);
+  }
+}
+
+// Scenario files written before the vocabulary was widened keep their meaning: eccentricity
+// without magnitude modulation, channel_skew's tau_s, phase_error's delta_rad.
+TEST(Effects, OldScenarioFilesKeepTheirMeaning) {
+  const Scenario s = Scenario::from_json(nlohmann::json::parse(R"({"effects": [
+      {"effect": "eccentricity", "epsilon_rad": 0.01, "phi0_rad": 0.3},
+      {"effect": "channel_skew", "tau_s": 1e-4},
+      {"effect": "phase_error", "delta_rad": 0.02}]})"));
+  EXPECT_EQ(s.effects[0].param("am_depth"), 0.0);
+  const std::array<double, 4> tau = channel_skew_offsets(s.effects[1], 4);
+  for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(tau[c], 1e-4 * c, 1e-18);
+  EXPECT_EQ(phase_error_shifts(s.effects[2], 4), (std::array<double, 4>{0.02, 0, 0.02, 0}));
 }
 
 TEST(Effects, DriftFollowsTemperature) {
@@ -432,7 +552,7 @@ TEST(Scenario, JsonRoundTrip) {
   const nlohmann::json j = s.to_json();
   const Scenario b = Scenario::from_json(nlohmann::json::parse(j.dump()));
   EXPECT_EQ(b.to_json(), j);
-  EXPECT_EQ(b.effects.size(), 12u);
+  EXPECT_EQ(b.effects.size(), 14u);
   EXPECT_DOUBLE_EQ(b.effects[0].param("offset_c3"), 0.25);
   const Recording ra = simulate(s, 200, 5), rb = simulate(b, 200, 5);
   for (size_t c = 0; c < 4; ++c) EXPECT_EQ(ra.ch[c], rb.ch[c]);
@@ -447,7 +567,8 @@ TEST(Scenario, WithChannelsRemapsPerChannelParameters) {
   Scenario s = builtin_scenario("ideal");
   s.effects.push_back(make_effect("offset", {{"offset_c1", 0.1}, {"offset_c2", 0.2}, {"offset_c3", 0.3}}, 4));
   s.effects.push_back(make_effect("drift", {{"gain_per_C_c2", 1e-3}}, 4));
-  s.effects.push_back(make_effect("phase_error", {{"delta_rad", 0.01}}, 4));
+  s.effects.push_back(make_effect("phase_error", {{"delta_rad", 0.01}, {"phase_c2", 0.02}}, 4));
+  s.effects.push_back(make_effect("channel_skew", {{"tau_c2", 1e-4}}, 4));
   const Scenario two = with_channels(s, 2);
   EXPECT_EQ(two.channels, 2);
   ASSERT_EQ(two.effects[0].params.size(), 2u);
@@ -455,7 +576,10 @@ TEST(Scenario, WithChannelsRemapsPerChannelParameters) {
   EXPECT_DOUBLE_EQ(two.effects[0].param("offset_cos"), 0.2);
   EXPECT_DOUBLE_EQ(two.effects[1].param("gain_per_C_cos"), 1e-3);
   EXPECT_DOUBLE_EQ(two.effects[2].param("delta_rad"), 0.01);
+  EXPECT_DOUBLE_EQ(two.effects[2].param("phase_cos"), 0.02);
+  EXPECT_DOUBLE_EQ(two.effects[3].param("tau_cos"), 1e-4);
   const Scenario four = with_channels(two, 4);
+  EXPECT_DOUBLE_EQ(four.effects[3].param("tau_c4"), 1e-4);
   EXPECT_DOUBLE_EQ(four.effects[0].param("offset_c3"), 0.1);
   EXPECT_DOUBLE_EQ(four.effects[0].param("offset_c4"), 0.2);
   EXPECT_THROW(with_channels(s, 3), InputError);

@@ -2,6 +2,7 @@
 // `anglecore calibrate`: fit the coefficients on a calibration recording and write the register image.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -15,13 +16,29 @@ namespace acore::cli {
 
 namespace {
 struct CalibrateArgs {
-  std::string in, out, json, correction = "poly";
+  std::string in, out, json, correction = "poly", zero_offset = "auto";
   int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, in_w = 16, p = 0;
   int fourier = 0, fourier_iterations = DatapathConfig{}.fourier_iterations;
   int fourier_guard = DatapathConfig{}.fourier_guard;
   double in_scale = 0;
-  bool coef_f_given = false, iterations_given = false, xcenter = false;
+  bool coef_f_given = false, iterations_given = false, xcenter = false, zero_word = false;
 };
+
+// --zero-offset: "auto" (estimate) or an electrical angle in degrees.
+void parse_zero_offset(const std::string& v, CalOptions* opt) {
+  if (v == "auto") return;
+  size_t used = 0;
+  double deg = 0;
+  try {
+    deg = std::stod(v, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != v.size() || !std::isfinite(deg))
+    throw InputError("--zero-offset: '" + v + "' is neither 'auto' nor an angle in degrees");
+  opt->estimate_zero = false;
+  opt->zero_offset = deg * M_PI / 180;
+}
 
 void run_calibrate(const CalibrateArgs& a) {
   const Recording rec = read_recording(a.in);
@@ -32,6 +49,7 @@ void run_calibrate(const CalibrateArgs& a) {
   opt.xcenter = a.xcenter ? 1 : 0;
   opt.periodicity = a.p ? a.p : recording_periodicity(rec, a.in);
   opt.fourier_k = a.fourier;
+  parse_zero_offset(a.zero_offset, &opt);
   DatapathConfig cfg = cordic_width_preset(a.angle_w);
   cfg.correction = opt.correction;
   cfg.fourier_k = a.fourier;
@@ -40,6 +58,7 @@ void run_calibrate(const CalibrateArgs& a) {
   cfg.degree = a.degree;
   cfg.regions = a.regions;
   cfg.xcenter = opt.xcenter;
+  cfg.zero_word = a.zero_word ? 1 : 0;
   if (a.iterations_given) cfg.iterations = a.iterations;
   // A wider input needs wider offset words (REG_W >= IN_W + 2); the coefficients keep Q3.x.
   cfg.in_w = a.in_w;
@@ -61,11 +80,11 @@ void run_calibrate(const CalibrateArgs& a) {
   if (a.fourier > 0)
     fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}", a.fourier,
                                a.fourier_iterations, a.fourier_guard);
-  img.provenance.push_back(
-      fmt::format("command=anglecore calibrate --in {} --correction {} --degree {} "
-                  "--regions {}{} --angle-w {} --in-w {} --iterations {}{}",
-                  a.in, a.correction, a.degree, a.regions, a.xcenter ? " --xcenter" : "", a.angle_w,
-                  a.in_w, cfg.iterations, fourier_args));
+  img.provenance.push_back(fmt::format(
+      "command=anglecore calibrate --in {} --correction {} --degree {} "
+      "--regions {}{} --angle-w {} --in-w {} --iterations {}{} --zero-offset {}{}",
+      a.in, a.correction, a.degree, a.regions, a.xcenter ? " --xcenter" : "", a.angle_w, a.in_w,
+      cfg.iterations, fourier_args, a.zero_offset, a.zero_word ? " --zero-word" : ""));
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
   write_regimage(img, a.out);
 
@@ -77,8 +96,16 @@ void run_calibrate(const CalibrateArgs& a) {
   const ErrorStats sf = error_stats(ef), sx = error_stats(ex), su = error_stats(eu);
   std::cout << fmt::format("calibrated {} samples: {} words ({}), in_scale={}\n", rec.size(), cfg.words(),
                            cfg.describe(), in_scale);
-  std::cout << fmt::format("  on the calibration recording: uncorrected RMS {:.3f} deg, corrected RMS "
-                           "{:.3f} (float) {:.3f} (fixed) deg\n", su.rms, sf.rms, sx.rms);
+  std::cout << fmt::format(
+      "  zero offset {:+.4f} deg electrical (sensor angle - p theta_ref, {}), {}\n",
+      img.zero_offset * 180 / M_PI, opt.estimate_zero ? "estimated" : "given",
+      cfg.zero_word ? fmt::format("in the ZERO word (address {}, code {})", cfg.addr_zero(),
+                                  img.zero_position())
+                    : "subtracted by `estimate` in software");
+  std::cout << fmt::format(
+      "  on the calibration recording (reference frame): uncorrected RMS {:.3f} deg, "
+      "corrected RMS {:.3f} (float) {:.3f} (fixed) deg\n",
+      su.rms, sf.rms, sx.rms);
   nlohmann::json j = {
       {"samples", rec.size()},
       {"words", cfg.words()},
@@ -95,6 +122,12 @@ void run_calibrate(const CalibrateArgs& a) {
       {"poly", fc.poly},
       {"fourier_k", cfg.fourier_k},
       {"fourier", fc.fourier},
+      {"zero_word", cfg.zero_word},
+      {"zero_offset",
+       {{"rad", img.zero_offset},
+        {"deg", img.zero_offset * 180 / M_PI},
+        {"code", img.zero_offset_code()},
+        {"estimated", opt.estimate_zero}}},
       {"fit_error_deg",
        {{"float", stats_json(sf)}, {"fixed", stats_json(sx)}, {"uncorrected", stats_json(su)}}}};
   write_json(a.json, j);
@@ -144,6 +177,16 @@ void add_calibrate(CLI::App& app) {
       ->check(CLI::Range(4, 24));
   c->add_option("--fourier-guard", args->fourier_guard, "Guard fraction bits of the Fourier rotations")
       ->check(CLI::Range(0, 8));
+  c->add_option(
+      "--zero-offset", args->zero_offset,
+      "Zero offset (sensor angle - p theta_ref, electrical): 'auto' (default) estimates it as the "
+      "circular mean of the uncorrected angle error and fits the correction against the aligned "
+      "reference; a number of degrees takes it as given (0: fit against theta_ref itself)");
+  c->add_flag(
+      "--zero-word", args->zero_word,
+      "Store the zero offset in one more register word (RTL ZERO=1, after every other word): the "
+      "hardware outputs angle - zero, in the reference frame. Without it the image header records "
+      "the offset and `estimate` subtracts it in software");
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
     args->coef_f_given = c->count("--coef-frac") > 0;

@@ -15,7 +15,7 @@
 #include "estimator.hpp"
 #include "fixed_model.hpp"
 #include "rtl_engine.hpp"
-#include "rtl_serial_engine.hpp"
+#include "rtl_serial_builds.hpp"
 
 namespace acore::cli {
 
@@ -46,7 +46,7 @@ void run_cosim(const CosimArgs& a) {
   opt.backpressure = a.backpressure;
   opt.gaps = a.backpressure;
   const std::vector<FixedSample> rtl =
-      engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial(img, codes, opt);
+      engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial_for(img, codes, opt);
   const FixedModel model(img);
   size_t bad = 0;
   nlohmann::json first = nullptr;

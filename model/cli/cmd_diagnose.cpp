@@ -22,6 +22,12 @@ struct DiagnoseArgs {
   int order = 12;
 };
 
+std::string combination_names(const Diagnosis& d) {
+  std::string s;
+  for (const auto& r : d.combination) s += (s.empty() ? "" : " + ") + r.cand.effect;
+  return s;
+}
+
 std::string params_text(const EffectCandidate& c) {
   std::string s;
   for (const auto& [k, v] : c.params) s += fmt::format("{}{}={:.4g}", s.empty() ? "" : ", ", k, v);
@@ -38,6 +44,7 @@ void print_summary(const Diagnosis& d) {
     std::cout << fmt::format("  gap order {:2d}: {:.4f} deg  <- {}\n", d.harmonics[k].order, d.harmonics[k].amplitude_deg,
                              fmt::join(d.harmonics[k].causes, "; "));
   std::cout << fmt::format("verdict: {}\n", d.verdict);
+  if (!d.note.empty()) std::cout << fmt::format("  note: {}\n", d.note);
   if (!d.ambiguous_with.empty())
     std::cout << fmt::format(
         "  ambiguous: the recording cannot tell {} from {} (record with speed changes and a "
@@ -52,9 +59,9 @@ void print_summary(const Diagnosis& d) {
         r.cand.rejected.empty() ? "" : "  [rejected: " + r.cand.rejected + "]");
   }
   if (!d.combination.empty())
-    std::cout << fmt::format("combination: {} + {} explains {:.1f}%, gap after {:.4f} deg\n",
-                             d.combination[0].cand.effect, d.combination[1].cand.effect,
-                             100 * d.combination_explained, d.combination_after_deg);
+    std::cout << fmt::format("combination: {} explains {:.1f}%, gap after {:.4f} deg\n",
+                             combination_names(d), 100 * d.combination_explained,
+                             d.combination_after_deg);
   std::cout << fmt::format("after adding the {} to the simulation: gap {:.4f} -> {:.4f} deg on --real",
                            d.verdict == "explained" ? "effect" : "(no) effect", d.before.gap_deg, d.after.gap_deg);
   if (d.hold_before)
@@ -88,6 +95,7 @@ void write_report(const Diagnosis& d, const Recording& real, const std::string& 
   md << fmt::format("**Verdict: {}.** Gap on the real recording {:.4f}° (systematic {:.4f}°, excess noise {:.4f}°; the "
                     "simulation's own noise gives {:.4f}° RMS of angle noise).\n\n",
                     d.verdict, d.before.gap_deg, d.before.systematic_deg, d.before.excess_noise_deg, d.before.noise_deg);
+  if (!d.note.empty()) md << fmt::format("Note: {}.\n\n", d.note);
   md << fmt::format("After adding the best explanation to the simulation: {:.4f}° on the real recording", d.after.gap_deg);
   if (d.hold_before) md << fmt::format(", {:.4f}° → {:.4f}° on the holdout (never fitted)", d.hold_before->gap_deg, d.hold_after->gap_deg);
   md << ".\n\n## Where\n\n";
@@ -108,8 +116,8 @@ void write_report(const Diagnosis& d, const Recording& real, const std::string& 
                       r.cand.rejected.empty() ? "" : " (rejected: " + r.cand.rejected + ")");
   }
   if (!d.combination.empty())
-    md << fmt::format("\nBest pair: {} + {}, explains {:.1f}%, gap after {:.4f}°.\n", d.combination[0].cand.effect,
-                      d.combination[1].cand.effect, 100 * d.combination_explained, d.combination_after_deg);
+    md << fmt::format("\nBest combination: {}, explains {:.1f}%, gap after {:.4f}°.\n",
+                      combination_names(d), 100 * d.combination_explained, d.combination_after_deg);
   md << "\n## Plots\n\n![gap vs angle](gap_vs_angle.png)\n\n![gap vs speed, temperature, direction](gap_domains.png)\n\n"
         "![stages](stages.png)\n\n![gap spectrum](gap_spectrum.png)\n";
   md.close();

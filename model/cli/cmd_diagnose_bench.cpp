@@ -62,9 +62,9 @@ void run_bench(const BenchArgs& a) {
           r.hold_after, r.seconds);
     };
   std::cerr << fmt::format(
-      "diagnose-bench: {} recordings per effect, 12 effects + none + outside, {} samples, seed {}, "
+      "diagnose-bench: {} recordings per effect, {} effects + none + outside, {} samples, seed {}, "
       "{} job(s)\n",
-      a.per_effect, a.samples, a.seed, a.jobs);
+      a.per_effect, effect_names().size(), a.samples, a.seed, a.jobs);
   const BenchSummary s = run_diagnose_bench(opt);
   std::ostream& out = a.json == "-" ? std::cerr : std::cout;
   out << s.text();

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `anglecore estimate`: run one engine (float, fixed, rtl, rtl-serial) on a recording and report
-// the error.
+// the error, in the reference frame: the image's zero offset is removed by its ZERO word (the
+// engine's output already is in that frame) or, without the word, here in software.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -14,7 +16,7 @@
 #include "estimator.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
-#include "rtl_serial_engine.hpp"
+#include "rtl_serial_builds.hpp"
 #endif
 
 namespace acore::cli {
@@ -53,8 +55,8 @@ void run_estimate(const EstimateArgs& a) {
     {
       const auto codes = to_codes(rec, img.in_scale, img.cfg.in_w);
       const auto rows = engine == Engine::Rtl ? run_rtl(img, codes, RtlRunOptions{})
-                                              : run_rtl_serial(img, codes, RtlRunOptions{});
-      s = series_from_fixed(rows, img.cfg);
+                                              : run_rtl_serial_for(img, codes, RtlRunOptions{});
+      s = series_from_fixed(rows, img);
       // The RTL has no uncorrected output: take it from the bit-accurate model (same front end).
       s.uncorrected = run_fixed(rec, img).uncorrected;
       break;
@@ -65,6 +67,13 @@ void run_estimate(const EstimateArgs& a) {
 #endif
   }
   nlohmann::json j = {{"engine", engine_name(engine)}, {"samples", rec.size()}};
+  j["zero_offset"] = {{"rad", s.zero_offset},
+                      {"deg", s.zero_offset * 180 / M_PI},
+                      {"code", angle_code(s.zero_offset, img.cfg.angle_w)},
+                      {"applied_by", s.zero_word ? "zero_word" : "software"}};
+  std::cout << fmt::format("zero offset {:+.4f} deg electrical, removed by {}\n",
+                           s.zero_offset * 180 / M_PI,
+                           s.zero_word ? "the ZERO word" : "estimate (software)");
   std::vector<double> err;
   if (rec.has_theta()) {
     const int p = a.p ? a.p : recording_periodicity(rec, a.in);
@@ -96,7 +105,10 @@ void add_estimate(CLI::App& app) {
   c->add_option("--in", args->in, "Recording to estimate (CSV)")->required();
   c->add_option("--engine", args->engine,
                 "float | fixed | rtl (pipelined top) | rtl-serial (serial core) (default fixed)");
-  c->add_option("--out", args->out, "Write per-sample angles (CSV)");
+  c->add_option(
+      "--out", args->out,
+      "Write per-sample angles (CSV): angle_rad and uncorrected_rad in the reference frame (the "
+      "engine's electrical angle minus the image's zero offset, as error_deg compares them)");
   c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");

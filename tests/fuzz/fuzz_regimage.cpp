@@ -28,7 +28,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   // A parsed image round-trips exactly.
   const acore::RegImage b = acore::parse_regimage(acore::format_regimage(img), "fuzz-roundtrip");
-  if (b.words != img.words || b.in_scale != img.in_scale || b.cfg.describe() != img.cfg.describe()) std::abort();
+  if (b.words != img.words || b.in_scale != img.in_scale ||
+      b.cfg.describe() != img.cfg.describe() || b.zero_offset != img.zero_offset)
+    std::abort();
   if (static_cast<int>(img.words.size()) != img.cfg.words()) std::abort();
   // And the bit-accurate model runs on it (any words: saturation paths), extreme inputs included.
   const acore::FixedModel m(img);
@@ -51,12 +53,15 @@ int main(int argc, char** argv) {
   double seconds = 30;
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "-seconds" && i + 1 < argc) seconds = std::atof(argv[++i]);
-  // Seeds: calibrated images of every correction mode.
-  const acore::Recording cal = acore::simulate(acore::builtin_scenario("paper-noiseless"), 4096, 1);
+  // Seeds: calibrated images of every correction mode (the reference 160 deg off the sensor, so
+  // every image carries a zero offset), with and without the ZERO word.
+  acore::Recording cal = acore::simulate(acore::builtin_scenario("paper-noiseless"), 4096, 1);
+  for (double& t : cal.theta_ref) t += 2.792526803190927;
   std::vector<std::string> corpus;
   for (const char* p :
        {"", "DEGREE=1 REGIONS=8", "CORRECTION=1", "CORRECTION=2 FOURIER_K=3",
-        "DEGREE=7 REGIONS=8 XCENTER=1", "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20"}) {
+        "DEGREE=7 REGIONS=8 XCENTER=1", "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20",
+        "ZERO=1", "CORRECTION=2 FOURIER_K=3 ZERO=1"}) {
     const std::string text = acore::format_regimage(
         acore::calibrate_image(cal, acore::DatapathConfig{}.with_rtl_params(p), 1));
     corpus.push_back(text);
@@ -64,7 +69,9 @@ int main(int argc, char** argv) {
     const size_t at = text.find("// acore: crc32=");
     corpus.push_back(text.substr(0, at) + text.substr(text.find('\n', at) + 1));
   }
-  const std::string alphabet = "0123456789abcdefx/:= \n-+acore:correctionfourier_kdegreeregionsxcenter";
+  const std::string alphabet =
+      "0123456789abcdefx/:= "
+      "\n-+.eacore:correctionfourier_kdegreeregionsxcenterzero_wordzero_offset_radcodecrc32";
   std::mt19937_64 rng(4321);
   size_t runs = 0, parsed = 0;
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
