@@ -27,9 +27,16 @@
 
 namespace acore {
 
-// Which top the shell wraps: one Verilated build each, both in the default configuration.
-enum class ShellTop { kPipelined, kSerial };
+// Which top the shell wraps and in which configuration: one Verilated build each
+// (tb/CMakeLists.txt): both tops in the default configuration, and with the ZERO word (the
+// pipelined top as rtl/configs.txt's zero_none_k4, Fourier words before the ZERO word; the serial
+// core as rtl/serial_zero.cfg).
+enum class ShellTop { kPipelined, kSerial, kPipelinedZero, kSerialZero };
 const char* shell_top_name(ShellTop t);
+bool shell_is_serial(ShellTop t);
+// The build's datapath parameters (RTL -G form, "" = defaults) and their DatapathConfig.
+const char* shell_top_params(ShellTop t);
+DatapathConfig shell_top_config(ShellTop t);
 
 // One APB transfer; done, rdata, slverr and cycle are filled in when its access phase completes.
 struct ApbTransfer {

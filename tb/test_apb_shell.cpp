@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <random>
 
 #include "calibration.hpp"
@@ -31,32 +32,29 @@ namespace {
 
 namespace sh = shell;
 
-const DatapathConfig& cfg() {
-  static const DatapathConfig c;
-  return c;
+// The paper scenario's calibrated image in configuration c (the words the bench streams through).
+RegImage paper_image_for(const DatapathConfig& c) {
+  const Recording cal = test::paper_recording(4000, true);
+  if (c.fourier_k == 0)
+    return quantize(calibrate(cal, CalOptions{}), c, choose_in_scale(cal, c.in_w));
+  return calibrate_image(cal, c, 1);  // the Fourier words fitted too
 }
 
-RegImage paper_image() {
-  static const RegImage img = [] {
-    const Recording cal = test::paper_recording(4000, true);
-    return quantize(calibrate(cal, CalOptions{}), cfg(), choose_in_scale(cal, cfg().in_w));
-  }();
-  return img;
-}
-
-// Every word random (REG_W bits), atan words the real table; sane offsets and gains half the time.
-RegImage random_image(std::mt19937_64& rng) {
-  RegImage img = cosim::identity_image(cfg());
+// Every word random (REG_W bits), atan words the real table; sane offsets and gains half the time;
+// the ZERO word (when present) a random ANGLE_W-bit zero position.
+RegImage random_image_for(const DatapathConfig& c, std::mt19937_64& rng) {
+  RegImage img = cosim::identity_image(c);
   const uint64_t mask = (uint64_t{1} << img.cfg.reg_w) - 1;
   for (int a = 0; a < img.cfg.addr_atan(0); ++a) img.words[a] = rng() & mask;
   if (rng() & 1) {
-    for (int c = 0; c < 2; ++c) {
-      img.set_signed(img.cfg.addr_offset(c), static_cast<int64_t>(rng() % 2001) - 1000);
-      img.set_unsigned(img.cfg.addr_recip(c), 40000 + rng() % 60000);
+    for (int ch = 0; ch < 2; ++ch) {
+      img.set_signed(img.cfg.addr_offset(ch), static_cast<int64_t>(rng() % 2001) - 1000);
+      img.set_unsigned(img.cfg.addr_recip(ch), 40000 + rng() % 60000);
     }
     for (int a = img.cfg.addr_poly(0, 0, 0); a < img.cfg.addr_atan(0); ++a)
       img.set_signed(a, static_cast<int64_t>(rng() % 8001) - 4000);
   }
+  if (c.zero_word) img.words[c.addr_zero()] = rng() & ((uint64_t{1} << c.angle_w) - 1);
   return img;
 }
 
@@ -64,7 +62,21 @@ std::string show(const FixedSample& s) { return cosim::show(s); }
 
 class Shell : public ::testing::TestWithParam<ShellTop> {
  protected:
-  bool serial() const { return GetParam() == ShellTop::kSerial; }
+  bool serial() const { return shell_is_serial(GetParam()); }
+  // The build's configuration, its paper image and random images (cached per build).
+  const DatapathConfig& cfg() const {
+    static std::map<ShellTop, DatapathConfig> cache;
+    auto it = cache.find(GetParam());
+    if (it == cache.end()) it = cache.emplace(GetParam(), shell_top_config(GetParam())).first;
+    return it->second;
+  }
+  const RegImage& paper_image() const {
+    static std::map<ShellTop, RegImage> cache;
+    auto it = cache.find(GetParam());
+    if (it == cache.end()) it = cache.emplace(GetParam(), paper_image_for(cfg())).first;
+    return it->second;
+  }
+  RegImage random_image(std::mt19937_64& rng) const { return random_image_for(cfg(), rng); }
   // CRC bits per clock of the build (the shell's default for each top).
   int crc_w() const { return serial() ? 8 : 16; }
 };
@@ -90,7 +102,7 @@ TEST_P(Shell, IdAndConfigMatchTheParametersAndTheMeasuredLatency) {
   EXPECT_EQ((c0 >> 4) & 0xf, static_cast<uint32_t>(c.regions));
   EXPECT_EQ((c0 >> 8) & 3, static_cast<uint32_t>(c.correction));
   EXPECT_EQ((c0 >> 10) & 1, static_cast<uint32_t>(c.xcenter));
-  EXPECT_EQ((c0 >> 11) & 1, 0u);  // ZERO
+  EXPECT_EQ((c0 >> 11) & 1, static_cast<uint32_t>(c.zero_word));
   EXPECT_EQ((c0 >> 12) & 1, serial() ? 1u : 0u);
   EXPECT_EQ((c0 >> 16) & 0xf, 1u);  // FOLD
   EXPECT_EQ((c0 >> 24) & 0x1f, static_cast<uint32_t>(c.iterations));
@@ -666,9 +678,20 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   EXPECT_EQ(s.stray_prdata, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shell, Shell, ::testing::Values(ShellTop::kPipelined, ShellTop::kSerial),
+INSTANTIATE_TEST_SUITE_P(Shell, Shell,
+                         ::testing::Values(ShellTop::kPipelined, ShellTop::kSerial,
+                                           ShellTop::kPipelinedZero, ShellTop::kSerialZero),
                          [](const ::testing::TestParamInfo<ShellTop>& i) {
-                           return i.param == ShellTop::kSerial ? "Serial" : "Pipelined";
+                           switch (i.param) {
+                             case ShellTop::kSerial:
+                               return "Serial";
+                             case ShellTop::kPipelinedZero:
+                               return "PipelinedZeroNoneK4";
+                             case ShellTop::kSerialZero:
+                               return "SerialZero";
+                             default:
+                               return "Pipelined";
+                           }
                          });
 
 }  // namespace
