@@ -250,14 +250,23 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     r.explained = before2 > 0 ? 1.0 - after.gap_deg * after.gap_deg / before2 : 0.0;
     d.ranking.push_back(r);
   }
-  // By information criterion, except that quantization, when the values lie on a lattice (its
-  // step read from the data, not fitted to the residual) and it explains most of the gap, comes
-  // first: the lattice proves the ADC, and excess noise would only be fitting its rounding noise.
+  // Effects that could be named (they explain explained_min of the angle gap, dBIC < -10) come
+  // first, then by information criterion. The likelihood also counts what atan2 never sees (a
+  // common scale of every channel, e.g. the fundamental's shrink under a compressing nonlinearity):
+  // an effect that fits that part best but leaves the angle gap (gain_mismatch with equal gains)
+  // must not outrank the one that carries the angle gap (the harmonic). Among those, quantization,
+  // when the values lie on a lattice (its step read from the data, not fitted to the residual),
+  // comes first: the lattice proves the ADC, and excess noise would only be fitting its rounding
+  // noise.
+  auto carries = [&](const RankedEffect& r) {
+    return r.explained >= opt.explained_min && r.cand.delta_bic < -10;
+  };
   auto measured = [&](const RankedEffect& r) {
     return r.cand.effect == "quantization" && r.explained >= opt.explained_min;
   };
   std::sort(d.ranking.begin(), d.ranking.end(), [&](const RankedEffect& a, const RankedEffect& b) {
     if (a.cand.rejected.empty() != b.cand.rejected.empty()) return a.cand.rejected.empty();
+    if (carries(a) != carries(b)) return carries(a);
     if (measured(a) != measured(b)) return measured(a);
     return a.cand.delta_bic < b.cand.delta_bic;
   });
@@ -267,6 +276,7 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     for (size_t k = 1; k < d.ranking.size(); ++k) {
       const RankedEffect& r = d.ranking[k];
       const bool tie = r.cand.rejected.empty() == d.ranking.front().cand.rejected.empty() &&
+                       carries(r) == carries(d.ranking.front()) &&
                        measured(r) == measured(d.ranking.front()) &&
                        std::fabs(r.cand.delta_bic - b0) <= 1e-6 * std::fabs(b0) + 1e-6;
       if (tie && tie_rank(r) < tie_rank(d.ranking[pick])) pick = k;

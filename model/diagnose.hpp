@@ -47,7 +47,8 @@ struct Diagnosis {
   std::vector<DomainScore> domains;
   std::string domain;
   std::vector<GapHarmonic> harmonics;
-  std::vector<RankedEffect> ranking;  // best first, by information criterion
+  std::vector<RankedEffect> ranking;  // best first: those that could be named (explain
+                                      // explained_min, dBIC < -10), then by information criterion
   // The effects chosen one after the other (forward selection, then refitted together) when the
   // best single effect leaves a clear remainder; explained and after_deg of each are those of the
   // set up to it.

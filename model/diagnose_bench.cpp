@@ -35,51 +35,10 @@ const std::vector<std::string>& outside_kinds() {
   return k;
 }
 
-// splitmix64: a well-mixed seed per (run seed, case index).
-uint64_t mix(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
-
-class Draw {
- public:
-  explicit Draw(uint64_t seed) : rng_(seed) {}
-  double u(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
-  int i(int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng_); }
-  double sign() { return u(0, 1) < 0.5 ? -1.0 : 1.0; }
-  bool coin() { return u(0, 1) < 0.5; }
-  // A random nonempty subset of n channels.
-  std::vector<bool> subset(int n) {
-    std::vector<bool> s(static_cast<size_t>(n));
-    do {
-      for (int c = 0; c < n; ++c) s[static_cast<size_t>(c)] = coin();
-    } while (std::none_of(s.begin(), s.end(), [](bool b) { return b; }));
-    return s;
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
-
-// A speed ramp through a reversal: from +-va to -+vb rev/s over kDuration.
-Trajectory draw_ramp(Draw& d) {
-  Trajectory t;
-  t.kind = "ramp";
-  const double dir = d.sign();
-  t.speed_rps = dir * d.u(3, 12);
-  t.speed_end_rps = -dir * d.u(3, 12);
-  t.theta0_rad = d.u(0, 2 * kPi);
-  return t;
-}
-
-void draw_temperature(Draw& d, double out[2]) {
-  const double a = d.u(0, 30), b = a + d.u(30, 60);
-  const bool cooling = d.coin();
-  out[0] = cooling ? b : a;
-  out[1] = cooling ? a : b;
-}
+uint64_t mix(uint64_t x) { return bench_mix(x); }
+using Draw = BenchDraw;
+Trajectory draw_ramp(Draw& d) { return draw_bench_ramp(d); }
+void draw_temperature(Draw& d, double out[2]) { draw_bench_temperature(d, out); }
 
 double top_speed(const Trajectory& t) {
   return std::max(std::fabs(t.speed_rps), std::fabs(t.speed_end_rps));
@@ -346,6 +305,39 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+uint64_t bench_mix(uint64_t x) {
+  // splitmix64: a well-mixed seed per (run seed, case index).
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+std::vector<bool> BenchDraw::subset(int n) {
+  std::vector<bool> s(static_cast<size_t>(n));
+  do {
+    for (int c = 0; c < n; ++c) s[static_cast<size_t>(c)] = coin();
+  } while (std::none_of(s.begin(), s.end(), [](bool b) { return b; }));
+  return s;
+}
+
+Trajectory draw_bench_ramp(BenchDraw& d) {
+  Trajectory t;
+  t.kind = "ramp";
+  const double dir = d.sign();
+  t.speed_rps = dir * d.u(3, 12);
+  t.speed_end_rps = -dir * d.u(3, 12);
+  t.theta0_rad = d.u(0, 2 * kPi);
+  return t;
+}
+
+void draw_bench_temperature(BenchDraw& d, double out[2]) {
+  const double a = d.u(0, 30), b = a + d.u(30, 60);
+  const bool cooling = d.coin();
+  out[0] = cooling ? b : a;
+  out[1] = cooling ? a : b;
+}
+
 std::string expected_top1(const std::string& truth) {
   if (truth == "none") return "no_gap";
   if (truth == "outside") return "unexplained";
@@ -422,19 +414,17 @@ BenchRecordings make_bench_recordings(const BenchCase& c, size_t samples) {
   return out;
 }
 
-BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
-  const BenchRecordings rec = make_bench_recordings(c, samples);
+BenchCaseResult judge_diagnosis(const Diagnosis& d, const std::string& expected, double seconds) {
   BenchCaseResult r;
-  r.drawn = c;
-  const auto t0 = std::chrono::steady_clock::now();
-  const Diagnosis d = diagnose(rec.sim, rec.real, &rec.holdout);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.expected = expected;
+  r.seconds = seconds;
   r.verdict = d.verdict;
   // The named effect: the best single one, or the first of a named combination.
   r.top1 = d.verdict == "explained" && !d.named().empty() ? d.named().front() : d.verdict;
-  r.correct = r.top1 == expected_top1(c.truth);
-  if (c.truth == "none") r.confident_wrong = d.verdict == "explained";
-  if (c.truth == "outside") r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
+  r.correct = r.top1 == expected;
+  if (expected == "no_gap") r.confident_wrong = d.verdict == "explained";
+  if (expected == "unexplained")
+    r.confident_wrong = d.verdict == "explained" || d.verdict == "no_gap";
   r.ambiguous_with = d.ambiguous_with;
   r.slow_veto = !d.note.empty();
   r.slow_share = d.before.gap_deg > 0 ? std::pow(d.before.slow_deg / d.before.gap_deg, 2) : 0.0;
@@ -446,7 +436,22 @@ BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
   r.hold_before = d.hold_before->gap_deg;
   r.hold_after = d.hold_after->gap_deg;
   r.shrink = r.hold_before > 0 ? 1.0 - r.hold_after / r.hold_before : 0.0;
-  if (r.correct && !c.effect.effect.empty())
+  return r;
+}
+
+BenchCaseResult run_bench_case(const BenchCase& c, size_t samples) {
+  const BenchRecordings rec = make_bench_recordings(c, samples);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Diagnosis d = diagnose(rec.sim, rec.real, &rec.holdout);
+  BenchCaseResult r =
+      judge_diagnosis(d, expected_top1(c.truth),
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  r.drawn = c;
+  r.label = c.truth;
+  r.effect_case = !c.effect.effect.empty();
+  r.drawn_params = c.effect.params;
+  r.drawn_params.insert(r.drawn_params.end(), c.outside_params.begin(), c.outside_params.end());
+  if (r.correct && r.effect_case)
     r.params =
         score(c, d.combination.empty() ? d.ranking.front().cand : d.combination.front().cand);
   return r;
@@ -466,6 +471,92 @@ std::vector<BenchCase> draw_bench_cases(const BenchOptions& opt) {
   return cases;
 }
 
+std::vector<BenchCaseResult> run_bench_cases(
+    size_t n, int jobs, const std::function<BenchCaseResult(size_t)>& run,
+    const std::function<void(size_t done, size_t total, const BenchCaseResult&)>& progress) {
+  if (jobs < 1) throw InputError("diagnose-bench: --jobs must be >= 1");
+  std::vector<BenchCaseResult> out(n);
+  std::atomic<size_t> next{0};
+  std::mutex mu;
+  size_t done = 0;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (;;) {
+      const size_t i = next++;
+      if (i >= n) return;
+      try {
+        BenchCaseResult r = run(i);
+        std::lock_guard<std::mutex> lock(mu);
+        out[i] = std::move(r);
+        ++done;
+        if (progress) progress(done, n, out[i]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mu);
+        if (!failure) failure = std::current_exception();
+        next = n;
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return out;
+}
+
+BenchSummary summarize_bench(std::vector<BenchCaseResult> cases, std::vector<std::string> rows,
+                             const BenchTargets& targets, double seconds) {
+  BenchSummary s;
+  s.targets = targets;
+  s.cases = std::move(cases);
+  s.seconds = seconds;
+  s.rows = std::move(rows);
+  s.columns = effect_names();
+  for (const auto& r : s.cases)
+    if (r.expected != "no_gap" && r.expected != "unexplained" &&
+        std::find(s.columns.begin(), s.columns.end(), r.expected) == s.columns.end())
+      s.columns.push_back(r.expected);  // a truth the vocabulary does not have (yet)
+  s.columns.push_back("no_gap");
+  s.columns.push_back("unexplained");
+  s.confusion.assign(s.rows.size(), std::vector<int>(s.columns.size(), 0));
+  auto index_of = [](const std::vector<std::string>& v, const std::string& x) {
+    const auto it = std::find(v.begin(), v.end(), x);
+    if (it == v.end()) throw std::logic_error("diagnose-bench: no row or column '" + x + "'");
+    return static_cast<size_t>(it - v.begin());
+  };
+  int correct = 0, correct_effects = 0, effect_cases = 0;
+  std::vector<double> shrinks, errors;
+  for (const auto& r : s.cases) {
+    ++s.confusion[index_of(s.rows, r.label)][index_of(s.columns, r.top1)];
+    correct += r.correct;
+    s.confident_wrong += r.confident_wrong;
+    s.ambiguous += !r.ambiguous_with.empty();
+    if (r.expected == "unexplained")
+      s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
+    s.slow_vetoed += r.slow_veto;
+    if (r.effect_case) {
+      ++effect_cases;
+      correct_effects += r.correct;
+      shrinks.push_back(r.shrink);
+    }
+    for (const auto& p : r.params) {
+      errors.push_back(p.rel_error);
+      ++s.params_scored;
+      s.params_within += p.rel_error <= targets.param_rel_max;
+    }
+  }
+  s.top1_accuracy =
+      s.cases.empty() ? 0.0 : static_cast<double>(correct) / static_cast<double>(s.cases.size());
+  s.top1_effects = effect_cases ? static_cast<double>(correct_effects) / effect_cases : 0.0;
+  s.median_shrink = median(shrinks);
+  s.min_shrink = shrinks.empty() ? 0.0 : *std::min_element(shrinks.begin(), shrinks.end());
+  s.param_median = median(errors);
+  s.param_max = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
+  return s;
+}
+
 BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& targets) {
   if (opt.jobs < 1) throw InputError("diagnose-bench: --jobs must be >= 1");
   if (opt.samples < 2000) throw InputError("diagnose-bench: --samples must be >= 2000");
@@ -480,77 +571,16 @@ BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& tar
     }
     cases = some;
   }
-  BenchSummary s;
-  s.targets = targets;
-  s.cases.resize(cases.size());
   const auto t0 = std::chrono::steady_clock::now();
-  std::atomic<size_t> next{0};
-  std::mutex mu;
-  size_t done = 0;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (;;) {
-      const size_t i = next++;
-      if (i >= cases.size()) return;
-      try {
-        BenchCaseResult r = run_bench_case(cases[i], opt.samples);
-        std::lock_guard<std::mutex> lock(mu);
-        s.cases[i] = std::move(r);
-        ++done;
-        if (opt.progress) opt.progress(done, cases.size(), s.cases[i]);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mu);
-        if (!failure) failure = std::current_exception();
-        next = cases.size();
-        return;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int j = 1; j < opt.jobs; ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  s.rows = effect_names();
-  s.rows.push_back("none");
-  s.rows.push_back("outside");
-  s.columns = effect_names();
-  s.columns.push_back("no_gap");
-  s.columns.push_back("unexplained");
-  s.confusion.assign(s.rows.size(), std::vector<int>(s.columns.size(), 0));
-  auto index_of = [](const std::vector<std::string>& v, const std::string& x) {
-    return static_cast<size_t>(std::find(v.begin(), v.end(), x) - v.begin());
-  };
-  int correct = 0, correct_effects = 0, effect_cases = 0;
-  std::vector<double> shrinks, errors;
-  for (const auto& r : s.cases) {
-    ++s.confusion[index_of(s.rows, r.drawn.truth)][index_of(s.columns, r.top1)];
-    correct += r.correct;
-    s.confident_wrong += r.confident_wrong;
-    s.ambiguous += !r.ambiguous_with.empty();
-    if (r.drawn.truth == "outside")
-      s.outside_best_explained = std::max(s.outside_best_explained, r.best_explained);
-    s.slow_vetoed += r.slow_veto;
-    if (!r.drawn.effect.effect.empty()) {
-      ++effect_cases;
-      correct_effects += r.correct;
-      shrinks.push_back(r.shrink);
-    }
-    for (const auto& p : r.params) {
-      errors.push_back(p.rel_error);
-      ++s.params_scored;
-      s.params_within += p.rel_error <= targets.param_rel_max;
-    }
-  }
-  s.top1_accuracy = static_cast<double>(correct) / static_cast<double>(s.cases.size());
-  s.top1_effects = effect_cases ? static_cast<double>(correct_effects) / effect_cases : 0.0;
-  s.median_shrink = median(shrinks);
-  s.min_shrink = shrinks.empty() ? 0.0 : *std::min_element(shrinks.begin(), shrinks.end());
-  s.param_median = median(errors);
-  s.param_max = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
-  return s;
+  std::vector<BenchCaseResult> results = run_bench_cases(
+      cases.size(), opt.jobs, [&](size_t i) { return run_bench_case(cases[i], opt.samples); },
+      opt.progress);
+  std::vector<std::string> rows = effect_names();
+  rows.push_back("none");
+  rows.push_back("outside");
+  return summarize_bench(
+      std::move(results), rows, targets,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 std::vector<std::string> BenchSummary::missed() const {
@@ -589,35 +619,49 @@ std::string short_name(const std::string& s) {
 }  // namespace
 
 std::string BenchSummary::text() const {
-  std::string t = fmt::format(
-      "confusion matrix (rows: truth, columns: top-1 verdict), {} recordings\n", cases.size());
-  t += fmt::format("{:>14}", "");
+  // Rows named after physics scenarios are wider than the vocabulary, and their truth differs.
+  size_t w = 14;
+  for (const auto& r : rows) w = std::max(w, r.size());
+  auto expected_of = [&](const std::string& row) {
+    for (const auto& r : cases)
+      if (r.label == row) return r.expected;
+    return expected_top1(row);
+  };
+  bool truth_column = false;
+  for (const auto& row : rows) truth_column |= expected_of(row) != expected_top1(row);
+  std::string t =
+      fmt::format("confusion matrix (rows: {}, columns: top-1 verdict), {} recordings\n",
+                  truth_column ? "case" : "truth", cases.size());
+  t += fmt::format("{:>{}}", "", w);
   for (const auto& c : columns) t += fmt::format(" {:>6}", short_name(c));
   t += "\n";
   for (size_t r = 0; r < rows.size(); ++r) {
-    t += fmt::format("{:>14}", rows[r]);
+    t += fmt::format("{:>{}}", rows[r], w);
     for (size_t c = 0; c < columns.size(); ++c)
       t += confusion[r][c] ? fmt::format(" {:>6}", confusion[r][c]) : fmt::format(" {:>6}", ".");
     t += "\n";
   }
-  t += fmt::format("\n{:>14} {:>4} {:>7} {:>15} {:>7} {:>9} {:>9} {:>8}\n", "truth", "n", "top-1",
+  t += fmt::format("\n{:>{}}{} {:>4} {:>7} {:>15} {:>7} {:>9} {:>9} {:>8}\n",
+                   truth_column ? "case" : "truth", w,
+                   truth_column ? fmt::format(" {:>14}", "truth") : "", "n", "top-1",
                    "gap deg (med)", "shrink", "par med", "par max", "params");
   for (const auto& row : rows) {
     int n = 0, ok = 0;
+    bool effect = false;
     std::vector<double> sh, pe, gap;
     for (const auto& r : cases) {
-      if (r.drawn.truth != row) continue;
+      if (r.label != row) continue;
       ++n;
       ok += r.correct;
+      effect |= r.effect_case;
       sh.push_back(r.shrink);
       gap.push_back(r.real_before);
       for (const auto& p : r.params) pe.push_back(p.rel_error);
     }
-    const bool effect = row != "none" && row != "outside";
     t += fmt::format(
-        "{:>14} {:>4} {:>6.0f}% {:>15.3f} {:>7} {:>9} {:>9} {:>8}\n", row, n,
-        n ? 100.0 * ok / n : 0.0, median(gap),
-        effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
+        "{:>{}}{} {:>4} {:>6.0f}% {:>15.3f} {:>7} {:>9} {:>9} {:>8}\n", row, w,
+        truth_column ? fmt::format(" {:>14}", expected_of(row)) : "", n, n ? 100.0 * ok / n : 0.0,
+        median(gap), effect ? fmt::format("{:.0f}%", 100 * median(sh)) : "-",
         pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * median(pe)),
         pe.empty() ? "-" : fmt::format("{:.1f}%", 100 * *std::max_element(pe.begin(), pe.end())),
         pe.size());
@@ -683,13 +727,12 @@ nlohmann::json BenchSummary::to_json() const {
     json c;
     c["index"] = r.drawn.index;
     c["truth"] = r.drawn.truth;
+    if (r.label != r.drawn.truth) c["case"] = r.label;
+    c["expected"] = r.expected;
     c["channels"] = r.drawn.channels;
     json p = json::object();
-    for (const auto& [k, v] : r.drawn.effect.params) p[k] = v;
-    if (!r.drawn.outside.empty()) {
-      c["outside"] = r.drawn.outside;
-      for (const auto& [k, v] : r.drawn.outside_params) p[k] = v;
-    }
+    for (const auto& [k, v] : r.drawn_params) p[k] = v;
+    if (!r.drawn.outside.empty()) c["outside"] = r.drawn.outside;
     c["params"] = p;
     c["verdict"] = r.verdict;
     c["top1"] = r.top1;

@@ -53,9 +53,11 @@
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "diagnose.hpp"
 #include "effects.hpp"
 #include "recording.hpp"
 #include "simulator.hpp"
@@ -94,9 +96,13 @@ struct BenchParam {
 };
 
 struct BenchCaseResult {
-  BenchCase drawn;
-  std::string verdict;  // explained, unexplained, no_gap
-  std::string top1;     // the named effect when explained, else the verdict
+  BenchCase drawn;       // the effect bench's draw (the physics bench fills index, truth, channels)
+  std::string label;     // the row of the confusion matrix: the truth, or a physics scenario
+  std::string expected;  // the right top-1: an effect, no_gap or unexplained
+  bool effect_case = false;  // the recordings carry an effect: its holdout shrink is scored
+  ParamList drawn_params;    // what was drawn, for the JSON report
+  std::string verdict;       // explained, unexplained, no_gap
+  std::string top1;          // the named effect when explained, else the verdict
   bool correct = false;
   bool confident_wrong = false;  // an effect named (or no_gap) on a none/outside recording
   std::vector<std::string> ambiguous_with;  // the diagnosis's own doubt (Diagnosis::ambiguous_with)
@@ -135,7 +141,7 @@ struct BenchSummary {
   std::vector<std::string> columns;            // verdict labels: effects, no_gap, unexplained
   std::vector<std::vector<int>> confusion;     // [row][column]
   double top1_accuracy = 0, top1_effects = 0;  // all cases; effect cases only
-  double median_shrink = 0, min_shrink = 0;
+  double median_shrink = 0, min_shrink = 0;    // over the effect cases
   int confident_wrong = 0;
   int ambiguous = 0;  // named effects the diagnosis itself flagged as ambiguous
   int slow_vetoed = 0;  // cases whose explanation the slow-change rule refused (Diagnosis::note)
@@ -153,6 +159,46 @@ struct BenchSummary {
 
 // The expected top-1 label of a truth: the effect itself, no_gap for none, unexplained for outside.
 std::string expected_top1(const std::string& truth);
+
+// ---- Shared by this bench and the physics bench (physics_bench.hpp) ----
+
+// splitmix64: a well-mixed seed (cases are drawn from mix(mix(seed) ^ index)).
+uint64_t bench_mix(uint64_t x);
+
+// The random draws of a case.
+class BenchDraw {
+ public:
+  explicit BenchDraw(uint64_t seed) : rng_(seed) {}
+  double u(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
+  int i(int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng_); }
+  double sign() { return u(0, 1) < 0.5 ? -1.0 : 1.0; }
+  bool coin() { return u(0, 1) < 0.5; }
+  std::vector<bool> subset(int n);  // a random nonempty subset of n channels
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+// A speed ramp through a reversal: from +-(3..12) to -+(3..12) rev/s, any start angle.
+Trajectory draw_bench_ramp(BenchDraw& d);
+// A temperature ramp over 30..60 degC starting at 0..30 degC, heating or cooling: start, end.
+void draw_bench_temperature(BenchDraw& d, double out[2]);
+
+// Judges a diagnosis against the right top-1 `expected`: verdict, top-1, correct, confident wrong
+// (an effect named where no_gap or unexplained is right, or no_gap where unexplained is), gaps,
+// holdout shrink, the best share any acceptable effect or pair explained. `d` needs a holdout.
+BenchCaseResult judge_diagnosis(const Diagnosis& d, const std::string& expected, double seconds);
+
+// Runs `run(i)` for i = 0..n-1 on `jobs` threads (results in index order; the first exception is
+// rethrown after the workers stop); `progress` is called serialized after each case.
+std::vector<BenchCaseResult> run_bench_cases(
+    size_t n, int jobs, const std::function<BenchCaseResult(size_t)>& run,
+    const std::function<void(size_t done, size_t total, const BenchCaseResult&)>& progress);
+
+// The summary of judged cases: confusion matrix (rows: the labels in `rows` order; columns: the
+// vocabulary, any other expected label, no_gap, unexplained), accuracy, shrink, parameters.
+BenchSummary summarize_bench(std::vector<BenchCaseResult> cases, std::vector<std::string> rows,
+                             const BenchTargets& targets, double seconds);
 
 // Scores one diagnosed case against its truth (params compared as documented above).
 BenchCaseResult run_bench_case(const BenchCase& c, size_t samples);

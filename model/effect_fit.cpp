@@ -217,6 +217,56 @@ Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
   return f;
 }
 
+// zero_offset: every channel sees theta + z. A reference zero may be off by anything up to half a
+// turn, far beyond the linearization of fit_angle_shift, so z starts at the circular mean of the
+// electrical-angle difference atan2(d13, d24) (atan2(sin, cos)) of real minus base, over the
+// periodicity and the sense in which the electrical angle turns, and is refined by Gauss-Newton on
+// the exact shift (the same model(theta + z) - model(theta) predict_effect applies).
+Fitted fit_zero_offset(const FitProblem& fp, const Recording& base,
+                       const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  const size_t n = r.size();
+  auto elec = [&](const Recording& x, size_t i) {
+    return r.channels == 4 ? std::atan2(x.ch[0][i] - x.ch[2][i], x.ch[1][i] - x.ch[3][i])
+                           : std::atan2(x.ch[0][i], x.ch[1][i]);
+  };
+  // cs, sn: the circular mean's sums; turn: the model's d elec / d theta summed (its sign is the
+  // sense in which the electrical angle turns with theta).
+  double cs = 0, sn = 0, turn = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double d = elec(r, i) - elec(base, i);
+    cs += std::cos(d);
+    sn += std::sin(d);
+    const auto& pr = fp.predicted.ch;
+    const auto& dv = fp.deriv;
+    const double x = r.channels == 4 ? pr[1][i] - pr[3][i] : pr[1][i],
+                 y = r.channels == 4 ? pr[0][i] - pr[2][i] : pr[0][i],
+                 dx = r.channels == 4 ? dv[1][i] - dv[3][i] : dv[1][i],
+                 dy = r.channels == 4 ? dv[0][i] - dv[2][i] : dv[0][i];
+    turn += (x * dy - y * dx) / std::max(x * x + y * y, 1e-300);
+  }
+  const double sense = turn >= 0 ? 1.0 : -1.0;
+  double z = sense * std::atan2(sn, cs) / fp.model->periodicity;
+  for (int it = 0; it < 3; ++it) {
+    Recording shifted = base;
+    Column col(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      col[c].resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const double th = r.theta_ref[i] + z;
+        shifted.ch[c][i] +=
+            scale_at(scale, i) * (fp.model->sensor.value(c, th) - fp.predicted.ch[c][i]);
+        col[c][i] = scale_at(scale, i) * fp.model->sensor.derivative(c, th);
+      }
+    }
+    z += solve_linear(fp, shifted, {col}).first(0);
+  }
+  Fitted f;
+  f.params = {{"zero_rad", std::remainder(z, 2 * M_PI)}};
+  f.k = 1;
+  return f;
+}
+
 bool sine_pair(const Recording& r, int c) { return r.channels == 4 ? (c == 0 || c == 2) : c == 0; }
 
 // amplitude: every channel's field part scaled by 1 + phi.
@@ -317,7 +367,16 @@ Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
         cs[c][i] = std::sin(a);
       }
     }
-    const auto [phi, l] = solve_linear(fp, base, {cc, cs});
+    // With a common scale of every channel's field part as a nuisance: a compressing nonlinearity
+    // (x - a x^3) shrinks the fundamental by 3a/4 along with its 3rd harmonic, and that scale,
+    // unmodelled, would decide the order and bias the amplitude. It is not part of the effect
+    // (atan2 never sees it; `amplitude` names it when it is the gap).
+    Column scale(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      scale[c].resize(r.size());
+      for (size_t i = 0; i < r.size(); ++i) scale[c][i] = field_part(fp, base, c, i);
+    }
+    const auto [phi, l] = solve_linear(fp, base, {cc, cs, scale});
     if (l < best_l) {
       best_l = l;
       best = Fitted{};
@@ -627,8 +686,7 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
   } else if (effect == "phase_error") {
     f = fit_phase_error(fp, base, field_scale);
   } else if (effect == "zero_offset") {
-    f = fit_angle_shift(fp, base, {[](int, size_t) { return 1.0; }}, field_scale);
-    f.params = {{"zero_rad", f.params[0].second}};
+    f = fit_zero_offset(fp, base, field_scale);
   } else if (effect == "amplitude") {
     f = fit_amplitude(fp, base);
   } else if (effect == "harmonic") {

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Install every Debian package AngleCore needs, only when something is missing, and the PyPI tools
-# (FuseSoC and edalize, pinned) into the project's virtual environment .venv/.
+# Install every Debian package AngleCore needs, only when something is missing, then the pinned
+# PyPI packages into the project's virtual environment .venv/: FuseSoC and edalize (rtl/anglecore.core;
+# tb/fusesoc.sh runs its targets) and magpylib (the independent field model that the CTest
+# physics_field_vs_magpylib checks model/physics_magnet.cpp against).
 # Idempotent and quiet when all is there; uses sudo when not root.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,14 +29,16 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# FuseSoC (rtl/anglecore.core; tb/fusesoc.sh runs its targets) in .venv, with Debian's Python.
+# PyPI, pinned, in .venv at the repository root, with Debian's python3 (never the system site).
 fusesoc_version=2.4.7
 edalize_version=0.6.8
+magpylib_version=5.1.1
 venv=$root/.venv
-installed=$("$venv/bin/python" -c "from importlib.metadata import version as v; print(v('fusesoc'), v('edalize'))" \
+installed=$("$venv/bin/python" -c "from importlib.metadata import version as v; print(v('fusesoc'), v('edalize'), v('magpylib'))" \
   2>/dev/null || true)
-if [ "$installed" != "$fusesoc_version $edalize_version" ]; then
-  echo "setup: installing fusesoc $fusesoc_version, edalize $edalize_version into $venv" >&2
+if [ "$installed" != "$fusesoc_version $edalize_version $magpylib_version" ]; then
+  echo "setup: installing fusesoc $fusesoc_version, edalize $edalize_version, magpylib $magpylib_version into $venv" >&2
   /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check "fusesoc==$fusesoc_version" "edalize==$edalize_version"
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "fusesoc==$fusesoc_version" \
+    "edalize==$edalize_version" "magpylib==$magpylib_version"
 fi

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "diagnose_bench.hpp"
 #include "errors.hpp"
+#include "physics_bench.hpp"
 
 namespace acore::cli {
 
@@ -24,20 +25,27 @@ struct BenchArgs {
   int jobs = 1;
   std::string json, save;
   std::vector<size_t> only;
-  bool check = false, quiet = false;
+  bool check = false, quiet = false, physics = false;
 };
 
 // The recordings of the selected cases, for `anglecore diagnose` by hand.
-void save_cases(const BenchOptions& opt, const std::string& dir) {
+void save_cases(const BenchOptions& opt, bool physics, const std::string& dir) {
   std::filesystem::create_directories(dir);
-  for (const BenchCase& c : draw_bench_cases(opt)) {
-    if (!opt.only.empty() && std::find(opt.only.begin(), opt.only.end(), c.index) == opt.only.end())
-      continue;
-    const BenchRecordings r = make_bench_recordings(c, opt.samples);
-    const std::string stem = fmt::format("{}/case{:03d}_", dir, c.index);
+  auto wanted = [&](size_t index) {
+    return opt.only.empty() || std::find(opt.only.begin(), opt.only.end(), index) != opt.only.end();
+  };
+  auto save = [&](size_t index, const BenchRecordings& r) {
+    const std::string stem = fmt::format("{}/case{:03d}_", dir, index);
     write_recording(r.sim, stem + "sim.csv");
     write_recording(r.real, stem + "real.csv");
     write_recording(r.holdout, stem + "holdout.csv");
+  };
+  if (physics) {
+    for (const PhysicsCase& c : draw_physics_cases(opt))
+      if (wanted(c.index)) save(c.index, make_physics_recordings(c, opt.samples));
+  } else {
+    for (const BenchCase& c : draw_bench_cases(opt))
+      if (wanted(c.index)) save(c.index, make_bench_recordings(c, opt.samples));
   }
   std::cerr << fmt::format(
       "diagnose-bench: recordings written to {}/caseNNN_{{sim,real,holdout}}.csv\n", dir);
@@ -50,22 +58,29 @@ void run_bench(const BenchArgs& a) {
   opt.samples = a.samples;
   opt.jobs = a.jobs;
   opt.only = a.only;
-  if (!a.save.empty()) save_cases(opt, a.save);
+  if (!a.save.empty()) save_cases(opt, a.physics, a.save);
   if (!a.quiet)
-    opt.progress = [](size_t done, size_t total, const BenchCaseResult& r) {
+    opt.progress = [physics = a.physics](size_t done, size_t total, const BenchCaseResult& r) {
+      const std::string what = physics ? fmt::format("{} ({})", r.label, r.expected)
+                               : r.drawn.truth == "outside" ? "outside:" + r.drawn.outside
+                                                            : r.drawn.truth;
       std::cerr << fmt::format(
           "[{:>3}/{}] #{:<3} {:<14} {}ch -> {:<14} {}  gap {:.3f} deg, holdout {:.3f} -> {:.3f}  "
           "({:.1f} s)\n",
-          done, total, r.drawn.index,
-          r.drawn.truth == "outside" ? "outside:" + r.drawn.outside : r.drawn.truth,
-          r.drawn.channels, r.top1, r.correct ? "ok " : "BAD", r.real_before, r.hold_before,
-          r.hold_after, r.seconds);
+          done, total, r.drawn.index, what, r.drawn.channels, r.top1, r.correct ? "ok " : "BAD",
+          r.real_before, r.hold_before, r.hold_after, r.seconds);
     };
-  std::cerr << fmt::format(
-      "diagnose-bench: {} recordings per effect, {} effects + none + outside, {} samples, seed {}, "
-      "{} job(s)\n",
-      a.per_effect, effect_names().size(), a.samples, a.seed, a.jobs);
-  const BenchSummary s = run_diagnose_bench(opt);
+  if (a.physics)
+    std::cerr << fmt::format(
+        "diagnose-bench --physics: {} recordings per scenario, {} scenarios, {} samples, seed {}, "
+        "{} job(s)\n",
+        a.per_effect, physics_scenarios().size(), a.samples, a.seed, a.jobs);
+  else
+    std::cerr << fmt::format(
+        "diagnose-bench: {} recordings per effect, {} effects + none + outside, {} samples, seed "
+        "{}, {} job(s)\n",
+        a.per_effect, effect_names().size(), a.samples, a.seed, a.jobs);
+  const BenchSummary s = a.physics ? run_physics_bench(opt) : run_diagnose_bench(opt);
   std::ostream& out = a.json == "-" ? std::cerr : std::cout;
   out << s.text();
   write_json(a.json, s.to_json());
@@ -96,7 +111,11 @@ void add_diagnose_bench(CLI::App& app) {
   c->add_option("--only", args->only, "Run only these case indices (0-based, as printed)");
   c->add_option("--save", args->save,
                 "Also write the recordings of the cases run into this folder");
-  c->add_flag("--check", args->check, "Exit 1 when a target of issue 5 is missed");
+  c->add_flag("--physics", args->physics,
+              "Score the diagnosis on recordings of a magnet, Hall plates or an in-plane sensor "
+              "and an ADC chain (physics scenarios) instead of the effect library");
+  c->add_flag("--check", args->check,
+              "Exit 1 when a target is missed (issue 5; with --physics top-1 and shrink)");
   c->add_flag("--quiet", args->quiet, "No per-recording progress on stderr");
   c->callback([args] { run_bench(*args); });
 }
