@@ -2,6 +2,7 @@
 #include "regimage.hpp"
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <fstream>
@@ -110,6 +111,15 @@ void RegImage::set_unsigned(int addr, int64_t value) {
   words.at(addr) = static_cast<uint64_t>(value);
 }
 
+uint32_t image_crc32(const RegImage& img) {
+  std::vector<unsigned char> bytes;
+  bytes.reserve(img.words.size() * 4);
+  for (const uint64_t w : img.words)
+    for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<unsigned char>((w >> (8 * b)) & 0xff));
+  return static_cast<uint32_t>(
+      crc32(crc32(0L, Z_NULL, 0), bytes.data(), static_cast<uInt>(bytes.size())));
+}
+
 RegImage parse_regimage(const std::string& text, const std::string& name) {
   RegImage img;
   auto fields = config_fields();
@@ -119,6 +129,8 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
   std::string line;
   int lineno = 0;
   bool in_scale_seen = false;
+  int crc_line = 0;  // line of the crc32 key (0: absent; images before the key have none)
+  uint32_t crc_header = 0;
   // The zero offset's two keys (rad, and the code of angle_w bits), checked once angle_w is known.
   int rad_line = 0, code_line = 0;
   long long zero_code = 0;
@@ -141,6 +153,13 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
           img.in_scale = std::stod(val, &used);
           in_scale_seen = true;
           if (!(img.in_scale > 0) || !std::isfinite(img.in_scale)) used = 0;
+        } else if (key == "crc32") {
+          if (val.rfind("0x", 0) != 0 || val.size() < 3 || val.size() > 10 ||
+              val.find_first_not_of("0123456789abcdefABCDEF", 2) != std::string::npos)
+            throw std::invalid_argument(val);
+          crc_header = static_cast<uint32_t>(std::stoul(val.substr(2), &used, 16));
+          used += 2;
+          crc_line = lineno;
         } else if (key == "zero_offset_rad") {
           img.zero_offset = std::stod(val, &used);
           if (!(std::fabs(img.zero_offset) <= M_PI)) used = 0;  // also NaN: an angle in [-pi, pi]
@@ -198,6 +217,11 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
     if (img.words[a] > word_mask(img.cfg.reg_w))
       throw InputError(fmt::format("{}: word {} = {:x} does not fit {} bits", name, a, img.words[a],
                                    img.cfg.reg_w));
+  if (crc_line && crc_header != image_crc32(img))
+    throw InputError(
+        fmt::format("{}:{}: header field 'crc32': 0x{:08x}, but the words' CRC-32 is 0x{:08x} "
+                    "(a word was changed after the image was written)",
+                    name, crc_line, crc_header, image_crc32(img)));
   return img;
 }
 
@@ -214,6 +238,7 @@ std::string format_regimage(const RegImage& img) {
   std::string out = "// AngleCore coefficient register image ($readmemh), DESIGN 3.2 map\n";
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
+  out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
   out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
   for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
   if (c.fourier_k > 0)

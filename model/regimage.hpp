@@ -41,6 +41,10 @@ struct RegImage {
   void set_unsigned(int addr, int64_t value);
 };
 
+// CRC-32 of the words as the register shell (rtl/acore_apb.v) computes it: zlib's crc32 (IEEE
+// 802.3) over each word zero-extended to 32 bits, four little-endian bytes, in address order. The
+// image text carries it as `// acore: crc32=0x...`; a reader checks it when present.
+uint32_t image_crc32(const RegImage& img);
 // rad wrapped to [-pi, pi).
 double wrap_pi(double rad);
 // An angle in rad as an ANGLE_W-bit code, rounded, modulo a turn (the ZERO word's format).

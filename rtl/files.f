@@ -26,3 +26,8 @@ acore_serial_ram.v
 acore_serial_datapath.v
 acore_serial_ctrl.v
 acore_serial_top.v
+acore_sync_ram.v
+acore_crc32.v
+acore_coef_scrub.v
+acore_coef_bank.v
+acore_apb.v

@@ -12,7 +12,7 @@ packages=(
   cmake ninja-build g++ make pkg-config git
   verilator iverilog yosys nextpnr-ice40 fpga-icestorm
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev zlib1g-dev
   python3-matplotlib python3-numpy python3-venv
 )
 

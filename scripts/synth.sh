@@ -8,9 +8,9 @@
 #   -j N  runs N Yosys/nextpnr jobs in parallel (default 1)
 #   -d    only these designs (default all: top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr
 #         poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial serial_pnr fourier fourier_pnr
-#         top_fold2 top_fold4 top_fold8 top_fold2_pnr top_fold4_pnr top_fold8_pnr); their old reports
-#         are replaced, the others kept, and the summary is rebuilt from every report present.
-#         Example: -d serial,serial_pnr
+#         top_fold2 top_fold4 top_fold8 top_fold2_pnr top_fold4_pnr top_fold8_pnr apb_serial apb_serial_pnr
+#         apb_top apb_none_pnr); their old reports are replaced, the others kept, and the summary is
+#         rebuilt from every report present. Example: -d serial,serial_pnr
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=1
@@ -80,14 +80,24 @@ for n in 2 4 8; do
   TOP[top_fold${n}_pnr]=acore_top_pinwrap
   READ[top_fold${n}_pnr]="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_top_pinwrap.v"$'\n'"chparam -set FOLD $n acore_top_pinwrap"
 done
-for d in top cordic16 cordic16_bus serial fourier top_fold2 top_fold4 top_fold8; do FLOWS[$d]="generic xilinx ice40"; done
+# The APB register shell (rtl/acore_apb.v) around the serial core (area; placed in a wrapper that
+# registers the APB signals) and around the default pipelined top (iCE40 area: it does not fit).
+TOP[apb_serial]=acore_apb;          READ[apb_serial]="$rtl_reads"$'\n'"chparam -set SERIAL 1 acore_apb"
+TOP[apb_serial_pnr]=acore_apb_pinwrap; READ[apb_serial_pnr]="$rtl_reads"$'\n'"read_verilog -sv $syn/acore_apb_pinwrap.v"
+TOP[apb_top]=acore_apb;             READ[apb_top]="$rtl_reads"
+# The shell around a pipelined top that fits (CORRECTION=2, no polynomial): is the shell on the
+# critical path of a pipelined top?
+TOP[apb_none_pnr]=acore_apb_pinwrap; READ[apb_none_pnr]="${READ[apb_serial_pnr]}"$'\n'"chparam -set SERIAL 0 -set CORRECTION 2 acore_apb_pinwrap"
+for d in top cordic16 cordic16_bus serial fourier top_fold2 top_fold4 top_fold8 apb_serial; do FLOWS[$d]="generic xilinx ice40"; done
+FLOWS[apb_top]="ice40"
 for d in top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr serial_pnr fourier_pnr \
-  top_fold2_pnr top_fold4_pnr top_fold8_pnr; do
+  top_fold2_pnr top_fold4_pnr top_fold8_pnr apb_serial_pnr apb_none_pnr; do
   FLOWS[$d]="ice40 pnr"
 done
 FLOWS[cordic16]="generic xilinx ice40 pnr"
 all_designs=(top top_pnr scaler_pnr region_pnr poly_pnr poly2d_pnr poly2d1_pnr cordic_top_pnr cordic16 cordic16_bus serial
-  serial_pnr fourier fourier_pnr top_fold2 top_fold4 top_fold8 top_fold2_pnr top_fold4_pnr top_fold8_pnr)
+  serial_pnr fourier fourier_pnr top_fold2 top_fold4 top_fold8 top_fold2_pnr top_fold4_pnr top_fold8_pnr apb_serial
+  apb_serial_pnr apb_top apb_none_pnr)
 designs=("${all_designs[@]}")
 if [ -n "$only" ]; then
   IFS=',' read -r -a designs <<<"$only"

@@ -3,7 +3,8 @@
 # The FuseSoC core rtl/anglecore.core, run as a user would from a fresh cores root (no FuseSoC
 # configuration, an empty build root): its file list is rtl/files.f, its committed vectors are what
 # the model makes now, `--target=lint` passes on the defaults and stops on an illegal parameter with
-# its rule, `--target=sim` passes on both tops (the pipelined one also folded, FOLD=2) (the bench exits non-zero on any failure).
+# its rule, `--target=sim` passes on both tops (the pipelined one also folded, FOLD=2) and `--target=sim_apb` on the APB shell around each
+# (the benches exit non-zero on any failure).
 # usage: fusesoc.sh SOURCE_DIR GEN_VECTORS_BINARY WORK_DIR
 set -euo pipefail
 src=$1
@@ -49,5 +50,8 @@ sim() { run sim "$@" && grep -q '^PASS$' "$work/build/anglecore_ip_anglecore_1.0
 check sim_acore_top sim
 check sim_acore_top_fold2 sim --FOLD=2
 check sim_acore_serial_top sim --SERIAL=1
+sim_apb() { run sim_apb "$@" && grep -q '^PASS$' "$work/build/anglecore_ip_anglecore_1.0.0/sim_apb-icarus/icarus.log"; }
+check sim_apb_acore_top sim_apb
+check sim_apb_acore_serial_top sim_apb --SERIAL=1
 grep -h '^icarus' "$work"/sim_*.log || true
 exit $status

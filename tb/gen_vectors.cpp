@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Test vectors for the Icarus bench (tb/acore_tb_icarus.v) from the bit-accurate model.
 // usage: acore_gen_vectors DIR FRAME [N]   writes DIR/regs.hex, DIR/in.hex, DIR/exp.hex, DIR/meta.txt
+//   (meta.txt: samples, mag_lo, mag_hi, the image's CRC-32 in hex for the shell bench)
 //   FRAME 0: the paper scenario's calibrated image; paper samples (a turn), then random and extreme
 //            codes
 //   FRAME 1: a random register image with random inputs (saturation paths)
@@ -16,6 +17,7 @@
 #include "estimator.hpp"
 #include "fixed_model.hpp"
 #include "paper_signals.hpp"
+#include "regimage.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3 && argc != 4) {
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
     std::snprintf(line, sizeof line, "%06x\n", v);
     vexp << line;
   }
-  meta << in.size() << " " << w.mag_lo << " " << w.mag_hi << "\n";
+  meta << in.size() << " " << w.mag_lo << " " << w.mag_hi << " " << std::hex
+       << acore::image_crc32(img) << "\n";
   return regs && vin && vexp && meta ? 0 : 1;
 }

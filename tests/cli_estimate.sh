@@ -12,6 +12,25 @@ check simulate-cal 0 "$bin" simulate --scenario paper --samples 4096 --seed 1 --
 check simulate-val 0 "$bin" simulate --scenario paper --samples 4096 --seed 2 --out "$tmp/val.csv"
 check calibrate 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs.hex" --json "$tmp/cal.json"
 expect_text regs-words "$tmp/regs.hex" "atan(2^-15)"
+# The image's crc32 key is Python zlib's CRC-32 of the words as 32-bit little-endian integers (the
+# shell's CRC_EXPECTED); an image with a changed word is refused, naming the key's line.
+/usr/bin/python3 - "$tmp/regs.hex" <<'PY' || { echo "FAIL crc32-zlib"; fails=$((fails + 1)); }
+import re, sys, zlib
+text = open(sys.argv[1]).read()
+words = [int(m.group(1), 16) for m in re.finditer(r"^([0-9a-f]+)\s", text, re.M)]
+key = int(re.search(r"^// acore: crc32=0x([0-9a-f]{8})$", text, re.M).group(1), 16)
+assert len(words) == 52, len(words)
+assert key == zlib.crc32(b"".join(w.to_bytes(4, "little") for w in words)), hex(key)
+PY
+/usr/bin/python3 - "$tmp/regs.hex" "$tmp/flip.hex" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+m = re.search(r"^([0-9a-f]+)  // +7 ", text, re.M)  # word 7: flip its lowest bit
+flipped = format(int(m.group(1), 16) ^ 1, "0%dx" % len(m.group(1)))
+open(sys.argv[2], "w").write(text[:m.start(1)] + flipped + text[m.end(1):])
+PY
+check crc32-changed-word 2 "$bin" estimate --regs "$tmp/flip.hex" --in "$tmp/val.csv" --engine fixed
+expect_text crc32-changed-word-msg "$tmp/err" "header field 'crc32'"
 check estimate-fixed 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json" --out "$tmp/angles.csv"
 check estimate-float 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine float --json "$tmp/fl.json"
 for f in engine samples error_deg uncorrected_error_deg rms max_abs mean zero_offset applied_by; do expect_text "json-$f" "$tmp/fx.json" "\"$f\""; done

@@ -2,6 +2,11 @@
 // Register image: the DESIGN 3.2 map, round trip through the $readmemh text, and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <random>
+
 #include "calibration.hpp"
 #include "cordic.hpp"
 #include "errors.hpp"
@@ -89,7 +94,8 @@ TEST(RegImage, DequantizeInvertsQuantizeWithinOneLsb) {
   const FloatCoefficients fc = calibrate(rec, CalOptions{});
   const RegImage img = quantize(fc, DatapathConfig{}, choose_in_scale(rec, 16));
   const FloatCoefficients back = dequantize(img);
-  for (size_t k = 0; k < fc.poly.size(); ++k) EXPECT_NEAR(back.poly[k], fc.poly[k], std::ldexp(0.5, -img.cfg.coef_f));
+  for (size_t k = 0; k < fc.poly.size(); ++k)
+    EXPECT_NEAR(back.poly[k], fc.poly[k], std::ldexp(0.5, -img.cfg.coef_f));
   for (int c = 0; c < 2; ++c) {
     EXPECT_NEAR(back.offset[c], fc.offset[c], 0.5 / img.in_scale);
     EXPECT_NEAR(back.amp[c] / fc.amp[c], 1.0, 1e-4);
@@ -136,6 +142,64 @@ TEST(RegImage, CorrectionModeRoundTripsAndOlderImagesReadAsPoly) {
   EXPECT_EQ(c.cfg.correction, kPoly);
   EXPECT_EQ(c.cfg.xcenter, 0);
   EXPECT_EQ(c.words, paper_image().words);
+}
+
+// CRC-32 (IEEE 802.3, reflected 0xEDB88320) one bit at a time, table-free: an implementation
+// independent of zlib's, itself checked against the standard check value below.
+uint32_t bitwise_crc32(const std::vector<unsigned char>& bytes) {
+  uint32_t c = 0xFFFFFFFFu;
+  for (const unsigned char b : bytes)
+    for (int i = 0; i < 8; ++i) c = (c >> 1) ^ (((c ^ (b >> i)) & 1u) ? 0xEDB88320u : 0u);
+  return ~c;
+}
+
+// The shell's serialization: each word zero-extended to 32 bits, little-endian, address order.
+std::vector<unsigned char> le_bytes(const std::vector<uint64_t>& words) {
+  std::vector<unsigned char> b;
+  for (const uint64_t w : words)
+    for (int k = 0; k < 4; ++k) b.push_back(static_cast<unsigned char>(w >> (8 * k)));
+  return b;
+}
+
+TEST(RegImage, Crc32IsTheStandardCrcOfTheLittleEndianWords) {
+  const std::string check = "123456789";
+  EXPECT_EQ(bitwise_crc32(std::vector<unsigned char>(check.begin(), check.end())), 0xCBF43926u);
+  const RegImage a = paper_image();
+  EXPECT_EQ(image_crc32(a), bitwise_crc32(le_bytes(a.words)));
+  // Little-endian order: the words 0x34333231, 0x38373635 are the bytes "12345678".
+  RegImage b = a;
+  b.words.assign({0x34333231, 0x38373635});
+  EXPECT_EQ(image_crc32(b), bitwise_crc32({'1', '2', '3', '4', '5', '6', '7', '8'}));
+  std::mt19937_64 rng(3);
+  for (int n = 0; n < 20; ++n) {
+    for (auto& w : b.words) w = rng() & 0x3fffff;
+    b.words.resize(1 + rng() % 300);
+    EXPECT_EQ(image_crc32(b), bitwise_crc32(le_bytes(b.words)));
+  }
+}
+
+TEST(RegImage, Crc32HeaderRoundTripsAndCatchesAChangedWord) {
+  const RegImage a = paper_image();
+  const std::string text = format_regimage(a);
+  char key[40];
+  std::snprintf(key, sizeof key, "// acore: crc32=0x%08x\n", image_crc32(a));
+  const size_t at = text.find(key);
+  ASSERT_NE(at, std::string::npos) << text.substr(0, 400);
+  EXPECT_EQ(parse_regimage(text, "x").words, a.words);
+  // One bit of one word changed in the text: the reader names the file, the key's line and field.
+  const int line_no = static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
+  std::string flipped = text;
+  const size_t w = flipped.rfind("\n", flipped.find("//   0 offset")) + 1 + 4;  // word 0's last digit
+  flipped[w] = flipped[w] == '0' ? '1' : '0';
+  expect_error(flipped, "regs.hex:" + std::to_string(line_no) + ": header field 'crc32'");
+  // Without the key (images written before it) the same text parses.
+  const std::string old = text.substr(0, at) + text.substr(at + std::strlen(key));
+  EXPECT_NO_THROW(
+      parse_regimage(flipped.substr(0, at) + flipped.substr(at + std::strlen(key)), "old.hex"));
+  EXPECT_EQ(parse_regimage(old, "old.hex").words, a.words);
+  std::string bad = text;
+  bad.replace(at + 16, 2, "0z");
+  expect_error(bad, "header field 'crc32': bad value");
 }
 
 // The ZERO word is the last word in every mode (after the atan words and the Fourier words), and

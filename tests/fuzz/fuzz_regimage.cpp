@@ -3,8 +3,9 @@
 // mode): any input either parses into an image that round-trips exactly through format_regimage and
 // runs through the bit-accurate model without a crash, or throws InputError; nothing else may
 // happen (no crash, no other exception, no sanitizer report).
-//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -Imodel tests/fuzz/fuzz_regimage.cpp \
-//     model/*.cpp -lfmt -o fuzz_regimage && ./fuzz_regimage -max_total_time=60
+//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -Imodel
+//   tests/fuzz/fuzz_regimage.cpp \
+//     model/*.cpp -lfmt -lz -o fuzz_regimage && ./fuzz_regimage -max_total_time=60
 // With -DACORE_FUZZ_STANDALONE any compiler builds a driver that mutates images of every mode
 // (see tests/fuzz/CMakeLists.txt for the g++ command) for `-seconds N` (default 30).
 #include <cstddef>
@@ -60,11 +61,17 @@ int main(int argc, char** argv) {
   for (const char* p :
        {"", "DEGREE=1 REGIONS=8", "CORRECTION=1", "CORRECTION=2 FOURIER_K=3",
         "DEGREE=7 REGIONS=8 XCENTER=1", "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20",
-        "ZERO=1", "CORRECTION=2 FOURIER_K=3 ZERO=1"})
-    corpus.push_back(acore::format_regimage(acore::calibrate_image(cal, acore::DatapathConfig{}.with_rtl_params(p), 1)));
+        "ZERO=1", "CORRECTION=2 FOURIER_K=3 ZERO=1"}) {
+    const std::string text = acore::format_regimage(
+        acore::calibrate_image(cal, acore::DatapathConfig{}.with_rtl_params(p), 1));
+    corpus.push_back(text);
+    // Without its crc32 line too, so that mutated words still parse and reach the model.
+    const size_t at = text.find("// acore: crc32=");
+    corpus.push_back(text.substr(0, at) + text.substr(text.find('\n', at) + 1));
+  }
   const std::string alphabet =
       "0123456789abcdefx/:= "
-      "\n-+.eacore:correctionfourier_kdegreeregionsxcenterzero_wordzero_offset_radcode";
+      "\n-+.eacore:correctionfourier_kdegreeregionsxcenterzero_wordzero_offset_radcodecrc32";
   std::mt19937_64 rng(4321);
   size_t runs = 0, parsed = 0;
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);

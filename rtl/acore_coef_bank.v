@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: MIT
+// acore_coef_bank: safe coefficient updates for either top (rtl/acore_top.v, rtl/acore_serial_top.v)
+// through its raw host port: a shadow bank the host writes at any time, a commit that replaces the
+// active words only between samples and only when the shadow's CRC-32 is right, a generation tag
+// for the outputs, and the background scrubber (rtl/acore_coef_scrub.v) that checks the active words.
+//
+// Commit (commit_i, one clock; ignored while busy_o):
+//   REQ     one clock: the request registered.                           busy_o (and the shell gates
+//   INIT    one clock: the CRC engine restarts.                          in_ready) from here on
+//   CHECK   the shadow's words, 0..WORDS-1, through the CRC engine
+//           (32/CRC_W clocks a word) while the samples in flight drain: the shell takes no new sample
+//           and counts accepted - emitted (accept_i, emit_i), so the tops need no new port. Both done:
+//           check_i and CRC != crc_expected_i -> refused: the active words stay, refused_o, done_o;
+//           otherwise:
+//   STREAM  the shadow's words into the top's register file through its host write port, one a clock;
+//   SETTLE  SETTLE clocks for the last write to land (acore_top registers its port), then the tag
+//           (bank_o) flips, the image's CRC becomes the scrubber's reference, done_o, busy_o falls.
+//
+//   commit_i   _/‾\_________________________________________________________
+//   busy_o     ___/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\_____
+//   state         |R|I| CHECK: CRC pass || drain (max of both) | STREAM WORDS |SETTLE|
+//   top_we_o   ___________________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾\______
+//   bank_o     ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\_____   (new tag)
+//
+// No sample is in flight while the words change, so every output was computed with exactly one
+// image, the one its tag (bank_o when it leaves) names. Busy time from the clock of commit_i:
+// max(7 + P + WORDS 32/CRC_W, drain) + WORDS + 2 + SETTLE clocks (P = 1 when CRC_W >= 16 splits
+// the CRC's fold over two clocks, else 0; drain = clocks until the one after the last accepted
+// sample has left the top; tb/test_apb_shell.cpp checks this form).
+//
+// The top's host port belongs to the commit while it streams and to the scrubber otherwise; the
+// host never drives it (the shell's register map has no window on the active words). The shadow's
+// read port belongs to the commit while busy_o, to the register block otherwise.
+`resetall
+`default_nettype none
+
+module acore_coef_bank #(
+  parameter integer REG_W = 18,
+  // Coefficient words of the top.
+  parameter integer WORDS = 52,
+  // Clocks from the top's host address to its reg_rdata_o.
+  parameter integer RD_LAT = 2,
+  // CRC bits per clock (rtl/acore_crc32.v).
+  parameter integer CRC_W = 8,
+  // Width of the in-flight sample counter: must hold the most samples the top holds at once.
+  parameter integer CNT_W = 8,
+  // Clocks after the last host write before samples flow again.
+  parameter integer SETTLE = 2,
+  // $readmemh image: the shadow's power-up contents (the shell gives the top the same one).
+  parameter INIT_FILE = "",
+  // Derived, do not override.
+  parameter integer ADDR_W = $clog2(WORDS)
+) (
+  input  wire              clk_i,
+  input  wire              rst_i,
+  // Shadow bank, register block side: write, and read (q one clock after sh_re_i) while !busy_o.
+  input  wire              sh_we_i,
+  input  wire [ADDR_W-1:0] sh_waddr_i,
+  input  wire [REG_W-1:0]  sh_wdata_i,
+  input  wire              sh_re_i,
+  input  wire [ADDR_W-1:0] sh_raddr_i,
+  output wire [REG_W-1:0]  sh_rdata_o,
+  // Control: commit request (one clock), CRC check and scrubbing enables, the expected CRC.
+  input  wire              commit_i,
+  input  wire              check_i,
+  input  wire              scrub_i,
+  input  wire [31:0]       crc_expected_i,
+  // A sample entered the top / a result left it (handshakes at the top's ports).
+  input  wire              accept_i,
+  input  wire              emit_i,
+  // Live state.
+  output wire              busy_o,
+  output wire              bank_o,
+  output wire              ref_valid_o,
+  // CRC of the shadow at the last commit, of the active image (the last applied commit's), and of
+  // the scrubber's last pass; judged passes (wrapping; moves with the pass's verdict).
+  output reg  [31:0]       crc_shadow_o,
+  output reg  [31:0]       crc_ref_o,
+  output reg  [31:0]       crc_scrub_o,
+  output reg  [15:0]       scrub_passes_o,
+  // Events, one clock each: a commit ended (applied or refused); it was refused (CRC); a scrub
+  // pass found the active words changed.
+  output wire              done_o,
+  output wire              refused_o,
+  output wire              scrub_err_o,
+  // The top's raw host port.
+  output reg  [ADDR_W-1:0] top_addr_o,
+  output reg  [REG_W-1:0]  top_wdata_o,
+  output reg               top_we_o,
+  input  wire [REG_W-1:0]  top_rdata_i,
+  // The top serves a host read given in this clock (acore_top: 1; serial core: in_ready_o).
+  input  wire              top_rd_ok_i
+);
+
+  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
+  acore_check #(.OK(WORDS >= 2), .VALUE(WORDS),
+    .MSG("illegal parameter: WORDS must be at least 2"))
+    WORDS_must_be_at_least_2 ();
+  acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
+    ADDR_W_is_derived ();
+  acore_check #(.OK(REG_W >= 2 && REG_W <= 32), .VALUE(REG_W),
+    .MSG("illegal parameter: REG_W must be 2..32"))
+    REG_W_must_be_2_to_32 ();
+  acore_check #(.OK(SETTLE >= 1 && SETTLE <= 15), .VALUE(SETTLE),
+    .MSG("illegal parameter: SETTLE must be 1..15"))
+    SETTLE_must_be_1_to_15 ();
+
+  localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3, C_SETTLE = 3'd4;
+  localparam integer LAST_I = WORDS - 1;
+  localparam [ADDR_W-1:0] LAST = LAST_I[ADDR_W-1:0];
+  localparam [3:0] SETTLE_LAST = SETTLE[3:0] - 4'd1;
+  // The CHECK pass reads a shadow word every STEPS clocks, the CRC engine's pace, so the engine is
+  // always ready for it and the feed needs no handshake (every control below is a flop or a gate
+  // from flops).
+  localparam integer STEPS = 32 / CRC_W;
+  localparam integer SC_W = (STEPS > 1) ? $clog2(STEPS) : 1;
+  localparam [SC_W-1:0] SC_LAST = STEPS[SC_W-1:0] - 1'b1;
+
+  // state_q, and busy_q = (state_q != C_IDLE) as a flop: it selects the RAM's and the engine's inputs.
+  // req_q: the commit request, registered (it comes from the APB write decode); busy_o covers it.
+  reg [2:0] state_q;
+  reg busy_q, req_q;
+  assign busy_o = busy_q | req_q;
+  always @(posedge clk_i) begin
+    if (rst_i) req_q <= 1'b0;
+    else req_q <= commit_i & ~busy_q & ~req_q;
+  end
+
+  // ---- shadow bank ----
+  // ra_q: the next word the commit reads; more_q: words left to read; sc_q: clocks to the next
+  // read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK: for the
+  // CRC engine); pend_q: the same in STREAM (for the top).
+  reg [ADDR_W-1:0] ra_q;
+  reg more_q, ld_q, pend_q;
+  reg [SC_W-1:0] sc_q;
+  wire [REG_W-1:0] q;
+  wire c_re = more_q & ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
+  acore_sync_ram #(.W(REG_W), .DEPTH(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
+    .clk_i(clk_i), .we_i(sh_we_i), .waddr_i(sh_waddr_i), .wdata_i(sh_wdata_i),
+    .re_i(busy_q ? c_re : sh_re_i), .raddr_i(busy_q ? ra_q : sh_raddr_i), .q_o(q));
+  assign sh_rdata_o = q;
+
+  // ---- CRC engine, the commit's while busy, the scrubber's otherwise ----
+  wire crc_ready, crc_idle;
+  wire [31:0] crc;
+  wire s_init, s_load, s_pass;
+  wire [31:0] s_word;
+  wire [ADDR_W-1:0] s_addr;
+  acore_crc32 #(.CRC_W(CRC_W)) u_crc (
+    .clk_i(clk_i), .rst_i(rst_i),
+    .init_i(busy_q ? (state_q == C_INIT) : s_init),
+    .load_i(busy_q ? ld_q : s_load),
+    .word_i(busy_q ? {{(32-REG_W){1'b0}}, q} : s_word),
+    .ready_o(crc_ready), .idle_o(crc_idle), .crc_o(crc));
+
+  acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT)) u_scrub (
+    .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
+    .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
+    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .pass_o(s_pass));
+
+  // ---- samples in the top: accepted - emitted ----
+  reg [CNT_W-1:0] inflight_q;
+  always @(posedge clk_i) begin
+    if (rst_i) inflight_q <= {CNT_W{1'b0}};
+    else if (accept_i && !emit_i) inflight_q <= inflight_q + 1'b1;
+    else if (emit_i && !accept_i) inflight_q <= inflight_q - 1'b1;
+  end
+  wire drained = (inflight_q == {CNT_W{1'b0}});
+
+  // ---- the commit ----
+  // One 32-bit comparator, over two clocks (diff_q, neq_q), for both users: the commit compares the
+  // CRC with crc_expected_i, the scrubber with crc_ref_o; the CRC stays still for the two clocks.
+  // cmp_sel_q records which reference neq_q was computed with (1: the commit's).
+  reg [31:0] diff_q;
+  reg neq_q, sel_q, cmp_sel_q;
+  always @(posedge clk_i) begin
+    diff_q <= crc ^ (busy_q ? crc_expected_i : crc_ref_o);
+    sel_q <= busy_q;
+    neq_q <= |diff_q;
+    cmp_sel_q <= sel_q;
+  end
+
+  // fed_q: the last shadow word went into the CRC engine; crc_done_q: its CRC is in crc_shadow_o;
+  // cmp_q: neq_q holds its comparison with crc_expected_i.
+  reg fed_q, crc_done_q, cmp_q, bank_q, ref_valid_q;
+  reg [ADDR_W-1:0] pend_addr_q;
+  reg [3:0] settle_q;
+  wire crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle;
+  wire decide = (state_q == C_CHECK) & cmp_q & drained;
+  wire refuse = decide & check_i & neq_q;
+  wire apply = (state_q == C_SETTLE) & (settle_q == 4'd0);
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      state_q <= C_IDLE;
+      busy_q <= 1'b0;
+      bank_q <= 1'b0;
+      ref_valid_q <= 1'b0;
+      top_we_o <= 1'b0;
+      pend_q <= 1'b0;
+      ld_q <= 1'b0;
+    end else begin
+      top_we_o <= (state_q == C_STREAM) & pend_q;
+      pend_q <= (state_q == C_STREAM) & c_re;
+      ld_q <= (state_q == C_CHECK) & c_re;
+      if (c_re) begin
+        ra_q <= ra_q + 1'b1;
+        more_q <= (ra_q != LAST);
+      end
+      case (state_q)
+        C_IDLE: begin
+          if (req_q) begin
+            state_q <= C_INIT;
+            busy_q <= 1'b1;
+          end
+        end
+        C_INIT: begin
+          ra_q <= {ADDR_W{1'b0}};
+          more_q <= 1'b1;
+          sc_q <= {SC_W{1'b0}};
+          fed_q <= 1'b0;
+          crc_done_q <= 1'b0;
+          cmp_q <= 1'b0;
+          state_q <= C_CHECK;
+        end
+        C_CHECK: begin
+          if (c_re) sc_q <= SC_LAST;
+          else if (sc_q != {SC_W{1'b0}}) sc_q <= sc_q - 1'b1;
+          if (ld_q && !more_q) fed_q <= 1'b1;
+          if (crc_end) crc_done_q <= 1'b1;
+          cmp_q <= crc_done_q;
+          if (decide) begin
+            ra_q <= {ADDR_W{1'b0}};
+            more_q <= 1'b1;
+            state_q <= refuse ? C_IDLE : C_STREAM;
+            busy_q <= ~refuse;
+          end
+        end
+        C_STREAM: begin
+          if (!more_q && !pend_q) begin
+            settle_q <= SETTLE_LAST;
+            state_q <= C_SETTLE;
+          end
+        end
+        default: begin  // C_SETTLE
+          settle_q <= settle_q - 4'd1;
+          if (apply) begin
+            bank_q <= ~bank_q;
+            ref_valid_q <= 1'b1;
+            state_q <= C_IDLE;
+            busy_q <= 1'b0;
+          end
+        end
+      endcase
+    end
+  end
+  // The CRC registers read 0 until the first commit (and pass).
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      crc_shadow_o <= 32'd0;
+      crc_ref_o <= 32'd0;
+    end else begin
+      if (crc_end) crc_shadow_o <= crc;
+      if (apply) crc_ref_o <= crc_shadow_o;
+    end
+  end
+  always @(posedge clk_i) begin
+    pend_addr_q <= ra_q;
+    // The top's port: the streamed word, or the scrubber's address.
+    top_addr_o <= ((state_q == C_STREAM) & pend_q) ? pend_addr_q : s_addr;
+    top_wdata_o <= q;
+  end
+
+  // ---- scrubber passes ----
+  // The comparison comes two clocks after the pass (the flag three); a commit starting meanwhile
+  // takes the comparator, and that pass goes unjudged.
+  reg pass1_q, pass2_q, judged_q, scrub_bad;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      pass1_q <= 1'b0;
+      pass2_q <= 1'b0;
+      judged_q <= 1'b0;
+      scrub_bad <= 1'b0;
+    end else begin
+      pass1_q <= s_pass;
+      pass2_q <= pass1_q;
+      judged_q <= pass2_q & ~cmp_sel_q;
+      scrub_bad <= pass2_q & ~cmp_sel_q & ref_valid_q & neq_q;
+    end
+  end
+  // CRC_SCRUB takes the pass's CRC when it ends; the pass counter moves in the clock the verdict
+  // reaches STATUS (scrub_err_o is registered there), so a host that sees it move sees the verdict.
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      scrub_passes_o <= 16'd0;
+      crc_scrub_o <= 32'd0;
+    end else begin
+      if (s_pass) crc_scrub_o <= crc;
+      if (judged_q) scrub_passes_o <= scrub_passes_o + 16'd1;
+    end
+  end
+
+  assign bank_o = bank_q;
+  assign ref_valid_o = ref_valid_q;
+  assign done_o = apply | refuse;
+  assign refused_o = refuse;
+  assign scrub_err_o = scrub_bad;
+
+endmodule
+
+`resetall

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// acore_sync_ram: a DEPTH x W memory with one write port and one registered read port, written so
+// that Yosys maps it to block RAM (iCE40 SB_RAM40_4K: 256 x 16 each, so two for 18-bit words;
+// xc7 distributed RAM or RAMB18). The shell's shadow coefficient bank (rtl/acore_coef_bank.v).
+//
+//   we_i, waddr_i, wdata_i  the word changes at the clock edge
+//   re_i, raddr_i           q_o = the word at raddr_i one clock later (held while re_i is low);
+//                           a read and a write of the same address in one clock read the old word
+// INIT_FILE ($readmemh image) sets the power-up contents; the words are not reset.
+`resetall
+`default_nettype none
+
+module acore_sync_ram #(
+  parameter integer W = 18,
+  parameter integer DEPTH = 52,
+  parameter INIT_FILE = "",
+  // Derived, do not override.
+  parameter integer ADDR_W = $clog2(DEPTH)
+) (
+  input  wire              clk_i,
+  input  wire              we_i,
+  input  wire [ADDR_W-1:0] waddr_i,
+  input  wire [W-1:0]      wdata_i,
+  input  wire              re_i,
+  input  wire [ADDR_W-1:0] raddr_i,
+  output reg  [W-1:0]      q_o
+);
+
+  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
+  acore_check #(.OK(DEPTH >= 2), .VALUE(DEPTH),
+    .MSG("illegal parameter: DEPTH must be at least 2"))
+    DEPTH_must_be_at_least_2 ();
+  acore_check #(.OK(ADDR_W == $clog2(DEPTH)), .VALUE(ADDR_W),
+    .MSG("illegal parameter: ADDR_W is derived (clog2(DEPTH)), do not override"))
+    ADDR_W_is_derived ();
+
+  reg [W-1:0] mem_q [0:DEPTH-1];
+
+  initial begin
+    if (INIT_FILE != "") $readmemh(INIT_FILE, mem_q, 0, DEPTH - 1);
+  end
+
+  always @(posedge clk_i) begin
+    if (we_i) mem_q[waddr_i] <= wdata_i;
+    if (re_i) q_o <= mem_q[raddr_i];
+  end
+
+endmodule
+
+`resetall
