@@ -25,19 +25,24 @@ struct Build {
   const char* params;  // the -G parameters of the build (tb/CMakeLists.txt), SERIAL aside
   bool serial;
   const char* top_scope;    // the wrapped top (its public LATENCY, CYCLES)
-  const char* words_scope;  // its coefficient memory mem_q (tb/shell_public.vlt)
+  const char* words_scope;  // its coefficient memory mem_q (tb/shell_public.vlt; acore_top: in its
+                            // FOLD = 1 branch g_pipe)
 };
 
 const Build& build_of(ShellTop t) {
-  static const Build pipe{
-      &make_shell_pins_pipe,          "pipelined", "", false, "acore_apb.g_pipe.u_top",
-      "acore_apb.g_pipe.u_top.u_regs"};
+  static const Build pipe{&make_shell_pins_pipe,
+                          "pipelined",
+                          "",
+                          false,
+                          "acore_apb.g_pipe.u_top",
+                          "acore_apb.g_pipe.u_top.g_pipe.u_regs"};
   static const Build serial{
       &make_shell_pins_serial,         "serial", "", true, "acore_apb.g_serial.u_top",
       "acore_apb.g_serial.u_top.u_ram"};
-  static const Build pipe_zero{&make_shell_pins_pipe_zero,        "pipelined_zero_none_k4",
-                               "CORRECTION=2 FOURIER_K=4 ZERO=1", false,
-                               "acore_apb.g_pipe.u_top",          "acore_apb.g_pipe.u_top.u_regs"};
+  static const Build pipe_zero{
+      &make_shell_pins_pipe_zero,        "pipelined_zero_none_k4",
+      "CORRECTION=2 FOURIER_K=4 ZERO=1", false,
+      "acore_apb.g_pipe.u_top",          "acore_apb.g_pipe.u_top.g_pipe.u_regs"};
   static const Build serial_zero{
       &make_shell_pins_serial_zero,    "serial_zero", "ZERO=1", true, "acore_apb.g_serial.u_top",
       "acore_apb.g_serial.u_top.u_ram"};
