@@ -82,6 +82,13 @@ void DatapathConfig::validate() const {
        fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
                    fourier_iterations, iterations));
   need(z_w > angle_w, fmt::format("the Fourier correction needs z_w={} > angle_w={}", z_w, angle_w));
+  // The Fourier stage's rotation CORDIC runs fourier_iterations stages on (fourier_word_w + 2 +
+  // fourier_guard)-bit vectors and z_w - 2-bit angles (rtl/acore_cordic_rotate.v's rule).
+  need(fourier_iterations < fourier_word_w + 2 + fourier_guard,
+       fmt::format("fourier_iterations={} must be < fourier_word_w+2+fourier_guard={}", fourier_iterations,
+                   fourier_word_w + 2 + fourier_guard));
+  need(fourier_iterations <= z_w - 4,
+       fmt::format("fourier_iterations={} must be <= z_w-4={}", fourier_iterations, z_w - 4));
   need(fourier_word_w >= 8 && fourier_word_w <= reg_w,
        fmt::format("fourier_word_w={} must be 8..reg_w={}", fourier_word_w, reg_w));
   need(fourier_guard >= 0 && fourier_guard <= 8, fmt::format("fourier_guard={} must be 0..8", fourier_guard));

@@ -112,6 +112,13 @@ module acore_config_check #(
   acore_check #(.OK(FOURIER_K == 0 || (Z_W > ANGLE_W)), .VALUE(Z_W),
     .MSG("illegal parameter: Z_W must be > ANGLE_W with FOURIER_K > 0"))
     Z_W_must_exceed_ANGLE_W_with_Fourier ();
+  // The Fourier stage's rotation CORDIC (acore_cordic_rotate: M stages on W+2+G-bit vectors).
+  acore_check #(.OK(FOURIER_K == 0 || (FOURIER_M < FOURIER_W + 2 + FOURIER_G)), .VALUE(FOURIER_M),
+    .MSG("illegal parameter: FOURIER_M must be below FOURIER_W+2+FOURIER_G"))
+    FOURIER_M_must_be_below_FOURIER_W_plus_2_plus_FOURIER_G ();
+  acore_check #(.OK(FOURIER_K == 0 || (FOURIER_M <= Z_W - 4)), .VALUE(FOURIER_M),
+    .MSG("illegal parameter: FOURIER_M must be at most Z_W-4"))
+    FOURIER_M_must_be_at_most_Z_W_minus_4 ();
   acore_check #(.OK(FOURIER_K == 0 || (FOURIER_W >= 8 && FOURIER_W <= REG_W)), .VALUE(FOURIER_W),
     .MSG("illegal parameter: FOURIER_W must be 8..REG_W"))
     FOURIER_W_must_be_8_to_REG_W ();
