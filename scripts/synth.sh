@@ -127,7 +127,7 @@ run_pnr() {  # run_pnr DESIGN
   local d=$1
   # The pin-wrapped tops are placed with their pin constraints; the stage wrappers unconstrained.
   local pins=(--pcf-allow-unconstrained)
-  case $d in top_pnr|serial_pnr) pins=(--pcf "$syn/acore_hx8k_ct256.pcf") ;; esac
+  case $d in top_pnr|serial_pnr|top_fold?_pnr) pins=(--pcf "$syn/acore_hx8k_ct256.pcf") ;; esac
   nextpnr-ice40 --hx8k --package ct256 --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
     "${pins[@]}" --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1 \
     || echo "nextpnr $d: failed (see synth/reports/nextpnr_$d.log)"
