@@ -89,8 +89,6 @@ module acore_fold_poly #(
   localparam integer STEP = ML + 1;
   localparam integer LATENCY = 5 + fp_cmul(DEGREE, STEP);
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
-  localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc_0, RN)
-  localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(ACC_F >= S_F), .VALUE(ACC_F),
@@ -207,38 +205,9 @@ module acore_fold_poly #(
     end
   endgenerate
 
-  // y = saturate(s - round_shr(acc_0, RN), S_W): round, subtract, saturate, one clock each.
-  wire [ACC_W:0] acc_ext = {acc[DEGREE][ACC_W-1], acc[DEGREE]};
-  wire [ACC_W:0] acc_rnd;
-  generate
-    if (RN > 0) begin : g_rnd
-      assign acc_rnd = acc_ext + ({{ACC_W{1'b0}}, 1'b1} << (RN - 1));
-    end else begin : g_nornd
-      assign acc_rnd = acc_ext;
-    end
-  endgenerate
-  reg [R_W-1:0] p_r_q;
-  reg [S_W-1:0] s_r_q;
-  reg           ov_r_q, ov_y_q;
-  reg [Y_W-1:0] y_full_q;
-  always @(posedge clk_i) begin
-    p_r_q    <= acc_rnd[ACC_W:RN];
-    s_r_q    <= s_i;
-    ov_r_q   <= ov[DEGREE];
-    y_full_q <= {{(Y_W-S_W){s_r_q[S_W-1]}}, s_r_q} - {{(Y_W-R_W){p_r_q[R_W-1]}}, p_r_q};
-    ov_y_q   <= ov_r_q;
-  end
-  wire [S_W-1:0] y_sat;
-  wire y_ovf;
-  acore_saturate #(.IN_W(Y_W), .OUT_W(S_W)) u_ysat (.d_i(y_full_q), .q_o(y_sat), .ovf_o(y_ovf));
-  reg [S_W-1:0] y_q;
-  reg ovf_q;
-  always @(posedge clk_i) begin
-    y_q   <= y_sat;
-    ovf_q <= ov_y_q | y_ovf;
-  end
-  assign y_o   = y_q;
-  assign ovf_o = ovf_q;
+  // y = saturate(s - round_shr(acc, RN), S_W): round, subtract, saturate, one clock each.
+  acore_round_sub_sat #(.ACC_W(ACC_W), .RN(RN), .S_W(S_W)) u_out (
+    .clk_i(clk_i), .en_i(1'b1), .acc_i(acc[DEGREE]), .s_i(s_i), .ov_i(ov[DEGREE]), .y_o(y_o), .ovf_o(ovf_o));
 
   // The last step's start, base and argument have no further reader.
   wire unused_tail = st[DEGREE] ^ ^bs[DEGREE] ^ ^us[DEGREE];

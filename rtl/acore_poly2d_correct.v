@@ -97,8 +97,6 @@ module acore_poly2d_correct #(
   localparam integer PU_W = ACC_W + S_W - U_SH + 1;
   localparam integer PV_W = ACC_W + S_W - V_SH + 1;
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
-  localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc, RN)
-  localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
   localparam integer STRIDE = p2_cmul(TERMS << 1, REG_W);  // bits from region r to r + 1
   localparam integer CBASE = p2_cmul(p2_cmul(CURVE, TERMS), REG_W);
   localparam [S_W-1:0] ONE = {{(S_W-S_F-1){1'b0}}, 1'b1, {S_F{1'b0}}};
@@ -273,43 +271,9 @@ module acore_poly2d_correct #(
     end
   endgenerate
 
-  // ---- y = saturate(s - round_shr(acc, RN), S_W): round, subtract, saturate, one clock each ----
-  wire [ACC_W:0] acc_ext = {oacc[DEGREE][ACC_W-1], oacc[DEGREE]};
-  wire [ACC_W:0] acc_rnd;
-  generate
-    if (RN > 0) begin : g_rnd
-      assign acc_rnd = acc_ext + ({{ACC_W{1'b0}}, 1'b1} << (RN - 1));
-    end else begin : g_nornd
-      assign acc_rnd = acc_ext;
-    end
-  endgenerate
-  reg [R_W-1:0] p_r_q;
-  reg [S_W-1:0] s_r_q;
-  reg           ov_r_q, ov_y_q;
-  reg [Y_W-1:0] y_full_q;
-  always @(posedge clk_i) begin
-    if (en_i) begin
-      p_r_q    <= acc_rnd[ACC_W:RN];
-      s_r_q    <= os[DEGREE];
-      ov_r_q   <= oov[DEGREE];
-      y_full_q <= {{(Y_W-S_W){s_r_q[S_W-1]}}, s_r_q} - {{(Y_W-R_W){p_r_q[R_W-1]}}, p_r_q};
-      ov_y_q   <= ov_r_q;
-    end
-  end
-  wire [S_W-1:0] y_sat;
-  wire y_ovf;
-  acore_saturate #(.IN_W(Y_W), .OUT_W(S_W)) u_ysat (.d_i(y_full_q), .q_o(y_sat), .ovf_o(y_ovf));
-
-  reg [S_W-1:0] y_q;
-  reg ovf_q;
-  always @(posedge clk_i) begin
-    if (en_i) begin
-      y_q   <= y_sat;
-      ovf_q <= ov_y_q | y_ovf;
-    end
-  end
-  assign y_o   = y_q;
-  assign ovf_o = ovf_q;
+  // y = saturate(s - round_shr(acc, RN), S_W): round, subtract, saturate, one clock each.
+  acore_round_sub_sat #(.ACC_W(ACC_W), .RN(RN), .S_W(S_W)) u_out (
+    .clk_i(clk_i), .en_i(en_i), .acc_i(oacc[DEGREE]), .s_i(os[DEGREE]), .ov_i(oov[DEGREE]), .y_o(y_o), .ovf_o(ovf_o));
 
 endmodule
 
