@@ -9,10 +9,33 @@
 
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 
 #include "fixed_model.hpp"
 
 namespace acore {
+
+// The sample stream's pins, the same on both tops and on the APB shell around them.
+template <class V>
+void drive_stream_in(V& top, bool valid, const ChannelCodes& c, uint32_t mask) {
+  using C = std::decay_t<decltype(top.c1_i)>;
+  top.in_valid_i = valid;
+  top.c1_i = static_cast<C>(static_cast<uint32_t>(c[0]) & mask);
+  top.c2_i = static_cast<C>(static_cast<uint32_t>(c[1]) & mask);
+  top.c3_i = static_cast<C>(static_cast<uint32_t>(c[2]) & mask);
+  top.c4_i = static_cast<C>(static_cast<uint32_t>(c[3]) & mask);
+}
+
+template <class V>
+FixedSample read_stream_out(const V& top) {
+  FixedSample s;
+  s.angle = top.angle_o;
+  s.region = top.region_o;
+  s.ovf = top.ovf_o;
+  s.los = top.los_o;
+  s.dos = top.dos_o;
+  return s;
+}
 
 class RtlPins {
  public:
@@ -48,12 +71,7 @@ class VerilatedPins final : public RtlPins {
     top_->mag_hi_i = static_cast<std::decay_t<decltype(top_->mag_hi_i)>>(hi);
   }
   void set_in(bool valid, const ChannelCodes& c, uint32_t mask) override {
-    using C = std::decay_t<decltype(top_->c1_i)>;
-    top_->in_valid_i = valid;
-    top_->c1_i = static_cast<C>(static_cast<uint32_t>(c[0]) & mask);
-    top_->c2_i = static_cast<C>(static_cast<uint32_t>(c[1]) & mask);
-    top_->c3_i = static_cast<C>(static_cast<uint32_t>(c[2]) & mask);
-    top_->c4_i = static_cast<C>(static_cast<uint32_t>(c[3]) & mask);
+    drive_stream_in(*top_, valid, c, mask);
   }
   void set_out_ready(bool v) override { top_->out_ready_i = v; }
   void eval() override { top_->eval(); }
@@ -62,15 +80,7 @@ class VerilatedPins final : public RtlPins {
   bool in_ready() const override { return top_->in_ready_o; }
   bool out_valid() const override { return top_->out_valid_o; }
   uint64_t reg_rdata() const override { return top_->reg_rdata_o; }
-  FixedSample output() const override {
-    FixedSample s;
-    s.angle = top_->angle_o;
-    s.region = top_->region_o;
-    s.ovf = top_->ovf_o;
-    s.los = top_->los_o;
-    s.dos = top_->dos_o;
-    return s;
-  }
+  FixedSample output() const override { return read_stream_out(*top_); }
 
  private:
   std::unique_ptr<V> top_;

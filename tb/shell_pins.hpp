@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "fixed_model.hpp"
+#include "rtl_pins.hpp"
 
 namespace acore {
 
@@ -53,12 +54,7 @@ class VerilatedShellPins final : public ShellPins {
     top_->pstrb_i = static_cast<std::decay_t<decltype(top_->pstrb_i)>>(pstrb);
   }
   void set_in(bool valid, const ChannelCodes& c, uint32_t mask) override {
-    using C = std::decay_t<decltype(top_->c1_i)>;
-    top_->in_valid_i = valid;
-    top_->c1_i = static_cast<C>(static_cast<uint32_t>(c[0]) & mask);
-    top_->c2_i = static_cast<C>(static_cast<uint32_t>(c[1]) & mask);
-    top_->c3_i = static_cast<C>(static_cast<uint32_t>(c[2]) & mask);
-    top_->c4_i = static_cast<C>(static_cast<uint32_t>(c[3]) & mask);
+    drive_stream_in(*top_, valid, c, mask);
   }
   void set_out_ready(bool v) override { top_->out_ready_i = v; }
   void eval() override { top_->eval(); }
@@ -71,15 +67,7 @@ class VerilatedShellPins final : public ShellPins {
   bool in_ready() const override { return top_->in_ready_o; }
   bool out_valid() const override { return top_->out_valid_o; }
   bool out_tag() const override { return top_->out_tag_o; }
-  FixedSample output() const override {
-    FixedSample s;
-    s.angle = top_->angle_o;
-    s.region = top_->region_o;
-    s.ovf = top_->ovf_o;
-    s.los = top_->los_o;
-    s.dos = top_->dos_o;
-    return s;
-  }
+  FixedSample output() const override { return read_stream_out(*top_); }
 
  private:
   std::unique_ptr<V> top_;
