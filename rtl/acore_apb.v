@@ -81,7 +81,7 @@ module acore_apb #(
   parameter integer FOURIER_G = 2,
   // 1: the ZERO word (the zero position, last register word; both tops): WORDS counts it.
   parameter integer ZERO = 0,
-  // Fold factor of acore_top (issue 11 item 1), reported in CONFIG0: 1 until the top has one.
+  // Fold factor of acore_top, reported in CONFIG0 (the shell wraps FOLD = 1 only, see its rule).
   parameter integer FOLD = 1,
   // $readmemh register image: power-up contents of the top's words and of the shadow ("" = none).
   parameter INIT_FILE = "",

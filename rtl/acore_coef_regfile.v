@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_coef_regfile: the coefficient register file (DESIGN 3.2), WORDS REG_W-bit words.
+// acore_coef_regfile: the coefficient register file (docs/contracts.md, register image), WORDS REG_W-bit words.
 //
 //   address              content (defaults: DEGREE=3, REGIONS=4, K=16 -> 52 words)
 //   0, 1                 offsets O13, O24                       signed

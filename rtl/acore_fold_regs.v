@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// acore_fold_regs: the coefficient register file of the folded top (FOLD > 1). Same map (DESIGN
-// 3.2), same host port and timing as acore_coef_regfile: a write is registered first and lands
+// acore_fold_regs: the coefficient register file of the folded top (FOLD > 1). Same map (docs/contracts.md,
+// register image), same host port and timing as acore_coef_regfile: a write is registered first and lands
 // one clock later (ignored while rst_i is high); reg_rdata is the word at the address of two
 // clocks before (zero past the last word). Storage differs:
 //   - every word is in a synchronous-read memory (block RAM on iCE40: 2 SB_RAM40_4K for 18-bit

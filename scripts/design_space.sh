@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The design-space sweep (issue 6), one command: accuracy of every configuration of a grid
+# The design-space sweep, one command: accuracy of every configuration of a grid
 # (anglecore sweep), its area and clock rate (scripts/design_space_hw.py: Yosys + nextpnr-ice40),
 # then the table and the Pareto plots (scripts/design_space_report.py).
 #

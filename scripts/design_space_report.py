@@ -17,7 +17,7 @@ import os
 import re
 import sys
 
-TARGETS = [(64, 0.10, 0.35), (104, 0.01, 0.07)]  # words, RMS, max (issue 6, noise-free paper scenario)
+TARGETS = [(64, 0.10, 0.35), (104, 0.01, 0.07)]  # words, RMS, max (accuracy targets, noise-free paper scenario)
 MAIN = "paper-noiseless"
 
 

@@ -9,7 +9,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
-  cmake ninja-build g++ make pkg-config git
+  cmake ninja-build g++ make pkg-config git clang-format
   verilator iverilog yosys nextpnr-ice40 fpga-icestorm
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev zlib1g-dev

@@ -137,7 +137,7 @@ if top and ser:
 
 fold_rows = [(n, cells(os.path.join(rep, f"ice40_top_fold{n}.txt")), pnr(f"top_fold{n}_pnr")) for n in (2, 4, 8)]
 if any(c for _, c, _ in fold_rows):
-    print("\n## Folded top targets (issue 11)\n")
+    print("\n## Folded top targets\n")
     print("| FOLD | iCE40 LUT4 / DFF / BRAM | HX8K LCs (whole top, pin wrapper) | Fmax | samples/s | target |")
     print("|---|---|---|---|---|---|")
     for n, c, (fm, lc, why) in fold_rows:

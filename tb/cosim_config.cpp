@@ -15,12 +15,12 @@
 #include <random>
 #include <string>
 
-#include "calibration.hpp"
+#include "calibration/calibration.hpp"
 #include "cosim_stimuli.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
 #include "rtl_builds.hpp"
 #include "rtl_engine.hpp"
 

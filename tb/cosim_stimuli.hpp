@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "cordic.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
-#include "regimage.hpp"
+#include "stages/cordic.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
+#include "regmap/regimage.hpp"
 
 namespace acore::cosim {
 

@@ -13,11 +13,11 @@
 #include <random>
 #include <string>
 
-#include "calibration.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
-#include "regimage.hpp"
+#include "calibration/calibration.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
+#include "regmap/regimage.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3 && argc != 4) {

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "regimage.hpp"
+#include "regmap/regimage.hpp"
 
 namespace acore::host_port {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "datapath_config.hpp"
+#include "core/datapath_config.hpp"
 #include "rtl_pins.hpp"
 
 namespace acore {

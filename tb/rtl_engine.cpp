@@ -4,7 +4,7 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 #include "rtl_builds.hpp"
 
 namespace acore {

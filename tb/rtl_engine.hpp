@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "fixed_model.hpp"
-#include "regimage.hpp"
+#include "engine/fixed_model.hpp"
+#include "regmap/regimage.hpp"
 
 namespace acore {
 

@@ -11,7 +11,7 @@
 #include <memory>
 #include <type_traits>
 
-#include "fixed_model.hpp"
+#include "engine/fixed_model.hpp"
 
 namespace acore {
 

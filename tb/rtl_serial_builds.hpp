@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "datapath_config.hpp"
-#include "fixed_model.hpp"
-#include "regimage.hpp"
+#include "core/datapath_config.hpp"
+#include "engine/fixed_model.hpp"
+#include "regmap/regimage.hpp"
 #include "rtl_engine.hpp"
 
 namespace acore {

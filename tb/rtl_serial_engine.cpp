@@ -12,7 +12,7 @@
 
 #include ACORE_SERIAL_HDR
 #include ACORE_SERIAL_PUB_HDR
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 namespace acore {
 inline namespace ACORE_SERIAL_NS {

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "fixed_model.hpp"
-#include "regimage.hpp"
+#include "engine/fixed_model.hpp"
+#include "regmap/regimage.hpp"
 #include "rtl_engine.hpp"
 
 #ifndef ACORE_SERIAL_NS

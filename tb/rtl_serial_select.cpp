@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "errors.hpp"
+#include "core/errors.hpp"
 #include "rtl_serial_builds.hpp"
 
 namespace acore {

@@ -13,10 +13,10 @@
 #include <random>
 
 #include "Vacore_top_sc.h"
-#include "calibration.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
+#include "calibration/calibration.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 
 #include <deque>
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 namespace acore {
 

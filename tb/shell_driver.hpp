@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "fixed_model.hpp"
-#include "regimage.hpp"
+#include "engine/fixed_model.hpp"
+#include "regmap/regimage.hpp"
 #include "shell_pins.hpp"
 #include "shell_regs.hpp"
 

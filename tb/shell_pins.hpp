@@ -10,7 +10,7 @@
 #include <memory>
 #include <type_traits>
 
-#include "fixed_model.hpp"
+#include "engine/fixed_model.hpp"
 #include "rtl_pins.hpp"
 
 namespace acore {

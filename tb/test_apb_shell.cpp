@@ -20,11 +20,11 @@
 #include <map>
 #include <random>
 
-#include "calibration.hpp"
+#include "calibration/calibration.hpp"
 #include "cosim_stimuli.hpp"
-#include "errors.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
+#include "core/errors.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
 #include "shell_driver.hpp"
 
 namespace acore {

@@ -17,7 +17,7 @@
 #include <memory>
 
 #include "Vacore_cordic16.h"
-#include "cordic.hpp"
+#include "stages/cordic.hpp"
 
 namespace acore {
 namespace {

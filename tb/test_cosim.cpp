@@ -12,19 +12,19 @@
 #include <string>
 #include <vector>
 
-#include "calibration.hpp"
+#include "calibration/calibration.hpp"
 #include "cosim_expect.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
 #include "host_port_checks.hpp"
-#include "paper_signals.hpp"
+#include "support/paper_signals.hpp"
 #include "rtl_engine.hpp"
 
 namespace acore {
 namespace {
 
-// The paper scenario's calibrated, quantized coefficients (DESIGN 4).
+// The paper scenario's calibrated, quantized coefficients (docs/contracts.md, paper scenario).
 RegImage paper_image() {
   const Recording cal = test::paper_recording(4000, true);
   CalOptions opt;

@@ -13,13 +13,13 @@
 #include <cstdio>
 #include <random>
 
-#include "calibration.hpp"
+#include "calibration/calibration.hpp"
 #include "cosim_expect.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
 #include "host_port_checks.hpp"
-#include "paper_signals.hpp"
+#include "support/paper_signals.hpp"
 #include "rtl_serial_engine.hpp"
 
 namespace acore {

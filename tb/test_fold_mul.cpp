@@ -19,7 +19,7 @@
 #include "Vfold_mul_h4.h"
 #include "Vfold_mul_r2.h"
 #include "Vfold_mul_s4.h"
-#include "fixed_point.hpp"
+#include "core/fixed_point.hpp"
 
 namespace acore {
 namespace {

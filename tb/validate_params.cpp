@@ -10,8 +10,8 @@
 #include <iostream>
 #include <string>
 
-#include "datapath_config.hpp"
-#include "errors.hpp"
+#include "core/datapath_config.hpp"
+#include "core/errors.hpp"
 
 int main(int argc, char** argv) {
   if (argc > 1) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # `anglecore diagnose` and `anglecore diagnose-bench` through the CLI: exit codes (0 ok, 2 bad
-# usage/input, 1 a failed check), the DESIGN 3.3 JSON fields, and the bad input of issue 5: channel
+# usage/input, 1 a failed check), the docs/contracts.md, command line JSON fields, and bad input: channel
 # sets that differ, too few samples, less than one turn, no theta_ref; and a real recording whose
 # every channel is constant.
 # usage: cli_diagnose.sh ANGLECORE SOURCE_DIR

@@ -35,7 +35,7 @@ check estimate-fixed 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv
 check estimate-float 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine float --json "$tmp/fl.json"
 for f in engine samples error_deg uncorrected_error_deg rms max_abs mean zero_offset applied_by; do expect_text "json-$f" "$tmp/fx.json" "\"$f\""; done
 # The paper's budget, checked from the JSON. The default calibration takes the uncorrected error's
-# mean direction (-6.94 deg, DESIGN 4) as the zero offset: errors are in the reference frame, the
+# mean direction (-6.94 deg, docs/contracts.md, paper scenario) as the zero offset: errors are in the reference frame, the
 # uncorrected one without its mean (RMS sqrt(8.54^2 - 6.94^2) = 4.97). `--zero-offset 0` fits
 # against theta_ref itself, the paper's Eq. 6 as printed: 8.54 / -6.94 uncorrected, <= 0.55 corrected.
 check calibrate-as-printed 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs0.hex" --zero-offset 0

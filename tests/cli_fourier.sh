@@ -18,7 +18,7 @@ expect_text header-m "$tmp/f21.hex" "// acore: fourier_iterations=12"
 expect_text last-word "$tmp/f21.hex" "fourier b_21"
 expect_text json-fourier "$tmp/cal.json" '"fourier"'
 check estimate-k21 0 "$bin" estimate --regs "$tmp/f21.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json"
-# Issue 6 target, at most 64 words: RMS <= 0.10, max <= 0.35 deg.
+# The Fourier correction's accuracy target, at most 64 words: RMS <= 0.10, max <= 0.35 deg.
 /usr/bin/python3 - "$tmp/fx.json" "$tmp/cal.json" <<'PY' || { echo "FAIL accuracy"; fails=$((fails + 1)); }
 import json, sys
 e = json.load(open(sys.argv[1]))["error_deg"]

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# `anglecore harmonics` through the CLI: exit codes, DESIGN 3.3 JSON fields, the paper's Eq. 33
+# `anglecore harmonics` through the CLI: exit codes, docs/contracts.md, command line JSON fields, the paper's Eq. 33
 # numbers, plots, bad specs.
 # usage: cli_harmonics.sh ANGLECORE SOURCE_DIR
 set -u

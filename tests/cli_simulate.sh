@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # `anglecore simulate` through the CLI: exit codes (0 ok, 2 bad usage/input), the recording it writes
-# (DESIGN 3.1 columns and metadata), the JSON summary, --list, --config, --channels, bad configs.
+# (docs/contracts.md, recording file columns and metadata), the JSON summary, --list, --config, --channels, bad configs.
 # usage: cli_simulate.sh ANGLECORE SOURCE_DIR
 set -u
 bin=$1
@@ -13,7 +13,7 @@ expect_text help-scenario "$tmp/out" "--scenario"
 check list 0 "$bin" simulate --list
 for s in paper paper-indep paper-noiseless ideal tmr; do expect_text "list-$s" "$tmp/out" "$s"; done
 
-# The paper scenario: metadata, header, row count, summary figures (DESIGN 4).
+# The paper scenario: metadata, header, row count, summary figures (docs/contracts.md, paper scenario).
 check paper 0 "$bin" simulate --scenario paper --samples 4096 --seed 7 --out "$tmp/paper.csv" --json "$tmp/paper.json"
 expect_text meta-scenario "$tmp/paper.csv" "# scenario=paper"
 expect_text meta-seed "$tmp/paper.csv" "# seed=7"

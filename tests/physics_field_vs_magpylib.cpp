@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "physics_magnet.hpp"
+#include "physics/physics_magnet.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 4) {

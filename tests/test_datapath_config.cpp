@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "datapath_config.hpp"
-#include "errors.hpp"
+#include "core/datapath_config.hpp"
+#include "core/errors.hpp"
 
 namespace acore {
 namespace {

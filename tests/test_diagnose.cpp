@@ -13,9 +13,9 @@
 #include <functional>
 #include <random>
 
-#include "diagnose.hpp"
-#include "errors.hpp"
-#include "paper_signals.hpp"
+#include "diagnose/diagnose.hpp"
+#include "core/errors.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -400,7 +400,7 @@ TEST(Diagnose, EccentricityModulatesAngleAndMagnitude) {
   }
 }
 
-// Shaft run-out as real Hall encoders show it (issue 10): a constant angle shift, once-per-turn
+// Shaft run-out as real Hall encoders show it: a constant angle shift, once-per-turn
 // angle and magnitude modulation, and a common drop of the field, all written out here. No single
 // effect explains it; the combination must name all three parts and recover their parameters.
 TEST(Diagnose, ShaftRunOutIsNamedAsItsParts) {

@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "diagnose_bench.hpp"
+#include "diagnose/diagnose_bench.hpp"
 
 namespace acore {
 namespace {

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: MIT
-// The estimator chain against closed forms and the paper's figures (DESIGN section 4).
+// The estimator chain against closed forms and the paper's figures (docs/contracts.md, paper scenario).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "calibration.hpp"
-#include "error_stats.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "noise_floor.hpp"
-#include "paper_signals.hpp"
-#include "region_select.hpp"
+#include "calibration/calibration.hpp"
+#include "core/error_stats.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "diagnose/noise_floor.hpp"
+#include "support/paper_signals.hpp"
+#include "stages/region_select.hpp"
 
 namespace acore {
 namespace {
@@ -35,7 +35,7 @@ TEST(Calibration, PaperScenarioReproducesAndBeatsTable3) {
   const FloatCoefficients fc = calibrate(cal, as_printed);
   const AngleSeries fl = run_float(cal, fc);
   const ErrorStats unc = error_stats(angle_error_deg(fl.uncorrected, cal.theta_ref));
-  // Our reading of the paper (DESIGN 4): 8.54 / 18.9 / -6.94 uncorrected.
+  // Our reading of the paper (docs/contracts.md, paper scenario): 8.54 / 18.9 / -6.94 uncorrected.
   EXPECT_NEAR(unc.rms, 8.54, 0.02);
   EXPECT_NEAR(unc.max_abs, 18.91, 0.05);
   EXPECT_NEAR(unc.mean, -6.94, 0.02);
@@ -58,7 +58,7 @@ TEST(Calibration, PaperScenarioReproducesAndBeatsTable3) {
 }
 
 // The default calibration takes the uncorrected error's mean direction as the zero offset (README
-// "Zero offset"): on the paper scenario that is the -6.94 deg mean of DESIGN 4, so the uncorrected
+// "Zero offset"): on the paper scenario that is the -6.94 deg mean of docs/contracts.md, paper scenario, so the uncorrected
 // error in the reference frame has mean 0 and RMS sqrt(8.54^2 - 6.94^2) = 4.97 deg; the 1-D cubic
 // fitted against the aligned reference pays 0.04 deg RMS for it (0.557 against 0.520).
 TEST(Calibration, DefaultTakesTheMeanDirectionAsZeroOffset) {

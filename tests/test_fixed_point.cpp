@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "cordic.hpp"
-#include "fixed_point.hpp"
-#include "poly_correct.hpp"
-#include "scaler.hpp"
+#include "stages/cordic.hpp"
+#include "core/fixed_point.hpp"
+#include "stages/poly_correct.hpp"
+#include "stages/scaler.hpp"
 
 namespace acore {
 namespace {

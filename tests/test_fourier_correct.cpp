@@ -7,13 +7,13 @@
 #include <cmath>
 #include <random>
 
-#include "calibration.hpp"
-#include "cordic.hpp"
-#include "cordic_rotate.hpp"
-#include "error_stats.hpp"
-#include "estimator.hpp"
-#include "fourier_correct.hpp"
-#include "paper_signals.hpp"
+#include "calibration/calibration.hpp"
+#include "stages/cordic.hpp"
+#include "stages/cordic_rotate.hpp"
+#include "core/error_stats.hpp"
+#include "engine/estimator.hpp"
+#include "stages/fourier_correct.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -199,7 +199,7 @@ TEST(FourierCalibration, RecoversAKnownDistortionExactly) {
 }
 
 TEST(FourierCalibration, PaperNoiselessTargetWithoutPolynomial) {
-  // Issue 6 target, at most 64 words: RMS <= 0.10 deg, max <= 0.35 deg on a validation recording
+  // The Fourier correction's accuracy target, at most 64 words: RMS <= 0.10 deg, max <= 0.35 deg on a validation recording
   // whose angles the calibration never saw. 21 harmonics and no polynomial: 4 + 16 + 43 = 63 words.
   CalOptions o;
   o.correction = kNone;

@@ -8,11 +8,11 @@
 #include <random>
 #include <string>
 
-#include "errors.hpp"
-#include "harmonic_attribution.hpp"
-#include "harmonic_mismatch.hpp"
-#include "harmonic_spectrum.hpp"
-#include "harmonics.hpp"
+#include "core/errors.hpp"
+#include "harmonics/harmonic_attribution.hpp"
+#include "harmonics/harmonic_mismatch.hpp"
+#include "harmonics/harmonic_spectrum.hpp"
+#include "harmonics/harmonics.hpp"
 
 namespace acore {
 namespace {

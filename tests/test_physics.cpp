@@ -7,7 +7,7 @@
 #include <cmath>
 #include <complex>
 
-#include "physics_rig.hpp"
+#include "physics/physics_rig.hpp"
 
 namespace acore {
 namespace {

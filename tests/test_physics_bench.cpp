@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The physics benchmark (model/physics_bench.hpp): its draws perturb exactly what each scenario
 // says, within the documented ranges, blind; and a fixed-seed run of the diagnosis over every
-// scenario meets issue 10's targets (README "Physics benchmark" lists what fails and why). The
+// scenario meets the physics benchmark's targets (README "Physics benchmark" lists what fails and why). The
 // truth is decided by the physics (and tested in test_physics.cpp), never by what the diagnosis
 // computes.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics_bench.hpp"
+#include "diagnose/physics_bench.hpp"
 
 namespace acore {
 namespace {
@@ -96,7 +96,7 @@ TEST(PhysicsBench, DrawsPerturbOnlyTheirScenarioWithinRange) {
 }
 
 TEST(PhysicsBench, FixedSeedSmallRunMeetsTheIssueTargets) {
-  // Every scenario once (seed 7, 6000 samples; about 9 s of CPU). Issue 10's targets: top-1 >= 90 %
+  // Every scenario once (seed 7, 6000 samples; about 9 s of CPU). The targets: top-1 >= 90 %
   // with median holdout shrink >= 70 %; a constant angle shift (run-out of a magnet over a sensor
   // whose shift carries the error, a reference encoder's zero) named zero_offset; channels sampled
   // in a random slot order or through mismatched RC filters named channel_skew. Measured on this

@@ -9,15 +9,16 @@
 #include <cmath>
 #include <random>
 
-#include "calibration.hpp"
-#include "cordic.hpp"
-#include "error_stats.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "poly2d_correct.hpp"
-#include "poly_correct.hpp"
-#include "simulator.hpp"
+#include "calibration/calibration.hpp"
+#include "stages/cordic.hpp"
+#include "core/error_stats.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "engine/float_model.hpp"
+#include "stages/poly2d_correct.hpp"
+#include "stages/poly_correct.hpp"
+#include "sim/simulator.hpp"
 
 namespace acore {
 namespace {

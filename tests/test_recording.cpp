@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Recording file I/O (DESIGN 3.1): round trip, column order, CRLF, unknown columns, and every error
+// Recording file I/O (docs/contracts.md, recording file): round trip, column order, CRLF, unknown columns, and every error
 // with the FILE:LINE: column 'NAME' it must name.
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <random>
 #include <string>
 
-#include "errors.hpp"
-#include "recording.hpp"
+#include "core/errors.hpp"
+#include "core/recording.hpp"
 
 namespace acore {
 namespace {

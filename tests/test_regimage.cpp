@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Register image: the DESIGN 3.2 map, round trip through the $readmemh text, and bad input.
+// Register image: the docs/contracts.md, register image map, round trip through the $readmemh text, and bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,12 +7,12 @@
 #include <cstring>
 #include <random>
 
-#include "calibration.hpp"
-#include "cordic.hpp"
-#include "errors.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
-#include "regimage.hpp"
+#include "calibration/calibration.hpp"
+#include "stages/cordic.hpp"
+#include "core/errors.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
+#include "regmap/regimage.hpp"
 
 namespace acore {
 namespace {

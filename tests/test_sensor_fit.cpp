@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The static sensor model: recovers the paper's Fourier coefficients (DESIGN 4) and noise level.
+// The static sensor model: recovers the paper's Fourier coefficients (docs/contracts.md, paper scenario) and noise level.
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "errors.hpp"
-#include "paper_signals.hpp"
-#include "sensor_fit.hpp"
+#include "core/errors.hpp"
+#include "support/paper_signals.hpp"
+#include "diagnose/sensor_fit.hpp"
 
 namespace acore {
 namespace {

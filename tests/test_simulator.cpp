@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The sensor simulator and its effect library: the paper's figures (DESIGN 4), the Fourier content of
+// The sensor simulator and its effect library: the paper's figures (docs/contracts.md, paper scenario), the Fourier content of
 // the channels against the configured AF/BF, the noise model, every effect against its closed form,
 // trajectories, two-channel sensors, and the scenario JSON round trip and errors.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "errors.hpp"
-#include "paper_signals.hpp"
-#include "simulator.hpp"
+#include "core/errors.hpp"
+#include "support/paper_signals.hpp"
+#include "sim/simulator.hpp"
 
 namespace acore {
 namespace {
@@ -113,7 +113,7 @@ TEST(Simulator, FourierContentMatchesConfiguredCoefficients) {
       double want_a = k == 0 ? m.offset : (k <= static_cast<int>(m.af.size()) ? m.af[k - 1] : 0.0);
       double want_b = k >= 1 && k <= static_cast<int>(m.bf.size()) ? m.bf[k - 1] : 0.0;
       if (k == 1) {
-        // c1 = A sin, c2 = A cos, c3 = -A sin, c4 = -A cos (DESIGN's Eq. 2 fix).
+        // c1 = A sin, c2 = A cos, c3 = -A sin, c4 = -A cos (Eq. 2 with the c4 sign fixed).
         const double sign = c < 2 ? 1.0 : -1.0;
         (c % 2 == 0 ? want_b : want_a) += sign * m.amplitude;
       }

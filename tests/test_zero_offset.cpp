@@ -11,13 +11,13 @@
 #include <cstdio>
 #include <string>
 
-#include "calibration.hpp"
-#include "error_stats.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "float_model.hpp"
-#include "paper_signals.hpp"
-#include "simulator.hpp"
+#include "calibration/calibration.hpp"
+#include "core/error_stats.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "engine/float_model.hpp"
+#include "support/paper_signals.hpp"
+#include "sim/simulator.hpp"
 
 namespace acore {
 namespace {
@@ -96,7 +96,7 @@ TEST(ZeroOffset, ShiftingTheReferenceMovesOnlyTheZeroOffset) {
   }
 }
 
-// Issue 10: calibrating with a reference zero 160 deg away keeps the corrected RMS within 1.1x of
+// A reference zero far from the sensor's: calibrating with a reference zero 160 deg away keeps the corrected RMS within 1.1x of
 // the aligned calibration, on the calibration setup and after a common amplitude change of +-30 %,
 // with the offset in the header (subtracted in software) and in the ZERO word. The fit as it was
 // (against theta_ref itself, the polynomials absorbing the offset) fails the same comparison by
@@ -216,7 +216,7 @@ TEST(ZeroOffset, AResidualMinimizingOffsetOverfits) {
   EXPECT_GT(fit7, 3 * cm7);
 }
 
-// Issue 10 item 2: after a common amplitude change of +-30 % the static scaling leaves the 1-D
+// Amplitude robustness: after a common amplitude change of +-30 % the static scaling leaves the 1-D
 // polynomial's correction mis-sized (it subtracts P(g x) where g P(x) is needed), while the
 // angle-domain Fourier correction without polynomial sees only atan2 of uniformly scaled curves
 // and stays at the calibration point's error (bit-accurate chain, K harmonics per recording).

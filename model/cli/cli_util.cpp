@@ -4,7 +4,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 namespace acore::cli {
 

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "error_stats.hpp"
-#include "recording.hpp"
+#include "core/error_stats.hpp"
+#include "core/recording.hpp"
 
 namespace acore::cli {
 

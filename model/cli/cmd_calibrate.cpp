@@ -6,11 +6,11 @@
 #include <iostream>
 #include <memory>
 
-#include "calibration.hpp"
+#include "calibration/calibration.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
 
 namespace acore::cli {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `anglecore cosim`: the Verilated RTL against the bit-accurate model, sample by sample
-// (DESIGN 3.3).
+// (docs/contracts.md, command line).
 // --engine rtl (default) runs the pipelined top, rtl-serial the serial core. Built only with the
 // RTL (ACORE_WITH_RTL); exit 1 on any mismatch.
 #ifdef ACORE_WITH_RTL
@@ -11,9 +11,9 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
 #include "rtl_engine.hpp"
 #include "rtl_serial_builds.hpp"
 

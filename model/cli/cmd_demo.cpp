@@ -12,15 +12,15 @@
 #include <memory>
 #include <sstream>
 
-#include "calibration.hpp"
-#include "design_space.hpp"
+#include "calibration/calibration.hpp"
+#include "sweep/design_space.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
-#include "float_model.hpp"
-#include "noise_floor.hpp"
-#include "simulator.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
+#include "engine/float_model.hpp"
+#include "diagnose/noise_floor.hpp"
+#include "sim/simulator.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
 #include "rtl_serial_builds.hpp"
@@ -82,7 +82,7 @@ void run_demo(const DemoArgs& a) {
   fs::create_directories(a.out);
   std::ostringstream md;
   nlohmann::json js;
-  std::cout << fmt::format("AngleCore demo: paper scenario (DESIGN 4), {} samples per recording, "
+  std::cout << fmt::format("AngleCore demo: paper scenario (docs/contracts.md, paper scenario), {} samples per recording, "
                            "calibration seed {}, validation seed {}\n\n", a.samples, a.seed_cal, a.seed_val);
 
   // 1. The paper's point: cubic, 4 regions, 16 CORDIC iterations, 52 words.
@@ -140,7 +140,7 @@ void run_demo(const DemoArgs& a) {
       run.img.zero_offset * 180 / M_PI);
 
   md << "# AngleCore demo report\n\n";
-  md << fmt::format("Paper scenario (DESIGN section 4), {} samples per recording; calibration seed {}, "
+  md << fmt::format("Paper scenario (docs/contracts.md, paper scenario), {} samples per recording; calibration seed {}, "
                     "validation seed {}. Command: `anglecore demo --samples {}`.\n\n",
                     a.samples, a.seed_cal, a.seed_val, a.samples);
   md << "## Table 3, reproduced and beaten (validation recording)\n\n";
@@ -229,7 +229,7 @@ void run_demo(const DemoArgs& a) {
     std::cout << "\n";
     md << "\n";
 
-    // The other correction modes at their best points (issue 6 targets: <= 64 words RMS <= 0.10,
+    // The other correction modes at their best points (accuracy targets: <= 64 words RMS <= 0.10,
     // max <= 0.35; <= 104 words RMS <= 0.01, max <= 0.07). Same path as `anglecore sweep`.
     const std::vector<std::pair<std::string, std::string>> modes = {
         {"Fourier K=21 after the CORDIC, no polynomial", "CORRECTION=2 FOURIER_K=21"},

@@ -10,8 +10,8 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "diagnose.hpp"
-#include "errors.hpp"
+#include "diagnose/diagnose.hpp"
+#include "core/errors.hpp"
 
 namespace acore::cli {
 

@@ -9,11 +9,11 @@
 #include <iostream>
 #include <memory>
 
-#include "calibration.hpp"
+#include "calibration/calibration.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
-#include "estimator.hpp"
+#include "core/errors.hpp"
+#include "engine/estimator.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
 #include "rtl_serial_builds.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `anglecore harmonics`: Kuntz's predicted vs exact angle-error harmonics of a signal spec
-// (model/harmonics.hpp, DESIGN 3.3), with an optional plot folder (scripts/plot_harmonics.py).
+// (model/harmonics.hpp, docs/contracts.md, command line), with an optional plot folder (scripts/plot_harmonics.py).
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -11,9 +11,9 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
-#include "harmonic_attribution.hpp"
-#include "harmonics.hpp"
+#include "core/errors.hpp"
+#include "harmonics/harmonic_attribution.hpp"
+#include "harmonics/harmonics.hpp"
 
 namespace acore::cli {
 

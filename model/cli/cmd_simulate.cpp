@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `anglecore simulate`: a sensor recording from a built-in scenario or a scenario JSON file
-// (model/simulator.hpp, DESIGN 3.3), with a summary of the uncorrected angle error.
+// (model/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected angle error.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -10,9 +10,9 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "error_stats.hpp"
-#include "errors.hpp"
-#include "simulator.hpp"
+#include "core/error_stats.hpp"
+#include "core/errors.hpp"
+#include "sim/simulator.hpp"
 
 namespace acore::cli {
 
@@ -106,7 +106,7 @@ void run_simulate(const SimulateArgs& a) {
 
 void add_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
-  CLI::App* c = app.add_subcommand("simulate", "Simulate a sensor recording (DESIGN 3.1 CSV) from a scenario");
+  CLI::App* c = app.add_subcommand("simulate", "Simulate a sensor recording (docs/contracts.md, recording file CSV) from a scenario");
   auto* sc = c->add_option("--scenario", args->scenario, "Built-in scenario (see --list)");
   auto* cf = c->add_option("--config", args->config, "Scenario JSON file (model/simulator.hpp documents the fields)");
   sc->excludes(cf);

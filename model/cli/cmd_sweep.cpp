@@ -15,8 +15,8 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "design_space.hpp"
-#include "errors.hpp"
+#include "sweep/design_space.hpp"
+#include "core/errors.hpp"
 
 namespace acore::cli {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-// anglecore: the command-line front end (DESIGN 3.3). Exit 0 ok, 2 bad usage/input, 1 failed check.
+// anglecore: the command-line front end (docs/contracts.md, command line). Exit 0 ok, 2 bad usage/input, 1 failed check.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"AngleCore: angle-sensor calibration, estimation, co-simulation and diagnosis"};

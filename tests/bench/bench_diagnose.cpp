@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The gap diagnosis of a 50,000-sample recording with a 50,000-sample holdout (issue 5: < 10 s on
+// The gap diagnosis of a 50,000-sample recording with a 50,000-sample holdout (target: < 10 s on
 // one core), on recordings of the blind self-benchmark (model/diagnose_bench.hpp):
 //   build/tests/bench/bench_diagnose
 // BM_Diagnose/<case>: one effect the diagnosis names (a single fit), one outside the vocabulary
@@ -9,9 +9,9 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include "diagnose.hpp"
-#include "diagnose_bench.hpp"
-#include "simulator.hpp"
+#include "diagnose/diagnose.hpp"
+#include "diagnose/diagnose_bench.hpp"
+#include "sim/simulator.hpp"
 
 namespace {
 

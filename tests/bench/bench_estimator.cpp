@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "calibration.hpp"
-#include "estimator.hpp"
-#include "fixed_model.hpp"
-#include "paper_signals.hpp"
+#include "calibration/calibration.hpp"
+#include "engine/estimator.hpp"
+#include "engine/fixed_model.hpp"
+#include "support/paper_signals.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include "physics_bench.hpp"
+#include "diagnose/physics_bench.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target for parse_recording (DESIGN 3.1): any input either parses into a consistent
+// libFuzzer target for parse_recording (docs/contracts.md, recording file): any input either parses into a consistent
 // recording that survives a write/read round trip, or throws InputError; nothing else may happen
 // (no crash, no other exception, no sanitizer report).
 //   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -Imodel tests/fuzz/fuzz_recording.cpp \
@@ -12,8 +12,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "errors.hpp"
-#include "recording.hpp"
+#include "core/errors.hpp"
+#include "core/recording.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Fuzz target for parse_regimage (DESIGN 3.2, the `// acore: key=value` header of every correction
+// Fuzz target for parse_regimage (docs/contracts.md, register image, the `// acore: key=value` header of every correction
 // mode): any input either parses into an image that round-trips exactly through format_regimage and
 // runs through the bit-accurate model without a crash, or throws InputError; nothing else may
 // happen (no crash, no other exception, no sanitizer report).
@@ -14,9 +14,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "errors.hpp"
-#include "fixed_model.hpp"
-#include "regimage.hpp"
+#include "core/errors.hpp"
+#include "engine/fixed_model.hpp"
+#include "regmap/regimage.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
@@ -46,8 +46,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 #include <random>
 #include <vector>
 
-#include "calibration.hpp"
-#include "simulator.hpp"
+#include "calibration/calibration.hpp"
+#include "sim/simulator.hpp"
 
 int main(int argc, char** argv) {
   double seconds = 30;

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#include "core/error_stats.hpp"
+
+#include <cmath>
+
+namespace acore {
+
+double wrap_deg(double deg) {
+  double w = std::fmod(deg, 360.0);
+  if (w <= -180.0) w += 360.0;
+  if (w > 180.0) w -= 360.0;
+  return w;
+}
+
+std::vector<double> angle_error_deg(const std::vector<double>& est, const std::vector<double>& ref,
+                                    int periodicity) {
+  std::vector<double> e(est.size());
+  for (size_t i = 0; i < est.size(); ++i) e[i] = wrap_deg((est[i] - periodicity * ref[i]) * 180.0 / M_PI);
+  return e;
+}
+
+ErrorStats error_stats(const std::vector<double>& e) {
+  ErrorStats s;
+  if (e.empty()) return s;
+  double sum = 0, sq = 0;
+  for (double v : e) {
+    sum += v;
+    sq += v * v;
+    s.max_abs = std::max(s.max_abs, std::fabs(v));
+  }
+  s.mean = sum / e.size();
+  s.rms = std::sqrt(sq / e.size());
+  return s;
+}
+
+}  // namespace acore

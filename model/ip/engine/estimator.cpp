@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include "engine/estimator.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "engine/float_model.hpp"
+
+namespace acore {
+
+Engine parse_engine(const std::string& name) {
+  if (name == "float") return Engine::Float;
+  if (name == "fixed") return Engine::Fixed;
+  if (name == "rtl") return Engine::Rtl;
+  if (name == "rtl-serial") return Engine::RtlSerial;
+  throw InputError("--engine: '" + name + "' is not one of float, fixed, rtl, rtl-serial");
+}
+
+const char* engine_name(Engine e) {
+  switch (e) {
+    case Engine::Float: return "float";
+    case Engine::Fixed: return "fixed";
+    case Engine::Rtl: return "rtl";
+    case Engine::RtlSerial: return "rtl-serial";
+  }
+  return "?";
+}
+
+std::vector<ChannelCodes> to_codes(const Recording& rec, double in_scale, int in_w) {
+  std::vector<ChannelCodes> codes(rec.size());
+  for (size_t i = 0; i < rec.size(); ++i)
+    for (int c = 0; c < 4; ++c)
+      codes[i][c] = c < rec.channels ? static_cast<int32_t>(FixedModel::to_code(rec.ch[c][i], in_scale, in_w)) : 0;
+  return codes;
+}
+
+namespace {
+// a - offset in [0, 2 pi); a itself when there is no offset (so such angles stay bit for bit).
+double minus_offset(double a, double offset) {
+  if (offset == 0.0) return a;
+  const double r = std::fmod(a - offset, 2 * M_PI);
+  return r < 0 ? r + 2 * M_PI : r;
+}
+}  // namespace
+
+AngleSeries run_float(const Recording& rec, const FloatCoefficients& fc) {
+  AngleSeries out;
+  const size_t n = rec.size();
+  out.angle.resize(n);
+  out.uncorrected.resize(n);
+  out.region.resize(n);
+  out.flags.assign(n, 0);
+  out.zero_offset = fc.zero_offset;
+  out.zero_word = fc.zero_word != 0;
+  const double sw = fc.software_zero_offset();
+  for (size_t i = 0; i < n; ++i) {
+    const FloatSample s = float_estimate(rec.d13(i), rec.d24(i), fc);
+    out.angle[i] = minus_offset(s.angle, sw);
+    out.uncorrected[i] = minus_offset(s.uncorrected, sw);
+    out.region[i] = s.region;
+  }
+  return out;
+}
+
+AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const RegImage& img) {
+  const DatapathConfig& cfg = img.cfg;
+  AngleSeries out;
+  out.zero_offset = img.applied_zero_offset();
+  out.zero_word = cfg.zero_word != 0;
+  const double sw = img.software_zero_offset();
+  const double to_rad = 2 * M_PI / std::ldexp(1.0, cfg.angle_w);
+  for (const FixedSample& r : rows) {
+    out.angle.push_back(minus_offset(r.angle * to_rad, sw));
+    out.uncorrected.push_back(minus_offset(r.uncorrected_angle * to_rad, sw));
+    out.region.push_back(r.region);
+    out.flags.push_back((r.ovf ? 1u : 0u) | (r.los ? 2u : 0u) | (r.dos ? 4u : 0u));
+  }
+  return out;
+}
+
+AngleSeries run_fixed(const Recording& rec, const RegImage& img) {
+  const FixedModel model(img);
+  std::vector<FixedSample> rows;
+  rows.reserve(rec.size());
+  for (const ChannelCodes& c : to_codes(rec, img.in_scale, img.cfg.in_w)) rows.push_back(model.step(c));
+  return series_from_fixed(rows, img);
+}
+
+}  // namespace acore

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+// FixedModel::run_batch: the bit-accurate chain, stage by stage over chunks of samples, in int32
+// structure-of-arrays loops. Each loop is the stage's model (scaler.cpp, poly_correct.cpp,
+// cordic.cpp) written across samples instead of within one, so that GCC vectorizes it (AVX2 where
+// the CPU has it, picked at run time by target_clones). Used where speed matters: co-sim, the
+// benchmark, long sweeps.
+#include <algorithm>
+#include <cstdint>
+
+#include "engine/fixed_model.hpp"
+#include "core/fixed_point.hpp"
+#include "stages/fourier_correct.hpp"
+#include "stages/region_select.hpp"
+
+namespace acore {
+
+namespace {
+
+constexpr int kChunk = 512;
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define ACORE_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define ACORE_VECTOR_CLONES
+#endif
+
+// Scaler over a chunk: s = sat(round_shr(sum_j R_j * shr(d - O, R_SHIFT - G - j), G), S_W).
+ACORE_VECTOR_CLONES
+void scale_chunk(const int32_t* d, int n, int32_t offset, uint32_t recip, int reg_w, int rshift,
+                 int guard, int s_w, int32_t* s, uint8_t* ovf) {
+  int32_t t[kChunk], acc[kChunk];
+  for (int i = 0; i < n; ++i) {
+    t[i] = d[i] - offset;
+    acc[i] = 0;
+  }
+  for (int j = 0; j < reg_w; ++j) {
+    if (!((recip >> j) & 1u)) continue;
+    const int sh = rshift - guard - j;
+    if (sh >= 0)
+      for (int i = 0; i < n; ++i) acc[i] += t[i] >> sh;
+    else
+      for (int i = 0; i < n; ++i) acc[i] += t[i] * (1 << -sh);
+  }
+  const int32_t hi = (1 << (s_w - 1)) - 1, lo = -(1 << (s_w - 1));
+  const int32_t half = guard > 0 ? 1 << (guard - 1) : 0;
+  for (int i = 0; i < n; ++i) {
+    const int32_t v = (acc[i] + half) >> guard;
+    ovf[i] |= static_cast<uint8_t>((v > hi) | (v < lo));
+    s[i] = std::clamp(v, lo, hi);
+  }
+}
+
+// Horner on the adder/shifter multiplier, both curves at once: they share x, so each bit mask of
+// x is loaded once for the two products.
+ACORE_VECTOR_CLONES
+void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* mask, const int32_t* c13,
+                const int32_t* c24, int n, int degree, int s_w, int s_f, int acc_guard, int acc_w, int out_shift,
+                int32_t* y13, int32_t* y24, uint8_t* ovf) {
+  int32_t a13[kChunk], a24[kChunk], p13[kChunk], p24[kChunk];
+  const int32_t ahi = (1 << (acc_w - 1)) - 1, alo = -(1 << (acc_w - 1));
+  for (int i = 0; i < n; ++i) {
+    a13[i] = c13[degree * kChunk + i] * (1 << acc_guard);
+    a24[i] = c24[degree * kChunk + i] * (1 << acc_guard);
+  }
+  for (int j = degree - 1; j >= 0; --j) {
+    for (int i = 0; i < n; ++i) p13[i] = p24[i] = 0;
+    for (int b = 0; b < s_w; ++b) {
+      const int sh = s_f - b;
+      const int32_t* m = mask[b];
+      const int32_t sign = b == s_w - 1 ? -1 : 1;  // the top bit of x weighs -2^(S_W-1)
+      if (sh >= 0) {
+        for (int i = 0; i < n; ++i) {
+          p13[i] += sign * ((a13[i] >> sh) & m[i]);
+          p24[i] += sign * ((a24[i] >> sh) & m[i]);
+        }
+      } else {
+        for (int i = 0; i < n; ++i) {
+          p13[i] += sign * ((a13[i] * (1 << -sh)) & m[i]);
+          p24[i] += sign * ((a24[i] * (1 << -sh)) & m[i]);
+        }
+      }
+    }
+    const int32_t* k13 = c13 + j * kChunk;
+    const int32_t* k24 = c24 + j * kChunk;
+    for (int i = 0; i < n; ++i) {
+      const int32_t v13 = p13[i] + k13[i] * (1 << acc_guard), v24 = p24[i] + k24[i] * (1 << acc_guard);
+      ovf[i] |= static_cast<uint8_t>((v13 > ahi) | (v13 < alo) | (v24 > ahi) | (v24 < alo));
+      a13[i] = std::clamp(v13, alo, ahi);
+      a24[i] = std::clamp(v24, alo, ahi);
+    }
+  }
+  const int32_t hi = (1 << (s_w - 1)) - 1, lo = -(1 << (s_w - 1));
+  const int32_t half = out_shift > 0 ? 1 << (out_shift - 1) : 0;
+  for (int i = 0; i < n; ++i) {
+    const int32_t v13 = s13[i] - ((a13[i] + half) >> out_shift), v24 = s24[i] - ((a24[i] + half) >> out_shift);
+    ovf[i] |= static_cast<uint8_t>((v13 > hi) | (v13 < lo) | (v24 > hi) | (v24 < lo));
+    y13[i] = std::clamp(v13, lo, hi);
+    y24[i] = std::clamp(v24, lo, hi);
+  }
+}
+
+// CORDIC vectoring with quadrant pre-rotation (cordic.cpp), Z kept modulo 2^Z_W.
+ACORE_VECTOR_CLONES
+void cordic_chunk(const int32_t* xin, const int32_t* yin, int n, const int32_t* atan, int iterations,
+                  int guard, int z_w, int angle_w, uint32_t* angle, int32_t* mag) {
+  int32_t X[kChunk], Y[kChunk];
+  uint32_t Z[kChunk];
+  const uint32_t half_turn = 1u << (z_w - 1), zmask = (z_w >= 32) ? ~0u : ((1u << z_w) - 1);
+  for (int i = 0; i < n; ++i) {
+    const int32_t x = xin[i] * (1 << guard), y = yin[i] * (1 << guard);
+    const bool neg = x < 0;
+    X[i] = neg ? -x : x;
+    Y[i] = neg ? -y : y;
+    Z[i] = neg ? half_turn : 0u;
+  }
+  for (int k = 0; k < iterations; ++k) {
+    const uint32_t a = static_cast<uint32_t>(atan[k]);
+    for (int i = 0; i < n; ++i) {
+      const int32_t xs = X[i] >> k, ys = Y[i] >> k;
+      const int32_t d = Y[i] >> 31;  // 0 when Y >= 0, -1 when Y < 0
+      X[i] += (ys ^ d) - d;          // +ys or -ys
+      Y[i] -= (xs ^ d) - d;
+      Z[i] += (a ^ static_cast<uint32_t>(d)) - static_cast<uint32_t>(d);
+    }
+  }
+  const int drop = z_w - angle_w;
+  const uint32_t amask = (1u << angle_w) - 1, rnd = drop > 0 ? 1u << (drop - 1) : 0u;
+  for (int i = 0; i < n; ++i) {
+    angle[i] = (((Z[i] & zmask) + rnd) >> drop) & amask;
+    mag[i] = X[i] >> guard;
+  }
+}
+
+// Domain selection (region_select.hpp) across samples.
+ACORE_VECTOR_CLONES
+void region_chunk(const int32_t* s13, const int32_t* s24, int n, int regions, int32_t* region, int32_t* x) {
+  for (int i = 0; i < n; ++i) {
+    const int32_t a13 = s13[i] < 0 ? -s13[i] : s13[i], a24 = s24[i] < 0 ? -s24[i] : s24[i];
+    const bool sine = a13 <= a24;
+    const int32_t r4 = sine ? (s24[i] >= 0 ? 0 : 2) : (s13[i] >= 0 ? 1 : 3);
+    const int32_t xv = sine ? s13[i] : s24[i];
+    x[i] = xv;
+    region[i] = regions == 8 ? 2 * r4 + (xv >= 0 ? 1 : 0) : r4;
+  }
+}
+
+// Each sample's polynomial coefficients, one array per power. Regions are few, so a select per
+// region beats a gather.
+ACORE_VECTOR_CLONES
+void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions, int terms, int32_t* c13,
+                  int32_t* c24) {
+  for (int j = 0; j < terms; ++j) {
+    int32_t* o13 = c13 + j * kChunk;
+    int32_t* o24 = c24 + j * kChunk;
+    for (int i = 0; i < n; ++i) o13[i] = o24[i] = 0;
+    for (int r = 0; r < regions; ++r) {
+      const int32_t a = coef[r * 2 * terms + j], b = coef[r * 2 * terms + terms + j];
+      for (int i = 0; i < n; ++i) {
+        o13[i] = region[i] == r ? a : o13[i];
+        o24[i] = region[i] == r ? b : o24[i];
+      }
+    }
+  }
+}
+
+// Input codes to the pre-filter's differences (prefilter.hpp), and x's bits as all-ones masks
+// for the shift-add multiplier.
+ACORE_VECTOR_CLONES
+void prefilter_chunk(const ChannelCodes* in, int n, int32_t* d13, int32_t* d24, uint8_t* ovf) {
+  for (int i = 0; i < n; ++i) {
+    d13[i] = in[i][0] - in[i][2];
+    d24[i] = in[i][1] - in[i][3];
+    ovf[i] = 0;
+  }
+}
+
+ACORE_VECTOR_CLONES
+void mask_chunk(const int32_t* x, int n, int s_w, int32_t* mask) {
+  for (int b = 0; b < s_w; ++b)
+    for (int i = 0; i < n; ++i) mask[b * kChunk + i] = -((x[i] >> b) & 1);
+}
+
+ACORE_VECTOR_CLONES
+void output_chunk(const uint32_t* angle, const int32_t* mag, const int32_t* region, const uint8_t* ovf, int n,
+                  int64_t mag_lo, int64_t mag_hi, FixedOutput* out) {
+  for (int i = 0; i < n; ++i) {
+    const bool los = mag[i] < mag_lo, dos = mag[i] > mag_hi;
+    out[i] = {angle[i], static_cast<uint8_t>(region[i]),
+              static_cast<uint8_t>((ovf[i] ? 1 : 0) | (los ? 2 : 0) | (dos ? 4 : 0))};
+  }
+}
+
+// The ZERO word's adder after everything else: angle - zero modulo a turn.
+ACORE_VECTOR_CLONES
+void zero_chunk(FixedOutput* out, size_t n, uint32_t zero, int angle_w) {
+  const uint32_t mask = (uint32_t{1} << angle_w) - 1;
+  for (size_t i = 0; i < n; ++i) out[i].angle = (out[i].angle - zero) & mask;
+}
+
+}  // namespace
+
+bool FixedModel::batch_fits_int32() const {
+  const DatapathConfig& c = img_.cfg;
+  return c.t_w() + c.reg_w - (c.r_shift - c.scale_guard) + 1 <= 31 &&
+         c.acc_w() + c.s_w - c.s_f + 2 <= 31 && c.xy_w() + 1 <= 31 && c.z_w <= 31;
+}
+
+void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const {
+  // The vectorized loops cover the paper's correction (1-D, raw x) and none; the others run step().
+  if (!batch_fits_int32() || img_.cfg.correction == kPoly2d || img_.cfg.xcenter) {
+    for (size_t i = 0; i < n; ++i) out[i] = to_output(step(in[i]));
+    return;
+  }
+  const DatapathConfig& cfg = img_.cfg;
+  const int terms = cfg.degree + 1;
+  int32_t d13[kChunk], d24[kChunk], s13[kChunk], s24[kChunk], x[kChunk], y13[kChunk], y24[kChunk], mag[kChunk];
+  uint32_t angle[kChunk];
+  uint8_t ovf[kChunk];
+  int32_t region[kChunk];
+  std::vector<int32_t> mask_store(static_cast<size_t>(cfg.s_w) * kChunk);
+  std::vector<int32_t> coef13(static_cast<size_t>(terms) * kChunk), coef24(coef13.size());
+  std::vector<const int32_t*> mask(cfg.s_w);
+  for (int b = 0; b < cfg.s_w; ++b) mask[b] = &mask_store[static_cast<size_t>(b) * kChunk];
+  std::vector<int32_t> atan32(atan_.begin(), atan_.end()), coef32(coef_.begin(), coef_.end());
+
+  for (size_t base = 0; base < n; base += kChunk) {
+    const int m = static_cast<int>(std::min<size_t>(kChunk, n - base));
+    prefilter_chunk(in + base, m, d13, d24, ovf);
+    scale_chunk(d13, m, static_cast<int32_t>(img_.offset(0)), static_cast<uint32_t>(img_.recip(0)),
+                cfg.reg_w, cfg.r_shift, cfg.scale_guard, cfg.s_w, s13, ovf);
+    scale_chunk(d24, m, static_cast<int32_t>(img_.offset(1)), static_cast<uint32_t>(img_.recip(1)),
+                cfg.reg_w, cfg.r_shift, cfg.scale_guard, cfg.s_w, s24, ovf);
+    region_chunk(s13, s24, m, cfg.regions, region, x);
+    if (cfg.correction == kPoly) {
+      gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
+      mask_chunk(x, m, cfg.s_w, mask_store.data());
+      poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w,
+                 cfg.s_f, cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
+    } else {  // kNone: the scaled curves go straight to the CORDIC
+      std::copy(s13, s13 + m, y13);
+      std::copy(s24, s24 + m, y24);
+    }
+    cordic_chunk(y24, y13, m, atan32.data(), cfg.iterations, cfg.cordic_guard, cfg.z_w, cfg.angle_w,
+                 angle, mag);
+    output_chunk(angle, mag, region, ovf, m, window_.mag_lo, window_.mag_hi, out + base);
+  }
+  if (cfg.fourier_k > 0)
+    for (size_t i = 0; i < n; ++i) out[i].angle = fourier_correct(out[i].angle, fourier_.data(), atan_.data(), cfg);
+  if (cfg.zero_word) zero_chunk(out, n, zero_, cfg.angle_w);
+}
+
+}  // namespace acore

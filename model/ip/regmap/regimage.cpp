@@ -1,0 +1,287 @@
+// SPDX-License-Identifier: MIT
+#include "regmap/regimage.hpp"
+
+#include <fmt/format.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "core/fixed_point.hpp"
+#include "stages/fourier_correct.hpp"
+
+namespace acore {
+
+namespace {
+
+uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
+
+// Header keys and the config field each sets.
+std::map<std::string, int DatapathConfig::*> config_fields() {
+  return {{"in_w", &DatapathConfig::in_w},
+          {"reg_w", &DatapathConfig::reg_w},
+          {"s_w", &DatapathConfig::s_w},
+          {"s_f", &DatapathConfig::s_f},
+          {"r_shift", &DatapathConfig::r_shift},
+          {"scale_guard", &DatapathConfig::scale_guard},
+          {"degree", &DatapathConfig::degree},
+          {"regions", &DatapathConfig::regions},
+          {"xcenter", &DatapathConfig::xcenter},
+          {"coef_f", &DatapathConfig::coef_f},
+          {"acc_guard", &DatapathConfig::acc_guard},
+          {"acc_int", &DatapathConfig::acc_int},
+          {"iterations", &DatapathConfig::iterations},
+          {"cordic_guard", &DatapathConfig::cordic_guard},
+          {"z_w", &DatapathConfig::z_w},
+          {"angle_w", &DatapathConfig::angle_w}};
+}
+
+// Written only when 1, so images without the ZERO word keep their exact text.
+constexpr const char* kZeroWordKey = "zero_word";
+
+// The Fourier stage's keys: written only when fourier_k > 0, so images without the stage keep
+// their exact text.
+std::map<std::string, int DatapathConfig::*> fourier_fields() {
+  return {{"fourier_k", &DatapathConfig::fourier_k},
+          {"fourier_iterations", &DatapathConfig::fourier_iterations},
+          {"fourier_coef_f", &DatapathConfig::fourier_coef_f},
+          {"fourier_word_w", &DatapathConfig::fourier_word_w},
+          {"fourier_guard", &DatapathConfig::fourier_guard}};
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+}  // namespace
+
+int64_t RegImage::offset(int curve) const { return fx::sext(words.at(cfg.addr_offset(curve)), cfg.reg_w); }
+int64_t RegImage::recip(int curve) const { return static_cast<int64_t>(words.at(cfg.addr_recip(curve))); }
+int64_t RegImage::poly(int r, int c, int j) const {
+  return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
+}
+int64_t RegImage::atan(int i) const { return static_cast<int64_t>(words.at(cfg.addr_atan(i))); }
+int64_t RegImage::fourier(int j) const {
+  return fx::sext(words.at(cfg.addr_fourier(j)), j == 0 ? cfg.reg_w : cfg.fourier_word_w);
+}
+
+uint32_t RegImage::zero_position() const {
+  return static_cast<uint32_t>(words.at(cfg.addr_zero()) & word_mask(cfg.angle_w));
+}
+
+uint32_t RegImage::zero_offset_code() const { return angle_code(zero_offset, cfg.angle_w); }
+
+double RegImage::applied_zero_offset() const {
+  return cfg.zero_word ? code_angle(zero_position(), cfg.angle_w) : zero_offset;
+}
+
+void RegImage::set_signed(int addr, int64_t value) {
+  if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))
+    throw InputError(fmt::format("register {}: value {} does not fit a signed {}-bit word", addr, value,
+                                 cfg.reg_w));
+  words.at(addr) = static_cast<uint64_t>(value) & word_mask(cfg.reg_w);
+}
+
+void RegImage::set_unsigned(int addr, int64_t value) {
+  if (value < 0 || static_cast<uint64_t>(value) > word_mask(cfg.reg_w))
+    throw InputError(fmt::format("register {}: value {} does not fit an unsigned {}-bit word", addr,
+                                 value, cfg.reg_w));
+  words.at(addr) = static_cast<uint64_t>(value);
+}
+
+uint32_t image_crc32(const RegImage& img) {
+  std::vector<unsigned char> bytes;
+  bytes.reserve(img.words.size() * 4);
+  for (const uint64_t w : img.words)
+    for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<unsigned char>((w >> (8 * b)) & 0xff));
+  return static_cast<uint32_t>(
+      crc32(crc32(0L, Z_NULL, 0), bytes.data(), static_cast<uInt>(bytes.size())));
+}
+
+RegImage parse_regimage(const std::string& text, const std::string& name) {
+  RegImage img;
+  auto fields = config_fields();
+  fields.merge(fourier_fields());
+  fields.emplace(kZeroWordKey, &DatapathConfig::zero_word);
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  bool in_scale_seen = false;
+  int crc_line = 0;  // line of the crc32 key (0: absent; images before the key have none)
+  uint32_t crc_header = 0;
+  // The zero offset's two keys (rad, and the code of angle_w bits), checked once angle_w is known.
+  int rad_line = 0, code_line = 0;
+  long long zero_code = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::string comment;
+    if (const auto pos = line.find("//"); pos != std::string::npos) {
+      comment = trim(line.substr(pos + 2));
+      line = line.substr(0, pos);
+    }
+    if (comment.rfind("acore:", 0) == 0) {
+      const std::string kv = trim(comment.substr(6));
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos)
+        throw InputError(fmt::format("{}:{}: header: expected 'acore: key=value'", name, lineno));
+      const std::string key = trim(kv.substr(0, eq)), val = trim(kv.substr(eq + 1));
+      try {
+        size_t used = 0;
+        if (key == "in_scale") {
+          img.in_scale = std::stod(val, &used);
+          in_scale_seen = true;
+          if (!(img.in_scale > 0) || !std::isfinite(img.in_scale)) used = 0;
+        } else if (key == "crc32") {
+          if (val.rfind("0x", 0) != 0 || val.size() < 3 || val.size() > 10 ||
+              val.find_first_not_of("0123456789abcdefABCDEF", 2) != std::string::npos)
+            throw std::invalid_argument(val);
+          crc_header = static_cast<uint32_t>(std::stoul(val.substr(2), &used, 16));
+          used += 2;
+          crc_line = lineno;
+        } else if (key == "zero_offset_rad") {
+          img.zero_offset = std::stod(val, &used);
+          if (!(std::fabs(img.zero_offset) <= M_PI)) used = 0;  // also NaN: an angle in [-pi, pi]
+          if (img.zero_offset >= M_PI) img.zero_offset -= 2 * M_PI;
+          rad_line = lineno;
+        } else if (key == "zero_offset_code") {
+          zero_code = std::stoll(val, &used);
+          if (zero_code < 0 || val[0] == '-' || val[0] == '+') used = 0;
+          code_line = lineno;
+        } else if (key == "correction") {
+          img.cfg.correction = parse_correction(val);  // absent: poly (images before the field)
+          used = val.size();
+        } else if (auto it = fields.find(key); it != fields.end()) {
+          img.cfg.*(it->second) = std::stoi(val, &used);
+        } else {
+          used = val.size();  // unknown keys (command, date, ...) are provenance
+          img.provenance.push_back(kv);
+        }
+        if (used != val.size()) throw std::invalid_argument(val);
+      } catch (const std::exception&) {
+        throw InputError(fmt::format("{}:{}: header field '{}': bad value '{}'", name, lineno, key, val));
+      }
+      continue;
+    }
+    const std::string word = trim(line);
+    if (word.empty()) continue;
+    if (word.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos || word.size() > 15)
+      throw InputError(fmt::format("{}:{}: word {}: '{}' is not a hex word", name, lineno,
+                                   img.words.size(), word));
+    img.words.push_back(std::stoull(word, nullptr, 16));
+  }
+  try {
+    img.cfg.validate();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: header: {}", name, e.what()));
+  }
+  if (!in_scale_seen) throw InputError(fmt::format("{}: header: missing 'acore: in_scale=...'", name));
+  if (code_line) {
+    const long long max = (1LL << img.cfg.angle_w) - 1;
+    if (zero_code > max)
+      throw InputError(
+          fmt::format("{}:{}: header field 'zero_offset_code': {} does not fit angle_w={} bits",
+                      name, code_line, zero_code, img.cfg.angle_w));
+    if (!rad_line) img.zero_offset = code_angle(static_cast<uint32_t>(zero_code), img.cfg.angle_w);
+    if (img.zero_offset_code() != static_cast<uint32_t>(zero_code))
+      throw InputError(fmt::format(
+          "{}:{}: header field 'zero_offset_code': {} is not zero_offset_rad={} as a "
+          "{}-bit angle code ({})",
+          name, code_line, zero_code, img.zero_offset, img.cfg.angle_w, img.zero_offset_code()));
+  }
+  if (static_cast<int>(img.words.size()) != img.cfg.words())
+    throw InputError(fmt::format("{}: {} words, but the header's configuration needs {} ({})", name,
+                                 img.words.size(), img.cfg.words(), img.cfg.describe()));
+  for (size_t a = 0; a < img.words.size(); ++a)
+    if (img.words[a] > word_mask(img.cfg.reg_w))
+      throw InputError(fmt::format("{}: word {} = {:x} does not fit {} bits", name, a, img.words[a],
+                                   img.cfg.reg_w));
+  if (crc_line && crc_header != image_crc32(img))
+    throw InputError(
+        fmt::format("{}:{}: header field 'crc32': 0x{:08x}, but the words' CRC-32 is 0x{:08x} "
+                    "(a word was changed after the image was written)",
+                    name, crc_line, crc_header, image_crc32(img)));
+  return img;
+}
+
+RegImage read_regimage(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(fmt::format("{}: cannot open register image", path));
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return parse_regimage(ss.str(), path);
+}
+
+std::string format_regimage(const RegImage& img) {
+  const DatapathConfig& c = img.cfg;
+  std::string out = "// AngleCore coefficient register image ($readmemh), docs/contracts.md, register image map\n";
+  for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
+  out += fmt::format("// acore: in_scale={}\n", img.in_scale);
+  out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
+  out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
+  for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  if (c.fourier_k > 0)
+    for (const auto& [key, field] : fourier_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  if (c.zero_word) out += fmt::format("// acore: {}=1\n", kZeroWordKey);
+  if (img.zero_offset != 0.0 || c.zero_word) {
+    out += fmt::format("// acore: zero_offset_rad={}\n", img.zero_offset);
+    out += fmt::format("// acore: zero_offset_code={}\n", img.zero_offset_code());
+    out += fmt::format(
+        "// zero offset = {:+.6f} deg electrical (sensor angle - p theta_ref), {}\n",
+        img.zero_offset * 180 / M_PI,
+        c.zero_word ? "subtracted by the ZERO word" : "subtracted by `estimate` in software");
+  }
+  const int digits = (c.reg_w + 3) / 4;
+  auto line = [&](int addr, const std::string& what) {
+    out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
+  };
+  for (int k = 0; k < 2; ++k)
+    line(c.addr_offset(k), fmt::format("offset O{} = {} codes", k ? "24" : "13", img.offset(k)));
+  for (int k = 0; k < 2; ++k)
+    line(c.addr_recip(k), fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
+                                      std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
+  const char* x_name = c.xcenter ? "u" : "x";
+  for (int r = 0; r < c.regions; ++r)
+    for (int k = 0; k < 2; ++k)
+      for (int t = 0; t < c.coef_per_curve(); ++t) {
+        std::string term = fmt::format("{}^{}", x_name, t);
+        if (c.correction == kPoly2d)
+          for (int i = 0; i <= c.degree; ++i)
+            for (int j = 0; i + j <= c.degree; ++j)
+              if (c.term2d(i, j) == t) term = fmt::format("{}^{} v^{}", x_name, i, j);
+        line(c.addr_poly(r, k, t),
+             fmt::format("region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
+                         std::ldexp(static_cast<double>(img.poly(r, k, t)), -c.coef_f)));
+      }
+  for (int i = 0; i < c.iterations; ++i)
+    line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,
+                                     std::ldexp(static_cast<double>(img.atan(i)), -c.z_w) * 360.0));
+  const double gain = c.fourier_k > 0 ? fourier_gain(c) : 1.0;
+  for (int j = 0; j < c.fourier_words(); ++j) {
+    const double deg = std::ldexp(static_cast<double>(img.fourier(j)), -c.fourier_coef_f) * 360.0;
+    if (j == 0)
+      line(c.addr_fourier(j), fmt::format("fourier a_0 = {:+.6f} deg", deg));
+    else
+      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)", j % 2 ? "a" : "b",
+                                          (j + 1) / 2, deg * gain));
+  }
+  if (c.zero_word)
+    line(c.addr_zero(),
+         fmt::format("zero position = {} = {:+.6f} deg (angle_out = angle - zero)",
+                     img.zero_position(), code_angle(img.zero_position(), c.angle_w) * 180 / M_PI));
+  return out;
+}
+
+void write_regimage(const RegImage& img, const std::string& path) {
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw InputError(fmt::format("{}: cannot write register image", path));
+  f << format_regimage(img);
+  if (!f) throw InputError(fmt::format("{}: write failed", path));
+}
+
+}  // namespace acore

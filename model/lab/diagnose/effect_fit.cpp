@@ -1,0 +1,747 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose/effect_fit.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "sim/effects.hpp"
+#include "core/errors.hpp"
+
+namespace acore {
+
+namespace {
+
+constexpr double kTempRef = 25.0;
+// excess_noise is rejected when more than this share of its variance is correlated sample to
+// sample.
+constexpr double kWhiteShare = 0.2;
+
+// Per-channel columns of one parameter: col[c][i] = d channel_c(i) / d parameter.
+using Column = std::vector<std::vector<double>>;
+
+int nsignals(const Recording& r) { return r.channels == 4 ? 4 : 2; }
+
+// The noise-decoupled signals of a channel vector (see the header).
+inline void to_signals(const Recording& r, size_t i, const std::function<double(int, size_t)>& ch, double* s) {
+  if (r.channels == 4) {
+    s[0] = ch(0, i) - ch(2, i);
+    s[1] = ch(1, i) - ch(3, i);
+    s[2] = 0.5 * (ch(0, i) + ch(2, i));
+    s[3] = 0.5 * (ch(1, i) + ch(3, i));
+  } else {
+    s[0] = ch(0, i);
+    s[1] = ch(1, i);
+  }
+}
+
+double sq(double v) { return v * v; }
+
+// Weighted least squares over signals: returns phi and -2 log L of the fit.
+std::pair<Eigen::VectorXd, double> solve_linear(const FitProblem& fp, const Recording& base,
+                                                const std::vector<Column>& cols) {
+  const Recording& real = *fp.real;
+  const size_t n = real.size();
+  const int S = nsignals(real);
+  const int k = static_cast<int>(cols.size());
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(n) * S, k);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(n) * S);
+  double s[4], t[4];
+  for (size_t i = 0; i < n; ++i) {
+    to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - base.ch[c][j]; }, s);
+    for (int q = 0; q < S; ++q) b(i * S + q) = s[q] / fp.signal_sigma[q];
+    for (int p = 0; p < k; ++p) {
+      to_signals(real, i, [&](int c, size_t j) { return cols[p][c].empty() ? 0.0 : cols[p][c][j]; }, t);
+      for (int q = 0; q < S; ++q) A(i * S + q, p) = t[q] / fp.signal_sigma[q];
+    }
+  }
+  const Eigen::VectorXd phi = A.colPivHouseholderQr().solve(b);
+  return {phi, (b - A * phi).squaredNorm()};
+}
+
+// Channel c of the model evaluated at shifted mechanical angles, minus at the true ones (which
+// fp.predicted holds).
+std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function<double(size_t)>& delta) {
+  const Recording& real = *fp.real;
+  std::vector<double> v(real.size());
+  for (size_t i = 0; i < real.size(); ++i) {
+    const double d = delta(i);
+    v[i] = d == 0 ? 0.0 : fp.model->sensor.value(c, real.theta_ref[i] + d) - fp.predicted.ch[c][i];
+  }
+  return v;
+}
+
+// Index of a channel around the circle (its 90-degree position): c1..c4 -> 0..3; sin, cos -> 0, 1.
+int position(int c) { return c; }
+
+// The factor on the field (later field scalings of a set, see fit_effect), 1 without one.
+double scale_at(const std::vector<double>* scale, size_t i) { return scale ? (*scale)[i] : 1.0; }
+
+// The field part of a prediction: the channel less the model's electrical offset (its constant
+// Fourier term), which field changes (amplitude, eccentricity) do not scale.
+double field_part(const FitProblem& fp, const Recording& pred, int c, size_t i) {
+  return pred.ch[c][i] - fp.model->sensor.coef[c][0];
+}
+
+}  // namespace
+
+const std::vector<std::string>& fittable_effects() { return effect_names(); }
+
+FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
+  FitProblem fp;
+  fp.model = &m;
+  fp.real = &real;
+  fp.predicted = m.sensor.resample(real);
+  fp.omega = angular_velocity(real);
+  fp.basis = make_gap_basis(real);
+  if (real.has_temp())
+    for (double t : real.temp) fp.dtemp.push_back(t - kTempRef);
+  fp.deriv.resize(real.channels);
+  for (int c = 0; c < real.channels; ++c) {
+    fp.deriv[c].resize(real.size());
+    for (size_t i = 0; i < real.size(); ++i) fp.deriv[c][i] = m.sensor.derivative(c, real.theta_ref[i]);
+  }
+  // Noise per signal from the simulation's fit residual statistics.
+  const auto& sg = m.sensor.noise_sigma;
+  const double floor = 1e-5 * std::max(std::fabs(m.est.amp[0]), std::fabs(m.est.amp[1]));
+  if (real.channels == 4) {
+    const auto& rho = m.sensor.noise_corr;
+    const double v13 = sq(sg[0]) + sq(sg[2]) - 2 * rho[0] * sg[0] * sg[2];
+    const double v24 = sq(sg[1]) + sq(sg[3]) - 2 * rho[1] * sg[1] * sg[3];
+    const double w13 = 0.25 * (sq(sg[0]) + sq(sg[2]) + 2 * rho[0] * sg[0] * sg[2]);
+    const double w24 = 0.25 * (sq(sg[1]) + sq(sg[3]) + 2 * rho[1] * sg[1] * sg[3]);
+    for (double v : {v13, v24, w13, w24}) fp.signal_sigma.push_back(std::max(floor, std::sqrt(std::max(0.0, v))));
+  } else {
+    fp.signal_sigma = {std::max(floor, sg[0]), std::max(floor, sg[1])};
+  }
+  return fp;
+}
+
+namespace {
+// How much of a channel's extra white-noise variance each signal carries: c1 - c3 two channels',
+// (c1 + c3)/2 a quarter of two; sin, cos one.
+double signal_weight(const Recording& r, int q) {
+  return r.channels == 4 ? (q < 2 ? 2.0 : 0.5) : 1.0;
+}
+}  // namespace
+
+double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double extra_sigma) {
+  const Recording& real = *fp.real;
+  const int S = nsignals(real);
+  double s[4], rss[4] = {0, 0, 0, 0};
+  for (size_t i = 0; i < real.size(); ++i) {
+    to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - pred.ch[c][j]; }, s);
+    for (int q = 0; q < S; ++q) rss[q] += s[q] * s[q];
+  }
+  // Gaussian, known variance per signal: sum r^2 / v + N ln(v / sigma^2) (0 without extra noise).
+  double total = 0;
+  const double n = static_cast<double>(real.size());
+  for (int q = 0; q < S; ++q) {
+    const double s2 = sq(fp.signal_sigma[q]),
+                 v = s2 + signal_weight(real, q) * extra_sigma * extra_sigma;
+    total += rss[q] / v + n * std::log(v / s2);
+  }
+  return total;
+}
+
+namespace {
+
+// A fitted effect's parameters; its prediction comes from predict_effect(), the one place that
+// applies an effect, so fitting and carrying the effect to a holdout cannot disagree.
+struct Fitted {
+  ParamList params;
+  int k = 0;
+  bool applicable = true;  // false: the recording cannot show this effect (drift without temp, ...)
+  std::string
+      rejected;  // why the effect's own assumptions fail on this recording (empty: they hold)
+};
+
+std::string chan_name(const Recording& r, int c) {
+  return r.channels == 4 ? fmt::format("c{}", c + 1) : (c ? "cos" : "sin");
+}
+
+Fitted fit_offset(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (int c = 0; c < r.channels; ++c) {
+    Column col(r.channels);
+    col[c].assign(r.size(), 1.0);
+    cols.push_back(col);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  for (int c = 0; c < r.channels; ++c) f.params.push_back({"offset_" + chan_name(r, c), phi(c)});
+  f.k = r.channels;
+  return f;
+}
+
+Fitted fit_gain(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (int c = 0; c < r.channels; ++c) {
+    Column col(r.channels);
+    col[c] = base.ch[c];
+    cols.push_back(col);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  for (int c = 0; c < r.channels; ++c) f.params.push_back({"gain_" + chan_name(r, c), 1.0 + phi(c)});
+  f.k = r.channels;
+  return f;
+}
+
+// Angle-shift effects: channel c sees theta + delta_c(i) with delta linear in the parameters.
+// basis[p](c, i) is d delta_c(i) / d phi_p; the fit is linearized (predict_effect is exact).
+Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
+                       const std::vector<std::function<double(int, size_t)>>& basis,
+                       const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (const auto& b : basis) {
+    Column col(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      col[c].resize(r.size());
+      for (size_t i = 0; i < r.size(); ++i)
+        col[c][i] = scale_at(scale, i) * fp.deriv[c][i] * b(c, i);
+    }
+    cols.push_back(col);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  for (size_t p = 0; p < basis.size(); ++p) f.params.push_back({"", phi(static_cast<Eigen::Index>(p))});
+  f.k = static_cast<int>(basis.size());
+  return f;
+}
+
+// zero_offset: every channel sees theta + z. A reference zero may be off by anything up to half a
+// turn, far beyond the linearization of fit_angle_shift, so z starts at the circular mean of the
+// electrical-angle difference atan2(d13, d24) (atan2(sin, cos)) of real minus base, over the
+// periodicity and the sense in which the electrical angle turns, and is refined by Gauss-Newton on
+// the exact shift (the same model(theta + z) - model(theta) predict_effect applies).
+Fitted fit_zero_offset(const FitProblem& fp, const Recording& base,
+                       const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  const size_t n = r.size();
+  auto elec = [&](const Recording& x, size_t i) {
+    return r.channels == 4 ? std::atan2(x.ch[0][i] - x.ch[2][i], x.ch[1][i] - x.ch[3][i])
+                           : std::atan2(x.ch[0][i], x.ch[1][i]);
+  };
+  // cs, sn: the circular mean's sums; turn: the model's d elec / d theta summed (its sign is the
+  // sense in which the electrical angle turns with theta).
+  double cs = 0, sn = 0, turn = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double d = elec(r, i) - elec(base, i);
+    cs += std::cos(d);
+    sn += std::sin(d);
+    const auto& pr = fp.predicted.ch;
+    const auto& dv = fp.deriv;
+    const double x = r.channels == 4 ? pr[1][i] - pr[3][i] : pr[1][i],
+                 y = r.channels == 4 ? pr[0][i] - pr[2][i] : pr[0][i],
+                 dx = r.channels == 4 ? dv[1][i] - dv[3][i] : dv[1][i],
+                 dy = r.channels == 4 ? dv[0][i] - dv[2][i] : dv[0][i];
+    turn += (x * dy - y * dx) / std::max(x * x + y * y, 1e-300);
+  }
+  const double sense = turn >= 0 ? 1.0 : -1.0;
+  double z = sense * std::atan2(sn, cs) / fp.model->periodicity;
+  for (int it = 0; it < 3; ++it) {
+    Recording shifted = base;
+    Column col(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      col[c].resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const double th = r.theta_ref[i] + z;
+        shifted.ch[c][i] +=
+            scale_at(scale, i) * (fp.model->sensor.value(c, th) - fp.predicted.ch[c][i]);
+        col[c][i] = scale_at(scale, i) * fp.model->sensor.derivative(c, th);
+      }
+    }
+    z += solve_linear(fp, shifted, {col}).first(0);
+  }
+  Fitted f;
+  f.params = {{"zero_rad", std::remainder(z, 2 * M_PI)}};
+  f.k = 1;
+  return f;
+}
+
+bool sine_pair(const Recording& r, int c) { return r.channels == 4 ? (c == 0 || c == 2) : c == 0; }
+
+// amplitude: every channel's field part scaled by 1 + phi.
+Fitted fit_amplitude(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  Column col(r.channels);
+  for (int c = 0; c < r.channels; ++c) {
+    col[c].resize(r.size());
+    for (size_t i = 0; i < r.size(); ++i) col[c][i] = field_part(fp, base, c, i);
+  }
+  const auto [phi, _] = solve_linear(fp, base, {col});
+  Fitted f;
+  f.params = {{"scale", 1.0 + phi(0)}};
+  f.k = 1;
+  return f;
+}
+
+// eccentricity: theta + u sin(theta) - v cos(theta) (u = eps cos phi0, v = eps sin phi0) and the
+// field part times 1 + a cos(theta) + b sin(theta) (a = m cos phi_m, b = m sin phi_m).
+Fitted fit_eccentricity(const FitProblem& fp, const Recording& base,
+                        const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols(4, Column(r.channels));
+  for (int c = 0; c < r.channels; ++c) {
+    for (auto& col : cols) col[c].resize(r.size());
+    for (size_t i = 0; i < r.size(); ++i) {
+      const double th = r.theta_ref[i], s = std::sin(th), co = std::cos(th);
+      const double d = scale_at(scale, i) * fp.deriv[c][i], fld = field_part(fp, base, c, i);
+      cols[0][c][i] = d * s;
+      cols[1][c][i] = -d * co;
+      cols[2][c][i] = fld * co;
+      cols[3][c][i] = fld * s;
+    }
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  f.params = {{"epsilon_rad", std::hypot(phi(0), phi(1))},
+              {"phi0_rad", std::atan2(phi(1), phi(0))},
+              {"am_depth", std::hypot(phi(2), phi(3))},
+              {"am_phase_rad", std::atan2(phi(3), phi(2))}};
+  f.k = 4;
+  return f;
+}
+
+// phase_error: one group of channels sees the electrical angle + delta. The groups a placement or
+// orthogonality error moves: the sine pair, the cosine pair, or (four channels) one plate. The best
+// by likelihood is kept; the choice counts as a parameter (k = 2), as a harmonic's order does.
+Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
+                       const std::vector<double>* scale) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  struct Group {
+    std::string param;
+    std::function<bool(int)> moves;
+  };
+  std::vector<Group> groups = {{"delta_rad", [&](int c) { return sine_pair(r, c); }},
+                               {"delta_cos_rad", [&](int c) { return !sine_pair(r, c); }}};
+  if (r.channels == 4)
+    for (int k = 0; k < 4; ++k)
+      groups.push_back({"phase_" + effect_channel_name(4, k), [k](int c) { return c == k; }});
+  Fitted best;
+  double best_l = std::numeric_limits<double>::infinity();
+  for (const Group& g : groups) {
+    Fitted f = fit_angle_shift(fp, base,
+                               {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }}, scale);
+    const double delta = f.params[0].second;
+    Recording pred = base;
+    for (int c = 0; c < r.channels; ++c) {
+      if (!g.moves(c)) continue;
+      const auto add = angle_shift(fp, c, [&](size_t) { return delta / p; });
+      for (size_t i = 0; i < r.size(); ++i) pred.ch[c][i] += scale_at(scale, i) * add[i];
+    }
+    const double l = neg2_log_likelihood(fp, pred);
+    if (l < best_l) {
+      best_l = l;
+      best.params = effect_defaults("phase_error", r.channels);
+      for (auto& kv : best.params)
+        if (kv.first == g.param) kv.second = delta;
+      best.k = 2;
+    }
+  }
+  return best;
+}
+
+Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  Fitted best;
+  double best_l = 1e300;
+  for (int n = 2; n <= 9; ++n) {
+    Column cc(r.channels), cs(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      cc[c].resize(r.size());
+      cs[c].resize(r.size());
+      for (size_t i = 0; i < r.size(); ++i) {
+        const double a = n * (p * r.theta_ref[i] + position(c) * M_PI / 2);
+        cc[c][i] = std::cos(a);
+        cs[c][i] = std::sin(a);
+      }
+    }
+    // With a common scale of every channel's field part as a nuisance: a compressing nonlinearity
+    // (x - a x^3) shrinks the fundamental by 3a/4 along with its 3rd harmonic, and that scale,
+    // unmodelled, would decide the order and bias the amplitude. It is not part of the effect
+    // (atan2 never sees it; `amplitude` names it when it is the gap).
+    Column scale(r.channels);
+    for (int c = 0; c < r.channels; ++c) {
+      scale[c].resize(r.size());
+      for (size_t i = 0; i < r.size(); ++i) scale[c][i] = field_part(fp, base, c, i);
+    }
+    const auto [phi, l] = solve_linear(fp, base, {cc, cs, scale});
+    if (l < best_l) {
+      best_l = l;
+      best = Fitted{};
+      // amplitude * sin(a + phase) = amplitude cos(phase) sin a + amplitude sin(phase) cos a
+      const double amp = std::hypot(phi(0), phi(1)), phase = std::atan2(phi(0), phi(1));
+      best.params = {{"order", n}, {"amplitude", amp}, {"phase_rad", phase}};
+      best.k = 3;  // order, amplitude, phase
+    }
+  }
+  return best;
+}
+
+Fitted fit_drift(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  std::vector<Column> cols;
+  for (int c = 0; c < r.channels; ++c) {
+    Column co(r.channels), cg(r.channels);
+    co[c] = fp.dtemp;
+    cg[c].resize(r.size());
+    for (size_t i = 0; i < r.size(); ++i) cg[c][i] = fp.dtemp[i] * base.ch[c][i];
+    cols.push_back(co);
+    cols.push_back(cg);
+  }
+  const auto [phi, _] = solve_linear(fp, base, cols);
+  Fitted f;
+  for (int c = 0; c < r.channels; ++c) {
+    f.params.push_back({"offset_per_C_" + chan_name(r, c), phi(2 * c)});
+    f.params.push_back({"gain_per_C_" + chan_name(r, c), phi(2 * c + 1)});
+  }
+  f.k = 2 * r.channels;
+  return f;
+}
+
+// An ADC leaves every value of every channel on a lattice origin + k * step. The step is read from
+// the data (the smallest gap between distinct values, refined over wider spans so that a fine
+// lattice is resolved to full precision), not fitted to the residual; no lattice, no quantization.
+Fitted fit_quantization(const FitProblem& fp) {
+  const Recording& r = *fp.real;
+  Fitted f;
+  f.k = 1;
+  std::vector<double> all;
+  double peak = 0;
+  for (int c = 0; c < r.channels; ++c)
+    for (double x : r.ch[c]) all.push_back(x), peak = std::max(peak, std::fabs(x));
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  const double tiny = 1e-12 * std::max(peak, 1e-300);
+  double step = 0;
+  for (size_t i = 1; i < all.size(); ++i)
+    if (all[i] - all[i - 1] > tiny && (step == 0 || all[i] - all[i - 1] < step))
+      step = all[i] - all[i - 1];
+  if (step == 0) {
+    f.applicable = false;  // one value only: nothing to read a step from
+    return f;
+  }
+  for (size_t span = 1; span < all.size(); span *= 2) {
+    const double d = all[std::min(all.size() - 1, span)] - all[0];
+    const double m = std::round(d / step);
+    if (m >= 1) step = d / m;
+  }
+  // Origin: the circular mean of the values' position within a step.
+  double cs = 0, sn = 0;
+  for (double x : all) {
+    const double ph = 2 * M_PI * (x / step - std::floor(x / step));
+    cs += std::cos(ph);
+    sn += std::sin(ph);
+  }
+  const double origin = step * std::atan2(sn, cs) / (2 * M_PI);
+  size_t on = 0, total = 0;
+  for (int c = 0; c < r.channels; ++c)
+    for (double x : r.ch[c]) {
+      const double u = (x - origin) / step;
+      on += std::fabs(u - std::round(u)) <= 1e-6 + 1e-12 * std::fabs(u);
+      ++total;
+    }
+  if (on < 0.99 * static_cast<double>(total)) {
+    f.applicable = false;  // the values are not on a lattice: not quantized
+    return f;
+  }
+  // Full scale: the smallest power of two at or above the peak (an ADC range); bits from the step.
+  const double full_scale =
+      std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-300)))));
+  f.params = {{"bits", std::round(std::log2(2.0 * full_scale / step))},
+              {"full_scale", full_scale},
+              {"step", step},
+              {"origin", origin}};
+  return f;
+}
+
+Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
+  const Recording& r = *fp.real;
+  double peak_model = 0;
+  for (int c = 0; c < r.channels; ++c)
+    for (double v : base.ch[c]) peak_model = std::max(peak_model, std::fabs(v));
+  auto clip = [&](double level) {
+    Recording p = base;
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : p.ch[c]) v = std::clamp(v, -level, level);
+    return p;
+  };
+  double best_level = peak_model, best_l = neg2_log_likelihood(fp, base);
+  for (int k = 0; k <= 80; ++k) {
+    const double level = peak_model * (0.4 + 0.6 * k / 80.0);
+    const double l = neg2_log_likelihood(fp, clip(level));
+    if (l < best_l) best_l = l, best_level = level;
+  }
+  // Refine around the best grid point.
+  double lo = best_level - 0.0075 * peak_model, hi = best_level + 0.0075 * peak_model;
+  for (int it = 0; it < 30; ++it) {
+    const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+    if (neg2_log_likelihood(fp, clip(a)) < neg2_log_likelihood(fp, clip(b))) hi = b; else lo = a;
+  }
+  const double level = 0.5 * (lo + hi);
+  Fitted f;
+  f.params = {{"level", level}};
+  f.k = 1;
+  return f;
+}
+
+// Extra white noise sigma_e on each channel, on top of what `base` already carries (base_extra):
+// maximum likelihood over sigma_e by a ternary search (the likelihood is unimodal in sigma_e^2).
+Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base_extra) {
+  const Recording& r = *fp.real;
+  const int S = nsignals(r);
+  std::vector<double> rss(S, 0.0), lag1(S, 0.0);
+  double s[4], prev[4] = {0, 0, 0, 0};
+  for (size_t i = 0; i < r.size(); ++i) {
+    to_signals(r, i, [&](int c, size_t j) { return r.ch[c][j] - base.ch[c][j]; }, s);
+    for (int q = 0; q < S; ++q) {
+      rss[q] += s[q] * s[q];
+      if (i > 0) lag1[q] += s[q] * prev[q];
+      prev[q] = s[q];
+    }
+  }
+  const double n = static_cast<double>(r.size());
+  auto nll = [&](double var_e) {
+    double t = 0;
+    for (int q = 0; q < S; ++q) {
+      const double v = sq(fp.signal_sigma[q]) + signal_weight(r, q) * (sq(base_extra) + var_e);
+      t += rss[q] / v + n * std::log(v);
+    }
+    return t;
+  };
+  double lo = 0, hi = 0;
+  for (int q = 0; q < S; ++q) hi = std::max(hi, rss[q] / n / signal_weight(r, q));
+  hi = std::max(hi, 1e-30);
+  for (int it = 0; it < 100; ++it) {
+    const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+    if (nll(a) < nll(b)) hi = b; else lo = a;
+  }
+  Fitted f;
+  f.params = {{"sigma", std::sqrt(0.5 * (lo + hi))}};
+  f.k = 1;
+  // The excess must be white noise (docs/contracts.md, effect vocabulary). Its part that is correlated from one sample to the
+  // next (the residual's lag-1 autocovariance; white noise adds none) is anything but noise: a
+  // glitch, a dropout, interference. Pooled over signals in channel units, with the spread white
+  // noise alone would give.
+  double excess = 0, correlated = 0, spread2 = 0;
+  for (int q = 0; q < S; ++q) {
+    const double w = signal_weight(r, q), v = rss[q] / n;
+    excess += (v - sq(fp.signal_sigma[q]) - w * sq(base_extra)) / w;
+    correlated += lag1[q] / std::max(1.0, n - 1) / w;
+    spread2 += sq(v / w) / n;
+  }
+  if (excess > 0 && correlated > kWhiteShare * excess + 4 * std::sqrt(spread2))
+    f.rejected = fmt::format(
+        "not white noise: {:.0f} % of the excess variance is correlated from sample to sample",
+        100 * std::min(1.0, correlated / excess));
+  return f;
+}
+
+// Mean and variance of an ADC's output Q(x + n), n ~ N(0, sigma^2), Q rounding to origin + k step.
+void quantized_moments(double x, double sigma, double step, double origin, double& mean,
+                       double& var) {
+  const double u = (x - origin) / step;
+  if (sigma < 1e-3 * step) {
+    mean = origin + step * std::nearbyint(u);
+    var = 0;
+    return;
+  }
+  if (sigma > 8 * step) {  // finely quantized: the error is uniform and independent of x
+    mean = x;
+    var = sigma * sigma + step * step / 12;
+    return;
+  }
+  const double z = sigma / step;
+  const int lo = static_cast<int>(std::floor(u - 7 * z)) - 1,
+            hi = static_cast<int>(std::ceil(u + 7 * z)) + 1;
+  double m1 = 0, m2 = 0;
+  double cdf_lo = 0.5 * std::erfc(-((lo - 0.5) - u) / (z * M_SQRT2));
+  for (int k = lo; k <= hi; ++k) {
+    const double cdf_hi = 0.5 * std::erfc(-((k + 0.5) - u) / (z * M_SQRT2));
+    const double pk = cdf_hi - cdf_lo;
+    cdf_lo = cdf_hi;
+    m1 += pk * (k - u);
+    m2 += pk * (k - u) * (k - u);
+  }
+  mean = x + step * m1;
+  var = step * step * std::max(0.0, m2 - m1 * m1);
+}
+
+}  // namespace
+
+double EffectCandidate::param(const std::string& name) const {
+  for (const auto& [k, v] : params)
+    if (k == name) return v;
+  throw std::out_of_range("effect " + effect + " has no parameter " + name);
+}
+
+Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
+                         double* extra_sigma, const std::vector<double>* field_scale) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  const std::string& e = cand.effect;
+  if (extra_sigma) *extra_sigma = 0;
+  Recording out = base;
+  auto shift = [&](const std::function<double(int, size_t)>& delta) {
+    for (int c = 0; c < r.channels; ++c) {
+      const auto add = angle_shift(fp, c, [&](size_t i) { return delta(c, i); });
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += scale_at(field_scale, i) * add[i];
+    }
+  };
+  if (e == "offset") {
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v += cand.param("offset_" + chan_name(r, c));
+  } else if (e == "gain_mismatch") {
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v *= cand.param("gain_" + chan_name(r, c));
+  } else if (e == "phase_error") {
+    const std::array<double, 4> d =
+        phase_error_shifts(make_effect(e, cand.params, r.channels), r.channels);
+    shift([&](int c, size_t) { return d[static_cast<size_t>(c)] / p; });
+  } else if (e == "zero_offset") {
+    const double z = cand.param("zero_rad");
+    shift([&](int, size_t) { return z; });
+  } else if (e == "amplitude") {
+    const double k = cand.param("scale");
+    for (int c = 0; c < r.channels; ++c)
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += (k - 1) * field_part(fp, base, c, i);
+  } else if (e == "harmonic") {
+    const int n = static_cast<int>(cand.param("order"));
+    const double amp = cand.param("amplitude"), ph = cand.param("phase_rad");
+    for (int c = 0; c < r.channels; ++c)
+      for (size_t i = 0; i < r.size(); ++i)
+        out.ch[c][i] += amp * std::sin(n * (p * r.theta_ref[i] + position(c) * M_PI / 2) + ph);
+  } else if (e == "eccentricity") {
+    const double eps = cand.param("epsilon_rad"), phi0 = cand.param("phi0_rad");
+    const double m = cand.param("am_depth"), phim = cand.param("am_phase_rad");
+    shift([&](int, size_t i) { return eps * std::sin(r.theta_ref[i] - phi0); });
+    // The field part, at the shifted angle, times 1 + m cos(theta - phi_m).
+    if (m != 0)
+      for (int c = 0; c < r.channels; ++c)
+        for (size_t i = 0; i < r.size(); ++i)
+          out.ch[c][i] += m * std::cos(r.theta_ref[i] - phim) * field_part(fp, out, c, i);
+  } else if (e == "channel_skew") {
+    const std::array<double, 4> tau =
+        channel_skew_offsets(make_effect(e, cand.params, r.channels), r.channels);
+    shift([&](int c, size_t i) { return fp.omega[i] * tau[static_cast<size_t>(c)]; });
+  } else if (e == "common_delay") {
+    const double tau = cand.param("tau_s");
+    shift([&](int, size_t i) { return -fp.omega[i] * tau; });
+  } else if (e == "hysteresis") {
+    const double h = cand.param("h_rad");
+    shift([&](int, size_t i) { return fp.omega[i] >= 0 ? h : -h; });
+  } else if (e == "drift") {
+    if (fp.dtemp.empty()) return out;
+    for (int c = 0; c < r.channels; ++c) {
+      const double ko = cand.param("offset_per_C_" + chan_name(r, c)), kg = cand.param("gain_per_C_" + chan_name(r, c));
+      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
+    }
+  } else if (e == "quantization") {
+    // The ADC sees the model plus the simulation's noise: predict its mean output, and carry the
+    // variance it adds beyond that noise (zero far from a step edge, step^2/12 when dithered).
+    const double step = cand.param("step"), origin = cand.param("origin");
+    double added = 0;
+    for (int c = 0; c < r.channels; ++c) {
+      const double sigma = fp.model->sensor.noise_sigma[c];
+      for (auto& v : out.ch[c]) {
+        double mean, var;
+        quantized_moments(v, sigma, step, origin, mean, var);
+        v = mean;
+        added += var - sigma * sigma;
+      }
+    }
+    if (extra_sigma)
+      *extra_sigma = std::sqrt(std::max(0.0, added / (r.channels * static_cast<double>(r.size()))));
+  } else if (e == "saturation") {
+    const double level = cand.param("level");
+    for (int c = 0; c < r.channels; ++c)
+      for (auto& v : out.ch[c]) v = std::clamp(v, -level, level);
+  } else if (e == "excess_noise") {
+    if (extra_sigma) *extra_sigma = cand.param("sigma");
+  } else {
+    throw InputError("unknown effect '" + e + "'");
+  }
+  return out;
+}
+
+EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
+                           double base_extra, const std::vector<double>* field_scale) {
+  const Recording& r = *fp.real;
+  Fitted f;
+  if (effect == "offset") {
+    f = fit_offset(fp, base);
+  } else if (effect == "gain_mismatch") {
+    f = fit_gain(fp, base);
+  } else if (effect == "phase_error") {
+    f = fit_phase_error(fp, base, field_scale);
+  } else if (effect == "zero_offset") {
+    f = fit_zero_offset(fp, base, field_scale);
+  } else if (effect == "amplitude") {
+    f = fit_amplitude(fp, base);
+  } else if (effect == "harmonic") {
+    f = fit_harmonic(fp, base);
+  } else if (effect == "eccentricity") {
+    f = fit_eccentricity(fp, base, field_scale);
+  } else if (effect == "channel_skew") {
+    // Channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their common part
+    // included: a multiplexer's slots count from the time stamp).
+    std::vector<std::function<double(int, size_t)>> basis;
+    for (int k = 0; k < r.channels; ++k)
+      basis.push_back([&, k](int c, size_t i) { return c == k ? fp.omega[i] : 0.0; });
+    f = fit_angle_shift(fp, base, basis, field_scale);
+    ParamList taus;
+    for (int k = 0; k < r.channels; ++k)
+      taus.push_back({"tau_" + effect_channel_name(r.channels, k), f.params[k].second});
+    f.params = make_effect(effect, taus, r.channels).params;
+  } else if (effect == "common_delay") {
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }}, field_scale);
+    f.params = {{"tau_s", f.params[0].second}};
+  } else if (effect == "hysteresis") {
+    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }},
+                        field_scale);
+    f.params = {{"h_rad", f.params[0].second}};
+  } else if (effect == "drift") {
+    if (fp.dtemp.empty())
+      f.applicable = false;  // no temperature column: drift cannot be observed
+    else
+      f = fit_drift(fp, base);
+  } else if (effect == "quantization") {
+    f = fit_quantization(fp);
+  } else if (effect == "saturation") {
+    f = fit_saturation(fp, base);
+  } else if (effect == "excess_noise") {
+    f = fit_excess_noise(fp, base, base_extra);
+  } else {
+    throw InputError("unknown effect '" + effect + "'");
+  }
+  EffectCandidate cand;
+  cand.effect = effect;
+  cand.k = f.k;
+  cand.params = f.params;
+  cand.applicable = f.applicable;
+  cand.rejected = f.rejected;
+  if (!f.applicable) {
+    cand.neg2logl = cand.bic = cand.delta_bic = std::numeric_limits<double>::infinity();
+    return cand;
+  }
+  double extra = 0;
+  const Recording pred = predict_effect(fp, base, cand, &extra, field_scale);
+  cand.neg2logl = neg2_log_likelihood(fp, pred, std::hypot(base_extra, extra));
+  const double n = static_cast<double>(r.size()) * nsignals(r);
+  cand.bic = cand.neg2logl + cand.k * std::log(n);
+  cand.delta_bic = cand.bic - neg2_log_likelihood(fp, base, base_extra);
+  return cand;
+}
+
+}  // namespace acore
