@@ -9,9 +9,9 @@
 #include "calibration/calibration.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "support/paper_signals.hpp"
 #include "rtl_engine.hpp"
 #include "rtl_serial_engine.hpp"
+#include "support/paper_signals.hpp"
 
 namespace {
 
@@ -36,8 +36,8 @@ void BM_RtlEngine(benchmark::State& state) {
   acore::RtlRunOptions opt;
   opt.backpressure = opt.gaps = static_cast<double>(state.range(0)) / 100.0;
   for (auto _ : state) benchmark::DoNotOptimize(acore::run_rtl(s.img, s.in, opt));
-  state.counters["samples/s"] =
-      benchmark::Counter(static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["samples/s"] = benchmark::Counter(
+      static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RtlEngine)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond);
 
@@ -50,8 +50,8 @@ void BM_CosimCompare(benchmark::State& state) {
     for (size_t i = 0; i < s.in.size(); ++i) bad += !(rtl[i] == model.step(s.in[i]));
   }
   if (bad) state.SkipWithError("RTL and model differ");
-  state.counters["samples/s"] =
-      benchmark::Counter(static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["samples/s"] = benchmark::Counter(
+      static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_CosimCompare)->Unit(benchmark::kMillisecond);
 

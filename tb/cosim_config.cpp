@@ -16,28 +16,28 @@
 #include <string>
 
 #include "calibration/calibration.hpp"
-#include "cosim_stimuli.hpp"
 #include "core/errors.hpp"
+#include "cosim_stimuli.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "support/paper_signals.hpp"
 #include "rtl_builds.hpp"
 #include "rtl_engine.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
 
 // Samples where the RTL differs from the model; prints the first.
-size_t compare(const std::vector<FixedSample>& rtl, const FixedModel& model, const std::vector<ChannelCodes>& in,
-               const char* what) {
+size_t compare(const std::vector<FixedSample>& rtl, const FixedModel& model,
+               const std::vector<ChannelCodes>& in, const char* what) {
   const cosim::Comparison c = cosim::compare(rtl, model, in);
   if (c.mismatches) std::printf("%s: %s\n", what, c.first.c_str());
   std::printf("%-28s %8zu samples, %zu mismatches\n", what, in.size(), c.mismatches);
   return c.mismatches;
 }
 
-// The paper scenario calibrated for cfg: the calibration may only lower COEF_F (quantize_auto_range);
-// the result must be exactly the build's configuration.
+// The paper scenario calibrated for cfg: the calibration may only lower COEF_F
+// (quantize_auto_range); the result must be exactly the build's configuration.
 RegImage paper_image(const DatapathConfig& cfg) {
   const Recording cal = test::paper_recording(8000, true);
   const RegImage img = calibrate_image(cal, cfg, 1);
@@ -63,7 +63,8 @@ RegImage random_image(const RegImage& base, std::mt19937_64& rng) {
   if (rng() & 1)
     for (int c = 0; c < 2; ++c) {
       img.set_signed(cfg.addr_offset(c), static_cast<int64_t>(rng() % 2001) - 1000);
-      img.set_unsigned(cfg.addr_recip(c), static_cast<int64_t>(img.words[cfg.addr_recip(c)] % 60000) + 40000);
+      img.set_unsigned(cfg.addr_recip(c),
+                       static_cast<int64_t>(img.words[cfg.addr_recip(c)] % 60000) + 40000);
     }
   return img;
 }

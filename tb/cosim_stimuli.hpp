@@ -9,23 +9,24 @@
 #include <string>
 #include <vector>
 
-#include "stages/cordic.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "support/paper_signals.hpp"
 #include "regmap/regimage.hpp"
+#include "stages/cordic.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore::cosim {
 
 inline std::string show(const FixedSample& s) {
   char b[96];
-  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf, s.los, s.dos);
+  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf,
+                s.los, s.dos);
   return b;
 }
 
 struct Comparison {
-  size_t mismatches = 0;   // samples whose RTL-visible outputs differ (+1 when the counts differ)
-  std::string first;       // the first difference, described
+  size_t mismatches = 0;  // samples whose RTL-visible outputs differ (+1 when the counts differ)
+  std::string first;      // the first difference, described
 };
 
 // Every RTL output against FixedModel::step of the same input.
@@ -40,9 +41,10 @@ inline Comparison compare(const std::vector<FixedSample>& rtl, const FixedModel&
     const FixedSample m = model.step(in[i]);
     if (rtl[i] == m) continue;
     if (r.first.empty())
-      r.first = "first mismatch at sample " + std::to_string(i) + " (c = " + std::to_string(in[i][0]) + ", " +
-                std::to_string(in[i][1]) + ", " + std::to_string(in[i][2]) + ", " + std::to_string(in[i][3]) +
-                "): rtl " + show(rtl[i]) + ", model " + show(m);
+      r.first = "first mismatch at sample " + std::to_string(i) +
+                " (c = " + std::to_string(in[i][0]) + ", " + std::to_string(in[i][1]) + ", " +
+                std::to_string(in[i][2]) + ", " + std::to_string(in[i][3]) + "): rtl " +
+                show(rtl[i]) + ", model " + show(m);
     ++r.mismatches;
   }
   return r;

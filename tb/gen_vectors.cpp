@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Test vectors for the Icarus bench (tb/acore_tb_icarus.v) from the bit-accurate model.
-// usage: acore_gen_vectors DIR FRAME [N]   writes DIR/regs.hex, DIR/in.hex, DIR/exp.hex, DIR/meta.txt
+// usage: acore_gen_vectors DIR FRAME [N]   writes DIR/regs.hex, DIR/in.hex, DIR/exp.hex,
+// DIR/meta.txt
 //   (meta.txt: samples, mag_lo, mag_hi, the image's CRC-32 in hex for the shell bench)
 //   FRAME 0: the paper scenario's calibrated image; paper samples (a turn), then random and extreme
 //            codes
 //   FRAME 1: a random register image with random inputs (saturation paths)
 //   N: samples in all (default: frame 0 7501 = 5000 paper samples, 2500 random codes and the zero
-//      vector; frame 1 2501); with N, half of frame 0's are paper samples. tb/vectors/ holds `acore_gen_vectors tb/vectors 0 1000` (FuseSoC's
-//      sim target; tests/fusesoc.sh checks it is current).
+//      vector; frame 1 2501); with N, half of frame 0's are paper samples. tb/vectors/ holds
+//      `acore_gen_vectors tb/vectors 0 1000` (FuseSoC's sim target; tests/fusesoc.sh checks it is
+//      current).
 #include <cstdio>
 #include <fstream>
 #include <random>
@@ -16,8 +18,8 @@
 #include "calibration/calibration.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "support/paper_signals.hpp"
 #include "regmap/regimage.hpp"
+#include "support/paper_signals.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3 && argc != 4) {
@@ -33,8 +35,8 @@ int main(int argc, char** argv) {
   }
   const int n_paper = argc == 4 ? total / 2 : 5000;
   const acore::Recording cal = acore::test::paper_recording(4000, true);
-  acore::RegImage img =
-      acore::quantize(acore::calibrate(cal, acore::CalOptions{}), acore::DatapathConfig{}, acore::choose_in_scale(cal, 16));
+  acore::RegImage img = acore::quantize(acore::calibrate(cal, acore::CalOptions{}),
+                                        acore::DatapathConfig{}, acore::choose_in_scale(cal, 16));
   std::mt19937_64 rng(1234 + frame);
   std::vector<acore::ChannelCodes> in;
   if (frame == 0) {
@@ -54,15 +56,17 @@ int main(int argc, char** argv) {
   in.push_back({0, 0, 0, 0});
   const acore::StatusWindow w = acore::StatusWindow::defaults(img.cfg);
   const acore::FixedModel model(img, w);
-  std::ofstream regs(dir + "/regs.hex"), vin(dir + "/in.hex"), vexp(dir + "/exp.hex"), meta(dir + "/meta.txt");
+  std::ofstream regs(dir + "/regs.hex"), vin(dir + "/in.hex"), vexp(dir + "/exp.hex"),
+      meta(dir + "/meta.txt");
   for (uint64_t word : img.words) regs << std::hex << word << "\n";
   char line[64];
   for (const auto& c : in) {
-    std::snprintf(line, sizeof line, "%04x%04x%04x%04x\n", c[0] & 0xffff, c[1] & 0xffff, c[2] & 0xffff,
-                  c[3] & 0xffff);
+    std::snprintf(line, sizeof line, "%04x%04x%04x%04x\n", c[0] & 0xffff, c[1] & 0xffff,
+                  c[2] & 0xffff, c[3] & 0xffff);
     vin << line;
     const acore::FixedSample s = model.step(c);
-    const unsigned v = (s.dos << 20) | (s.los << 19) | (s.ovf << 18) | (static_cast<unsigned>(s.region) << 16) | s.angle;
+    const unsigned v = (s.dos << 20) | (s.los << 19) | (s.ovf << 18) |
+                       (static_cast<unsigned>(s.region) << 16) | s.angle;
     std::snprintf(line, sizeof line, "%06x\n", v);
     vexp << line;
   }

@@ -27,7 +27,8 @@ const RtlBuild& rtl_build_for(const DatapathConfig& cfg) {
 const RtlBuild& rtl_build_named(const std::string& name) {
   for (const RtlBuild& b : rtl_builds())
     if (b.name == name) return b;
-  throw InputError("no Verilated build of the RTL is named '" + name + "'. Available:" + available_builds());
+  throw InputError("no Verilated build of the RTL is named '" + name +
+                   "'. Available:" + available_builds());
 }
 
 struct RtlHarness::Impl {
@@ -48,7 +49,8 @@ int RtlHarness::latency() const { return impl_->latency; }
 int RtlHarness::cycles_per_sample() const { return impl_->cycles_per_sample; }
 const DatapathConfig& RtlHarness::config() const { return impl_->cfg; }
 
-RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed, const DatapathConfig& cfg)
+RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed,
+                       const DatapathConfig& cfg)
     : impl_(new Impl) {
   const RtlBuild& build = rtl_build_for(cfg);
   impl_->cfg = cfg;

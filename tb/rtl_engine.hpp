@@ -19,10 +19,10 @@
 namespace acore {
 
 struct RtlRunOptions {
-  uint64_t seed = 1;          // random stream for gaps and backpressure
-  double backpressure = 0.0;  // probability that out_ready is low in a clock
-  double gaps = 0.0;          // probability that in_valid is low in a clock (an input gap)
-  std::string trace;          // FST waveform file; empty = no tracing (no overhead)
+  uint64_t seed = 1;                   // random stream for gaps and backpressure
+  double backpressure = 0.0;           // probability that out_ready is low in a clock
+  double gaps = 0.0;                   // probability that in_valid is low in a clock (an input gap)
+  std::string trace;                   // FST waveform file; empty = no tracing (no overhead)
   std::optional<StatusWindow> window;  // mag_lo/mag_hi; default StatusWindow::defaults(cfg)
   // The build's FOLD (clocks per sample): 0 = the image's configuration (cfg.fold, 1 for every
   // image read from a file: a register image does not depend on FOLD); 1, 2, 4, 8 = that build.
@@ -71,8 +71,8 @@ class RtlHarness {
   uint64_t cycles() const;
 
   // Streams `in` with random gaps/backpressure from rng and collects every output in order.
-  std::vector<FixedSample> stream(const std::vector<ChannelCodes>& in, double gaps, double backpressure,
-                                  std::mt19937_64& rng);
+  std::vector<FixedSample> stream(const std::vector<ChannelCodes>& in, double gaps,
+                                  double backpressure, std::mt19937_64& rng);
   // The pipeline latency: LATENCY of this build of rtl/acore_top.v (Verilator public parameter).
   int latency() const;
   // Clocks per sample at full rate: CYCLES of this build (= FOLD).

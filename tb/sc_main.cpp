@@ -38,7 +38,8 @@ SC_MODULE(RefModel) {
     }
     if (!(in_valid.read() && in_ready.read()) || !model) return;
     auto code = [](uint32_t v) { return static_cast<int32_t>(static_cast<int16_t>(v & 0xffff)); };
-    expected.push_back(model->step({code(c1.read()), code(c2.read()), code(c3.read()), code(c4.read())}));
+    expected.push_back(
+        model->step({code(c1.read()), code(c2.read()), code(c3.read()), code(c4.read())}));
   }
   SC_CTOR(RefModel) {
     SC_METHOD(on_clock);
@@ -68,7 +69,8 @@ SC_MODULE(Bench) {
   void check() {
     if (rst.read()) return;
     if (!out_valid.read()) {
-      if (angle.read() || region.read() || ovf.read() || los.read() || dos.read()) ++invalid_nonzero;
+      if (angle.read() || region.read() || ovf.read() || los.read() || dos.read())
+        ++invalid_nonzero;
       return;
     }
     if (!out_ready.read()) return;
@@ -86,9 +88,12 @@ SC_MODULE(Bench) {
     r.dos = dos.read();
     if (!(r == m)) {
       if (mismatches == 0)
-        std::printf("first mismatch at output %zu: rtl angle=%u region=%d flags=%d%d%d, model angle=%u region=%d "
-                    "flags=%d%d%d\n", compared, r.angle, r.region, r.ovf, r.los, r.dos, m.angle, m.region, m.ovf,
-                    m.los, m.dos);
+        std::printf(
+            "first mismatch at output %zu: rtl angle=%u region=%d flags=%d%d%d, model angle=%u "
+            "region=%d "
+            "flags=%d%d%d\n",
+            compared, r.angle, r.region, r.ovf, r.los, r.dos, m.angle, m.region, m.ovf, m.los,
+            m.dos);
       ++mismatches;
     }
     ++compared;
@@ -158,8 +163,10 @@ int sc_main(int argc, char** argv) {
   size_t samples = 100000;
   bool trace = false;
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "+trace") trace = true;
-    else if (argv[i][0] != '+') samples = std::stoul(argv[i]);
+    if (std::string(argv[i]) == "+trace")
+      trace = true;
+    else if (argv[i][0] != '+')
+      samples = std::stoul(argv[i]);
   }
   // Frames: the paper scenario, then random images with random inputs (saturation paths).
   std::vector<Frame> frames;
@@ -178,7 +185,8 @@ int sc_main(int argc, char** argv) {
       for (int a = 0; a < r.img.cfg.addr_atan(0); ++a) r.img.words[a] = rng() & mask;
       r.in.resize(samples / 10);
       for (auto& c : r.in)
-        for (int j = 0; j < 4; ++j) c[j] = static_cast<int32_t>(static_cast<int16_t>(rng() & 0xffff));
+        for (int j = 0; j < 4; ++j)
+          c[j] = static_cast<int32_t>(static_cast<int16_t>(rng() & 0xffff));
       frames.push_back(r);
     }
   }
@@ -259,8 +267,11 @@ int sc_main(int argc, char** argv) {
   sc_start();
   dut.final();
   if (tf) sc_close_vcd_trace_file(tf);
-  std::printf("SystemC co-sim: %zu samples sent, %zu compared, %zu mismatches, %zu non-zero outputs while invalid\n",
-              total, bench.compared, bench.mismatches, bench.invalid_nonzero);
-  const bool ok = bench.done && bench.mismatches == 0 && bench.compared == total && bench.invalid_nonzero == 0;
+  std::printf(
+      "SystemC co-sim: %zu samples sent, %zu compared, %zu mismatches, %zu non-zero outputs while "
+      "invalid\n",
+      total, bench.compared, bench.mismatches, bench.invalid_nonzero);
+  const bool ok =
+      bench.done && bench.mismatches == 0 && bench.compared == total && bench.invalid_nonzero == 0;
   return ok ? 0 : 1;
 }

@@ -21,11 +21,11 @@
 #include <random>
 
 #include "calibration/calibration.hpp"
-#include "cosim_stimuli.hpp"
 #include "core/errors.hpp"
+#include "cosim_stimuli.hpp"
 #include "engine/fixed_model.hpp"
-#include "support/paper_signals.hpp"
 #include "shell_driver.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {

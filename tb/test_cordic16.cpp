@@ -57,8 +57,10 @@ TEST(Cordic16, RtlEqualsModel) {
   for (int i = 0; i < cfg.iterations; ++i)
     for (int b = 0; b < ACORE_C16_AT_W; ++b) {
       const int bit = i * ACORE_C16_AT_W + b;
-      if ((table[i] >> b) & 1) top->atan_i[bit / 32] |= 1u << (bit % 32);
-      else top->atan_i[bit / 32] &= ~(1u << (bit % 32));
+      if ((table[i] >> b) & 1)
+        top->atan_i[bit / 32] |= 1u << (bit % 32);
+      else
+        top->atan_i[bit / 32] &= ~(1u << (bit % 32));
     }
   top->en_i = 1;
   top->clk_i = 0;
@@ -86,8 +88,8 @@ TEST(Cordic16, RtlEqualsModel) {
       ++n;
       if (top->angle_o != m.angle || static_cast<int64_t>(top->mag_o) != m.magnitude) {
         if (bad++ == 0)
-          ADD_FAILURE() << "x=" << x << " y=" << y << ": rtl angle " << top->angle_o << " mag " << top->mag_o
-                        << ", model " << m.angle << " " << m.magnitude;
+          ADD_FAILURE() << "x=" << x << " y=" << y << ": rtl angle " << top->angle_o << " mag "
+                        << top->mag_o << ", model " << m.angle << " " << m.magnitude;
       }
     }
   }
@@ -109,7 +111,8 @@ TEST(Cordic16, AccuracyAndNoOverflow) {
     if (x0 == 0 && y0 == 0) return;  // atan2(0, 0) has no angle
     // The model's loop with every intermediate X, Y measured against the RTL's register widths.
     int64_t x = x0, y = y0;
-    const uint64_t mag = static_cast<uint64_t>(std::llabs(x)) | static_cast<uint64_t>(std::llabs(y));
+    const uint64_t mag =
+        static_cast<uint64_t>(std::llabs(x)) | static_cast<uint64_t>(std::llabs(y));
     const int shift = (cfg.in_w - 2) - (63 - __builtin_clzll(mag));
     if (cfg.normalize && shift > 0) {
       x *= int64_t{1} << shift;
@@ -134,7 +137,8 @@ TEST(Cordic16, AccuracyAndNoOverflow) {
       use_x = std::max(use_x, static_cast<double>(X) / std::ldexp(1.0, xy_w - 1));
     }
     const CordicResult r = cordic_vector(x0, y0, cfg, table.data());
-    const double ref = std::atan2(static_cast<double>(y0), static_cast<double>(x0)) / (2 * M_PI) * turn;
+    const double ref =
+        std::atan2(static_cast<double>(y0), static_cast<double>(x0)) / (2 * M_PI) * turn;
     const double e = std::remainder(r.angle - ref, turn);
     if (r.magnitude != (X >> cfg.guard)) ++model_diff;
     se += e * e;
@@ -149,10 +153,12 @@ TEST(Cordic16, AccuracyAndNoOverflow) {
   for_each_input(full ? 1 : 6, full ? 0 : 300, check);
   const double rms = std::sqrt(se / n);
   char line[256];
-  std::snprintf(line, sizeof line,
-                "cordic16 accuracy vs atan2 (%s): %zu inputs, RMS %.4f LSB, max %.4f LSB at (%d, %d); "
-                "X uses %.3f, Y uses %.3f of its register range\n",
-                full ? "all 2^32 inputs" : "stride 6 + short vectors + edges", n, rms, worst, wx, wy, use_x, use_y);
+  std::snprintf(
+      line, sizeof line,
+      "cordic16 accuracy vs atan2 (%s): %zu inputs, RMS %.4f LSB, max %.4f LSB at (%d, %d); "
+      "X uses %.3f, Y uses %.3f of its register range\n",
+      full ? "all 2^32 inputs" : "stride 6 + short vectors + edges", n, rms, worst, wx, wy, use_x,
+      use_y);
   std::fputs(line, stdout);
   // ACORE_CORDIC16_REPORT=FILE keeps the line for synth/reports (scripts/synth_summary.py).
   if (const char* path = std::getenv("ACORE_CORDIC16_REPORT")) {

@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "calibration/calibration.hpp"
-#include "cosim_expect.hpp"
 #include "core/errors.hpp"
+#include "cosim_expect.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "host_port_checks.hpp"
-#include "support/paper_signals.hpp"
 #include "rtl_engine.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {

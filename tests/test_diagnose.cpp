@@ -13,8 +13,8 @@
 #include <functional>
 #include <random>
 
-#include "diagnose/diagnose.hpp"
 #include "core/errors.hpp"
+#include "diagnose/diagnose.hpp"
 #include "support/paper_signals.hpp"
 
 namespace acore {
@@ -116,9 +116,11 @@ TEST(Diagnose, NamesTheHandMadeEffectAndShrinksTheHoldoutGap) {
     EXPECT_TRUE(d.ambiguous_with.empty())
         << c.effect << ": " << d.to_json()["ambiguous_with"].dump();
     if (d.ranking.front().cand.effect == c.effect)
-      EXPECT_NEAR(d.ranking.front().cand.param(c.param), c.value, 0.2 * std::fabs(c.value)) << c.effect;
+      EXPECT_NEAR(d.ranking.front().cand.param(c.param), c.value, 0.2 * std::fabs(c.value))
+          << c.effect;
     ASSERT_TRUE(d.hold_before.has_value());
-    EXPECT_LT(d.hold_after->gap_deg, 0.3 * d.hold_before->gap_deg) << c.effect << " real " << d.before.gap_deg << " -> " << d.after.gap_deg;
+    EXPECT_LT(d.hold_after->gap_deg, 0.3 * d.hold_before->gap_deg)
+        << c.effect << " real " << d.before.gap_deg << " -> " << d.after.gap_deg;
   }
 }
 
@@ -468,7 +470,9 @@ TEST(Diagnose, BadInputIsRejected) {
   two.channels = 2;
   EXPECT_THROW(diagnose(s, two, nullptr), InputError);
   Recording few = s;
-  for (auto* v : {&few.theta_ref, &few.t, &few.temp, &few.ch[0], &few.ch[1], &few.ch[2], &few.ch[3]}) v->resize(100);
+  for (auto* v :
+       {&few.theta_ref, &few.t, &few.temp, &few.ch[0], &few.ch[1], &few.ch[2], &few.ch[3]})
+    v->resize(100);
   EXPECT_THROW(diagnose(s, few, nullptr), InputError);
   Recording noref = s;
   noref.theta_ref.clear();
@@ -477,7 +481,8 @@ TEST(Diagnose, BadInputIsRejected) {
   for (int c = 0; c < 4; ++c) std::fill(flat.ch[c].begin(), flat.ch[c].end(), 0.25);
   EXPECT_THROW(diagnose(s, flat, nullptr), InputError);
   Recording part = s;
-  for (auto* v : {&part.theta_ref, &part.t, &part.temp, &part.ch[0], &part.ch[1], &part.ch[2], &part.ch[3]})
+  for (auto* v :
+       {&part.theta_ref, &part.t, &part.temp, &part.ch[0], &part.ch[1], &part.ch[2], &part.ch[3]})
     v->resize(1000);  // the first 1000 samples turn less than 360 degrees
   EXPECT_THROW(diagnose(s, part, nullptr), InputError);
 }

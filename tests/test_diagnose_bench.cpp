@@ -80,8 +80,10 @@ TEST(DiagnoseBench, DrawsAreReproducibleAndInTheirRanges) {
   // Blind: nothing in the recordings names the effect.
   const BenchRecordings r = make_bench_recordings(draw_bench_case(3, 0, "offset", 4), 2000);
   for (const Recording* rec : {&r.sim, &r.real, &r.holdout}) {
-    for (const auto& [k, v] : rec->meta) EXPECT_EQ(v.find("offset"), std::string::npos) << k << "=" << v;
-    for (const auto& line : rec->comments) EXPECT_EQ(line.find("offset"), std::string::npos) << line;
+    for (const auto& [k, v] : rec->meta)
+      EXPECT_EQ(v.find("offset"), std::string::npos) << k << "=" << v;
+    for (const auto& line : rec->comments)
+      EXPECT_EQ(line.find("offset"), std::string::npos) << line;
   }
   EXPECT_EQ(draw_bench_case(3, 0, "outside", 2, "glitch").outside_params.size(), 2u);
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The estimator chain against closed forms and the paper's figures (docs/contracts.md, paper scenario).
+// The estimator chain against closed forms and the paper's figures (docs/contracts.md, paper
+// scenario).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,10 +9,10 @@
 #include "calibration/calibration.hpp"
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
-#include "engine/estimator.hpp"
 #include "diagnose/noise_floor.hpp"
-#include "support/paper_signals.hpp"
+#include "engine/estimator.hpp"
 #include "stages/region_select.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -58,9 +59,10 @@ TEST(Calibration, PaperScenarioReproducesAndBeatsTable3) {
 }
 
 // The default calibration takes the uncorrected error's mean direction as the zero offset (README
-// "Zero offset"): on the paper scenario that is the -6.94 deg mean of docs/contracts.md, paper scenario, so the uncorrected
-// error in the reference frame has mean 0 and RMS sqrt(8.54^2 - 6.94^2) = 4.97 deg; the 1-D cubic
-// fitted against the aligned reference pays 0.04 deg RMS for it (0.557 against 0.520).
+// "Zero offset"): on the paper scenario that is the -6.94 deg mean of docs/contracts.md, paper
+// scenario, so the uncorrected error in the reference frame has mean 0 and RMS sqrt(8.54^2
+// - 6.94^2) = 4.97 deg; the 1-D cubic fitted against the aligned reference pays 0.04 deg RMS for it
+// (0.557 against 0.520).
 TEST(Calibration, DefaultTakesTheMeanDirectionAsZeroOffset) {
   const Recording cal = test::paper_recording(4096);
   const FloatCoefficients fc = calibrate(cal, CalOptions{});
@@ -82,7 +84,8 @@ TEST(Calibration, HigherDegreeAndMoreRegionsImprove) {
     CalOptions o;
     o.degree = n;
     o.regions = 8;
-    const double rms = error_stats(angle_error_deg(run_float(cal, calibrate(cal, o)).angle, cal.theta_ref)).rms;
+    const double rms =
+        error_stats(angle_error_deg(run_float(cal, calibrate(cal, o)).angle, cal.theta_ref)).rms;
     EXPECT_LT(rms, prev) << "degree " << n;
     prev = rms;
   }
@@ -96,7 +99,8 @@ TEST(Calibration, RejectsRecordingsThatCannotBeFitted) {
   EXPECT_THROW(calibrate(few, CalOptions{}), InputError);
   // Half a turn: regions 2 and 3 empty.
   Recording half = test::paper_recording(4096);
-  for (auto* v : {&half.theta_ref, &half.ch[0], &half.ch[1], &half.ch[2], &half.ch[3]}) v->resize(1024);
+  for (auto* v : {&half.theta_ref, &half.ch[0], &half.ch[1], &half.ch[2], &half.ch[3]})
+    v->resize(1024);
   EXPECT_THROW(calibrate(half, CalOptions{}), InputError);
 }
 

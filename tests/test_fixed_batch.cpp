@@ -27,7 +27,8 @@ void expect_same(const FixedModel& m, const std::vector<ChannelCodes>& codes) {
 
 TEST(FixedBatch, MatchesStepOnThePaperScenario) {
   const Recording rec = test::paper_recording(20000);
-  const RegImage img = quantize(calibrate(rec, CalOptions{}), DatapathConfig{}, choose_in_scale(rec, 16));
+  const RegImage img =
+      quantize(calibrate(rec, CalOptions{}), DatapathConfig{}, choose_in_scale(rec, 16));
   const FixedModel m(img);
   ASSERT_TRUE(m.batch_fits_int32());
   expect_same(m, to_codes(rec, img.in_scale, 16));
@@ -64,7 +65,8 @@ TEST(FixedBatch, MatchesStepInTheOtherCorrectionModes) {
   struct Mode {
     int correction, degree, regions, xcenter;
   };
-  for (const Mode md : {Mode{kNone, 3, 4, 0}, Mode{kNone, 3, 8, 0}, Mode{kPoly2d, 3, 4, 0}, Mode{kPoly, 7, 8, 1}}) {
+  for (const Mode md :
+       {Mode{kNone, 3, 4, 0}, Mode{kNone, 3, 8, 0}, Mode{kPoly2d, 3, 4, 0}, Mode{kPoly, 7, 8, 1}}) {
     DatapathConfig cfg;
     cfg.correction = md.correction;
     cfg.degree = md.degree;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "stages/cordic.hpp"
 #include "core/fixed_point.hpp"
+#include "stages/cordic.hpp"
 #include "stages/poly_correct.hpp"
 #include "stages/scaler.hpp"
 
@@ -141,8 +141,8 @@ TEST(Cordic, MagnitudeIsTheGainTimesTheLength) {
   for (int i = 0; i < cfg.iterations; ++i) gain *= std::sqrt(1 + std::ldexp(1.0, -2 * i));
   for (int k = 0; k < 64; ++k) {
     const double a = 2 * M_PI * k / 64;
-    const CordicResult c = cordic_vector(std::llround(60000 * std::cos(a)), std::llround(60000 * std::sin(a)),
-                                         cfg, table.data());
+    const CordicResult c = cordic_vector(std::llround(60000 * std::cos(a)),
+                                         std::llround(60000 * std::sin(a)), cfg, table.data());
     EXPECT_NEAR(c.magnitude, gain * 60000, 20);
   }
 }

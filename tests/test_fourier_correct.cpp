@@ -8,10 +8,10 @@
 #include <random>
 
 #include "calibration/calibration.hpp"
-#include "stages/cordic.hpp"
-#include "stages/cordic_rotate.hpp"
 #include "core/error_stats.hpp"
 #include "engine/estimator.hpp"
+#include "stages/cordic.hpp"
+#include "stages/cordic_rotate.hpp"
 #include "stages/fourier_correct.hpp"
 #include "support/paper_signals.hpp"
 
@@ -199,8 +199,9 @@ TEST(FourierCalibration, RecoversAKnownDistortionExactly) {
 }
 
 TEST(FourierCalibration, PaperNoiselessTargetWithoutPolynomial) {
-  // The Fourier correction's accuracy target, at most 64 words: RMS <= 0.10 deg, max <= 0.35 deg on a validation recording
-  // whose angles the calibration never saw. 21 harmonics and no polynomial: 4 + 16 + 43 = 63 words.
+  // The Fourier correction's accuracy target, at most 64 words: RMS <= 0.10 deg, max <= 0.35 deg on
+  // a validation recording whose angles the calibration never saw. 21 harmonics and no polynomial:
+  // 4 + 16 + 43 = 63 words.
   CalOptions o;
   o.correction = kNone;
   o.fourier_k = 21;

@@ -32,9 +32,11 @@ const HarmonicRow& row(const HarmonicAnalysis& a, int order) { return a.harmonic
 // The Eq. 33 numbers that the issue and the README quote.
 TEST(HarmonicsEq33, MaxErrorAndResiduals) {
   const auto a = analyze(eq33());
-  std::printf("Eq. 33: max %.4f deg, residual first %.4f deg, second %.5f deg, bounds geo %.3f T1 %.3f T2 %.3f deg\n",
-              a.max_error * kDeg, a.residual_first * kDeg, a.residual_second * kDeg, a.bound_geometric * kDeg,
-              *a.bound_taylor_first * kDeg, *a.bound_taylor_second * kDeg);
+  std::printf(
+      "Eq. 33: max %.4f deg, residual first %.4f deg, second %.5f deg, bounds geo %.3f T1 %.3f T2 "
+      "%.3f deg\n",
+      a.max_error * kDeg, a.residual_first * kDeg, a.residual_second * kDeg,
+      a.bound_geometric * kDeg, *a.bound_taylor_first * kDeg, *a.bound_taylor_second * kDeg);
   EXPECT_NEAR(a.max_error * kDeg, 7.76, 0.01);
   EXPECT_LT(a.residual_first * kDeg, 0.6);
   EXPECT_LT(a.residual_second * kDeg, 0.05);
@@ -50,7 +52,8 @@ TEST(HarmonicsEq33, DominantOrdersFromFirstOrder) {
   const auto a = analyze(eq33());
   for (int k : {1, 5, 7, 11}) {
     const auto& r = row(a, k);
-    std::printf("order %2d: exact %.5f first %.5f second %.5f deg\n", k, r.exact * kDeg, r.first * kDeg, r.second * kDeg);
+    std::printf("order %2d: exact %.5f first %.5f second %.5f deg\n", k, r.exact * kDeg,
+                r.first * kDeg, r.second * kDeg);
     EXPECT_GT(r.exact * kDeg, 0.5) << k;
     EXPECT_NEAR(r.first * kDeg, r.exact * kDeg, 0.001) << "order " << k;
   }
@@ -60,7 +63,8 @@ TEST(HarmonicsEq33, MinorOrdersFromSecondOrder) {
   const auto a = analyze(eq33());
   for (int k : {2, 4, 8, 10, 14, 16}) {
     const auto& r = row(a, k);
-    std::printf("order %2d: exact %.5f first %.5f second %.5f deg\n", k, r.exact * kDeg, r.first * kDeg, r.second * kDeg);
+    std::printf("order %2d: exact %.5f first %.5f second %.5f deg\n", k, r.exact * kDeg,
+                r.first * kDeg, r.second * kDeg);
     EXPECT_EQ(r.first, 0.0) << "first order cannot produce order " << k;
     EXPECT_GT(r.exact * kDeg, 0.01) << k;
     EXPECT_NEAR(r.second, r.exact, 0.02 * r.exact) << "order " << k;
@@ -72,9 +76,11 @@ TEST(HarmonicsEq33, SpecFileAndJson) {
   const auto a = analyze(s), b = analyze(eq33());
   EXPECT_DOUBLE_EQ(a.max_error, b.max_error);
   const auto j = a.to_json();
-  for (const char* f : {"max_error_deg", "residual_first_deg", "residual_second_deg", "bounds", "harmonics"})
+  for (const char* f :
+       {"max_error_deg", "residual_first_deg", "residual_second_deg", "bounds", "harmonics"})
     EXPECT_TRUE(j.contains(f)) << f;
-  for (const char* f : {"geometric_deg", "taylor_first_deg", "taylor_second_deg"}) EXPECT_TRUE(j["bounds"].contains(f)) << f;
+  for (const char* f : {"geometric_deg", "taylor_first_deg", "taylor_second_deg"})
+    EXPECT_TRUE(j["bounds"].contains(f)) << f;
   const auto& h = j["harmonics"].at(5);
   EXPECT_EQ(h["order"].get<int>(), 5);
   EXPECT_NEAR(h["exact_deg"].get<double>(), a.harmonics[5].exact * kDeg, 1e-12);
@@ -127,7 +133,8 @@ TEST(HarmonicsTaylor, ResidualOrder) {
     auto d = random_disturbances(rng, p, 3, 0.02);
     const auto phi = turn_grid(1024);
     auto residuals = [&](const std::vector<Disturbance>& x) {
-      const auto e = exact_error(x, p, phi), t1 = first_order_term(x, p, phi), t2 = second_order_term(x, p, phi);
+      const auto e = exact_error(x, p, phi), t1 = first_order_term(x, p, phi),
+                 t2 = second_order_term(x, p, phi);
       double r1 = 0, r2 = 0;
       for (size_t j = 0; j < phi.size(); ++j) {
         r1 = std::max(r1, std::fabs(e[j] - t1[j]));
@@ -184,14 +191,16 @@ TEST(HarmonicsBounds, HoldOnRandomSpectra) {
     ASSERT_LT(ag, 1);
     ASSERT_LT(att, 1);
     const auto phi = turn_grid(256);
-    const auto e = exact_error(d, p, phi), t1 = first_order_term(d, p, phi), t2 = second_order_term(d, p, phi);
+    const auto e = exact_error(d, p, phi), t1 = first_order_term(d, p, phi),
+               t2 = second_order_term(d, p, phi);
     double emax = 0, r1 = 0, r2 = 0;
     for (size_t j = 0; j < phi.size(); ++j) {
       emax = std::max(emax, std::fabs(e[j]));
       r1 = std::max(r1, std::fabs(e[j] - t1[j]));
       r2 = std::max(r2, std::fabs(e[j] - t1[j] - t2[j]));
     }
-    const double geo = geometric_bound(ag), b1 = taylor_remainder_bound(att, 1), b2 = taylor_remainder_bound(att, 2);
+    const double geo = geometric_bound(ag), b1 = taylor_remainder_bound(att, 1),
+                 b2 = taylor_remainder_bound(att, 2);
     ASSERT_LE(emax, geo * (1 + 1e-12)) << "Eq. 29, trial " << trial;
     if (ag < 0.5) {
       ASSERT_LE(emax, geometric_bound_linear(ag) * (1 + 1e-12)) << "Eq. 30, trial " << trial;
@@ -205,8 +214,10 @@ TEST(HarmonicsBounds, HoldOnRandomSpectra) {
     tightest_t2 = std::max(tightest_t2, r2 / b2);
     ++cases;
   }
-  std::printf("%d spectra (%d with A < 1/2); largest error/bound: geometric %.3f, Taylor k=1 %.3f, k=2 %.3f\n", cases,
-              linear_cases, tightest_geo, tightest_t1, tightest_t2);
+  std::printf(
+      "%d spectra (%d with A < 1/2); largest error/bound: geometric %.3f, Taylor k=1 %.3f, k=2 "
+      "%.3f\n",
+      cases, linear_cases, tightest_geo, tightest_t1, tightest_t2);
   EXPECT_GT(linear_cases, 1000);
   // The sweep reaches the bounds' neighbourhood, so a bound that is too small would have been hit.
   EXPECT_GT(tightest_geo, 0.8);
@@ -252,7 +263,8 @@ TEST(HarmonicsTable1, RowsMatchExactDft) {
     const auto phi = turn_grid(1024);
     for (MismatchType t : all_mismatch_types()) {
       for (int trial = 0; trial < 12; ++trial) {
-        MismatchParams m{sgn() * mag(rng), sgn() * mag(rng), sgn() * mag(rng), sgn() * mag(rng), sgn() * mag(rng)};
+        MismatchParams m{sgn() * mag(rng), sgn() * mag(rng), sgn() * mag(rng), sgn() * mag(rng),
+                         sgn() * mag(rng)};
         const auto d = mismatch_disturbances(t, m, p);
         const auto h = table1(t, m);
         const auto ex = dft_amplitudes(exact_error(d, p, phi), 4 * p);
@@ -302,8 +314,9 @@ TEST(HarmonicsTable1, PrintedRowsThatAreWrong) {
     const auto d = mismatch_disturbances(MismatchType::OffsetAmplitude, m, p);
     const double ex = dft_amplitudes(exact_error(d, p, phi), 2 * p)[2 * p];
     const double A0 = m.A0, B0 = m.B0, An = m.An, Bn = m.Bn;
-    const double printed =
-        std::sqrt(B0 * B0 * A0 * A0 + std::pow(2 * B0 * B0 + Bn * Bn - 2 * Bn - 2 * A0 * A0 - An * An - 2 * An, 2) / 16);
+    const double printed = std::sqrt(
+        B0 * B0 * A0 * A0 +
+        std::pow(2 * B0 * B0 + Bn * Bn - 2 * Bn - 2 * A0 * A0 - An * An - 2 * An, 2) / 16);
     const double fixed = table1(MismatchType::OffsetAmplitude, m).H2p;
     EXPECT_GT(std::fabs(printed - ex), 0.3 * ex);
     EXPECT_LT(std::fabs(fixed - ex), 0.01 * ex);
@@ -311,7 +324,8 @@ TEST(HarmonicsTable1, PrintedRowsThatAreWrong) {
   {
     const auto d = mismatch_disturbances(MismatchType::OffsetAmplitudePhase, m, p);
     const double ex = dft_amplitudes(exact_error(d, p, phi), 0)[0];
-    const double printed = std::fabs(0.25 * (3 - m.An + m.Bn) * std::sin(m.delta) - 0.125 * std::sin(2 * m.delta));
+    const double printed =
+        std::fabs(0.25 * (3 - m.An + m.Bn) * std::sin(m.delta) - 0.125 * std::sin(2 * m.delta));
     const double fixed = table1(MismatchType::OffsetAmplitudePhase, m).H0;
     EXPECT_GT(std::fabs(printed - ex), 0.05 * ex);
     EXPECT_LT(std::fabs(fixed - ex), 0.01 * ex);
@@ -331,7 +345,8 @@ TEST(HarmonicsSpectrum, UniformEqualsDft) {
   std::vector<double> err_deg;
   for (double e : a.exact) err_deg.push_back(e * kDeg);
   const auto s = error_spectrum(a.phi, err_deg, 20);
-  for (int k = 0; k <= 20; ++k) EXPECT_NEAR(s[k].amplitude_deg, a.harmonics[k].exact * kDeg, 1e-9) << k;
+  for (int k = 0; k <= 20; ++k)
+    EXPECT_NEAR(s[k].amplitude_deg, a.harmonics[k].exact * kDeg, 1e-9) << k;
 }
 
 TEST(HarmonicsSpectrum, NonUniformRecoversKnownSeries) {
@@ -343,7 +358,8 @@ TEST(HarmonicsSpectrum, NonUniformRecoversKnownSeries) {
     // Two turns, unevenly sampled (denser near the start), with noise.
     const double t = 4 * kPi * std::pow(u(rng) / (2 * kPi), 1.5);
     th.push_back(t);
-    e.push_back(0.3 + 1.5 * std::sin(t + 0.2) + 0.4 * std::sin(3 * t - 1.0) + 0.05 * std::cos(8 * t) + noise(rng));
+    e.push_back(0.3 + 1.5 * std::sin(t + 0.2) + 0.4 * std::sin(3 * t - 1.0) +
+                0.05 * std::cos(8 * t) + noise(rng));
   }
   const auto s = error_spectrum(th, e, 10);
   EXPECT_NEAR(s[0].cos_deg, 0.3, 0.002);
@@ -377,8 +393,8 @@ TEST(HarmonicsAttribution, NamesTheCauses) {
   SignalSpec s;
   s.p = 2;
   s.A0 = 0.02;
-  s.B0 = 0.015;  // offset: order p = 2
-  s.delta_p = 0.04;  // phase: order 2p = 4
+  s.B0 = 0.015;                       // offset: order p = 2
+  s.delta_p = 0.04;                   // phase: order 2p = 4
   s.terms = {{7, 0.01, 0, 0.01, 0}};  // A = B, same phase: only order n - p = 5
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0, 2 * kPi);
@@ -403,8 +419,10 @@ TEST(HarmonicsAttribution, NamesTheCauses) {
   const auto& o4 = find(4);
   EXPECT_TRUE(o4.causes.at(0).kind == "phase" || o4.causes[0].kind == "amplitude");
   for (const auto& c : o4.causes)
-    if (c.kind == "phase") EXPECT_NEAR(c.parameter, 0.04, 0.004);
-    else if (c.kind == "offset") EXPECT_LT(c.explained, 0.2);
+    if (c.kind == "phase")
+      EXPECT_NEAR(c.parameter, 0.04, 0.004);
+    else if (c.kind == "offset")
+      EXPECT_LT(c.explained, 0.2);
   // Order 5: a signal harmonic n = 7 (= 5 + p) or n = 3 (= 5 - p), explaining all of it.
   const auto& o5 = find(5);
   EXPECT_EQ(o5.causes.at(0).kind, "harmonic");
@@ -444,7 +462,8 @@ TEST(HarmonicsSpec, BadSpecs) {
   expect_bad(R"({"p": 1, "Apx": 1})", "'Apx'");
   expect_bad(R"({"p": 1, "terms": {}})", "'terms'");
   expect_bad(R"({"p": 1, "A0": 0.7, "B0": 0.8})", "convergence domain");
-  expect_bad(R"({"p": 2, "terms": [{"n": 3, "A": 0.6, "B": 0.6}, {"n": 5, "A": 0.2, "B": 0.2}]})", "convergence domain");
+  expect_bad(R"({"p": 2, "terms": [{"n": 3, "A": 0.6, "B": 0.6}, {"n": 5, "A": 0.2, "B": 0.2}]})",
+             "convergence domain");
   // Non-finite values cannot be written in JSON text but can reach the parser from code.
   nlohmann::json j = {{"p", 1}, {"A0", std::nan("")}};
   EXPECT_THROW(parse_signal_spec(j), InputError);
@@ -456,7 +475,8 @@ TEST(HarmonicsSpec, BadSpecs) {
     EXPECT_NE(std::string(e.what()).find("terms[0].theta"), std::string::npos) << e.what();
   }
   // A valid spec with a mismatch is accepted.
-  EXPECT_NO_THROW(parse_signal_spec(nlohmann::json::parse(R"({"p": 2, "Ap": 1.05, "Bp": 0.95, "delta_p": 0.02})")));
+  EXPECT_NO_THROW(parse_signal_spec(
+      nlohmann::json::parse(R"({"p": 2, "Ap": 1.05, "Bp": 0.95, "delta_p": 0.02})")));
 }
 
 }  // namespace

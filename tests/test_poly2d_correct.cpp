@@ -10,15 +10,15 @@
 #include <random>
 
 #include "calibration/calibration.hpp"
-#include "stages/cordic.hpp"
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "engine/float_model.hpp"
+#include "sim/simulator.hpp"
+#include "stages/cordic.hpp"
 #include "stages/poly2d_correct.hpp"
 #include "stages/poly_correct.hpp"
-#include "sim/simulator.hpp"
 
 namespace acore {
 namespace {

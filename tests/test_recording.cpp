@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Recording file I/O (docs/contracts.md, recording file): round trip, column order, CRLF, unknown columns, and every error
-// with the FILE:LINE: column 'NAME' it must name.
+// Recording file I/O (docs/contracts.md, recording file): round trip, column order, CRLF, unknown
+// columns, and every error with the FILE:LINE: column 'NAME' it must name.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -27,7 +27,9 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool has(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 TEST(Recording, ParsesMetaCommentsAndColumnsInAnyOrder) {
   const Recording r = parse_recording(
@@ -76,7 +78,8 @@ TEST(Recording, RoundTripIsExact) {
     r.meta["seed"] = "42";
     r.comments.push_back("a comment");
     for (int i = 0; i < 200; ++i) {
-      for (int c = 0; c < channels; ++c) r.ch[static_cast<size_t>(c)].push_back(u(rng) * std::pow(10.0, i % 30 - 15));
+      for (int c = 0; c < channels; ++c)
+        r.ch[static_cast<size_t>(c)].push_back(u(rng) * std::pow(10.0, i % 30 - 15));
       r.theta_ref.push_back(u(rng));
       r.t.push_back(i * 1e-3);
       r.temp.push_back(25 + u(rng) * 1e-3);
@@ -90,7 +93,8 @@ TEST(Recording, RoundTripIsExact) {
     EXPECT_EQ(b.channels, channels);
     EXPECT_EQ(b.meta, r.meta);
     EXPECT_EQ(b.comments, r.comments);
-    for (int c = 0; c < 4; ++c) EXPECT_EQ(b.ch[static_cast<size_t>(c)], r.ch[static_cast<size_t>(c)]) << c;
+    for (int c = 0; c < 4; ++c)
+      EXPECT_EQ(b.ch[static_cast<size_t>(c)], r.ch[static_cast<size_t>(c)]) << c;
     EXPECT_EQ(b.theta_ref, r.theta_ref);
     EXPECT_EQ(b.t, r.t);
     EXPECT_EQ(b.temp, r.temp);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Register image: the docs/contracts.md, register image map, round trip through the $readmemh text, and bad input.
+// Register image: the docs/contracts.md, register image map, round trip through the $readmemh text,
+// and bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,11 +9,11 @@
 #include <random>
 
 #include "calibration/calibration.hpp"
-#include "stages/cordic.hpp"
 #include "core/errors.hpp"
 #include "engine/fixed_model.hpp"
-#include "support/paper_signals.hpp"
 #include "regmap/regimage.hpp"
+#include "stages/cordic.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -117,7 +118,7 @@ TEST(RegImage, BadInputNamesFileLineAndField) {
   expect_error(deg, "degree=9 must be 1..7");
   std::string wide = good;
   const auto p = wide.rfind("\n", wide.find("//   0 offset")) + 1;  // first word line
-  wide.replace(p, 5, "fffff");  // 20 bits in an 18-bit word
+  wide.replace(p, 5, "fffff");                                      // 20 bits in an 18-bit word
   expect_error(wide, "does not fit 18 bits");
   EXPECT_THROW(read_regimage("/nonexistent/regs.hex"), InputError);
 }
@@ -189,7 +190,8 @@ TEST(RegImage, Crc32HeaderRoundTripsAndCatchesAChangedWord) {
   // One bit of one word changed in the text: the reader names the file, the key's line and field.
   const int line_no = static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
   std::string flipped = text;
-  const size_t w = flipped.rfind("\n", flipped.find("//   0 offset")) + 1 + 4;  // word 0's last digit
+  const size_t w =
+      flipped.rfind("\n", flipped.find("//   0 offset")) + 1 + 4;  // word 0's last digit
   flipped[w] = flipped[w] == '0' ? '1' : '0';
   expect_error(flipped, "regs.hex:" + std::to_string(line_no) + ": header field 'crc32'");
   // Without the key (images written before it) the same text parses.

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The static sensor model: recovers the paper's Fourier coefficients (docs/contracts.md, paper scenario) and noise level.
+// The static sensor model: recovers the paper's Fourier coefficients (docs/contracts.md, paper
+// scenario) and noise level.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "core/errors.hpp"
-#include "support/paper_signals.hpp"
 #include "diagnose/sensor_fit.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -29,8 +30,8 @@ TEST(SensorFit, RecoversThePaperTableAndNoise) {
   EXPECT_NEAR(f.coef[1][3], 0.19, 0.005);
   EXPECT_NEAR(f.coef[1][4], 0.19, 0.005);
   for (double s : f.noise_sigma) EXPECT_NEAR(s, 0.05, 0.002);
-  EXPECT_GT(f.noise_corr[0], 0.95);          // common-mode noise is fully correlated
-  EXPECT_LT(f.diff_noise_sigma(), 0.01);     // and cancels in the differences
+  EXPECT_GT(f.noise_corr[0], 0.95);       // common-mode noise is fully correlated
+  EXPECT_LT(f.diff_noise_sigma(), 0.01);  // and cancels in the differences
   EXPECT_NEAR(f.value(3, 1.0), rec.ch[3][0] * 0 + f.value(3, 1.0 + 2 * M_PI), 1e-12);
 }
 
@@ -38,7 +39,8 @@ TEST(SensorFit, DerivativeMatchesFiniteDifference) {
   const SensorFit f = fit_sensor(test::paper_recording(2048), 6, 2);
   for (double th : {0.1, 1.3, 4.0})
     for (int c = 0; c < 4; ++c)
-      EXPECT_NEAR(f.derivative(c, th), (f.value(c, th + 1e-6) - f.value(c, th - 1e-6)) / 2e-6, 1e-5);
+      EXPECT_NEAR(f.derivative(c, th), (f.value(c, th + 1e-6) - f.value(c, th - 1e-6)) / 2e-6,
+                  1e-5);
 }
 
 TEST(SensorFit, RejectsLessThanATurn) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The sensor simulator and its effect library: the paper's figures (docs/contracts.md, paper scenario), the Fourier content of
-// the channels against the configured AF/BF, the noise model, every effect against its closed form,
-// trajectories, two-channel sensors, and the scenario JSON round trip and errors.
+// The sensor simulator and its effect library: the paper's figures (docs/contracts.md, paper
+// scenario), the Fourier content of the channels against the configured AF/BF, the noise model,
+// every effect against its closed form, trajectories, two-channel sensors, and the scenario JSON
+// round trip and errors.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -11,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
-#include "support/paper_signals.hpp"
 #include "sim/simulator.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -30,7 +31,8 @@ std::vector<double> uncorrected_error(const Recording& r, int p = 1) {
   const size_t n = r.size();
   double o13 = 0, o24 = 0, v13 = 0, v24 = 0;
   for (size_t i = 0; i < n; ++i) o13 += r.d13(i) / n, o24 += r.d24(i) / n;
-  for (size_t i = 0; i < n; ++i) v13 += std::pow(r.d13(i) - o13, 2) / n, v24 += std::pow(r.d24(i) - o24, 2) / n;
+  for (size_t i = 0; i < n; ++i)
+    v13 += std::pow(r.d13(i) - o13, 2) / n, v24 += std::pow(r.d24(i) - o24, 2) / n;
   const double a13 = std::sqrt(2 * v13), a24 = std::sqrt(2 * v24);
   std::vector<double> e(n);
   for (size_t i = 0; i < n; ++i) {
@@ -87,15 +89,15 @@ TEST(Simulator, PaperNoiselessMatchesTheIndependentTableImplementation) {
   EXPECT_EQ(a.meta.at("p"), "1");
 }
 
-// DFT of a simulated channel over whole turns: the cosine/sine coefficients at each electrical order
-// are the configured AF/BF plus the ideal term, the DC the offset.
+// DFT of a simulated channel over whole turns: the cosine/sine coefficients at each electrical
+// order are the configured AF/BF plus the ideal term, the DC the offset.
 TEST(Simulator, FourierContentMatchesConfiguredCoefficients) {
   Scenario s = builtin_scenario("paper-noiseless");
   s.p = 2;
   s.sensor[0].offset = 0.07;
   s.sensor[1].amplitude = 0.9;
   s.sensor[2].af.push_back(0.0);
-  s.sensor[2].af.push_back(0.025);  // order 7
+  s.sensor[2].af.push_back(0.025);                   // order 7
   s.sensor[3].bf = {0, 0, 0, 0, 0, 0, 0, 0, -0.04};  // order 9 only
   const size_t n = 512;
   const Recording r = simulate(s, n, 1);
@@ -140,8 +142,10 @@ TEST(Simulator, CommonNoiseCancelsInTheDifferences) {
   EXPECT_NEAR(mean, 0, 0.002);
   EXPECT_NEAR(std::sqrt(var), 0.05, 0.002);
   // Deterministic in the seed, different across seeds.
-  EXPECT_EQ(simulate(builtin_scenario("paper"), 100, 9).ch[0], simulate(builtin_scenario("paper"), 100, 9).ch[0]);
-  EXPECT_NE(simulate(builtin_scenario("paper"), 100, 9).ch[0], simulate(builtin_scenario("paper"), 100, 10).ch[0]);
+  EXPECT_EQ(simulate(builtin_scenario("paper"), 100, 9).ch[0],
+            simulate(builtin_scenario("paper"), 100, 9).ch[0]);
+  EXPECT_NE(simulate(builtin_scenario("paper"), 100, 9).ch[0],
+            simulate(builtin_scenario("paper"), 100, 10).ch[0]);
 }
 
 TEST(Simulator, IndependentNoiseIsPerChannel) {
@@ -224,9 +228,14 @@ TEST(Effects, NamesParametersAndErrors) {
 
 TEST(Effects, OffsetAndGainMismatch) {
   const Recording r = simulate(
-      ideal_with("offset", {{"offset_c1", 0.1}, {"offset_c2", -0.2}, {"offset_c3", 0.3}, {"offset_c4", 0.04}}), 100, 1);
+      ideal_with(
+          "offset",
+          {{"offset_c1", 0.1}, {"offset_c2", -0.2}, {"offset_c3", 0.3}, {"offset_c4", 0.04}}),
+      100, 1);
   const Recording g = simulate(
-      ideal_with("gain_mismatch", {{"gain_c1", 1.1}, {"gain_c2", 0.9}, {"gain_c3", 1.0}, {"gain_c4", 1.25}}), 100, 1);
+      ideal_with("gain_mismatch",
+                 {{"gain_c1", 1.1}, {"gain_c2", 0.9}, {"gain_c3", 1.0}, {"gain_c4", 1.25}}),
+      100, 1);
   const double o[4] = {0.1, -0.2, 0.3, 0.04}, k[4] = {1.1, 0.9, 1.0, 1.25};
   for (size_t i = 0; i < 100; ++i)
     for (int c = 0; c < 4; ++c) {
@@ -255,7 +264,8 @@ TEST(Effects, PhaseErrorShiftsTheSinePairOnly) {
 
 TEST(Effects, HarmonicSeenFromEachPosition) {
   const double a = 0.03, psi = 0.4;
-  const Recording r = simulate(ideal_with("harmonic", {{"order", 3}, {"amplitude", a}, {"phase_rad", psi}}), 256, 1);
+  const Recording r = simulate(
+      ideal_with("harmonic", {{"order", 3}, {"amplitude", a}, {"phase_rad", psi}}), 256, 1);
   for (size_t i = 0; i < 256; ++i)
     for (int c = 0; c < 4; ++c) {
       const double x = r.theta_ref[i] + c * kPi / 2;  // the field angle at the sensor's position
@@ -273,7 +283,8 @@ TEST(Effects, Eccentricity) {
   const Recording r = simulate(s, 300, 1);
   for (size_t i = 0; i < 300; ++i) {
     const double th = r.theta_ref[i] + eps * std::sin(r.theta_ref[i] - phi0);
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(r.ch[static_cast<size_t>(c)][i], ideal(c, 2 * th), 1e-14);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(r.ch[static_cast<size_t>(c)][i], ideal(c, 2 * th), 1e-14);
   }
   // The electrical angle of the differences is p * (theta + eps sin(theta - phi0)).
   for (size_t i = 0; i < 300; ++i) {
@@ -361,7 +372,8 @@ Scenario constant_speed(double speed_rps, double fs) {
 }
 
 TEST(Effects, ChannelSkewAndCommonDelay) {
-  // 5 rev/s: omega tau = 0.18 deg; 800 samples at 2 kHz = 2 whole turns (unbiased mean and amplitude).
+  // 5 rev/s: omega tau = 0.18 deg; 800 samples at 2 kHz = 2 whole turns (unbiased mean and
+  // amplitude).
   const double tau = 1e-4, v = 5.0;
   const size_t n = 800;
   Scenario s = constant_speed(v, 2000);
@@ -375,13 +387,15 @@ TEST(Effects, ChannelSkewAndCommonDelay) {
   Scenario d = constant_speed(v, 2000);
   d.effects.push_back(make_effect("common_delay", {{"tau_s", tau}}, 4));
   const Recording q = simulate(d, n, 1);
-  for (size_t i = 0; i < n; ++i) EXPECT_NEAR(q.ch[1][i], std::cos(2 * kPi * v * (q.t[i] - tau)), 1e-12);
+  for (size_t i = 0; i < n; ++i)
+    EXPECT_NEAR(q.ch[1][i], std::cos(2 * kPi * v * (q.t[i] - tau)), 1e-12);
   // The angle lags by omega tau.
   EXPECT_NEAR(stats(uncorrected_error(q)).mean, -360 * v * tau, 1e-6);
   // Faster rotation, larger skew error.
   Scenario fast = constant_speed(4 * v, 2000);
   fast.effects = s.effects;
-  EXPECT_GT(stats(uncorrected_error(simulate(fast, n, 1))).rms, 3 * stats(uncorrected_error(r)).rms);
+  EXPECT_GT(stats(uncorrected_error(simulate(fast, n, 1))).rms,
+            3 * stats(uncorrected_error(r)).rms);
 }
 
 // A multiplexed ADC in any slot order: tau_X per channel; tau_s (slots 0, tau, 2 tau, 3 tau in
@@ -446,7 +460,8 @@ TEST(Effects, DriftFollowsTemperature) {
 }
 
 TEST(Effects, QuantizationAndSaturation) {
-  const Recording q = simulate(ideal_with("quantization", {{"bits", 6}, {"full_scale", 2}}), 500, 1);
+  const Recording q =
+      simulate(ideal_with("quantization", {{"bits", 6}, {"full_scale", 2}}), 500, 1);
   const double step = 4.0 / 64;
   for (size_t i = 0; i < 500; ++i)
     for (int c = 0; c < 4; ++c) {
@@ -455,7 +470,8 @@ TEST(Effects, QuantizationAndSaturation) {
       EXPECT_LE(std::fabs(v - ideal(c, q.theta_ref[i])), step / 2 + 1e-12);
     }
   // Full scale below the peak: the ADC range clips at -fs and fs - step.
-  const Recording c = simulate(ideal_with("quantization", {{"bits", 4}, {"full_scale", 0.5}}), 400, 1);
+  const Recording c =
+      simulate(ideal_with("quantization", {{"bits", 4}, {"full_scale", 0.5}}), 400, 1);
   EXPECT_DOUBLE_EQ(*std::max_element(c.ch[0].begin(), c.ch[0].end()), 0.5 - 1.0 / 16);
   EXPECT_DOUBLE_EQ(*std::min_element(c.ch[0].begin(), c.ch[0].end()), -0.5);
   const Recording s = simulate(ideal_with("saturation", {{"level", 0.8}}), 400, 1);
@@ -468,7 +484,8 @@ TEST(Effects, ExcessNoise) {
   const Recording r = simulate(ideal_with("excess_noise", {{"sigma", 0.01}}), n, 3);
   double v = 0, m = 0, cov = 0;
   for (size_t i = 0; i < n; ++i) {
-    const double a = r.ch[0][i] - std::sin(r.theta_ref[i]), b = r.ch[2][i] + std::sin(r.theta_ref[i]);
+    const double a = r.ch[0][i] - std::sin(r.theta_ref[i]),
+                 b = r.ch[2][i] + std::sin(r.theta_ref[i]);
     v += a * a / n, m += a / n, cov += a * b / n;
   }
   EXPECT_NEAR(std::sqrt(v), 0.01, 0.0004);
@@ -485,7 +502,8 @@ TEST(Effects, HysteresisFollowsTheDirection) {
   const Recording r = simulate(s, 2000, 1);
   int fwd = 0, back = 0;
   for (size_t i = 0; i < 2000; ++i) {
-    // Forward in the first half of each back-and-forth period (period 0.5 s over the 1 s recording).
+    // Forward in the first half of each back-and-forth period (period 0.5 s over the 1 s
+    // recording).
     const double u = std::fmod(r.t[i], 0.5);
     const double dir = u < 0.25 ? 1.0 : -1.0;
     (dir > 0 ? fwd : back)++;
@@ -511,7 +529,8 @@ TEST(Effects, ApplyToAnExistingRecording) {
   // Without t and a trajectory, a delay cannot be applied.
   EXPECT_THROW(apply_effect(make_effect("common_delay", {{"tau_s", 1e-3}}, 4), r, ctx), InputError);
   Recording no_temp = before;
-  EXPECT_THROW(apply_effect(make_effect("drift", {{"offset_per_C_c1", 1e-3}}, 4), no_temp, ctx), InputError);
+  EXPECT_THROW(apply_effect(make_effect("drift", {{"offset_per_C_c1", 1e-3}}, 4), no_temp, ctx),
+               InputError);
 }
 
 // ---- Trajectories ----
@@ -523,11 +542,13 @@ TEST(Trajectory, KindsAndSampleRate) {
   s.trajectory.sample_rate_hz = 1000;
   Recording r = simulate(s, 3000, 1);
   EXPECT_DOUBLE_EQ(r.t[1], 1e-3);
-  EXPECT_NEAR(r.theta_ref.back() + (r.theta_ref[1] - r.theta_ref[0]), 3 * 2 * kPi, 1e-9);  // unwrapped
+  EXPECT_NEAR(r.theta_ref.back() + (r.theta_ref[1] - r.theta_ref[0]), 3 * 2 * kPi,
+              1e-9);  // unwrapped
   s.trajectory.kind = "ramp";
   s.trajectory.turns = 2;
   r = simulate(s, 1000, 1);
-  const double d_first = r.theta_ref[1] - r.theta_ref[0], d_last = r.theta_ref[999] - r.theta_ref[998];
+  const double d_first = r.theta_ref[1] - r.theta_ref[0],
+               d_last = r.theta_ref[999] - r.theta_ref[998];
   EXPECT_NEAR(d_first, 2 * kPi * (4.0 * 0.5e-3) * 1e-3, 1e-9);  // v(t) = 4 t rev/s from 0 to 4
   EXPECT_GT(d_last, 100 * d_first);
   EXPECT_NEAR(r.theta_ref[999], 2 * kPi * 2 * 0.999 * 0.999, 1e-9);
@@ -565,7 +586,8 @@ TEST(Scenario, JsonRoundTrip) {
 
 TEST(Scenario, WithChannelsRemapsPerChannelParameters) {
   Scenario s = builtin_scenario("ideal");
-  s.effects.push_back(make_effect("offset", {{"offset_c1", 0.1}, {"offset_c2", 0.2}, {"offset_c3", 0.3}}, 4));
+  s.effects.push_back(
+      make_effect("offset", {{"offset_c1", 0.1}, {"offset_c2", 0.2}, {"offset_c3", 0.3}}, 4));
   s.effects.push_back(make_effect("drift", {{"gain_per_C_c2", 1e-3}}, 4));
   s.effects.push_back(make_effect("phase_error", {{"delta_rad", 0.01}, {"phase_c2", 0.02}}, 4));
   s.effects.push_back(make_effect("channel_skew", {{"tau_c2", 1e-4}}, 4));
@@ -597,22 +619,30 @@ std::string json_error(const std::string& text) {
 
 TEST(Scenario, ErrorsNameTheField) {
   EXPECT_NE(json_error(R"({"channels": 3})").find("cfg.json: field 'channels'"), std::string::npos);
-  EXPECT_NE(json_error(R"({"trajectory": {"kind": 3}})").find("field 'trajectory.kind'"), std::string::npos);
-  EXPECT_NE(json_error(R"({"trajectory": {"kind": "spin"}})").find("field 'trajectory.kind'"), std::string::npos);
-  EXPECT_NE(json_error(R"({"trajectory": {"speed": 3}})").find("field 'trajectory.speed'"), std::string::npos);
+  EXPECT_NE(json_error(R"({"trajectory": {"kind": 3}})").find("field 'trajectory.kind'"),
+            std::string::npos);
+  EXPECT_NE(json_error(R"({"trajectory": {"kind": "spin"}})").find("field 'trajectory.kind'"),
+            std::string::npos);
+  EXPECT_NE(json_error(R"({"trajectory": {"speed": 3}})").find("field 'trajectory.speed'"),
+            std::string::npos);
   EXPECT_NE(json_error(R"({"sigma": 1})").find("field 'sigma': unknown field"), std::string::npos);
-  EXPECT_NE(json_error(R"({"sensor": [{"AF": [1, "x"]}, {}, {}, {}]})").find("field 'sensor[0].AF[1]'"),
+  EXPECT_NE(
+      json_error(R"({"sensor": [{"AF": [1, "x"]}, {}, {}, {}]})").find("field 'sensor[0].AF[1]'"),
+      std::string::npos);
+  EXPECT_NE(json_error(R"({"effects": [{"effect": "offset", "offset_c9": 1}]})")
+                .find("field 'effects[0]'"),
             std::string::npos);
-  EXPECT_NE(json_error(R"({"effects": [{"effect": "offset", "offset_c9": 1}]})").find("field 'effects[0]'"),
+  EXPECT_NE(json_error(R"({"effects": [{"effect": "offset", "offset_c9": 1}]})").find("offset_c9"),
             std::string::npos);
-  EXPECT_NE(json_error(R"({"effects": [{"effect": "offset", "offset_c9": 1}]})").find("offset_c9"), std::string::npos);
-  EXPECT_NE(json_error(R"({"effects": [{"offset_c1": 1}]})").find("field 'effects[0].effect'"), std::string::npos);
+  EXPECT_NE(json_error(R"({"effects": [{"offset_c1": 1}]})").find("field 'effects[0].effect'"),
+            std::string::npos);
   EXPECT_NE(json_error(R"({"sigma_indep": -1})").find("field 'sigma_indep'"), std::string::npos);
   try {
     builtin_scenario("nope");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("paper, paper-indep, paper-noiseless, ideal, tmr"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("paper, paper-indep, paper-noiseless, ideal, tmr"),
+              std::string::npos);
   }
   const std::string path = std::string(ACORE_BINARY_DIR) + "/test_simulator_bad.json";
   {

@@ -16,8 +16,8 @@
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "engine/float_model.hpp"
-#include "support/paper_signals.hpp"
 #include "sim/simulator.hpp"
+#include "support/paper_signals.hpp"
 
 namespace acore {
 namespace {
@@ -96,11 +96,11 @@ TEST(ZeroOffset, ShiftingTheReferenceMovesOnlyTheZeroOffset) {
   }
 }
 
-// A reference zero far from the sensor's: calibrating with a reference zero 160 deg away keeps the corrected RMS within 1.1x of
-// the aligned calibration, on the calibration setup and after a common amplitude change of +-30 %,
-// with the offset in the header (subtracted in software) and in the ZERO word. The fit as it was
-// (against theta_ref itself, the polynomials absorbing the offset) fails the same comparison by
-// far.
+// A reference zero far from the sensor's: calibrating with a reference zero 160 deg away keeps the
+// corrected RMS within 1.1x of the aligned calibration, on the calibration setup and after a common
+// amplitude change of +-30 %, with the offset in the header (subtracted in software) and in the
+// ZERO word. The fit as it was (against theta_ref itself, the polynomials absorbing the offset)
+// fails the same comparison by far.
 TEST(ZeroOffset, ReferenceOffsetOf160DegKeepsTheAlignedAccuracy) {
   CalOptions absorbed;  // the calibration before the zero offset existed
   absorbed.estimate_zero = false;

@@ -16,7 +16,8 @@ std::ostream& json_stdout() {
 bool json_to_stdout(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--json=-" || (a == "--json" && i + 1 < argc && std::string(argv[i + 1]) == "-")) return true;
+    if (a == "--json=-" || (a == "--json" && i + 1 < argc && std::string(argv[i + 1]) == "-"))
+      return true;
   }
   return false;
 }

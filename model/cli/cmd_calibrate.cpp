@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `anglecore calibrate`: fit the coefficients on a calibration recording and write the register image.
+// `anglecore calibrate`: fit the coefficients on a calibration recording and write the register
+// image.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -74,12 +75,13 @@ void run_calibrate(const CalibrateArgs& a) {
   cfg.validate();
   const FloatCoefficients fc = calibrate(rec, opt);
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
-  RegImage img = a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
+  RegImage img =
+      a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
   cfg = img.cfg;
   std::string fourier_args;
   if (a.fourier > 0)
-    fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}", a.fourier,
-                               a.fourier_iterations, a.fourier_guard);
+    fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}",
+                               a.fourier, a.fourier_iterations, a.fourier_guard);
   img.provenance.push_back(fmt::format(
       "command=anglecore calibrate --in {} --correction {} --degree {} "
       "--regions {}{} --angle-w {} --in-w {} --iterations {}{} --zero-offset {}{}",
@@ -94,8 +96,8 @@ void run_calibrate(const CalibrateArgs& a) {
   const auto ex = angle_error_deg(fixed.angle, rec.theta_ref, opt.periodicity);
   const auto eu = angle_error_deg(fixed.uncorrected, rec.theta_ref, opt.periodicity);
   const ErrorStats sf = error_stats(ef), sx = error_stats(ex), su = error_stats(eu);
-  std::cout << fmt::format("calibrated {} samples: {} words ({}), in_scale={}\n", rec.size(), cfg.words(),
-                           cfg.describe(), in_scale);
+  std::cout << fmt::format("calibrated {} samples: {} words ({}), in_scale={}\n", rec.size(),
+                           cfg.words(), cfg.describe(), in_scale);
   std::cout << fmt::format(
       "  zero offset {:+.4f} deg electrical (sensor angle - p theta_ref, {}), {}\n",
       img.zero_offset * 180 / M_PI, opt.estimate_zero ? "estimated" : "given",
@@ -136,7 +138,8 @@ void run_calibrate(const CalibrateArgs& a) {
 
 void add_calibrate(CLI::App& app) {
   auto args = std::make_shared<CalibrateArgs>();
-  CLI::App* c = app.add_subcommand("calibrate", "Fit and quantize the coefficients into a register image");
+  CLI::App* c =
+      app.add_subcommand("calibrate", "Fit and quantize the coefficients into a register image");
   c->add_option("--in", args->in, "Calibration recording (CSV with theta_ref)")->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
   c->add_option(
@@ -146,15 +149,17 @@ void add_calibrate(CLI::App& app) {
   c->add_option("--degree", args->degree,
                 "Polynomial degree n (poly: 1..7; poly2d: total degree 1..3)")
       ->check(CLI::Range(1, 7));
-  c->add_option("--regions", args->regions, "Correction regions (4 or 8)")->check(CLI::IsMember({4, 8}));
+  c->add_option("--regions", args->regions, "Correction regions (4 or 8)")
+      ->check(CLI::IsMember({4, 8}));
   c->add_flag("--xcenter", args->xcenter,
               "8 regions: fit in u = 2 (x -+ 3/8), centred in its half region (keeps high-degree "
               "coefficients in range, so COEF_F stays 15)");
   c->add_option("--iterations", args->iterations,
                 "CORDIC iterations k (default: the --angle-w preset's)")
       ->check(CLI::Range(4, 24));
-  c->add_option("--coef-frac", args->coef_f, "Fraction bits of a polynomial coefficient (default 15, lowered "
-                                             "automatically when a coefficient needs more range)")
+  c->add_option("--coef-frac", args->coef_f,
+                "Fraction bits of a polynomial coefficient (default 15, lowered "
+                "automatically when a coefficient needs more range)")
       ->check(CLI::Range(1, 17));
   c->add_option(
        "--angle-w", args->angle_w,
@@ -164,18 +169,22 @@ void add_calibrate(CLI::App& app) {
   c->add_option("--in-w", args->in_w,
                 "Input code width IN_W (default 16; REG_W grows to IN_W + 2 if needed)")
       ->check(CLI::Range(8, 24));
-  c->add_option("--in-scale", args->in_scale, "Input codes per recording unit (default: automatic power of two)")
+  c->add_option("--in-scale", args->in_scale,
+                "Input codes per recording unit (default: automatic power of two)")
       ->check(CLI::PositiveNumber);
-  c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
+  c->add_option("--periodicity", args->p,
+                "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
-  c->add_option("--fourier", args->fourier,
-                "Harmonics K of the angle-domain Fourier correction after the CORDIC (default 0: off); "
-                "2K+1 more words; with --correction none it corrects the uncorrected angle")
+  c->add_option(
+       "--fourier", args->fourier,
+       "Harmonics K of the angle-domain Fourier correction after the CORDIC (default 0: off); "
+       "2K+1 more words; with --correction none it corrects the uncorrected angle")
       ->check(CLI::Range(0, 31));
   c->add_option("--fourier-iterations", args->fourier_iterations,
                 "Rotation-CORDIC stages per harmonic of the Fourier correction (<= --iterations)")
       ->check(CLI::Range(4, 24));
-  c->add_option("--fourier-guard", args->fourier_guard, "Guard fraction bits of the Fourier rotations")
+  c->add_option("--fourier-guard", args->fourier_guard,
+                "Guard fraction bits of the Fourier rotations")
       ->check(CLI::Range(0, 8));
   c->add_option(
       "--zero-offset", args->zero_offset,

@@ -57,7 +57,9 @@ void run_cosim(const CosimArgs& a) {
     const FixedSample m = model.step(codes[i]);
     if (i < rtl.size() && rtl[i] == m) continue;
     if (bad++ == 0)
-      first = {{"index", i}, {"rtl", i < rtl.size() ? sample_json(rtl[i]) : nullptr}, {"model", sample_json(m)}};
+      first = {{"index", i},
+               {"rtl", i < rtl.size() ? sample_json(rtl[i]) : nullptr},
+               {"model", sample_json(m)}};
   }
   const nlohmann::json j = {{"samples", codes.size()},
                             {"mismatches", bad},
@@ -72,14 +74,16 @@ void run_cosim(const CosimArgs& a) {
       a.backpressure > 0 ? fmt::format(", backpressure/gaps {}", a.backpressure) : "");
   if (!a.trace.empty()) std::cout << "waveform: " << a.trace << "\n";
   write_json(a.json, j);
-  if (bad) throw CheckFailed(fmt::format("{} of {} samples differ; first at index {}", bad, codes.size(),
-                                         first["index"].get<size_t>()));
+  if (bad)
+    throw CheckFailed(fmt::format("{} of {} samples differ; first at index {}", bad, codes.size(),
+                                  first["index"].get<size_t>()));
 }
 }  // namespace
 
 void add_cosim(CLI::App& app) {
   auto args = std::make_shared<CosimArgs>();
-  CLI::App* c = app.add_subcommand("cosim", "RTL (Verilated) vs bit-accurate model, sample by sample");
+  CLI::App* c =
+      app.add_subcommand("cosim", "RTL (Verilated) vs bit-accurate model, sample by sample");
   c->add_option("--regs", args->regs, "Register image ($readmemh, from `calibrate`)")->required();
   c->add_option("--in", args->in, "Recording (CSV)")->required();
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");

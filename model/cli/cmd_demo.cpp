@@ -13,14 +13,14 @@
 #include <sstream>
 
 #include "calibration/calibration.hpp"
-#include "sweep/design_space.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
+#include "diagnose/noise_floor.hpp"
 #include "engine/estimator.hpp"
 #include "engine/float_model.hpp"
-#include "diagnose/noise_floor.hpp"
 #include "sim/simulator.hpp"
+#include "sweep/design_space.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
 #include "rtl_serial_builds.hpp"
@@ -42,7 +42,8 @@ struct Row {
   ErrorStats s;
 };
 
-std::string row_md(const std::string& name, double rms, double max, double mean, const std::string& note = "") {
+std::string row_md(const std::string& name, double rms, double max, double mean,
+                   const std::string& note = "") {
   return fmt::format("| {} | {:.2f} | {:.2f} | {:+.2f} | {} |\n", name, rms, max, mean, note);
 }
 
@@ -73,7 +74,8 @@ ChainRun run_chain(const Recording& cal, const Recording& val, CalOptions opt, D
 
 double max_diff_deg(const std::vector<double>& a, const std::vector<double>& b) {
   double m = 0;
-  for (size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(wrap_deg((a[i] - b[i]) * 180.0 / M_PI)));
+  for (size_t i = 0; i < a.size(); ++i)
+    m = std::max(m, std::fabs(wrap_deg((a[i] - b[i]) * 180.0 / M_PI)));
   return m;
 }
 
@@ -82,8 +84,11 @@ void run_demo(const DemoArgs& a) {
   fs::create_directories(a.out);
   std::ostringstream md;
   nlohmann::json js;
-  std::cout << fmt::format("AngleCore demo: paper scenario (docs/contracts.md, paper scenario), {} samples per recording, "
-                           "calibration seed {}, validation seed {}\n\n", a.samples, a.seed_cal, a.seed_val);
+  std::cout << fmt::format(
+      "AngleCore demo: paper scenario (docs/contracts.md, paper scenario), {} samples per "
+      "recording, "
+      "calibration seed {}, validation seed {}\n\n",
+      a.samples, a.seed_cal, a.seed_val);
 
   // 1. The paper's point: cubic, 4 regions, 16 CORDIC iterations, 52 words.
   const Scenario paper = builtin_scenario("paper");
@@ -92,7 +97,8 @@ void run_demo(const DemoArgs& a) {
   write_recording(cal, (fs::path(a.out) / "calibration.csv").string());
   write_recording(val, (fs::path(a.out) / "validation.csv").string());
   ChainRun run = run_chain(cal, val, CalOptions{}, DatapathConfig{});
-  run.img.provenance.push_back(fmt::format("command=anglecore demo --samples {} (seed {})", a.samples, a.seed_cal));
+  run.img.provenance.push_back(
+      fmt::format("command=anglecore demo --samples {} (seed {})", a.samples, a.seed_cal));
   write_regimage(run.img, (fs::path(a.out) / "regs.hex").string());
 
   // "uncorrected" as the paper reports it: atan2 of the scaled curves against the reference; then
@@ -111,7 +117,8 @@ void run_demo(const DemoArgs& a) {
   bool rtl_ran = false;
 #ifdef ACORE_WITH_RTL
   if (!a.no_rtl) {
-    const auto out = run_rtl(run.img, to_codes(val, run.img.in_scale, run.img.cfg.in_w), RtlRunOptions{});
+    const auto out =
+        run_rtl(run.img, to_codes(val, run.img.in_scale, run.img.cfg.in_w), RtlRunOptions{});
     e_rtl = angle_error_deg(series_from_fixed(out, run.img).angle, val.theta_ref);
     rows.push_back({"ours, corrected, RTL (Verilator)", error_stats(e_rtl)});
     // The serial core (226 clocks a sample) on the same image: bit-exact to the same model.
@@ -125,13 +132,16 @@ void run_demo(const DemoArgs& a) {
 #endif
   const double fx_vs_fl = max_diff_deg(run.fx.angle, run.fl.angle);
 
-  std::cout << "Table 3, paper scenario, validation recording (error = estimate - reference, degrees)\n";
+  std::cout
+      << "Table 3, paper scenario, validation recording (error = estimate - reference, degrees)\n";
   std::cout << fmt::format("  {:<36} {:>7} {:>7} {:>7}\n", "", "RMS", "max|e|", "mean");
   std::cout << fmt::format("  {:<36} {:7.2f} {:7.2f} {:+7.2f}   (paper prints the opposite sign)\n",
                            "paper, without correction", 9.01, 16.7, 7.18);
-  std::cout << fmt::format("  {:<36} {:7.2f} {:7.2f} {:+7.2f}\n", "paper, with correction", 0.76, 3.21, 0.00);
+  std::cout << fmt::format("  {:<36} {:7.2f} {:7.2f} {:+7.2f}\n", "paper, with correction", 0.76,
+                           3.21, 0.00);
   for (const Row& r : rows)
-    std::cout << fmt::format("  {:<36} {:7.3f} {:7.3f} {:+7.3f}\n", r.name, r.s.rms, r.s.max_abs, r.s.mean);
+    std::cout << fmt::format("  {:<36} {:7.3f} {:7.3f} {:+7.3f}\n", r.name, r.s.rms, r.s.max_abs,
+                             r.s.mean);
   std::cout << fmt::format(
       "  bit-accurate vs float: max |difference| {:.4f} deg; register file {} words\n", fx_vs_fl,
       run.img.cfg.words());
@@ -140,24 +150,32 @@ void run_demo(const DemoArgs& a) {
       run.img.zero_offset * 180 / M_PI);
 
   md << "# AngleCore demo report\n\n";
-  md << fmt::format("Paper scenario (docs/contracts.md, paper scenario), {} samples per recording; calibration seed {}, "
-                    "validation seed {}. Command: `anglecore demo --samples {}`.\n\n",
-                    a.samples, a.seed_cal, a.seed_val, a.samples);
+  md << fmt::format(
+      "Paper scenario (docs/contracts.md, paper scenario), {} samples per recording; calibration "
+      "seed {}, "
+      "validation seed {}. Command: `anglecore demo --samples {}`.\n\n",
+      a.samples, a.seed_cal, a.seed_val, a.samples);
   md << "## Table 3, reproduced and beaten (validation recording)\n\n";
   md << "Error = estimate − reference, wrapped to (−180°, 180°], in degrees.\n\n";
   md << "| chain | RMS | max abs | mean | note |\n|---|---|---|---|---|\n";
-  md << row_md("paper, without correction", 9.01, 16.7, 7.18, "paper's sign convention is the opposite");
+  md << row_md("paper, without correction", 9.01, 16.7, 7.18,
+               "paper's sign convention is the opposite");
   md << row_md("paper, with correction (cubic, k=16)", 0.76, 3.21, 0.00, "");
-  for (const Row& r : rows) md << row_md(r.name, r.s.rms, r.s.max_abs, r.s.mean, r.name.find("RTL") != std::string::npos ? "same register image" : "");
-  md << fmt::format("\nBit-accurate vs float: max |difference| {:.4f}°. Register image: `regs.hex` ({} words: "
-                    "4 scaling + {} polynomial + {} CORDIC).\n\n", fx_vs_fl, run.img.cfg.words(),
-                    run.img.cfg.poly_words(), run.img.cfg.iterations);
+  for (const Row& r : rows)
+    md << row_md(r.name, r.s.rms, r.s.max_abs, r.s.mean,
+                 r.name.find("RTL") != std::string::npos ? "same register image" : "");
+  md << fmt::format(
+      "\nBit-accurate vs float: max |difference| {:.4f}°. Register image: `regs.hex` ({} words: "
+      "4 scaling + {} polynomial + {} CORDIC).\n\n",
+      fx_vs_fl, run.img.cfg.words(), run.img.cfg.poly_words(), run.img.cfg.iterations);
   md << fmt::format(
       "Zero offset estimated by the calibration (circular mean of the uncorrected angle error, "
       "README \"Zero offset\"): {:+.3f}°; the corrected rows are in the reference frame (the "
       "offset subtracted), \"uncorrected\" is the paper's (atan2 against the reference).\n\n",
       run.img.zero_offset * 180 / M_PI);
-  md << "![error vs angle](error_vs_angle.png)\n\n![Lissajous](lissajous.png)\n\n![histogram](histogram.png)\n\n";
+  md << "![error vs "
+        "angle](error_vs_angle.png)\n\n![Lissajous](lissajous.png)\n\n![histogram](histogram.png)"
+        "\n\n";
   for (const Row& r : rows) js["table3"][r.name] = stats_json(r.s);
   js["bit_accurate_vs_float_max_deg"] = fx_vs_fl;
   js["words"] = run.img.cfg.words();
@@ -166,11 +184,12 @@ void run_demo(const DemoArgs& a) {
   // Plot data: per-sample curves and errors of the validation recording.
   {
     std::ofstream f(fs::path(a.out) / "validation_angles.csv");
-    f << "theta_ref,s13,s24,y13,y24,err_uncorrected,err_float,err_fixed" << (rtl_ran ? ",err_rtl" : "") << "\n";
+    f << "theta_ref,s13,s24,y13,y24,err_uncorrected,err_float,err_fixed"
+      << (rtl_ran ? ",err_rtl" : "") << "\n";
     for (size_t i = 0; i < val.size(); ++i) {
       const FloatSample s = float_estimate(val.d13(i), val.d24(i), run.fc);
-      f << fmt::format("{:.9f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}", val.theta_ref[i], s.s13, s.s24,
-                       s.y13, s.y24, run.e_unc[i], run.e_fl[i], run.e_fx[i]);
+      f << fmt::format("{:.9f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}", val.theta_ref[i],
+                       s.s13, s.s24, s.y13, s.y24, run.e_unc[i], run.e_fl[i], run.e_fx[i]);
       if (rtl_ran) f << fmt::format(",{:.6f}", e_rtl[i]);
       f << "\n";
     }
@@ -185,32 +204,42 @@ void run_demo(const DemoArgs& a) {
     const double floor = crlb_rms_deg(clean, sigma_d);
     const ChainRun ir = run_chain(icl, ival, CalOptions{}, DatapathConfig{});
     const ErrorStats sf = error_stats(ir.e_fl), sx = error_stats(ir.e_fx);
-    std::cout << fmt::format("Independent per-channel noise (sigma 0.05 per channel, {:.4f} per difference):\n"
-                             "  Cramer-Rao floor {:.3f} deg RMS; corrected {:.3f} (float) {:.3f} (bit-accurate) deg "
-                             "RMS = {:.1f}% above the floor\n\n",
-                             sigma_d, floor, sf.rms, sx.rms, 100.0 * (sx.rms / floor - 1.0));
+    std::cout << fmt::format(
+        "Independent per-channel noise (sigma 0.05 per channel, {:.4f} per difference):\n"
+        "  Cramer-Rao floor {:.3f} deg RMS; corrected {:.3f} (float) {:.3f} (bit-accurate) deg "
+        "RMS = {:.1f}% above the floor\n\n",
+        sigma_d, floor, sf.rms, sx.rms, 100.0 * (sx.rms / floor - 1.0));
     md << "## Independent per-channel noise\n\n";
-    md << fmt::format("With independent noise σ = 0.05 on each channel (σ = {:.4f} on each difference) the "
-                      "Cramér–Rao floor, RMS over the turn of σ/|dv/dθ|, is **{:.3f}°**. Corrected error: "
-                      "{:.3f}° RMS (float), {:.3f}° RMS (bit-accurate), {:.1f}% above the floor; max {:.2f}°.\n\n",
-                      sigma_d, floor, sf.rms, sx.rms, 100.0 * (sx.rms / floor - 1.0), sx.max_abs);
-    js["independent_noise"] = {{"sigma_diff", sigma_d}, {"crlb_rms_deg", floor},
-                               {"float", stats_json(sf)}, {"fixed", stats_json(sx)}};
+    md << fmt::format(
+        "With independent noise σ = 0.05 on each channel (σ = {:.4f} on each difference) the "
+        "Cramér–Rao floor, RMS over the turn of σ/|dv/dθ|, is **{:.3f}°**. Corrected error: "
+        "{:.3f}° RMS (float), {:.3f}° RMS (bit-accurate), {:.1f}% above the floor; max "
+        "{:.2f}°.\n\n",
+        sigma_d, floor, sf.rms, sx.rms, 100.0 * (sx.rms / floor - 1.0), sx.max_abs);
+    js["independent_noise"] = {{"sigma_diff", sigma_d},
+                               {"crlb_rms_deg", floor},
+                               {"float", stats_json(sf)},
+                               {"fixed", stats_json(sx)}};
   }
 
   // 3. Beyond the paper: degree and regions against register words (noise-free scenario).
   if (!a.no_sweep) {
-    // Without noise the seed changes nothing: the validation turn is shifted by a fraction of a step
-    // so that it measures the correction at angles the calibration never saw.
+    // Without noise the seed changes nothing: the validation turn is shifted by a fraction of a
+    // step so that it measures the correction at angles the calibration never saw.
     const Scenario clean = builtin_scenario("paper-noiseless");
     Scenario clean_val = clean;
-    clean_val.trajectory.theta0_rad += 0.6180339887498949 * 2 * M_PI / static_cast<double>(a.samples);
-    const Recording ccal = simulate(clean, a.samples, a.seed_cal), cval = simulate(clean_val, a.samples, a.seed_val);
-    std::cout << "Beyond the paper: accuracy against register words (noise-free paper scenario, validation)\n";
-    std::cout << fmt::format("  {:>6} {:>7} {:>5} {:>10} {:>10} {:>10} {:>10} {:>6}\n", "degree", "regions",
-                             "words", "float RMS", "float max", "fixed RMS", "fixed max", "COEF_F");
+    clean_val.trajectory.theta0_rad +=
+        0.6180339887498949 * 2 * M_PI / static_cast<double>(a.samples);
+    const Recording ccal = simulate(clean, a.samples, a.seed_cal),
+                    cval = simulate(clean_val, a.samples, a.seed_val);
+    std::cout << "Beyond the paper: accuracy against register words (noise-free paper scenario, "
+                 "validation)\n";
+    std::cout << fmt::format("  {:>6} {:>7} {:>5} {:>10} {:>10} {:>10} {:>10} {:>6}\n", "degree",
+                             "regions", "words", "float RMS", "float max", "fixed RMS", "fixed max",
+                             "COEF_F");
     md << "## Beyond the paper: degree and regions (noise-free paper scenario)\n\n";
-    md << "| degree | regions | words | float RMS ° | float max ° | bit-accurate RMS ° | bit-accurate max ° | COEF_F |\n";
+    md << "| degree | regions | words | float RMS ° | float max ° | bit-accurate RMS ° | "
+          "bit-accurate max ° | COEF_F |\n";
     md << "|---|---|---|---|---|---|---|---|\n";
     for (int regions : {4, 8})
       for (int degree = 3; degree <= 7; ++degree) {
@@ -219,12 +248,18 @@ void run_demo(const DemoArgs& a) {
         o.regions = regions;
         const ChainRun r = run_chain(ccal, cval, o, DatapathConfig{});
         const ErrorStats sf = error_stats(r.e_fl), sx = error_stats(r.e_fx);
-        std::cout << fmt::format("  {:>6} {:>7} {:>5} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>6}\n", degree,
-                                 regions, r.img.cfg.words(), sf.rms, sf.max_abs, sx.rms, sx.max_abs, r.img.cfg.coef_f);
-        md << fmt::format("| {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {} |\n", degree, regions,
-                          r.img.cfg.words(), sf.rms, sf.max_abs, sx.rms, sx.max_abs, r.img.cfg.coef_f);
-        js["sweep"].push_back({{"degree", degree}, {"regions", regions}, {"words", r.img.cfg.words()},
-                               {"float", stats_json(sf)}, {"fixed", stats_json(sx)}, {"coef_f", r.img.cfg.coef_f}});
+        std::cout << fmt::format(
+            "  {:>6} {:>7} {:>5} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>6}\n", degree, regions,
+            r.img.cfg.words(), sf.rms, sf.max_abs, sx.rms, sx.max_abs, r.img.cfg.coef_f);
+        md << fmt::format("| {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {} |\n", degree,
+                          regions, r.img.cfg.words(), sf.rms, sf.max_abs, sx.rms, sx.max_abs,
+                          r.img.cfg.coef_f);
+        js["sweep"].push_back({{"degree", degree},
+                               {"regions", regions},
+                               {"words", r.img.cfg.words()},
+                               {"float", stats_json(sf)},
+                               {"fixed", stats_json(sx)},
+                               {"coef_f", r.img.cfg.coef_f}});
       }
     std::cout << "\n";
     md << "\n";
@@ -239,22 +274,27 @@ void run_demo(const DemoArgs& a) {
         {"degree 7, 8 centred regions", "DEGREE=7 REGIONS=8 XCENTER=1"}};
     const auto sc = sweep_scenarios(a.samples, a.samples + 3);
     const std::vector<SweepScenario> paper_only(sc.begin(), sc.begin() + 1);
-    std::cout << "Beyond the paper: correction modes (noise-free paper scenario, validation, bit-accurate)\n";
+    std::cout << "Beyond the paper: correction modes (noise-free paper scenario, validation, "
+                 "bit-accurate)\n";
     md << "## Beyond the paper: correction modes (noise-free paper scenario, bit-accurate)\n\n";
     md << "| mode | RTL parameters | words | RMS ° | max ° |\n|---|---|---|---|---|\n";
     for (size_t i = 0; i < modes.size(); ++i) {
       const SweepResult r = evaluate_point(i, modes[i].second, paper_only);
       if (!r.error.empty()) throw CheckFailed("demo: " + modes[i].second + ": " + r.error);
       const ErrorStats& e = r.accuracy.front().fixed;
-      std::cout << fmt::format("  {:<46} {:>4} words  RMS {:.4f}  max {:.4f}\n", modes[i].first, r.words, e.rms,
-                               e.max_abs);
-      md << fmt::format("| {} | `{}` | {} | {:.4f} | {:.4f} |\n", modes[i].first, modes[i].second, r.words, e.rms,
-                        e.max_abs);
-      js["modes"].push_back({{"mode", modes[i].first}, {"params", modes[i].second}, {"words", r.words},
+      std::cout << fmt::format("  {:<46} {:>4} words  RMS {:.4f}  max {:.4f}\n", modes[i].first,
+                               r.words, e.rms, e.max_abs);
+      md << fmt::format("| {} | `{}` | {} | {:.4f} | {:.4f} |\n", modes[i].first, modes[i].second,
+                        r.words, e.rms, e.max_abs);
+      js["modes"].push_back({{"mode", modes[i].first},
+                             {"params", modes[i].second},
+                             {"words", r.words},
                              {"fixed", stats_json(e)}});
     }
-    std::cout << "  (the whole design space: scripts/design_space.sh, synth/reports/design_space.md)\n\n";
-    md << "\nThe whole design space: `scripts/design_space.sh`, `synth/reports/design_space.md`.\n\n";
+    std::cout
+        << "  (the whole design space: scripts/design_space.sh, synth/reports/design_space.md)\n\n";
+    md << "\nThe whole design space: `scripts/design_space.sh`, "
+          "`synth/reports/design_space.md`.\n\n";
   }
 
   // 4. Plots (Debian's matplotlib through /usr/bin/python3).
@@ -262,7 +302,8 @@ void run_demo(const DemoArgs& a) {
   if (!a.no_plots) {
     const fs::path script = fs::path(ACORE_SOURCE_DIR) / "scripts" / "plot_demo.py";
     const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), a.out);
-    if (std::system(cmd.c_str()) != 0) plot_note = "plots skipped: /usr/bin/python3 with matplotlib failed";
+    if (std::system(cmd.c_str()) != 0)
+      plot_note = "plots skipped: /usr/bin/python3 with matplotlib failed";
   } else {
     plot_note = "plots skipped (--no-plots)";
   }
@@ -276,16 +317,19 @@ void run_demo(const DemoArgs& a) {
   }
   write_json((fs::path(a.out) / "summary.json").string(), js);
   write_json(a.json, js);
-  std::cout << fmt::format("Report: {}/report.md (plots, regs.hex, calibration.csv, validation.csv)\n", a.out);
+  std::cout << fmt::format(
+      "Report: {}/report.md (plots, regs.hex, calibration.csv, validation.csv)\n", a.out);
 }
 
 }  // namespace
 
 void add_demo(CLI::App& app) {
   auto args = std::make_shared<DemoArgs>();
-  CLI::App* c = app.add_subcommand("demo", "The main job on the built-in paper scenario, with a report in out/demo/");
+  CLI::App* c = app.add_subcommand(
+      "demo", "The main job on the built-in paper scenario, with a report in out/demo/");
   c->add_option("--out", args->out, "Output folder (default out/demo)");
-  c->add_option("--samples", args->samples, "Samples per recording (one turn)")->check(CLI::Range(256, 10000000));
+  c->add_option("--samples", args->samples, "Samples per recording (one turn)")
+      ->check(CLI::Range(256, 10000000));
   c->add_option("--seed-cal", args->seed_cal, "Seed of the calibration recording");
   c->add_option("--seed-val", args->seed_val, "Seed of the validation recording");
   c->add_flag("--no-rtl", args->no_rtl, "Skip the RTL (Verilator) row");

@@ -10,8 +10,8 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "diagnose/diagnose.hpp"
 #include "core/errors.hpp"
+#include "diagnose/diagnose.hpp"
 
 namespace acore::cli {
 
@@ -35,14 +35,18 @@ std::string params_text(const EffectCandidate& c) {
 }
 
 void print_summary(const Diagnosis& d) {
-  std::cout << fmt::format("gap on --real: {:.4f} deg (systematic {:.4f}, excess noise {:.4f}; noise level {:.4f} deg)\n",
-                           d.before.gap_deg, d.before.systematic_deg, d.before.excess_noise_deg, d.before.noise_deg);
+  std::cout << fmt::format(
+      "gap on --real: {:.4f} deg (systematic {:.4f}, excess noise {:.4f}; noise level {:.4f} "
+      "deg)\n",
+      d.before.gap_deg, d.before.systematic_deg, d.before.excess_noise_deg, d.before.noise_deg);
   std::cout << fmt::format("where: stage '{}' ({}), depends on {}\n", d.where_stage,
-                           d.where_channels.empty() ? std::string("-") : fmt::format("{}", fmt::join(d.where_channels, ", ")),
+                           d.where_channels.empty()
+                               ? std::string("-")
+                               : fmt::format("{}", fmt::join(d.where_channels, ", ")),
                            d.domain);
   for (size_t k = 0; k < std::min<size_t>(4, d.harmonics.size()); ++k)
-    std::cout << fmt::format("  gap order {:2d}: {:.4f} deg  <- {}\n", d.harmonics[k].order, d.harmonics[k].amplitude_deg,
-                             fmt::join(d.harmonics[k].causes, "; "));
+    std::cout << fmt::format("  gap order {:2d}: {:.4f} deg  <- {}\n", d.harmonics[k].order,
+                             d.harmonics[k].amplitude_deg, fmt::join(d.harmonics[k].causes, "; "));
   std::cout << fmt::format("verdict: {}\n", d.verdict);
   if (!d.note.empty()) std::cout << fmt::format("  note: {}\n", d.note);
   if (!d.ambiguous_with.empty())
@@ -50,7 +54,8 @@ void print_summary(const Diagnosis& d) {
         "  ambiguous: the recording cannot tell {} from {} (record with speed changes and a "
         "reversal)\n",
         d.ranking.front().cand.effect, fmt::join(d.ambiguous_with, ", "));
-  std::cout << fmt::format("  {:<14} {:>10} {:>10} {:>10}  {}\n", "effect", "dBIC", "explained", "after deg", "parameters");
+  std::cout << fmt::format("  {:<14} {:>10} {:>10} {:>10}  {}\n", "effect", "dBIC", "explained",
+                           "after deg", "parameters");
   for (size_t k = 0; k < std::min<size_t>(6, d.ranking.size()); ++k) {
     const auto& r = d.ranking[k];
     std::cout << fmt::format(
@@ -62,11 +67,12 @@ void print_summary(const Diagnosis& d) {
     std::cout << fmt::format("combination: {} explains {:.1f}%, gap after {:.4f} deg\n",
                              combination_names(d), 100 * d.combination_explained,
                              d.combination_after_deg);
-  std::cout << fmt::format("after adding the {} to the simulation: gap {:.4f} -> {:.4f} deg on --real",
-                           d.verdict == "explained" ? "effect" : "(no) effect", d.before.gap_deg, d.after.gap_deg);
+  std::cout << fmt::format(
+      "after adding the {} to the simulation: gap {:.4f} -> {:.4f} deg on --real",
+      d.verdict == "explained" ? "effect" : "(no) effect", d.before.gap_deg, d.after.gap_deg);
   if (d.hold_before)
-    std::cout << fmt::format(", {:.4f} -> {:.4f} deg on --holdout (not fitted)", d.hold_before->gap_deg,
-                             d.hold_after->gap_deg);
+    std::cout << fmt::format(", {:.4f} -> {:.4f} deg on --holdout (not fitted)",
+                             d.hold_before->gap_deg, d.hold_after->gap_deg);
   std::cout << "\n";
 }
 
@@ -79,36 +85,52 @@ void write_report(const Diagnosis& d, const Recording& real, const std::string& 
     const auto w = angular_velocity(real);
     for (size_t i = 0; i < real.size(); ++i)
       f << fmt::format("{:.9g},{:.9g},{:.6g},{:.9g},{:.6g},{:.6g},{:.6g}\n", real.theta_ref[i],
-                       real.has_t() ? real.t[i] : static_cast<double>(i), real.has_temp() ? real.temp[i] : 0.0, w[i],
-                       d.before.g[i], d.before.g_systematic[i], d.after.g_systematic[i]);
+                       real.has_t() ? real.t[i] : static_cast<double>(i),
+                       real.has_temp() ? real.temp[i] : 0.0, w[i], d.before.g[i],
+                       d.before.g_systematic[i], d.after.g_systematic[i]);
   }
   {
     std::ofstream f(fs::path(dir) / "stages.csv");
     f << "stage,signal,rms_over_noise\n";
     for (const auto& s : d.stages)
-      for (size_t k = 0; k < s.signals.size(); ++k) f << fmt::format("{},{},{:.6g}\n", s.stage, s.signals[k], s.ratio[k]);
+      for (size_t k = 0; k < s.signals.size(); ++k)
+        f << fmt::format("{},{},{:.6g}\n", s.stage, s.signals[k], s.ratio[k]);
   }
   const nlohmann::json j = d.to_json();
   write_json((fs::path(dir) / "diagnosis.json").string(), j);
   std::ofstream md(fs::path(dir) / "report.md");
   md << "# Sim-to-real gap diagnosis\n\n";
-  md << fmt::format("**Verdict: {}.** Gap on the real recording {:.4f}° (systematic {:.4f}°, excess noise {:.4f}°; the "
-                    "simulation's own noise gives {:.4f}° RMS of angle noise).\n\n",
-                    d.verdict, d.before.gap_deg, d.before.systematic_deg, d.before.excess_noise_deg, d.before.noise_deg);
+  md << fmt::format(
+      "**Verdict: {}.** Gap on the real recording {:.4f}° (systematic {:.4f}°, excess noise "
+      "{:.4f}°; the "
+      "simulation's own noise gives {:.4f}° RMS of angle noise).\n\n",
+      d.verdict, d.before.gap_deg, d.before.systematic_deg, d.before.excess_noise_deg,
+      d.before.noise_deg);
   if (!d.note.empty()) md << fmt::format("Note: {}.\n\n", d.note);
-  md << fmt::format("After adding the best explanation to the simulation: {:.4f}° on the real recording", d.after.gap_deg);
-  if (d.hold_before) md << fmt::format(", {:.4f}° → {:.4f}° on the holdout (never fitted)", d.hold_before->gap_deg, d.hold_after->gap_deg);
+  md << fmt::format(
+      "After adding the best explanation to the simulation: {:.4f}° on the real recording",
+      d.after.gap_deg);
+  if (d.hold_before)
+    md << fmt::format(", {:.4f}° → {:.4f}° on the holdout (never fitted)", d.hold_before->gap_deg,
+                      d.hold_after->gap_deg);
   md << ".\n\n## Where\n\n";
-  md << fmt::format("First stage beyond noise: **{}** ({}); the gap depends on **{}**.\n\n", d.where_stage,
-                    d.where_channels.empty() ? std::string("-") : fmt::format("{}", fmt::join(d.where_channels, ", ")), d.domain);
+  md << fmt::format("First stage beyond noise: **{}** ({}); the gap depends on **{}**.\n\n",
+                    d.where_stage,
+                    d.where_channels.empty() ? std::string("-")
+                                             : fmt::format("{}", fmt::join(d.where_channels, ", ")),
+                    d.domain);
   md << "| stage | signal | RMS difference / noise |\n|---|---|---|\n";
   for (const auto& s : d.stages)
-    for (size_t k = 0; k < s.signals.size(); ++k) md << fmt::format("| {} | {} | {:.2f} |\n", s.stage, s.signals[k], s.ratio[k]);
+    for (size_t k = 0; k < s.signals.size(); ++k)
+      md << fmt::format("| {} | {} | {:.2f} |\n", s.stage, s.signals[k], s.ratio[k]);
   md << "\n| domain | adjusted R² of the gap |\n|---|---|\n";
   for (const auto& s : d.domains) md << fmt::format("| {} | {:.3f} |\n", s.domain, s.r2);
   md << "\n| gap order | amplitude ° | likely causes |\n|---|---|---|\n";
-  for (const auto& h : d.harmonics) md << fmt::format("| {} | {:.4f} | {} |\n", h.order, h.amplitude_deg, fmt::join(h.causes, "; "));
-  md << "\n## Which\n\n| rank | effect | ΔBIC | explained | gap after ° | parameters |\n|---|---|---|---|---|---|\n";
+  for (const auto& h : d.harmonics)
+    md << fmt::format("| {} | {:.4f} | {} |\n", h.order, h.amplitude_deg,
+                      fmt::join(h.causes, "; "));
+  md << "\n## Which\n\n| rank | effect | ΔBIC | explained | gap after ° | parameters "
+        "|\n|---|---|---|---|---|---|\n";
   for (size_t k = 0; k < d.ranking.size(); ++k) {
     const auto& r = d.ranking[k];
     md << fmt::format("| {} | {} | {:.1f} | {:.1f}% | {:.4f} | {}{} |\n", k + 1, r.cand.effect,
@@ -118,12 +140,14 @@ void write_report(const Diagnosis& d, const Recording& real, const std::string& 
   if (!d.combination.empty())
     md << fmt::format("\nBest combination: {}, explains {:.1f}%, gap after {:.4f}°.\n",
                       combination_names(d), 100 * d.combination_explained, d.combination_after_deg);
-  md << "\n## Plots\n\n![gap vs angle](gap_vs_angle.png)\n\n![gap vs speed, temperature, direction](gap_domains.png)\n\n"
+  md << "\n## Plots\n\n![gap vs angle](gap_vs_angle.png)\n\n![gap vs speed, temperature, "
+        "direction](gap_domains.png)\n\n"
         "![stages](stages.png)\n\n![gap spectrum](gap_spectrum.png)\n";
   md.close();
   const fs::path script = fs::path(ACORE_SOURCE_DIR) / "scripts" / "plot_diagnosis.py";
   const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), dir);
-  if (std::system(cmd.c_str()) != 0) std::cerr << "anglecore: note: plots skipped (/usr/bin/python3 with matplotlib failed)\n";
+  if (std::system(cmd.c_str()) != 0)
+    std::cerr << "anglecore: note: plots skipped (/usr/bin/python3 with matplotlib failed)\n";
   std::cout << fmt::format("report: {}/report.md\n", dir);
 }
 
@@ -144,11 +168,18 @@ void run_diagnose(const DiagnoseArgs& a) {
 
 void add_diagnose(CLI::App& app) {
   auto args = std::make_shared<DiagnoseArgs>();
-  CLI::App* c = app.add_subcommand("diagnose", "Sim-to-real gap: where it lies, which effect causes it, how far it shrinks");
-  c->add_option("--sim", args->sim, "Simulated recording: the designer's sensor model (any trajectory, >= one turn)")->required();
-  c->add_option("--real", args->real, "Real recording to explain (theta_ref required; t, temp used when present)")->required();
-  c->add_option("--holdout", args->holdout, "Another real recording, used only to check, never to fit");
-  c->add_option("--order", args->order, "Harmonics of the sensor model fitted to --sim")->check(CLI::Range(2, 40));
+  CLI::App* c = app.add_subcommand(
+      "diagnose", "Sim-to-real gap: where it lies, which effect causes it, how far it shrinks");
+  c->add_option("--sim", args->sim,
+                "Simulated recording: the designer's sensor model (any trajectory, >= one turn)")
+      ->required();
+  c->add_option("--real", args->real,
+                "Real recording to explain (theta_ref required; t, temp used when present)")
+      ->required();
+  c->add_option("--holdout", args->holdout,
+                "Another real recording, used only to check, never to fit");
+  c->add_option("--order", args->order, "Harmonics of the sensor model fitted to --sim")
+      ->check(CLI::Range(2, 40));
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->add_option("--report", args->report, "Write a Markdown report with plots into this folder");
   c->callback([args] { run_diagnose(*args); });

@@ -10,8 +10,8 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "diagnose/diagnose_bench.hpp"
 #include "core/errors.hpp"
+#include "diagnose/diagnose_bench.hpp"
 #include "diagnose/physics_bench.hpp"
 
 namespace acore::cli {
@@ -115,7 +115,8 @@ void add_diagnose_bench(CLI::App& app) {
               "Score the diagnosis on recordings of a magnet, Hall plates or an in-plane sensor "
               "and an ADC chain (physics scenarios) instead of the effect library");
   c->add_flag("--check", args->check,
-              "Exit 1 when a target is missed (the targets of docs/diagnosis.md; with --physics top-1 and shrink)");
+              "Exit 1 when a target is missed (the targets of docs/diagnosis.md; with --physics "
+              "top-1 and shrink)");
   c->add_flag("--quiet", args->quiet, "No per-recording progress on stderr");
   c->callback([args] { run_bench(*args); });
 }

@@ -32,10 +32,11 @@ void write_angles(const std::string& path, const Recording& rec, const AngleSeri
                   const std::vector<double>& err) {
   std::ofstream f(path);
   if (!f) throw InputError(path + ": cannot write angles");
-  f << "index,angle_rad,uncorrected_rad,region,flags" << (rec.has_theta() ? ",theta_ref,error_deg" : "")
-    << "\n";
+  f << "index,angle_rad,uncorrected_rad,region,flags"
+    << (rec.has_theta() ? ",theta_ref,error_deg" : "") << "\n";
   for (size_t i = 0; i < s.angle.size(); ++i) {
-    f << fmt::format("{},{:.9f},{:.9f},{},{}", i, s.angle[i], s.uncorrected[i], s.region[i], s.flags[i]);
+    f << fmt::format("{},{:.9f},{:.9f},{},{}", i, s.angle[i], s.uncorrected[i], s.region[i],
+                     s.flags[i]);
     if (rec.has_theta()) f << fmt::format(",{:.9f},{:.6f}", rec.theta_ref[i], err[i]);
     f << "\n";
   }
@@ -49,8 +50,12 @@ void run_estimate(const EstimateArgs& a) {
   const Recording rec = read_recording(a.in);
   AngleSeries s;
   switch (engine) {
-    case Engine::Float: s = run_float(rec, dequantize(img)); break;
-    case Engine::Fixed: s = run_fixed(rec, img); break;
+    case Engine::Float:
+      s = run_float(rec, dequantize(img));
+      break;
+    case Engine::Fixed:
+      s = run_fixed(rec, img);
+      break;
     case Engine::Rtl:
     case Engine::RtlSerial:
 #ifdef ACORE_WITH_RTL
@@ -87,10 +92,10 @@ void run_estimate(const EstimateArgs& a) {
     const ErrorStats su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
     j["error_deg"] = stats_json(st);
     j["uncorrected_error_deg"] = stats_json(su);
-    std::cout << fmt::format("{} engine, {} samples: error RMS {:.4f} deg, max {:.4f} deg, mean {:+.4f} deg "
-                             "(uncorrected {:.3f} / {:.3f} / {:+.3f})\n",
-                             engine_name(engine), rec.size(), st.rms, st.max_abs, st.mean, su.rms,
-                             su.max_abs, su.mean);
+    std::cout << fmt::format(
+        "{} engine, {} samples: error RMS {:.4f} deg, max {:.4f} deg, mean {:+.4f} deg "
+        "(uncorrected {:.3f} / {:.3f} / {:+.3f})\n",
+        engine_name(engine), rec.size(), st.rms, st.max_abs, st.mean, su.rms, su.max_abs, su.mean);
   } else {
     std::cout << fmt::format("{} engine, {} samples (no theta_ref: no error computed)\n",
                              engine_name(engine), rec.size());
@@ -105,21 +110,23 @@ void run_estimate(const EstimateArgs& a) {
 
 void add_estimate(CLI::App& app) {
   auto args = std::make_shared<EstimateArgs>();
-  CLI::App* c = app.add_subcommand("estimate", "Run the estimator on a recording and report the angle error");
+  CLI::App* c =
+      app.add_subcommand("estimate", "Run the estimator on a recording and report the angle error");
   c->add_option("--regs", args->regs, "Register image from `calibrate`")->required();
   c->add_option("--in", args->in, "Recording to estimate (CSV)")->required();
   c->add_option("--engine", args->engine,
                 "float | fixed | rtl (pipelined top) | rtl-serial (serial core) (default fixed)");
   c->add_option(
-      "--fold", args->fold,
-      "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
-      "register image does not depend on it; default 1)")
+       "--fold", args->fold,
+       "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
+       "register image does not depend on it; default 1)")
       ->check(CLI::IsMember({1, 2, 4, 8}));
   c->add_option(
       "--out", args->out,
       "Write per-sample angles (CSV): angle_rad and uncorrected_rad in the reference frame (the "
       "engine's electrical angle minus the image's zero offset, as error_deg compares them)");
-  c->add_option("--periodicity", args->p, "Electrical periods per turn (default: the recording's # p=)")
+  c->add_option("--periodicity", args->p,
+                "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args] { run_estimate(*args); });

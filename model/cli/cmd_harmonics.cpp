@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `anglecore harmonics`: Kuntz's predicted vs exact angle-error harmonics of a signal spec
-// (model/harmonics.hpp, docs/contracts.md, command line), with an optional plot folder (scripts/plot_harmonics.py).
+// (model/harmonics.hpp, docs/contracts.md, command line), with an optional plot folder
+// (scripts/plot_harmonics.py).
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -27,24 +28,30 @@ struct HarmonicsArgs {
   bool attribute = false;
 };
 
-std::string opt_deg(const std::optional<double>& v) { return v ? fmt::format("{:.4f} deg", *v * kDeg) : "n/a"; }
+std::string opt_deg(const std::optional<double>& v) {
+  return v ? fmt::format("{:.4f} deg", *v * kDeg) : "n/a";
+}
 
 void print_table(const HarmonicAnalysis& a, std::ostream& os) {
-  os << fmt::format("p = {}, grid {} points/turn, sum sqrt(A^2+B^2) = {:.4f}, sum |A|+|B| = {:.4f}\n", a.spec.p,
-                    a.phi.size(), a.sum_amplitude, a.taylor_sum);
-  os << fmt::format("max |error| {:.4f} deg (bound Eq. 29: {:.4f} deg, Eq. 30: {})\n", a.max_error * kDeg,
-                    a.bound_geometric * kDeg, opt_deg(a.bound_geometric_linear));
-  os << fmt::format("residual first order {:.4f} deg (bound Eq. 32 k=1: {})\n", a.residual_first * kDeg,
-                    opt_deg(a.bound_taylor_first));
-  os << fmt::format("residual second order {:.5f} deg (bound Eq. 32 k=2: {})\n", a.residual_second * kDeg,
-                    opt_deg(a.bound_taylor_second));
+  os << fmt::format(
+      "p = {}, grid {} points/turn, sum sqrt(A^2+B^2) = {:.4f}, sum |A|+|B| = {:.4f}\n", a.spec.p,
+      a.phi.size(), a.sum_amplitude, a.taylor_sum);
+  os << fmt::format("max |error| {:.4f} deg (bound Eq. 29: {:.4f} deg, Eq. 30: {})\n",
+                    a.max_error * kDeg, a.bound_geometric * kDeg,
+                    opt_deg(a.bound_geometric_linear));
+  os << fmt::format("residual first order {:.4f} deg (bound Eq. 32 k=1: {})\n",
+                    a.residual_first * kDeg, opt_deg(a.bound_taylor_first));
+  os << fmt::format("residual second order {:.5f} deg (bound Eq. 32 k=2: {})\n",
+                    a.residual_second * kDeg, opt_deg(a.bound_taylor_second));
   for (const auto& n : a.notes) os << "note: " << n << "\n";
-  os << fmt::format("{:>5} {:>12} {:>12} {:>12}   (electrical error amplitude, deg; orders per turn)\n", "order",
-                    "exact", "first", "second");
+  os << fmt::format(
+      "{:>5} {:>12} {:>12} {:>12}   (electrical error amplitude, deg; orders per turn)\n", "order",
+      "exact", "first", "second");
   for (const auto& h : a.harmonics) {
     // Orders that none of the three reaches 1e-4 deg are left out of the table (not of the JSON).
     if (std::max({h.exact, h.first, h.second}) * kDeg < 1e-4) continue;
-    os << fmt::format("{:>5} {:>12.5f} {:>12.5f} {:>12.5f}\n", h.order, h.exact * kDeg, h.first * kDeg, h.second * kDeg);
+    os << fmt::format("{:>5} {:>12.5f} {:>12.5f} {:>12.5f}\n", h.order, h.exact * kDeg,
+                      h.first * kDeg, h.second * kDeg);
   }
 }
 
@@ -55,15 +62,16 @@ void write_plot(const HarmonicAnalysis& a, const std::string& dir, std::ostream&
     std::ofstream f(fs::path(dir) / "harmonics_curve.csv");
     f << "phi_deg,exact_deg,first_deg,second_deg,residual_first_deg,residual_second_deg\n";
     for (size_t j = 0; j < a.phi.size(); ++j)
-      f << fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", a.phi[j] * kDeg, a.exact[j] * kDeg,
-                       a.first[j] * kDeg, a.second[j] * kDeg, (a.exact[j] - a.first[j]) * kDeg,
-                       (a.exact[j] - a.second[j]) * kDeg);
+      f << fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", a.phi[j] * kDeg,
+                       a.exact[j] * kDeg, a.first[j] * kDeg, a.second[j] * kDeg,
+                       (a.exact[j] - a.first[j]) * kDeg, (a.exact[j] - a.second[j]) * kDeg);
     if (!f) throw InputError(fmt::format("{}: cannot write harmonics_curve.csv", dir));
   }
   write_json((fs::path(dir) / "harmonics.json").string(), a.to_json());
   const fs::path script = fs::path(ACORE_SOURCE_DIR) / "scripts" / "plot_harmonics.py";
   if (std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") != 0) {
-    log << fmt::format("plot skipped: /usr/bin/python3 with matplotlib and numpy not found; data in {}\n", dir);
+    log << fmt::format(
+        "plot skipped: /usr/bin/python3 with matplotlib and numpy not found; data in {}\n", dir);
     return;
   }
   const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), dir);
@@ -89,10 +97,16 @@ nlohmann::json print_attribution(const HarmonicAnalysis& a, std::ostream& os) {
     for (size_t i = 0; i < o.causes.size(); ++i) {
       const auto& c = o.causes[i];
       if (i < 3)
-        os << fmt::format("      {:>5.1f}% explained, consistency {:.2f}: {}\n", 100 * c.explained, c.consistency, c.text);
-      causes.push_back({{"kind", c.kind}, {"signal_order", c.signal_order}, {"taylor_order", c.taylor_order},
-                        {"parameter_name", c.parameter_name}, {"parameter", c.parameter},
-                        {"predicted_deg", c.predicted_deg}, {"explained", c.explained}, {"consistency", c.consistency}});
+        os << fmt::format("      {:>5.1f}% explained, consistency {:.2f}: {}\n", 100 * c.explained,
+                          c.consistency, c.text);
+      causes.push_back({{"kind", c.kind},
+                        {"signal_order", c.signal_order},
+                        {"taylor_order", c.taylor_order},
+                        {"parameter_name", c.parameter_name},
+                        {"parameter", c.parameter},
+                        {"predicted_deg", c.predicted_deg},
+                        {"explained", c.explained},
+                        {"consistency", c.consistency}});
     }
     j.push_back({{"order", o.order}, {"amplitude_deg", o.amplitude_deg}, {"causes", causes}});
   }
@@ -115,16 +129,21 @@ void run_harmonics(const HarmonicsArgs& args) {
 
 void add_harmonics(CLI::App& app) {
   auto args = std::make_shared<HarmonicsArgs>();
-  CLI::App* c = app.add_subcommand("harmonics", "Predicted (Kuntz, first and second order) vs exact angle-error harmonics");
+  CLI::App* c = app.add_subcommand(
+      "harmonics", "Predicted (Kuntz, first and second order) vs exact angle-error harmonics");
   c->add_option("--spec", args->spec,
-                "Signal spec JSON: {p, A0, B0, Ap, Bp, delta_p, terms: [{n, A, theta, B, psi}]}, angles in rad")
+                "Signal spec JSON: {p, A0, B0, Ap, Bp, delta_p, terms: [{n, A, theta, B, psi}]}, "
+                "angles in rad")
       ->required();
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
-  c->add_option("--plot", args->plot, "Write curve/spectrum data and plots (Fig. 7 style) into this folder");
-  c->add_option("--grid", args->grid, "Samples per turn for the exact error (default: automatic, >= 4096)")
+  c->add_option("--plot", args->plot,
+                "Write curve/spectrum data and plots (Fig. 7 style) into this folder");
+  c->add_option("--grid", args->grid,
+                "Samples per turn for the exact error (default: automatic, >= 4096)")
       ->check(CLI::Range(64, 1 << 22));
   c->add_flag("--attribute", args->attribute,
-              "Also name, for each significant order, the signal harmonics and Table 1 mismatches that can cause it");
+              "Also name, for each significant order, the signal harmonics and Table 1 mismatches "
+              "that can cause it");
   c->callback([args] { run_harmonics(*args); });
 }
 

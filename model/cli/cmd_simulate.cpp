@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `anglecore simulate`: a sensor recording from a built-in scenario or a scenario JSON file
-// (model/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected angle error.
+// (model/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected angle
+// error.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -28,8 +29,8 @@ struct SimulateArgs {
   bool list = false;
 };
 
-// Uncorrected electrical angle error (deg): atan2 of the differential pair, each centred on its mean
-// and scaled by its RMS amplitude, minus p * theta_ref, wrapped to (-180, 180].
+// Uncorrected electrical angle error (deg): atan2 of the differential pair, each centred on its
+// mean and scaled by its RMS amplitude, minus p * theta_ref, wrapped to (-180, 180].
 std::vector<double> uncorrected_error_deg(const Recording& r, int p) {
   const size_t n = r.size();
   double m13 = 0, m24 = 0;
@@ -44,10 +45,12 @@ std::vector<double> uncorrected_error_deg(const Recording& r, int p) {
     v13 += (r.d13(i) - m13) * (r.d13(i) - m13);
     v24 += (r.d24(i) - m24) * (r.d24(i) - m24);
   }
-  const double a13 = std::sqrt(2 * v13 / static_cast<double>(n)), a24 = std::sqrt(2 * v24 / static_cast<double>(n));
+  const double a13 = std::sqrt(2 * v13 / static_cast<double>(n)),
+               a24 = std::sqrt(2 * v24 / static_cast<double>(n));
   std::vector<double> e(n);
   for (size_t i = 0; i < n; ++i) {
-    const double est = std::atan2((r.d13(i) - m13) / (a13 > 0 ? a13 : 1), (r.d24(i) - m24) / (a24 > 0 ? a24 : 1));
+    const double est =
+        std::atan2((r.d13(i) - m13) / (a13 > 0 ? a13 : 1), (r.d24(i) - m24) / (a24 > 0 ? a24 : 1));
     double d = std::remainder(est - p * r.theta_ref[i], 2 * kPi);
     if (d <= -kPi) d += 2 * kPi;
     e[i] = d * 180.0 / kPi;
@@ -67,8 +70,10 @@ void run_simulate(const SimulateArgs& a) {
     return;
   }
   if (a.scenario.empty() == a.config.empty())
-    throw InputError("simulate: give exactly one of --scenario NAME or --config FILE (--list shows the names)");
-  if (a.out.empty() && a.dump_config.empty()) throw InputError("simulate: --out FILE.csv is required");
+    throw InputError(
+        "simulate: give exactly one of --scenario NAME or --config FILE (--list shows the names)");
+  if (a.out.empty() && a.dump_config.empty())
+    throw InputError("simulate: --out FILE.csv is required");
   Scenario s = a.config.empty() ? builtin_scenario(a.scenario) : load_scenario(a.config);
   if (a.channels != 0) s = with_channels(s, a.channels);
   if (!a.dump_config.empty()) write_json(a.dump_config, s.to_json());
@@ -76,7 +81,8 @@ void run_simulate(const SimulateArgs& a) {
 
   Recording rec = simulate(s, a.samples, a.seed);
   if (!a.config.empty()) rec.meta["config"] = a.config;
-  rec.comments.push_back(fmt::format("anglecore simulate: {}", s.description.empty() ? s.name : s.description));
+  rec.comments.push_back(
+      fmt::format("anglecore simulate: {}", s.description.empty() ? s.name : s.description));
   const bool to_stdout = a.out == "-";
   if (to_stdout)
     std::cout << format_recording(rec);
@@ -85,10 +91,11 @@ void run_simulate(const SimulateArgs& a) {
 
   const ErrorStats st = error_stats(uncorrected_error_deg(rec, s.p));
   std::ostream& log = to_stdout || a.json == "-" ? std::cerr : std::cout;
-  log << fmt::format("simulated '{}': {} samples, {} channels, p = {}, seed {} -> {}\n", s.name, rec.size(),
-                     rec.channels, s.p, a.seed, to_stdout ? "stdout" : a.out);
-  log << fmt::format("uncorrected electrical angle error: RMS {:.4f} deg, max |e| {:.4f} deg, mean {:.4f} deg\n",
-                     st.rms, st.max_abs, st.mean);
+  log << fmt::format("simulated '{}': {} samples, {} channels, p = {}, seed {} -> {}\n", s.name,
+                     rec.size(), rec.channels, s.p, a.seed, to_stdout ? "stdout" : a.out);
+  log << fmt::format(
+      "uncorrected electrical angle error: RMS {:.4f} deg, max |e| {:.4f} deg, mean {:.4f} deg\n",
+      st.rms, st.max_abs, st.mean);
   if (!a.json.empty()) {
     nlohmann::json j = {{"scenario", s.name},
                         {"samples", rec.size()},
@@ -106,18 +113,24 @@ void run_simulate(const SimulateArgs& a) {
 
 void add_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
-  CLI::App* c = app.add_subcommand("simulate", "Simulate a sensor recording (docs/contracts.md, recording file CSV) from a scenario");
+  CLI::App* c = app.add_subcommand(
+      "simulate",
+      "Simulate a sensor recording (docs/contracts.md, recording file CSV) from a scenario");
   auto* sc = c->add_option("--scenario", args->scenario, "Built-in scenario (see --list)");
-  auto* cf = c->add_option("--config", args->config, "Scenario JSON file (model/simulator.hpp documents the fields)");
+  auto* cf = c->add_option("--config", args->config,
+                           "Scenario JSON file (model/simulator.hpp documents the fields)");
   sc->excludes(cf);
-  c->add_option("--samples", args->samples, "Number of samples (default 4096)")->check(CLI::Range(1, 100000000));
+  c->add_option("--samples", args->samples, "Number of samples (default 4096)")
+      ->check(CLI::Range(1, 100000000));
   c->add_option("--seed", args->seed, "Noise seed (std::mt19937_64, default 1)");
   c->add_option("--out", args->out, "Output recording CSV ('-' for stdout)");
-  c->add_option("--channels", args->channels, "Override the channel count: 4 (c1..c4) or 2 (sin, cos)")
+  c->add_option("--channels", args->channels,
+                "Override the channel count: 4 (c1..c4) or 2 (sin, cos)")
       ->check(CLI::IsMember({2, 4}));
   c->add_flag("--list", args->list, "List the built-in scenarios and exit");
   c->add_option("--json", args->json, "Write a summary as JSON ('-' for stdout)");
-  c->add_option("--dump-config", args->dump_config, "Write the scenario as JSON (a starting point for --config)");
+  c->add_option("--dump-config", args->dump_config,
+                "Write the scenario as JSON (a starting point for --config)");
   c->callback([args] { run_simulate(*args); });
 }
 

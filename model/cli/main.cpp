@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// anglecore: the command-line front end (docs/contracts.md, command line). Exit 0 ok, 2 bad usage/input, 1 failed check.
+// anglecore: the command-line front end (docs/contracts.md, command line). Exit 0 ok, 2 bad
+// usage/input, 1 failed check.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -23,7 +24,8 @@ int main(int argc, char** argv) {
 #ifdef ACORE_WITH_RTL
   acore::cli::add_cosim(app);
 #endif
-  // With `--json -` standard output carries the JSON alone: the human-readable report goes to stderr.
+  // With `--json -` standard output carries the JSON alone: the human-readable report goes to
+  // stderr.
   if (acore::cli::json_to_stdout(argc, argv)) {
     acore::cli::json_stdout();  // binds the real stdout first
     std::cout.rdbuf(std::cerr.rdbuf());

@@ -17,8 +17,8 @@ constexpr size_t kSamples = 1 << 20;
 
 struct Fixture {
   acore::Recording rec = acore::test::paper_recording(kSamples);
-  acore::RegImage img = acore::quantize(acore::calibrate(rec, acore::CalOptions{}), acore::DatapathConfig{},
-                                        acore::choose_in_scale(rec, 16));
+  acore::RegImage img = acore::quantize(acore::calibrate(rec, acore::CalOptions{}),
+                                        acore::DatapathConfig{}, acore::choose_in_scale(rec, 16));
   std::vector<acore::ChannelCodes> codes = acore::to_codes(rec, img.in_scale, 16);
 };
 

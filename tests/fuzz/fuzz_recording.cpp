@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target for parse_recording (docs/contracts.md, recording file): any input either parses into a consistent
-// recording that survives a write/read round trip, or throws InputError; nothing else may happen
-// (no crash, no other exception, no sanitizer report).
-//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -Imodel tests/fuzz/fuzz_recording.cpp \
+// libFuzzer target for parse_recording (docs/contracts.md, recording file): any input either parses
+// into a consistent recording that survives a write/read round trip, or throws InputError; nothing
+// else may happen (no crash, no other exception, no sanitizer report).
+//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -Imodel
+//   tests/fuzz/fuzz_recording.cpp \
 //     model/recording.cpp -lfmt -o fuzz_recording && ./fuzz_recording -max_total_time=60
 // With -DACORE_FUZZ_STANDALONE it builds a driver for any compiler: it runs each file named on the
 // command line, or mutates a built-in valid recording for `-seconds N` (default 30).
@@ -28,8 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   r.check_consistent("fuzz");
   if (r.size() == 0 || (r.channels != 2 && r.channels != 4)) std::abort();
   const acore::Recording b = acore::parse_recording(acore::format_recording(r), "fuzz-roundtrip");
-  if (b.channels != r.channels || b.size() != r.size() || b.theta_ref != r.theta_ref || b.t != r.t ||
-      b.temp != r.temp)
+  if (b.channels != r.channels || b.size() != r.size() || b.theta_ref != r.theta_ref ||
+      b.t != r.t || b.temp != r.temp)
     std::abort();
   for (size_t c = 0; c < 4; ++c)
     if (b.ch[c] != r.ch[c]) std::abort();
@@ -76,11 +77,21 @@ int main(int argc, char** argv) {
       for (int e = 0; e < edits; ++e) {
         const size_t pos = s.empty() ? 0 : rng() % (s.size() + 1);
         switch (rng() % 5) {
-          case 0: s.insert(pos, 1, alphabet[rng() % alphabet.size()]); break;
-          case 1: if (pos < s.size()) s.erase(pos, 1 + rng() % 4); break;
-          case 2: if (pos < s.size()) s[pos] = static_cast<char>(rng() & 0xff); break;
-          case 3: if (pos < s.size()) s.insert(pos, s.substr(pos, rng() % 40)); break;
-          default: s = s.substr(0, pos); break;
+          case 0:
+            s.insert(pos, 1, alphabet[rng() % alphabet.size()]);
+            break;
+          case 1:
+            if (pos < s.size()) s.erase(pos, 1 + rng() % 4);
+            break;
+          case 2:
+            if (pos < s.size()) s[pos] = static_cast<char>(rng() & 0xff);
+            break;
+          case 3:
+            if (pos < s.size()) s.insert(pos, s.substr(pos, rng() % 40));
+            break;
+          default:
+            s = s.substr(0, pos);
+            break;
         }
       }
       LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(s.data()), s.size());

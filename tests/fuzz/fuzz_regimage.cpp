@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Fuzz target for parse_regimage (docs/contracts.md, register image, the `// acore: key=value` header of every correction
-// mode): any input either parses into an image that round-trips exactly through format_regimage and
-// runs through the bit-accurate model without a crash, or throws InputError; nothing else may
-// happen (no crash, no other exception, no sanitizer report).
+// Fuzz target for parse_regimage (docs/contracts.md, register image, the `// acore: key=value`
+// header of every correction mode): any input either parses into an image that round-trips exactly
+// through format_regimage and runs through the bit-accurate model without a crash, or throws
+// InputError; nothing else may happen (no crash, no other exception, no sanitizer report).
 //   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -Imodel
 //   tests/fuzz/fuzz_regimage.cpp \
 //     model/*.cpp -lfmt -lz -o fuzz_regimage && ./fuzz_regimage -max_total_time=60
@@ -35,8 +35,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // And the bit-accurate model runs on it (any words: saturation paths), extreme inputs included.
   const acore::FixedModel m(img);
   const int32_t hi = (1 << (img.cfg.in_w - 1)) - 1, lo = -hi - 1;
-  for (const acore::ChannelCodes c : {acore::ChannelCodes{0, 0, 0, 0}, acore::ChannelCodes{hi, lo, lo, hi},
-                                      acore::ChannelCodes{1000, -2000, 30, 7}})
+  for (const acore::ChannelCodes c :
+       {acore::ChannelCodes{0, 0, 0, 0}, acore::ChannelCodes{hi, lo, lo, hi},
+        acore::ChannelCodes{1000, -2000, 30, 7}})
     (void)m.step(c);
   return 0;
 }
@@ -82,11 +83,21 @@ int main(int argc, char** argv) {
       for (int e = 0; e < edits; ++e) {
         const size_t pos = s.empty() ? 0 : rng() % (s.size() + 1);
         switch (rng() % 5) {
-          case 0: s.insert(pos, 1, alphabet[rng() % alphabet.size()]); break;
-          case 1: if (pos < s.size()) s.erase(pos, 1 + rng() % 6); break;
-          case 2: if (pos < s.size()) s[pos] = static_cast<char>(rng() & 0xff); break;
-          case 3: if (pos < s.size()) s.insert(pos, s.substr(pos, rng() % 60)); break;
-          default: if (pos < s.size()) s[pos] = alphabet[rng() % alphabet.size()]; break;
+          case 0:
+            s.insert(pos, 1, alphabet[rng() % alphabet.size()]);
+            break;
+          case 1:
+            if (pos < s.size()) s.erase(pos, 1 + rng() % 6);
+            break;
+          case 2:
+            if (pos < s.size()) s[pos] = static_cast<char>(rng() & 0xff);
+            break;
+          case 3:
+            if (pos < s.size()) s.insert(pos, s.substr(pos, rng() % 60));
+            break;
+          default:
+            if (pos < s.size()) s[pos] = alphabet[rng() % alphabet.size()];
+            break;
         }
       }
       LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(s.data()), s.size());
@@ -98,7 +109,8 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf("fuzz_regimage: %zu inputs (%zu parsed), corpus %zu, no failure\n", runs, parsed, corpus.size());
+  std::printf("fuzz_regimage: %zu inputs (%zu parsed), corpus %zu, no failure\n", runs, parsed,
+              corpus.size());
   return 0;
 }
 #endif

@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stages/cordic.hpp"
 #include "core/errors.hpp"
 #include "core/fixed_point.hpp"
 #include "engine/float_model.hpp"
+#include "stages/cordic.hpp"
 #include "stages/fourier_correct.hpp"
 #include "stages/region_select.hpp"
 
@@ -19,12 +19,15 @@ namespace acore {
 namespace {
 
 // Least squares of the float chain's remaining angle error against the Fourier basis in its angle.
-std::vector<double> fit_fourier(const Recording& rec, const FloatCoefficients& fc, const CalOptions& opt) {
+std::vector<double> fit_fourier(const Recording& rec, const FloatCoefficients& fc,
+                                const CalOptions& opt) {
   const int cols = 2 * opt.fourier_k + 1;
   const size_t n = rec.size();
   if (n < static_cast<size_t>(4 * cols))
-    throw InputError(fmt::format("calibration: a {}-harmonic Fourier correction needs at least {} samples, the "
-                                 "recording has {}", opt.fourier_k, 4 * cols, n));
+    throw InputError(
+        fmt::format("calibration: a {}-harmonic Fourier correction needs at least {} samples, the "
+                    "recording has {}",
+                    opt.fourier_k, 4 * cols, n));
   Eigen::MatrixXd basis(n, cols);
   Eigen::VectorXd err(n);
   for (size_t i = 0; i < n; ++i) {
@@ -97,7 +100,8 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
     double ss = 0;
     for (double v : d[c]) ss += (v - fc.offset[c]) * (v - fc.offset[c]);
     fc.amp[c] = std::sqrt(2.0 * ss / n);
-    if (!(fc.amp[c] > 0)) throw InputError(fmt::format("calibration: curve {} has zero amplitude", c ? "c24" : "c13"));
+    if (!(fc.amp[c] > 0))
+      throw InputError(fmt::format("calibration: curve {} has zero amplitude", c ? "c24" : "c13"));
   }
 
   // Domain selection and the design matrix per region.
@@ -118,9 +122,10 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
   for (int r = 0; r < opt.regions && terms > 0; ++r) {
     const auto& m = members[r];
     if (m.size() < static_cast<size_t>(2 * terms))
-      throw InputError(fmt::format(
-          "calibration: region {} has {} samples, at least {} needed (does the recording cover a turn?)",
-          r, m.size(), 2 * terms));
+      throw InputError(
+          fmt::format("calibration: region {} has {} samples, at least {} needed (does the "
+                      "recording cover a turn?)",
+                      r, m.size(), 2 * terms));
     Eigen::MatrixXd V(m.size(), terms);
     Eigen::MatrixXd rhs(m.size(), 2);
     for (size_t k = 0; k < m.size(); ++k) {
@@ -145,7 +150,8 @@ double choose_in_scale(const Recording& rec, int in_w) {
   double peak = 0;
   for (int c = 0; c < rec.channels; ++c)
     for (double v : rec.ch[c]) peak = std::max(peak, std::fabs(v));
-  if (!(peak > 0) || !std::isfinite(peak)) throw InputError("recording has no signal (all channels zero)");
+  if (!(peak > 0) || !std::isfinite(peak))
+    throw InputError("recording has no signal (all channels zero)");
   const double target = std::ldexp(1.0, in_w - 3);  // a quarter of full scale
   return std::ldexp(1.0, static_cast<int>(std::floor(std::log2(target / peak))));
 }
@@ -161,7 +167,8 @@ CalOptions cal_options_for(const DatapathConfig& cfg, int periodicity) {
   return opt;
 }
 
-RegImage calibrate_image(const Recording& rec, const DatapathConfig& cfg, int periodicity, FloatCoefficients* fc) {
+RegImage calibrate_image(const Recording& rec, const DatapathConfig& cfg, int periodicity,
+                         FloatCoefficients* fc) {
   const FloatCoefficients c = calibrate(rec, cal_options_for(cfg, periodicity));
   if (fc) *fc = c;
   return quantize_auto_range(c, cfg, choose_in_scale(rec, cfg.in_w));

@@ -11,9 +11,12 @@ namespace acore {
 
 const char* correction_name(int correction) {
   switch (correction) {
-    case kPoly: return "poly";
-    case kPoly2d: return "poly2d";
-    case kNone: return "none";
+    case kPoly:
+      return "poly";
+    case kPoly2d:
+      return "poly2d";
+    case kNone:
+      return "none";
   }
   return "?";
 }
@@ -26,9 +29,12 @@ int parse_correction(const std::string& name) {
 
 int DatapathConfig::coef_per_curve() const {
   switch (correction) {
-    case kPoly: return degree + 1;
-    case kPoly2d: return (degree + 1) * (degree + 2) / 2;
-    default: return 0;
+    case kPoly:
+      return degree + 1;
+    case kPoly2d:
+      return (degree + 1) * (degree + 2) / 2;
+    default:
+      return 0;
   }
 }
 
@@ -45,7 +51,8 @@ void DatapathConfig::validate() const {
   need(correction >= kPoly && correction <= kNone,
        fmt::format("correction={} must be 0 (poly), 1 (poly2d) or 2 (none)", correction));
   need(degree >= 1 && degree <= 7, fmt::format("degree={} must be 1..7", degree));
-  need(correction != kPoly2d || degree <= 3, fmt::format("degree={} must be 1..3 for poly2d", degree));
+  need(correction != kPoly2d || degree <= 3,
+       fmt::format("degree={} must be 1..3 for poly2d", degree));
   need(regions == 4 || regions == 8, fmt::format("regions={} must be 4 or 8", regions));
   need(xcenter == 0 || (xcenter == 1 && regions == 8),
        fmt::format("xcenter={} must be 0, or 1 with 8 regions (regions={})", xcenter, regions));
@@ -54,10 +61,12 @@ void DatapathConfig::validate() const {
   need(acc_f() >= s_f, fmt::format("coef_f+acc_guard={} must be >= s_f={}", acc_f(), s_f));
   // A coefficient is shifted left by acc_guard into the accumulator (a << acc_guard).
   need(acc_guard >= 0, fmt::format("acc_guard={} must be >= 0", acc_guard));
-  need(acc_int >= reg_w - coef_f + 1, fmt::format("acc_int={} too small for the coefficients", acc_int));
+  need(acc_int >= reg_w - coef_f + 1,
+       fmt::format("acc_int={} too small for the coefficients", acc_int));
   need(acc_w() <= 40, fmt::format("acc_w={} must be <= 40", acc_w()));
   need(iterations >= 4 && iterations <= 24, fmt::format("iterations={} must be 4..24", iterations));
-  need(cordic_guard >= 0 && cordic_guard <= 8, fmt::format("cordic_guard={} must be 0..8", cordic_guard));
+  need(cordic_guard >= 0 && cordic_guard <= 8,
+       fmt::format("cordic_guard={} must be 0..8", cordic_guard));
   // Stage i shifts X and Y right by i: the RTL's CORDIC trims its widths for i < xy_w.
   need(iterations < xy_w(),
        fmt::format("iterations={} must be < xy_w={} (s_w+2+cordic_guard)", iterations, xy_w()));
@@ -79,24 +88,29 @@ void DatapathConfig::validate() const {
       fmt::format("fold={}: the Fourier correction (fourier_k={}) is not folded", fold, fourier_k));
   if (fourier_k == 0) return;
   need(fourier_iterations >= 4 && fourier_iterations <= iterations,
-       fmt::format("fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
-                   fourier_iterations, iterations));
-  need(z_w > angle_w, fmt::format("the Fourier correction needs z_w={} > angle_w={}", z_w, angle_w));
+       fmt::format(
+           "fourier_iterations={} must be 4..iterations={} (it uses the CORDIC's atan words)",
+           fourier_iterations, iterations));
+  need(z_w > angle_w,
+       fmt::format("the Fourier correction needs z_w={} > angle_w={}", z_w, angle_w));
   // The Fourier stage's rotation CORDIC runs fourier_iterations stages on (fourier_word_w + 2 +
   // fourier_guard)-bit vectors and z_w - 2-bit angles (rtl/acore_cordic_rotate.v's rule).
   need(fourier_iterations < fourier_word_w + 2 + fourier_guard,
-       fmt::format("fourier_iterations={} must be < fourier_word_w+2+fourier_guard={}", fourier_iterations,
-                   fourier_word_w + 2 + fourier_guard));
+       fmt::format("fourier_iterations={} must be < fourier_word_w+2+fourier_guard={}",
+                   fourier_iterations, fourier_word_w + 2 + fourier_guard));
   need(fourier_iterations <= z_w - 4,
        fmt::format("fourier_iterations={} must be <= z_w-4={}", fourier_iterations, z_w - 4));
   need(fourier_word_w >= 8 && fourier_word_w <= reg_w,
        fmt::format("fourier_word_w={} must be 8..reg_w={}", fourier_word_w, reg_w));
-  need(fourier_guard >= 0 && fourier_guard <= 8, fmt::format("fourier_guard={} must be 0..8", fourier_guard));
+  need(fourier_guard >= 0 && fourier_guard <= 8,
+       fmt::format("fourier_guard={} must be 0..8", fourier_guard));
   need(fourier_f() > angle_w && fourier_f() <= 40,
-       fmt::format("fourier_coef_f+fourier_guard={} must be angle_w+1={}..40", fourier_f(), angle_w + 1));
+       fmt::format("fourier_coef_f+fourier_guard={} must be angle_w+1={}..40", fourier_f(),
+                   angle_w + 1));
   need(fourier_coef_f >= reg_w - 1,
-       fmt::format("fourier_coef_f={} must be >= reg_w-1={} (a coefficient is less than half a turn)",
-                   fourier_coef_f, reg_w - 1));
+       fmt::format(
+           "fourier_coef_f={} must be >= reg_w-1={} (a coefficient is less than half a turn)",
+           fourier_coef_f, reg_w - 1));
 }
 
 DatapathConfig cordic_width_preset(int angle_w) {
@@ -120,8 +134,9 @@ DatapathConfig cordic_width_preset(int angle_w) {
 std::string DatapathConfig::describe() const {
   std::string fourier;
   if (fourier_k > 0)
-    fourier = fmt::format(" fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_word_w={} fourier_guard={}",
-                          fourier_k, fourier_iterations, fourier_coef_f, fourier_word_w, fourier_guard);
+    fourier = fmt::format(
+        " fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_word_w={} fourier_guard={}",
+        fourier_k, fourier_iterations, fourier_coef_f, fourier_word_w, fourier_guard);
   const std::string folded = fold != 1 ? fmt::format(" fold={}", fold) : "";
   return fmt::format(
       "correction={} in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} "
@@ -187,7 +202,8 @@ DatapathConfig DatapathConfig::with_rtl_params(const std::string& overrides) con
       if (name == n) field = f;
     if (!field) {
       std::string known;
-      for (const auto& [n, f] : rtl_param_table()) known += std::string(known.empty() ? "" : ", ") + n;
+      for (const auto& [n, f] : rtl_param_table())
+        known += std::string(known.empty() ? "" : ", ") + n;
       throw InputError(fmt::format("RTL parameter '{}' is unknown (known: {})", name, known));
     }
     size_t used = 0;
@@ -197,7 +213,8 @@ DatapathConfig DatapathConfig::with_rtl_params(const std::string& overrides) con
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used != value.size()) throw InputError(fmt::format("RTL parameter {}: '{}' is not an integer", name, value));
+    if (used != value.size())
+      throw InputError(fmt::format("RTL parameter {}: '{}' is not an integer", name, value));
     c.*field = v;
   }
   return c;

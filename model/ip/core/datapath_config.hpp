@@ -46,12 +46,12 @@ struct DatapathConfig {
   int angle_w = 16;      // ANGLE_W: output angle width, unsigned, one turn = 2^ANGLE_W
   // --- angle-domain Fourier correction after the CORDIC (model/fourier_correct.hpp) ---
   // angle_out = theta - Delta(theta), Delta = a_0 + sum_k a_k cos k theta + b_k sin k theta.
-  int fourier_k = 0;             // FOURIER_K: harmonics K; 0 = stage off (no words, no header keys)
-  int fourier_iterations = 12;   // FOURIER_M: rotation-CORDIC stages per harmonic (<= iterations)
-  int fourier_coef_f = 22;       // FOURIER_CF: coefficient fraction bits, in turns (word * 2^-CF turn)
-  int fourier_word_w = 16;       // FOURIER_W: significant bits of a harmonic's word (signed; the
-                                 // register word's upper bits must repeat its sign); a_0 uses REG_W
-  int fourier_guard = 2;         // FOURIER_G: guard fraction bits of the rotation x/y registers
+  int fourier_k = 0;            // FOURIER_K: harmonics K; 0 = stage off (no words, no header keys)
+  int fourier_iterations = 12;  // FOURIER_M: rotation-CORDIC stages per harmonic (<= iterations)
+  int fourier_coef_f = 22;  // FOURIER_CF: coefficient fraction bits, in turns (word * 2^-CF turn)
+  int fourier_word_w = 16;  // FOURIER_W: significant bits of a harmonic's word (signed; the
+                            // register word's upper bits must repeat its sign); a_0 uses REG_W
+  int fourier_guard = 2;    // FOURIER_G: guard fraction bits of the rotation x/y registers
   // --- zero position (README "Zero offset") ---
   // ZERO: 1 = one more register word, after every other, holding the zero position z (the low
   // ANGLE_W bits, an angle code); the output is angle_out = (angle - z) mod 2^ANGLE_W, one adder
@@ -74,10 +74,15 @@ struct DatapathConfig {
   int zero_words() const { return zero_word ? 1 : 0; }
   int words() const { return 4 + poly_words() + iterations + fourier_words() + zero_words(); }
   int xy_w() const { return s_w + 2 + cordic_guard; }  // XY_W: CORDIC x/y (gain 1.65 * sqrt 2)
-  int fourier_f() const { return fourier_coef_f + fourier_guard; }  // FOURIER_F: Delta fraction bits (turns)
-  int fourier_xy_w() const { return fourier_word_w + 2 + fourier_guard; }  // FOURIER_XY_W: rotation x/y
+  int fourier_f() const {
+    return fourier_coef_f + fourier_guard;
+  }  // FOURIER_F: Delta fraction bits (turns)
+  int fourier_xy_w() const {
+    return fourier_word_w + 2 + fourier_guard;
+  }  // FOURIER_XY_W: rotation x/y
 
-  // Register map (docs/contracts.md, register image). curve 0 = sine curve c13, 1 = cosine curve c24.
+  // Register map (docs/contracts.md, register image). curve 0 = sine curve c13, 1 = cosine curve
+  // c24.
   int addr_offset(int curve) const { return curve; }
   int addr_recip(int curve) const { return 2 + curve; }
   // Word `term` of region r, curve c: 1-D, term = power j of x; 2-D, term = term2d(i, j).

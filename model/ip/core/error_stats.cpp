@@ -15,7 +15,8 @@ double wrap_deg(double deg) {
 std::vector<double> angle_error_deg(const std::vector<double>& est, const std::vector<double>& ref,
                                     int periodicity) {
   std::vector<double> e(est.size());
-  for (size_t i = 0; i < est.size(); ++i) e[i] = wrap_deg((est[i] - periodicity * ref[i]) * 180.0 / M_PI);
+  for (size_t i = 0; i < est.size(); ++i)
+    e[i] = wrap_deg((est[i] - periodicity * ref[i]) * 180.0 / M_PI);
   return e;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Angle-error statistics (docs/contracts.md, command line): error = estimate - reference, wrapped to (-180, 180] degrees.
+// Angle-error statistics (docs/contracts.md, command line): error = estimate - reference, wrapped
+// to (-180, 180] degrees.
 #pragma once
 #include <vector>
 
@@ -12,8 +13,8 @@ struct ErrorStats {
 // Wraps an angle difference in degrees to (-180, 180].
 double wrap_deg(double deg);
 // Per-sample error in degrees: est_rad - p * ref_rad, wrapped.
-std::vector<double> angle_error_deg(const std::vector<double>& est_rad, const std::vector<double>& ref_rad,
-                                    int periodicity = 1);
+std::vector<double> angle_error_deg(const std::vector<double>& est_rad,
+                                    const std::vector<double>& ref_rad, int periodicity = 1);
 ErrorStats error_stats(const std::vector<double>& err_deg);
 
 }  // namespace acore

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Error types shared by the library and the CLI: they decide the exit status (docs/contracts.md, command line).
+// Error types shared by the library and the CLI: they decide the exit status (docs/contracts.md,
+// command line).
 #pragma once
 #include <stdexcept>
 #include <string>

@@ -16,7 +16,9 @@ inline int64_t shr(int64_t v, int n) {
 }
 
 // Round half up: floor(v * 2^-n + 1/2), n >= 1; plain v for n == 0.
-inline int64_t round_shr(int64_t v, int n) { return n > 0 ? ((v + (int64_t{1} << (n - 1))) >> n) : v; }
+inline int64_t round_shr(int64_t v, int n) {
+  return n > 0 ? ((v + (int64_t{1} << (n - 1))) >> n) : v;
+}
 
 inline int64_t smax(int w) { return (int64_t{1} << (w - 1)) - 1; }
 inline int64_t smin(int w) { return -(int64_t{1} << (w - 1)); }

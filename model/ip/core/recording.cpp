@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Recording file I/O (docs/contracts.md, recording file). The parser works on string_views over the whole file and converts
-// numbers with std::from_chars, so a million-row recording parses in well under a second.
+// Recording file I/O (docs/contracts.md, recording file). The parser works on string_views over the
+// whole file and converts numbers with std::from_chars, so a million-row recording parses in well
+// under a second.
 #include "core/recording.hpp"
 
 #include <fmt/format.h>
@@ -46,8 +47,10 @@ const char* parse_number(std::string_view f, double& v) {
   if (f.empty()) return "empty field, expected a number";
   std::string_view body = f;
   if (body.front() == '+') body.remove_prefix(1);
-  if (body.empty() || body.front() == '+' || (body.size() < f.size() && body.front() == '-')) return "not a number";
-  const auto res = std::from_chars(body.data(), body.data() + body.size(), v, std::chars_format::general);
+  if (body.empty() || body.front() == '+' || (body.size() < f.size() && body.front() == '-'))
+    return "not a number";
+  const auto res =
+      std::from_chars(body.data(), body.data() + body.size(), v, std::chars_format::general);
   if (res.ec == std::errc::result_out_of_range) return "out of the range of a double";
   if (res.ec != std::errc() || res.ptr != body.data() + body.size()) return "not a number";
   if (!std::isfinite(v)) return "NaN or infinite value";
@@ -60,7 +63,8 @@ void Recording::check_consistent(const std::string& what) const {
   const size_t n = size();
   auto check = [&](const std::vector<double>& v, const std::string& name) {
     if (!v.empty() && v.size() != n)
-      throw InputError(fmt::format("{}: column '{}' has {} samples, the channels {}", what, name, v.size(), n));
+      throw InputError(
+          fmt::format("{}: column '{}' has {} samples, the channels {}", what, name, v.size(), n));
   };
   for (int c = 1; c < channels; ++c) {
     if (ch[static_cast<size_t>(c)].size() != n)
@@ -105,7 +109,8 @@ Recording parse_recording(const std::string& text, const std::string& name) {
     if (tl.front() == '#') {
       const std::string_view body = trim(tl.substr(1));
       const size_t eq = body.find('=');
-      const std::string_view key = eq == std::string_view::npos ? std::string_view() : trim(body.substr(0, eq));
+      const std::string_view key =
+          eq == std::string_view::npos ? std::string_view() : trim(body.substr(0, eq));
       if (!key.empty() && key.find_first_of(" \t") == std::string_view::npos)
         rec.meta[std::string(key)] = std::string(trim(body.substr(eq + 1)));
       else
@@ -116,19 +121,22 @@ Recording parse_recording(const std::string& text, const std::string& name) {
     break;
   }
   if (!have_header)
-    throw InputError(fmt::format("{}:{}: empty file: no header row (expected theta_ref,c1,c2,c3,c4 or sin,cos)", name,
-                                 lineno + 1));
+    throw InputError(
+        fmt::format("{}:{}: empty file: no header row (expected theta_ref,c1,c2,c3,c4 or sin,cos)",
+                    name, lineno + 1));
   const size_t header_line = lineno;
   std::vector<std::string_view> fields;
   split(line, fields);
   const std::vector<std::string> names(fields.begin(), fields.end());
   for (size_t k = 0; k < names.size(); ++k) {
     if (names[k].empty())
-      throw InputError(fmt::format("{}:{}: column {}: empty column name in the header", name, header_line, k + 1));
+      throw InputError(fmt::format("{}:{}: column {}: empty column name in the header", name,
+                                   header_line, k + 1));
     for (size_t j = 0; j < k; ++j)
       if (names[j] == names[k])
-        throw InputError(fmt::format("{}:{}: column '{}': appears twice in the header (columns {} and {})", name,
-                                     header_line, names[k], j + 1, k + 1));
+        throw InputError(
+            fmt::format("{}:{}: column '{}': appears twice in the header (columns {} and {})", name,
+                        header_line, names[k], j + 1, k + 1));
   }
   // Column index per known name, -1 when absent.
   auto find = [&](const char* col) {
@@ -142,25 +150,28 @@ Recording parse_recording(const std::string& text, const std::string& name) {
   const bool any4 = i_c[0] >= 0 || i_c[1] >= 0 || i_c[2] >= 0 || i_c[3] >= 0;
   const bool any2 = i_sin >= 0 || i_cos >= 0;
   if (any4 && any2)
-    throw InputError(fmt::format("{}:{}: column '{}': the header has both c1..c4 and sin,cos columns: use one set", name,
-                                 header_line, i_sin >= 0 ? "sin" : "cos"));
+    throw InputError(fmt::format(
+        "{}:{}: column '{}': the header has both c1..c4 and sin,cos columns: use one set", name,
+        header_line, i_sin >= 0 ? "sin" : "cos"));
   // (column index, destination); the channel columns come first.
   std::vector<std::pair<size_t, std::vector<double>*>> cols;
   if (any2) {
     rec.channels = 2;
     if (i_sin < 0)
-      throw InputError(fmt::format("{}:{}: column 'sin': missing (a two-channel recording needs sin and cos)", name,
-                                   header_line));
+      throw InputError(
+          fmt::format("{}:{}: column 'sin': missing (a two-channel recording needs sin and cos)",
+                      name, header_line));
     if (i_cos < 0)
-      throw InputError(fmt::format("{}:{}: column 'cos': missing (a two-channel recording needs sin and cos)", name,
-                                   header_line));
+      throw InputError(
+          fmt::format("{}:{}: column 'cos': missing (a two-channel recording needs sin and cos)",
+                      name, header_line));
     cols = {{static_cast<size_t>(i_sin), &rec.ch[0]}, {static_cast<size_t>(i_cos), &rec.ch[1]}};
   } else {
     rec.channels = 4;
     for (size_t c = 0; c < 4; ++c) {
       if (i_c[c] < 0)
-        throw InputError(fmt::format("{}:{}: column 'c{}': missing (need c1,c2,c3,c4 or sin,cos)", name, header_line,
-                                     c + 1));
+        throw InputError(fmt::format("{}:{}: column 'c{}': missing (need c1,c2,c3,c4 or sin,cos)",
+                                     name, header_line, c + 1));
       cols.push_back({static_cast<size_t>(i_c[c]), &rec.ch[c]});
     }
   }
@@ -177,12 +188,14 @@ Recording parse_recording(const std::string& text, const std::string& name) {
     if (trim(line).empty()) continue;
     split(line, fields);
     if (fields.size() < names.size())
-      throw InputError(fmt::format("{}:{}: column '{}': missing field (ragged row: {} fields, the header has {})", name,
-                                   lineno, names[fields.size()], fields.size(), names.size()));
+      throw InputError(fmt::format(
+          "{}:{}: column '{}': missing field (ragged row: {} fields, the header has {})", name,
+          lineno, names[fields.size()], fields.size(), names.size()));
     if (fields.size() > names.size())
-      throw InputError(fmt::format("{}:{}: column {}: extra field beyond the header (ragged row: {} fields, the "
-                                   "header has {})",
-                                   name, lineno, names.size() + 1, fields.size(), names.size()));
+      throw InputError(
+          fmt::format("{}:{}: column {}: extra field beyond the header (ragged row: {} fields, the "
+                      "header has {})",
+                      name, lineno, names.size() + 1, fields.size(), names.size()));
     for (const auto& [idx, dest] : cols) {
       double v = 0;
       const char* err = parse_number(fields[idx], v);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Recording file I/O (docs/contracts.md, recording file): `#` comment/metadata lines, one header row, then numbers.
+// Recording file I/O (docs/contracts.md, recording file): `#` comment/metadata lines, one header
+// row, then numbers.
 #pragma once
 #include <array>
 #include <map>
@@ -11,11 +12,11 @@ namespace acore {
 // One sensor recording. Four-channel recordings fill ch[0..3] = c1..c4; two-channel recordings
 // fill ch[0] = sin and ch[1] = cos (already differential) and leave ch[2], ch[3] empty.
 struct Recording {
-  int channels = 4;                       // 4 (c1..c4) or 2 (sin, cos)
-  std::array<std::vector<double>, 4> ch;  // channel samples, see above
-  std::vector<double> theta_ref;          // reference angle, rad (empty when absent)
-  std::vector<double> t;                  // seconds (empty when absent)
-  std::vector<double> temp;               // degrees Celsius (empty when absent)
+  int channels = 4;                         // 4 (c1..c4) or 2 (sin, cos)
+  std::array<std::vector<double>, 4> ch;    // channel samples, see above
+  std::vector<double> theta_ref;            // reference angle, rad (empty when absent)
+  std::vector<double> t;                    // seconds (empty when absent)
+  std::vector<double> temp;                 // degrees Celsius (empty when absent)
   std::map<std::string, std::string> meta;  // `# key=value` lines
   std::vector<std::string> comments;        // other `#` lines, without the `#`
 

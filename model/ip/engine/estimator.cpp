@@ -18,10 +18,14 @@ Engine parse_engine(const std::string& name) {
 
 const char* engine_name(Engine e) {
   switch (e) {
-    case Engine::Float: return "float";
-    case Engine::Fixed: return "fixed";
-    case Engine::Rtl: return "rtl";
-    case Engine::RtlSerial: return "rtl-serial";
+    case Engine::Float:
+      return "float";
+    case Engine::Fixed:
+      return "fixed";
+    case Engine::Rtl:
+      return "rtl";
+    case Engine::RtlSerial:
+      return "rtl-serial";
   }
   return "?";
 }
@@ -30,7 +34,9 @@ std::vector<ChannelCodes> to_codes(const Recording& rec, double in_scale, int in
   std::vector<ChannelCodes> codes(rec.size());
   for (size_t i = 0; i < rec.size(); ++i)
     for (int c = 0; c < 4; ++c)
-      codes[i][c] = c < rec.channels ? static_cast<int32_t>(FixedModel::to_code(rec.ch[c][i], in_scale, in_w)) : 0;
+      codes[i][c] = c < rec.channels
+                        ? static_cast<int32_t>(FixedModel::to_code(rec.ch[c][i], in_scale, in_w))
+                        : 0;
   return codes;
 }
 
@@ -82,7 +88,8 @@ AngleSeries run_fixed(const Recording& rec, const RegImage& img) {
   const FixedModel model(img);
   std::vector<FixedSample> rows;
   rows.reserve(rec.size());
-  for (const ChannelCodes& c : to_codes(rec, img.in_scale, img.cfg.in_w)) rows.push_back(model.step(c));
+  for (const ChannelCodes& c : to_codes(rec, img.in_scale, img.cfg.in_w))
+    rows.push_back(model.step(c));
   return series_from_fixed(rows, img);
 }
 

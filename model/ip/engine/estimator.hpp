@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "regmap/coefficients.hpp"
-#include "engine/fixed_model.hpp"
 #include "core/recording.hpp"
+#include "engine/fixed_model.hpp"
+#include "regmap/coefficients.hpp"
 
 namespace acore {
 
@@ -22,9 +22,9 @@ struct AngleSeries {
   std::vector<double> angle;        // corrected electrical angle - zero offset, rad [0, 2 pi)
   std::vector<double> uncorrected;  // without the polynomial correction - zero offset, rad
   std::vector<int> region;
-  std::vector<unsigned> flags;      // bit 0 ovf, 1 los, 2 dos (fixed/RTL engines)
-  double zero_offset = 0;           // the zero offset removed (rad, [-pi, pi)) ...
-  bool zero_word = false;           // ... by the ZERO word (true) or in software (false)
+  std::vector<unsigned> flags;  // bit 0 ovf, 1 los, 2 dos (fixed/RTL engines)
+  double zero_offset = 0;       // the zero offset removed (rad, [-pi, pi)) ...
+  bool zero_word = false;       // ... by the ZERO word (true) or in software (false)
 };
 
 // The recording's channels as input codes: round(v * in_scale) saturated to IN_W bits;

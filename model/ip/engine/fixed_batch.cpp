@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "engine/fixed_model.hpp"
 #include "core/fixed_point.hpp"
+#include "engine/fixed_model.hpp"
 #include "stages/fourier_correct.hpp"
 #include "stages/region_select.hpp"
 
@@ -53,9 +53,9 @@ void scale_chunk(const int32_t* d, int n, int32_t offset, uint32_t recip, int re
 // Horner on the adder/shifter multiplier, both curves at once: they share x, so each bit mask of
 // x is loaded once for the two products.
 ACORE_VECTOR_CLONES
-void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* mask, const int32_t* c13,
-                const int32_t* c24, int n, int degree, int s_w, int s_f, int acc_guard, int acc_w, int out_shift,
-                int32_t* y13, int32_t* y24, uint8_t* ovf) {
+void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* mask,
+                const int32_t* c13, const int32_t* c24, int n, int degree, int s_w, int s_f,
+                int acc_guard, int acc_w, int out_shift, int32_t* y13, int32_t* y24, uint8_t* ovf) {
   int32_t a13[kChunk], a24[kChunk], p13[kChunk], p24[kChunk];
   const int32_t ahi = (1 << (acc_w - 1)) - 1, alo = -(1 << (acc_w - 1));
   for (int i = 0; i < n; ++i) {
@@ -83,7 +83,8 @@ void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* ma
     const int32_t* k13 = c13 + j * kChunk;
     const int32_t* k24 = c24 + j * kChunk;
     for (int i = 0; i < n; ++i) {
-      const int32_t v13 = p13[i] + k13[i] * (1 << acc_guard), v24 = p24[i] + k24[i] * (1 << acc_guard);
+      const int32_t v13 = p13[i] + k13[i] * (1 << acc_guard),
+                    v24 = p24[i] + k24[i] * (1 << acc_guard);
       ovf[i] |= static_cast<uint8_t>((v13 > ahi) | (v13 < alo) | (v24 > ahi) | (v24 < alo));
       a13[i] = std::clamp(v13, alo, ahi);
       a24[i] = std::clamp(v24, alo, ahi);
@@ -92,7 +93,8 @@ void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* ma
   const int32_t hi = (1 << (s_w - 1)) - 1, lo = -(1 << (s_w - 1));
   const int32_t half = out_shift > 0 ? 1 << (out_shift - 1) : 0;
   for (int i = 0; i < n; ++i) {
-    const int32_t v13 = s13[i] - ((a13[i] + half) >> out_shift), v24 = s24[i] - ((a24[i] + half) >> out_shift);
+    const int32_t v13 = s13[i] - ((a13[i] + half) >> out_shift),
+                  v24 = s24[i] - ((a24[i] + half) >> out_shift);
     ovf[i] |= static_cast<uint8_t>((v13 > hi) | (v13 < lo) | (v24 > hi) | (v24 < lo));
     y13[i] = std::clamp(v13, lo, hi);
     y24[i] = std::clamp(v24, lo, hi);
@@ -101,8 +103,8 @@ void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* ma
 
 // CORDIC vectoring with quadrant pre-rotation (cordic.cpp), Z kept modulo 2^Z_W.
 ACORE_VECTOR_CLONES
-void cordic_chunk(const int32_t* xin, const int32_t* yin, int n, const int32_t* atan, int iterations,
-                  int guard, int z_w, int angle_w, uint32_t* angle, int32_t* mag) {
+void cordic_chunk(const int32_t* xin, const int32_t* yin, int n, const int32_t* atan,
+                  int iterations, int guard, int z_w, int angle_w, uint32_t* angle, int32_t* mag) {
   int32_t X[kChunk], Y[kChunk];
   uint32_t Z[kChunk];
   const uint32_t half_turn = 1u << (z_w - 1), zmask = (z_w >= 32) ? ~0u : ((1u << z_w) - 1);
@@ -133,7 +135,8 @@ void cordic_chunk(const int32_t* xin, const int32_t* yin, int n, const int32_t* 
 
 // Domain selection (region_select.hpp) across samples.
 ACORE_VECTOR_CLONES
-void region_chunk(const int32_t* s13, const int32_t* s24, int n, int regions, int32_t* region, int32_t* x) {
+void region_chunk(const int32_t* s13, const int32_t* s24, int n, int regions, int32_t* region,
+                  int32_t* x) {
   for (int i = 0; i < n; ++i) {
     const int32_t a13 = s13[i] < 0 ? -s13[i] : s13[i], a24 = s24[i] < 0 ? -s24[i] : s24[i];
     const bool sine = a13 <= a24;
@@ -147,8 +150,8 @@ void region_chunk(const int32_t* s13, const int32_t* s24, int n, int regions, in
 // Each sample's polynomial coefficients, one array per power. Regions are few, so a select per
 // region beats a gather.
 ACORE_VECTOR_CLONES
-void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions, int terms, int32_t* c13,
-                  int32_t* c24) {
+void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions, int terms,
+                  int32_t* c13, int32_t* c24) {
   for (int j = 0; j < terms; ++j) {
     int32_t* o13 = c13 + j * kChunk;
     int32_t* o24 = c24 + j * kChunk;
@@ -181,10 +184,10 @@ void mask_chunk(const int32_t* x, int n, int s_w, int32_t* mask) {
 }
 
 ACORE_VECTOR_CLONES
-void output_chunk(const uint32_t* angle, const int32_t* mag, const int32_t* region, const uint8_t* ovf, int n,
-                  int64_t mag_lo, int64_t mag_hi, FixedOutput* out) {
+void output_chunk(const uint32_t* angle, const int32_t* mag, const int32_t* region,
+                  const uint8_t* ovf, int n, int64_t mag_lo, int64_t mag_hi, FixedOutput* out) {
   for (int i = 0; i < n; ++i) {
-    const bool los = mag[i] < mag_lo, dos = mag[i] > mag_hi;
+    const bool los = mag[i]<mag_lo, dos = mag[i]> mag_hi;
     out[i] = {angle[i], static_cast<uint8_t>(region[i]),
               static_cast<uint8_t>((ovf[i] ? 1 : 0) | (los ? 2 : 0) | (dos ? 4 : 0))};
   }
@@ -213,7 +216,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
   }
   const DatapathConfig& cfg = img_.cfg;
   const int terms = cfg.degree + 1;
-  int32_t d13[kChunk], d24[kChunk], s13[kChunk], s24[kChunk], x[kChunk], y13[kChunk], y24[kChunk], mag[kChunk];
+  int32_t d13[kChunk], d24[kChunk], s13[kChunk], s24[kChunk], x[kChunk], y13[kChunk], y24[kChunk],
+      mag[kChunk];
   uint32_t angle[kChunk];
   uint8_t ovf[kChunk];
   int32_t region[kChunk];
@@ -245,7 +249,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
     output_chunk(angle, mag, region, ovf, m, window_.mag_lo, window_.mag_hi, out + base);
   }
   if (cfg.fourier_k > 0)
-    for (size_t i = 0; i < n; ++i) out[i].angle = fourier_correct(out[i].angle, fourier_.data(), atan_.data(), cfg);
+    for (size_t i = 0; i < n; ++i)
+      out[i].angle = fourier_correct(out[i].angle, fourier_.data(), atan_.data(), cfg);
   if (cfg.zero_word) zero_chunk(out, n, zero_, cfg.angle_w);
 }
 

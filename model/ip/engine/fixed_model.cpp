@@ -91,7 +91,8 @@ FixedSample FixedModel::step(const ChannelCodes& c) const {
   const CordicConfig cc = cordic_config();
   const CordicResult r = cordic_vector(out.y24, out.y13, cc, atan_.data());
   out.cordic_angle = r.angle;
-  out.angle = cfg.fourier_k > 0 ? fourier_correct(r.angle, fourier_.data(), atan_.data(), cfg) : r.angle;
+  out.angle =
+      cfg.fourier_k > 0 ? fourier_correct(r.angle, fourier_.data(), atan_.data(), cfg) : r.angle;
   out.magnitude = r.magnitude;
   out.los = r.magnitude < window_.mag_lo;
   out.dos = r.magnitude > window_.mag_hi;

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "stages/cordic.hpp"
 #include "regmap/regimage.hpp"
+#include "stages/cordic.hpp"
 
 namespace acore {
 
@@ -23,14 +23,14 @@ struct StatusWindow {
 using ChannelCodes = std::array<int32_t, 4>;  // c1..c4 input codes (IN_W-bit signed, IN_W <= 24)
 
 struct FixedSample {
-  uint32_t angle = 0;   // ANGLE_W-bit unsigned, one turn = 2^ANGLE_W
-  int region = 0;       // selected polynomial region
-  bool ovf = false;     // saturation in any stage
-  bool los = false;     // magnitude < mag_lo
-  bool dos = false;     // magnitude > mag_hi
-  int64_t s13 = 0, s24 = 0;  // scaled curves (Q2.16)
-  int64_t y13 = 0, y24 = 0;  // corrected curves (Q2.16)
-  int64_t magnitude = 0;     // CORDIC X_K >>> G
+  uint32_t angle = 0;              // ANGLE_W-bit unsigned, one turn = 2^ANGLE_W
+  int region = 0;                  // selected polynomial region
+  bool ovf = false;                // saturation in any stage
+  bool los = false;                // magnitude < mag_lo
+  bool dos = false;                // magnitude > mag_hi
+  int64_t s13 = 0, s24 = 0;        // scaled curves (Q2.16)
+  int64_t y13 = 0, y24 = 0;        // corrected curves (Q2.16)
+  int64_t magnitude = 0;           // CORDIC X_K >>> G
   uint32_t uncorrected_angle = 0;  // CORDIC of (s24, s13) (- zero): the chain without correction
   uint32_t cordic_angle = 0;       // CORDIC of (y24, y13): the angle before the Fourier correction
   bool operator==(const FixedSample& o) const;  // the RTL-visible fields: angle, region, flags
@@ -66,8 +66,8 @@ class FixedModel {
  private:
   RegImage img_;
   StatusWindow window_;
-  std::vector<int64_t> coef_;   // sign-extended polynomial words, [region][curve][power]
-  std::vector<int64_t> atan_;   // CORDIC constants
+  std::vector<int64_t> coef_;     // sign-extended polynomial words, [region][curve][power]
+  std::vector<int64_t> atan_;     // CORDIC constants
   std::vector<int64_t> fourier_;  // sign-extended Fourier words (empty when fourier_k = 0)
   uint32_t zero_ = 0;             // the ZERO word's zero position (zero_word = 1)
 };

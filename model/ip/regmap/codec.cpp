@@ -71,9 +71,11 @@ RegImage quantize(const FloatCoefficients& fc, DatapathConfig cfg, double in_sca
     const long long q = std::llround(std::ldexp(turns, cfg.fourier_coef_f));
     const int w = j == 0 ? cfg.reg_w : cfg.fourier_word_w;  // a harmonic's word: its low W bits
     if (q > fx::smax(w) || q < fx::smin(w))
-      throw InputError(fmt::format("fourier coefficient {} = {:.4f} deg exceeds the {}-bit range of "
-                                   "fourier_coef_f={} (+-{:.4f} deg)", j, fc.fourier[j] * 180 / M_PI, w,
-                                   cfg.fourier_coef_f, std::ldexp(360.0, w - 1 - cfg.fourier_coef_f) * (j ? gain : 1)));
+      throw InputError(
+          fmt::format("fourier coefficient {} = {:.4f} deg exceeds the {}-bit range of "
+                      "fourier_coef_f={} (+-{:.4f} deg)",
+                      j, fc.fourier[j] * 180 / M_PI, w, cfg.fourier_coef_f,
+                      std::ldexp(360.0, w - 1 - cfg.fourier_coef_f) * (j ? gain : 1)));
     img.set_signed(cfg.addr_fourier(j), q);
   }
   return img;
@@ -84,11 +86,14 @@ RegImage quantize_auto_range(const FloatCoefficients& coef, DatapathConfig cfg, 
     try {
       return quantize(coef, cfg, in_scale);
     } catch (const InputError& e) {
-      if (std::string(e.what()).find("fourier coefficient") != std::string::npos && cfg.fourier_coef_f >= cfg.reg_w) {
+      if (std::string(e.what()).find("fourier coefficient") != std::string::npos &&
+          cfg.fourier_coef_f >= cfg.reg_w) {
         --cfg.fourier_coef_f;
         continue;
       }
-      if (cfg.coef_f <= 8 || std::string(e.what()).find("polynomial coefficient") == std::string::npos) throw;
+      if (cfg.coef_f <= 8 ||
+          std::string(e.what()).find("polynomial coefficient") == std::string::npos)
+        throw;
       const int acc_f = cfg.acc_f();
       --cfg.coef_f;
       cfg.acc_guard = acc_f - cfg.coef_f;

@@ -61,8 +61,12 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-int64_t RegImage::offset(int curve) const { return fx::sext(words.at(cfg.addr_offset(curve)), cfg.reg_w); }
-int64_t RegImage::recip(int curve) const { return static_cast<int64_t>(words.at(cfg.addr_recip(curve))); }
+int64_t RegImage::offset(int curve) const {
+  return fx::sext(words.at(cfg.addr_offset(curve)), cfg.reg_w);
+}
+int64_t RegImage::recip(int curve) const {
+  return static_cast<int64_t>(words.at(cfg.addr_recip(curve)));
+}
 int64_t RegImage::poly(int r, int c, int j) const {
   return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
 }
@@ -83,8 +87,8 @@ double RegImage::applied_zero_offset() const {
 
 void RegImage::set_signed(int addr, int64_t value) {
   if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))
-    throw InputError(fmt::format("register {}: value {} does not fit a signed {}-bit word", addr, value,
-                                 cfg.reg_w));
+    throw InputError(fmt::format("register {}: value {} does not fit a signed {}-bit word", addr,
+                                 value, cfg.reg_w));
   words.at(addr) = static_cast<uint64_t>(value) & word_mask(cfg.reg_w);
 }
 
@@ -164,7 +168,8 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
         }
         if (used != val.size()) throw std::invalid_argument(val);
       } catch (const std::exception&) {
-        throw InputError(fmt::format("{}:{}: header field '{}': bad value '{}'", name, lineno, key, val));
+        throw InputError(
+            fmt::format("{}:{}: header field '{}': bad value '{}'", name, lineno, key, val));
       }
       continue;
     }
@@ -180,7 +185,8 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: header: {}", name, e.what()));
   }
-  if (!in_scale_seen) throw InputError(fmt::format("{}: header: missing 'acore: in_scale=...'", name));
+  if (!in_scale_seen)
+    throw InputError(fmt::format("{}: header: missing 'acore: in_scale=...'", name));
   if (code_line) {
     const long long max = (1LL << img.cfg.angle_w) - 1;
     if (zero_code > max)
@@ -219,14 +225,18 @@ RegImage read_regimage(const std::string& path) {
 
 std::string format_regimage(const RegImage& img) {
   const DatapathConfig& c = img.cfg;
-  std::string out = "// AngleCore coefficient register image ($readmemh), docs/contracts.md, register image map\n";
+  std::string out =
+      "// AngleCore coefficient register image ($readmemh), docs/contracts.md, register image "
+      "map\n";
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
   out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
   out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
-  for (const auto& [key, field] : config_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  for (const auto& [key, field] : config_fields())
+    out += fmt::format("// acore: {}={}\n", key, c.*field);
   if (c.fourier_k > 0)
-    for (const auto& [key, field] : fourier_fields()) out += fmt::format("// acore: {}={}\n", key, c.*field);
+    for (const auto& [key, field] : fourier_fields())
+      out += fmt::format("// acore: {}={}\n", key, c.*field);
   if (c.zero_word) out += fmt::format("// acore: {}=1\n", kZeroWordKey);
   if (img.zero_offset != 0.0 || c.zero_word) {
     out += fmt::format("// acore: zero_offset_rad={}\n", img.zero_offset);
@@ -243,8 +253,9 @@ std::string format_regimage(const RegImage& img) {
   for (int k = 0; k < 2; ++k)
     line(c.addr_offset(k), fmt::format("offset O{} = {} codes", k ? "24" : "13", img.offset(k)));
   for (int k = 0; k < 2; ++k)
-    line(c.addr_recip(k), fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
-                                      std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
+    line(c.addr_recip(k),
+         fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
+                     std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
   const char* x_name = c.xcenter ? "u" : "x";
   for (int r = 0; r < c.regions; ++r)
     for (int k = 0; k < 2; ++k)
@@ -267,8 +278,8 @@ std::string format_regimage(const RegImage& img) {
     if (j == 0)
       line(c.addr_fourier(j), fmt::format("fourier a_0 = {:+.6f} deg", deg));
     else
-      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)", j % 2 ? "a" : "b",
-                                          (j + 1) / 2, deg * gain));
+      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)",
+                                          j % 2 ? "a" : "b", (j + 1) / 2, deg * gain));
   }
   if (c.zero_word)
     line(c.addr_zero(),

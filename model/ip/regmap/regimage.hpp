@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The coefficient register image (docs/contracts.md, register image): $readmemh text, one hex word per line in address
-// order, `//` comments. The header records the configuration as `// acore: key=value` lines so an
-// image is self-describing; readers that only want the words ($readmemh) ignore them.
+// The coefficient register image (docs/contracts.md, register image): $readmemh text, one hex word
+// per line in address order, `//` comments. The header records the configuration as `// acore:
+// key=value` lines so an image is self-describing; readers that only want the words ($readmemh)
+// ignore them.
 #pragma once
 #include <cstdint>
 #include <string>

@@ -17,9 +17,11 @@ std::vector<int64_t> cordic_atan_table(int z_w, int iterations) {
 
 static int msb_index(uint64_t v) { return v ? 63 - __builtin_clzll(v) : -1; }
 
-CordicResult cordic_vector(int64_t x, int64_t y, const CordicConfig& cfg, const int64_t* atan_table) {
+CordicResult cordic_vector(int64_t x, int64_t y, const CordicConfig& cfg,
+                           const int64_t* atan_table) {
   if (cfg.normalize) {
-    const uint64_t mag = static_cast<uint64_t>(x < 0 ? -x : x) | static_cast<uint64_t>(y < 0 ? -y : y);
+    const uint64_t mag =
+        static_cast<uint64_t>(x < 0 ? -x : x) | static_cast<uint64_t>(y < 0 ? -y : y);
     const int shift = (cfg.in_w - 2) - msb_index(mag);
     if (mag != 0 && shift > 0) {
       x = fx::shr(x, -shift);
@@ -56,8 +58,8 @@ CordicResult cordic_vector(int64_t x, int64_t y, const CordicConfig& cfg, const 
 
 double cordic_error_bound_lsb(const CordicConfig& cfg) {
   // Residual rotation after K steps, atan table rounding (K half-LSBs of Z), x/y truncation
-  // (about 2 LSB of the guard-extended word per step, seen against a vector of length >= 2^(IN_W-2)),
-  // and the final rounding to ANGLE_W.
+  // (about 2 LSB of the guard-extended word per step, seen against a vector of length >=
+  // 2^(IN_W-2)), and the final rounding to ANGLE_W.
   const double lsb_rad = 2 * M_PI / std::ldexp(1.0, cfg.angle_w);
   const double residual = std::atan(std::ldexp(1.0, -(cfg.iterations - 1)));
   const double table = cfg.iterations * 0.5 * 2 * M_PI / std::ldexp(1.0, cfg.z_w);

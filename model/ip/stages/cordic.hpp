@@ -19,12 +19,12 @@
 namespace acore {
 
 struct CordicConfig {
-  int in_w = 18;          // IN_W: width of the signed x/y inputs
-  int guard = 3;          // G: guard fraction bits
-  int z_w = 20;           // Z_W: angle accumulator, one turn = 2^Z_W
-  int angle_w = 16;       // ANGLE_W: output angle width
-  int iterations = 16;    // K
-  bool normalize = false; // NORM: leading-bit normalization before the iterations
+  int in_w = 18;           // IN_W: width of the signed x/y inputs
+  int guard = 3;           // G: guard fraction bits
+  int z_w = 20;            // Z_W: angle accumulator, one turn = 2^Z_W
+  int angle_w = 16;        // ANGLE_W: output angle width
+  int iterations = 16;     // K
+  bool normalize = false;  // NORM: leading-bit normalization before the iterations
   int xy_w() const { return in_w + 2 + guard; }
 };
 
@@ -37,10 +37,12 @@ struct CordicResult {
 std::vector<int64_t> cordic_atan_table(int z_w, int iterations);
 
 // x is the cosine-like input, y the sine-like input (angle = atan2(y, x)).
-CordicResult cordic_vector(int64_t x, int64_t y, const CordicConfig& cfg, const int64_t* atan_table);
+CordicResult cordic_vector(int64_t x, int64_t y, const CordicConfig& cfg,
+                           const int64_t* atan_table);
 
 // Analytic bound of |angle error| in output LSBs for this configuration, against atan2 of the
-// (integer) inputs, for inputs whose larger magnitude is at least 2^(IN_W-2) (or any input with NORM).
+// (integer) inputs, for inputs whose larger magnitude is at least 2^(IN_W-2) (or any input with
+// NORM).
 double cordic_error_bound_lsb(const CordicConfig& cfg);
 
 }  // namespace acore

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "stages/cordic_rotate.hpp"
 #include "core/fixed_point.hpp"
+#include "stages/cordic_rotate.hpp"
 
 namespace acore {
 

@@ -25,7 +25,8 @@ int64_t poly_subtract(int64_t s, int64_t acc0, const DatapathConfig& cfg, bool* 
   return fx::saturate(s - fx::round_shr(acc0, cfg.acc_f() - cfg.s_f), cfg.s_w, ovf);
 }
 
-int64_t poly_correct(int64_t s, int64_t x, const int64_t* coef, const DatapathConfig& cfg, bool* ovf) {
+int64_t poly_correct(int64_t s, int64_t x, const int64_t* coef, const DatapathConfig& cfg,
+                     bool* ovf) {
   return poly_subtract(s, poly_eval(x, coef, cfg, ovf), cfg, ovf);
 }
 

@@ -25,7 +25,8 @@ PolyArg poly_argument(int64_t x, const DatapathConfig& cfg);
 
 // coef[j] is the coefficient of u^j (sign-extended REG_W-bit word, COEF_F fraction bits).
 int64_t poly_eval(int64_t x, const int64_t* coef, const DatapathConfig& cfg, bool* ovf);
-int64_t poly_correct(int64_t s, int64_t x, const int64_t* coef, const DatapathConfig& cfg, bool* ovf);
+int64_t poly_correct(int64_t s, int64_t x, const int64_t* coef, const DatapathConfig& cfg,
+                     bool* ovf);
 // y = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W): the last step of both correction modes.
 int64_t poly_subtract(int64_t s, int64_t acc0, const DatapathConfig& cfg, bool* ovf);
 

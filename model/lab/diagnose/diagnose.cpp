@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "sim/effects.hpp"
 #include "core/errors.hpp"
+#include "sim/effects.hpp"
 
 namespace acore {
 
@@ -29,9 +29,11 @@ int meta_periodicity(const Recording& r) {
 }
 
 void check_recording(const Recording& r, const std::string& what) {
-  if (!r.has_theta()) throw InputError(what + ": no theta_ref column (the gap needs the reference angle)");
+  if (!r.has_theta())
+    throw InputError(what + ": no theta_ref column (the gap needs the reference angle)");
   if (r.size() < kMinSamples)
-    throw InputError(fmt::format("{}: {} samples, at least {} needed", what, r.size(), kMinSamples));
+    throw InputError(
+        fmt::format("{}: {} samples, at least {} needed", what, r.size(), kMinSamples));
   // A sensor that is not connected (or a column of zeros) leaves nothing to compare or fit.
   bool varies = false;
   for (int c = 0; c < r.channels && !varies; ++c)
@@ -42,12 +44,15 @@ void check_recording(const Recording& r, const std::string& what) {
   // Wrapped or unwrapped: either way a turn must be covered, checked by 10-degree sectors.
   const int covered = turn_sectors_covered(r.theta_ref);
   if (covered < 36)
-    throw InputError(fmt::format("{}: theta_ref covers only {} of the 36 ten-degree sectors of a turn; "
-                                 "at least one full turn is needed", what, covered));
+    throw InputError(
+        fmt::format("{}: theta_ref covers only {} of the 36 ten-degree sectors of a turn; "
+                    "at least one full turn is needed",
+                    what, covered));
 }
 
 // Amplitude of the gap's mechanical orders 0..max by least squares (non-uniform angles allowed).
-std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::vector<double>& g, int max_order) {
+std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::vector<double>& g,
+                                               int max_order) {
   const size_t n = r.size();
   Eigen::MatrixXd X(n, 2 * max_order + 1);
   for (size_t i = 0; i < n; ++i) {
@@ -57,7 +62,8 @@ std::vector<std::pair<int, double>> gap_orders(const Recording& r, const std::ve
       X(i, 2 * k) = std::sin(k * r.theta_ref[i]);
     }
   }
-  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(n));
+  const Eigen::VectorXd y =
+      Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(n));
   const Eigen::VectorXd b = X.colPivHouseholderQr().solve(y);
   std::vector<std::pair<int, double>> out = {{0, std::fabs(b(0))}};
   for (int k = 1; k <= max_order; ++k) out.push_back({k, std::hypot(b(2 * k - 1), b(2 * k))});
@@ -189,13 +195,15 @@ std::vector<std::string> Diagnosis::named() const {
   return n;
 }
 
-Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording* holdout, const DiagnoseOptions& opt) {
+Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording* holdout,
+                   const DiagnoseOptions& opt) {
   check_recording(sim, "--sim");
   check_recording(real, "--real");
   if (holdout) check_recording(*holdout, "--holdout");
   if (sim.channels != real.channels || (holdout && holdout->channels != real.channels))
-    throw InputError(fmt::format("channel sets differ: --sim has {} channels, --real {}{}", sim.channels,
-                                 real.channels, holdout ? fmt::format(", --holdout {}", holdout->channels) : ""));
+    throw InputError(fmt::format("channel sets differ: --sim has {} channels, --real {}{}",
+                                 sim.channels, real.channels,
+                                 holdout ? fmt::format(", --holdout {}", holdout->channels) : ""));
   Diagnosis d;
   d.periodicity = std::max({1, meta_periodicity(sim), meta_periodicity(real)});
   const GapModel m = build_gap_model(sim, d.periodicity, opt.fourier_order);
@@ -229,13 +237,15 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     for (const auto& [k, a] : orders)
       if (a > 0.1 * peak && a > 1e-4) d.harmonics.push_back({k, a, causes_of(k, d.periodicity)});
     std::sort(d.harmonics.begin(), d.harmonics.end(),
-              [](const GapHarmonic& a, const GapHarmonic& b) { return a.amplitude_deg > b.amplitude_deg; });
+              [](const GapHarmonic& a, const GapHarmonic& b) {
+                return a.amplitude_deg > b.amplitude_deg;
+              });
   }
 
   // Which: every effect fitted and scored.
   const double before2 = d.before.gap_deg * d.before.gap_deg;
-  auto evaluate = [&](const Recording& base, const EffectCandidate& c, const Recording& rec, const GapModel& gm,
-                      const FitProblem& f, double extra0) {
+  auto evaluate = [&](const Recording& base, const EffectCandidate& c, const Recording& rec,
+                      const GapModel& gm, const FitProblem& f, double extra0) {
     double extra = 0;
     const Recording pred = predict_effect(f, base, c, &extra);
     (void)rec;
@@ -286,13 +296,15 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   }
 
   // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
-  // Is there a gap at all? The systematic part must stand out of what noise leaves in the projection
-  // (cols/N of the noise variance, here required 3x over), or the excess noise must be significant.
+  // Is there a gap at all? The systematic part must stand out of what noise leaves in the
+  // projection (cols/N of the noise variance, here required 3x over), or the excess noise must be
+  // significant.
   const double n = static_cast<double>(real.size());
   const double cols = static_cast<double>(fp.basis.X.cols());
   const double noise_in_projection = std::sqrt(cols / n) * d.before.noise_deg;
-  const bool significant = d.before.gap_deg > 1e-3 &&
-                           (d.before.systematic_deg > 3 * noise_in_projection || d.before.excess_noise_deg > 0);
+  const bool significant =
+      d.before.gap_deg > 1e-3 &&
+      (d.before.systematic_deg > 3 * noise_in_projection || d.before.excess_noise_deg > 0);
   const RankedEffect* top = d.ranking.empty() ? nullptr : &d.ranking.front();
   if (!significant) {
     d.verdict = "no_gap";
@@ -447,7 +459,8 @@ nlohmann::json Diagnosis::to_json() const {
   else
     j["holdout"] = nullptr;
   json harm = json::array();
-  for (const auto& h : harmonics) harm.push_back({{"order", h.order}, {"amplitude_deg", h.amplitude_deg}, {"causes", h.causes}});
+  for (const auto& h : harmonics)
+    harm.push_back({{"order", h.order}, {"amplitude_deg", h.amplitude_deg}, {"causes", h.causes}});
   json dom = json::object();
   for (const auto& s : domains) dom[s.domain] = s.r2;
   json st = json::array();
@@ -456,11 +469,13 @@ nlohmann::json Diagnosis::to_json() const {
     for (size_t k = 0; k < s.signals.size(); ++k) r[s.signals[k]] = s.ratio[k];
     st.push_back({{"stage", s.stage}, {"diverges", s.diverges}, {"rms_over_noise", r}});
   }
-  j["where"] = {{"stage", where_stage}, {"domain", domain}, {"channels", where_channels},
+  j["where"] = {{"stage", where_stage},    {"domain", domain}, {"channels", where_channels},
                 {"angle_harmonics", harm}, {"domain_r2", dom}, {"stages", st}};
   json rank = json::array();
   if (verdict != "explained")
-    rank.push_back({{"effect", "unexplained"}, {"params", json::object()}, {"explained", 0.0},
+    rank.push_back({{"effect", "unexplained"},
+                    {"params", json::object()},
+                    {"explained", 0.0},
                     {"after_deg", before.gap_deg}});
   for (const auto& r : ranking) {
     json e = {{"effect", r.cand.effect},       {"params", params_json(r.cand)},
@@ -477,7 +492,8 @@ nlohmann::json Diagnosis::to_json() const {
     for (const auto& r : combination)
       c.push_back(
           {{"effect", r.cand.effect}, {"params", params_json(r.cand)}, {"explained", r.explained}});
-    j["combination"] = {{"effects", c}, {"explained", combination_explained}, {"after_deg", combination_after_deg}};
+    j["combination"] = {
+        {"effects", c}, {"explained", combination_explained}, {"after_deg", combination_after_deg}};
   }
   return j;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Sim-to-real gap diagnosis (docs/contracts.md, command line `diagnose`, 3.4 effects): where the gap lies, which
-// unmodelled effect causes it, how far it shrinks once that effect is added to the simulation,
-// checked on a holdout recording the fit never saw.
+// Sim-to-real gap diagnosis (docs/contracts.md, command line `diagnose`, 3.4 effects): where the
+// gap lies, which unmodelled effect causes it, how far it shrinks once that effect is added to the
+// simulation, checked on a holdout recording the fit never saw.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -14,8 +14,8 @@
 namespace acore {
 
 struct DiagnoseOptions {
-  int fourier_order = 12;     // harmonics of the static sensor model fitted to the simulation
-  bool try_pairs = true;      // combinations of effects when one leaves a clear remainder
+  int fourier_order = 12;        // harmonics of the static sensor model fitted to the simulation
+  bool try_pairs = true;         // combinations of effects when one leaves a clear remainder
   double slow_share_max = 0.01;  // the most of gap^2 a named explanation may leave as a slow
                                  // change in time (gap.hpp): more is a slip, a dropout
   int max_combined = 3;          // effects in a combination at most (run-out: zero_offset,
@@ -31,7 +31,7 @@ struct RankedEffect {
 };
 
 struct GapHarmonic {
-  int order;                        // mechanical order of the gap g(theta)
+  int order;  // mechanical order of the gap g(theta)
   double amplitude_deg;
   std::vector<std::string> causes;  // likely signal-domain causes
 };

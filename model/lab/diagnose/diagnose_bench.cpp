@@ -14,8 +14,8 @@
 #include <random>
 #include <thread>
 
-#include "diagnose/diagnose.hpp"
 #include "core/errors.hpp"
+#include "diagnose/diagnose.hpp"
 
 namespace acore {
 

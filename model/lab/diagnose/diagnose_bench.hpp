@@ -57,9 +57,9 @@
 #include <string>
 #include <vector>
 
+#include "core/recording.hpp"
 #include "diagnose/diagnose.hpp"
 #include "sim/effects.hpp"
-#include "core/recording.hpp"
 #include "sim/simulator.hpp"
 
 namespace acore {
@@ -107,7 +107,7 @@ struct BenchCaseResult {
   bool confident_wrong = false;  // an effect named (or no_gap) on a none/outside recording
   std::vector<std::string> ambiguous_with;  // the diagnosis's own doubt (Diagnosis::ambiguous_with)
   double real_before = 0, real_after = 0, hold_before = 0, hold_after = 0;
-  double shrink = 0;          // 1 - hold_after / hold_before
+  double shrink = 0;  // 1 - hold_after / hold_before
   double best_explained =
       0;  // the largest share of gap^2 any acceptable effect or combination explained
   double slow_share = 0;   // (slow / gap)^2 of the real recording before any effect (gap.hpp)
@@ -143,7 +143,7 @@ struct BenchSummary {
   double top1_accuracy = 0, top1_effects = 0;  // all cases; effect cases only
   double median_shrink = 0, min_shrink = 0;    // over the effect cases
   int confident_wrong = 0;
-  int ambiguous = 0;  // named effects the diagnosis itself flagged as ambiguous
+  int ambiguous = 0;    // named effects the diagnosis itself flagged as ambiguous
   int slow_vetoed = 0;  // cases whose explanation the slow-change rule refused (Diagnosis::note)
   double outside_best_explained =
       0;  // the most any effect or pair explained on an outside recording

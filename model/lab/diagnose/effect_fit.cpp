@@ -9,8 +9,8 @@
 #include <functional>
 #include <limits>
 
-#include "sim/effects.hpp"
 #include "core/errors.hpp"
+#include "sim/effects.hpp"
 
 namespace acore {
 
@@ -27,7 +27,8 @@ using Column = std::vector<std::vector<double>>;
 int nsignals(const Recording& r) { return r.channels == 4 ? 4 : 2; }
 
 // The noise-decoupled signals of a channel vector (see the header).
-inline void to_signals(const Recording& r, size_t i, const std::function<double(int, size_t)>& ch, double* s) {
+inline void to_signals(const Recording& r, size_t i, const std::function<double(int, size_t)>& ch,
+                       double* s) {
   if (r.channels == 4) {
     s[0] = ch(0, i) - ch(2, i);
     s[1] = ch(1, i) - ch(3, i);
@@ -52,10 +53,12 @@ std::pair<Eigen::VectorXd, double> solve_linear(const FitProblem& fp, const Reco
   Eigen::VectorXd b(static_cast<Eigen::Index>(n) * S);
   double s[4], t[4];
   for (size_t i = 0; i < n; ++i) {
-    to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - base.ch[c][j]; }, s);
+    to_signals(
+        real, i, [&](int c, size_t j) { return real.ch[c][j] - base.ch[c][j]; }, s);
     for (int q = 0; q < S; ++q) b(i * S + q) = s[q] / fp.signal_sigma[q];
     for (int p = 0; p < k; ++p) {
-      to_signals(real, i, [&](int c, size_t j) { return cols[p][c].empty() ? 0.0 : cols[p][c][j]; }, t);
+      to_signals(
+          real, i, [&](int c, size_t j) { return cols[p][c].empty() ? 0.0 : cols[p][c][j]; }, t);
       for (int q = 0; q < S; ++q) A(i * S + q, p) = t[q] / fp.signal_sigma[q];
     }
   }
@@ -65,7 +68,8 @@ std::pair<Eigen::VectorXd, double> solve_linear(const FitProblem& fp, const Reco
 
 // Channel c of the model evaluated at shifted mechanical angles, minus at the true ones (which
 // fp.predicted holds).
-std::vector<double> angle_shift(const FitProblem& fp, int c, const std::function<double(size_t)>& delta) {
+std::vector<double> angle_shift(const FitProblem& fp, int c,
+                                const std::function<double(size_t)>& delta) {
   const Recording& real = *fp.real;
   std::vector<double> v(real.size());
   for (size_t i = 0; i < real.size(); ++i) {
@@ -103,7 +107,8 @@ FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
   fp.deriv.resize(real.channels);
   for (int c = 0; c < real.channels; ++c) {
     fp.deriv[c].resize(real.size());
-    for (size_t i = 0; i < real.size(); ++i) fp.deriv[c][i] = m.sensor.derivative(c, real.theta_ref[i]);
+    for (size_t i = 0; i < real.size(); ++i)
+      fp.deriv[c][i] = m.sensor.derivative(c, real.theta_ref[i]);
   }
   // Noise per signal from the simulation's fit residual statistics.
   const auto& sg = m.sensor.noise_sigma;
@@ -114,7 +119,8 @@ FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
     const double v24 = sq(sg[1]) + sq(sg[3]) - 2 * rho[1] * sg[1] * sg[3];
     const double w13 = 0.25 * (sq(sg[0]) + sq(sg[2]) + 2 * rho[0] * sg[0] * sg[2]);
     const double w24 = 0.25 * (sq(sg[1]) + sq(sg[3]) + 2 * rho[1] * sg[1] * sg[3]);
-    for (double v : {v13, v24, w13, w24}) fp.signal_sigma.push_back(std::max(floor, std::sqrt(std::max(0.0, v))));
+    for (double v : {v13, v24, w13, w24})
+      fp.signal_sigma.push_back(std::max(floor, std::sqrt(std::max(0.0, v))));
   } else {
     fp.signal_sigma = {std::max(floor, sg[0]), std::max(floor, sg[1])};
   }
@@ -134,7 +140,8 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double e
   const int S = nsignals(real);
   double s[4], rss[4] = {0, 0, 0, 0};
   for (size_t i = 0; i < real.size(); ++i) {
-    to_signals(real, i, [&](int c, size_t j) { return real.ch[c][j] - pred.ch[c][j]; }, s);
+    to_signals(
+        real, i, [&](int c, size_t j) { return real.ch[c][j] - pred.ch[c][j]; }, s);
     for (int q = 0; q < S; ++q) rss[q] += s[q] * s[q];
   }
   // Gaussian, known variance per signal: sum r^2 / v + N ln(v / sigma^2) (0 without extra noise).
@@ -189,7 +196,8 @@ Fitted fit_gain(const FitProblem& fp, const Recording& base) {
   }
   const auto [phi, _] = solve_linear(fp, base, cols);
   Fitted f;
-  for (int c = 0; c < r.channels; ++c) f.params.push_back({"gain_" + chan_name(r, c), 1.0 + phi(c)});
+  for (int c = 0; c < r.channels; ++c)
+    f.params.push_back({"gain_" + chan_name(r, c), 1.0 + phi(c)});
   f.k = r.channels;
   return f;
 }
@@ -212,7 +220,8 @@ Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
   }
   const auto [phi, _] = solve_linear(fp, base, cols);
   Fitted f;
-  for (size_t p = 0; p < basis.size(); ++p) f.params.push_back({"", phi(static_cast<Eigen::Index>(p))});
+  for (size_t p = 0; p < basis.size(); ++p)
+    f.params.push_back({"", phi(static_cast<Eigen::Index>(p))});
   f.k = static_cast<int>(basis.size());
   return f;
 }
@@ -487,7 +496,10 @@ Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
   double lo = best_level - 0.0075 * peak_model, hi = best_level + 0.0075 * peak_model;
   for (int it = 0; it < 30; ++it) {
     const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
-    if (neg2_log_likelihood(fp, clip(a)) < neg2_log_likelihood(fp, clip(b))) hi = b; else lo = a;
+    if (neg2_log_likelihood(fp, clip(a)) < neg2_log_likelihood(fp, clip(b)))
+      hi = b;
+    else
+      lo = a;
   }
   const double level = 0.5 * (lo + hi);
   Fitted f;
@@ -504,7 +516,8 @@ Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base
   std::vector<double> rss(S, 0.0), lag1(S, 0.0);
   double s[4], prev[4] = {0, 0, 0, 0};
   for (size_t i = 0; i < r.size(); ++i) {
-    to_signals(r, i, [&](int c, size_t j) { return r.ch[c][j] - base.ch[c][j]; }, s);
+    to_signals(
+        r, i, [&](int c, size_t j) { return r.ch[c][j] - base.ch[c][j]; }, s);
     for (int q = 0; q < S; ++q) {
       rss[q] += s[q] * s[q];
       if (i > 0) lag1[q] += s[q] * prev[q];
@@ -525,15 +538,18 @@ Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base
   hi = std::max(hi, 1e-30);
   for (int it = 0; it < 100; ++it) {
     const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
-    if (nll(a) < nll(b)) hi = b; else lo = a;
+    if (nll(a) < nll(b))
+      hi = b;
+    else
+      lo = a;
   }
   Fitted f;
   f.params = {{"sigma", std::sqrt(0.5 * (lo + hi))}};
   f.k = 1;
-  // The excess must be white noise (docs/contracts.md, effect vocabulary). Its part that is correlated from one sample to the
-  // next (the residual's lag-1 autocovariance; white noise adds none) is anything but noise: a
-  // glitch, a dropout, interference. Pooled over signals in channel units, with the spread white
-  // noise alone would give.
+  // The excess must be white noise (docs/contracts.md, effect vocabulary). Its part that is
+  // correlated from one sample to the next (the residual's lag-1 autocovariance; white noise adds
+  // none) is anything but noise: a glitch, a dropout, interference. Pooled over signals in channel
+  // units, with the spread white noise alone would give.
   double excess = 0, correlated = 0, spread2 = 0;
   for (int q = 0; q < S; ++q) {
     const double w = signal_weight(r, q), v = rss[q] / n;
@@ -644,8 +660,10 @@ Recording predict_effect(const FitProblem& fp, const Recording& base, const Effe
   } else if (e == "drift") {
     if (fp.dtemp.empty()) return out;
     for (int c = 0; c < r.channels; ++c) {
-      const double ko = cand.param("offset_per_C_" + chan_name(r, c)), kg = cand.param("gain_per_C_" + chan_name(r, c));
-      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
+      const double ko = cand.param("offset_per_C_" + chan_name(r, c)),
+                   kg = cand.param("gain_per_C_" + chan_name(r, c));
+      for (size_t i = 0; i < r.size(); ++i)
+        out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
     }
   } else if (e == "quantization") {
     // The ADC sees the model plus the simulation's noise: predict its mean output, and carry the

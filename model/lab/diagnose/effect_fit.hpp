@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Fitting the effects of the vocabulary (effects.hpp, docs/contracts.md, effect vocabulary widened) to the difference between
-// a real recording and the static sensor model (gap.hpp), by maximum likelihood under the
-// simulation's own noise level.
+// Fitting the effects of the vocabulary (effects.hpp, docs/contracts.md, effect vocabulary widened)
+// to the difference between a real recording and the static sensor model (gap.hpp), by maximum
+// likelihood under the simulation's own noise level.
 //
 // The residual r = real - model is compared on "signals" whose noise is nearly independent:
 // four-channel: d13 = c1 - c3, d24 = c2 - c4, m13 = (c1 + c3)/2, m24 = (c2 + c4)/2 (common-mode
@@ -34,7 +34,7 @@ struct EffectCandidate {
   int k = 0;           // number of fitted parameters
   double neg2logl = 0;
   double bic = 0;
-  double delta_bic = 0;  // bic - bic of "no effect": negative is evidence for the effect
+  double delta_bic = 0;    // bic - bic of "no effect": negative is evidence for the effect
   bool applicable = true;  // false: the recording cannot show the effect (no temp column for drift,
                            // values on no lattice for quantization); likelihoods are then infinite
   std::string
@@ -46,9 +46,9 @@ struct EffectCandidate {
 struct FitProblem {
   const GapModel* model = nullptr;
   const Recording* real = nullptr;
-  Recording predicted;              // model channels at the real samples
-  std::vector<double> omega;        // angular velocity, rad/s (or rad/sample without t)
-  std::vector<double> dtemp;        // temp - 25 C (empty without temp)
+  Recording predicted;                     // model channels at the real samples
+  std::vector<double> omega;               // angular velocity, rad/s (or rad/sample without t)
+  std::vector<double> dtemp;               // temp - 25 C (empty without temp)
   std::vector<std::vector<double>> deriv;  // d channel / d theta (mechanical), per channel
   std::vector<double> signal_sigma;        // noise per signal (see above)
   GapBasis basis;                          // for compare() on this recording

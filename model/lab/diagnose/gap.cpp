@@ -39,8 +39,9 @@ constexpr int kNoiseDraws = 4;
 std::vector<double> float_errors(const GapModel& m, const Recording& rec) {
   std::vector<double> e(rec.size());
   for (size_t i = 0; i < rec.size(); ++i)
-    e[i] = wrap_deg((float_estimate(rec.d13(i), rec.d24(i), m.est).angle - m.periodicity * rec.theta_ref[i]) *
-                    180.0 / M_PI);
+    e[i] = wrap_deg(
+        (float_estimate(rec.d13(i), rec.d24(i), m.est).angle - m.periodicity * rec.theta_ref[i]) *
+        180.0 / M_PI);
   return e;
 }
 
@@ -107,15 +108,17 @@ GapBasis make_gap_basis(const Recording& rec) {
   return b;
 }
 
-StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted, double extra_sigma,
-                    const GapBasis* basis) {
-  if (rec.size() != predicted.size()) throw InputError("gap: recording and prediction differ in length");
+StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted,
+                    double extra_sigma, const GapBasis* basis) {
+  if (rec.size() != predicted.size())
+    throw InputError("gap: recording and prediction differ in length");
   StageSeries s;
   s.err_deg = float_errors(m, rec);
   s.model_err_deg = float_errors(m, predicted);
   // c1 - c3 carries two channels' extra noise; a two-channel sin or cos one.
   const double extra_var = (m.sensor.channels == 4 ? 2.0 : 1.0) * extra_sigma * extra_sigma;
-  const double sd = std::sqrt(m.sensor.diff_noise_sigma() * m.sensor.diff_noise_sigma() + extra_var);
+  const double sd =
+      std::sqrt(m.sensor.diff_noise_sigma() * m.sensor.diff_noise_sigma() + extra_var);
   s.g.resize(rec.size());
   s.noise_var.resize(rec.size());
   std::mt19937_64 rng(12345);
@@ -177,11 +180,12 @@ StageSeries compare(const GapModel& m, const Recording& rec, const Recording& pr
   return s;
 }
 
-std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording& rec, const Recording& pred,
-                                              const StageSeries& s) {
+std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording& rec,
+                                              const Recording& pred, const StageSeries& s) {
   std::vector<StageDivergence> out;
   const size_t n = rec.size();
-  const double threshold = 1.0 + 6.0 / std::sqrt(static_cast<double>(std::max<size_t>(n, 1))) + 0.05;
+  const double threshold =
+      1.0 + 6.0 / std::sqrt(static_cast<double>(std::max<size_t>(n, 1))) + 0.05;
   auto ratio = [&](auto&& diff, double sigma) {
     double ss = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -211,8 +215,10 @@ std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording
           false});
   finish({"scaling",
           {"s13", "s24"},
-          {ratio([&](size_t i) { return (rec.d13(i) - pred.d13(i)) / m.est.amp[0]; }, sd / m.est.amp[0]),
-           ratio([&](size_t i) { return (rec.d24(i) - pred.d24(i)) / m.est.amp[1]; }, sd / m.est.amp[1])},
+          {ratio([&](size_t i) { return (rec.d13(i) - pred.d13(i)) / m.est.amp[0]; },
+                 sd / m.est.amp[0]),
+           ratio([&](size_t i) { return (rec.d24(i) - pred.d24(i)) / m.est.amp[1]; },
+                 sd / m.est.amp[1])},
           false});
   std::vector<double> y13(n), y24(n), p13(n), p24(n);
   for (size_t i = 0; i < n; ++i) {
@@ -226,7 +232,10 @@ std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording
           {ratio([&](size_t i) { return y13[i]; }, sd / m.est.amp[0]),
            ratio([&](size_t i) { return y24[i]; }, sd / m.est.amp[1])},
           false});
-  finish({"angle", {"angle"}, {ratio([&](size_t i) { return s.g[i]; }, std::max(floor, s.noise_deg))}, false});
+  finish({"angle",
+          {"angle"},
+          {ratio([&](size_t i) { return s.g[i]; }, std::max(floor, s.noise_deg))},
+          false});
   return out;
 }
 
@@ -274,15 +283,20 @@ std::vector<DomainScore> gap_domains(const Recording& rec, const std::vector<dou
     r2 = 1.0 - (1.0 - r2) * (n - 1.0) / std::max(1.0, n - 1.0 - cols);  // adjusted R^2
     out.push_back({name, r2});
   };
-  score("angle", [](size_t) { return 1.0; }, 8);
+  score(
+      "angle", [](size_t) { return 1.0; }, 8);
   if (wmax > 0) {
-    score("speed", [&](size_t i) { return w[i] / wmax; }, 4);
-    score("direction", [&](size_t i) { return w[i] >= 0 ? 1.0 : -1.0; }, 4);
+    score(
+        "speed", [&](size_t i) { return w[i] / wmax; }, 4);
+    score(
+        "direction", [&](size_t i) { return w[i] >= 0 ? 1.0 : -1.0; }, 4);
   }
   if (rec.has_temp() && tmax > tmin)
-    score("time_temperature", [&](size_t i) { return (rec.temp[i] - tmin) / (tmax - tmin); }, 4);
+    score(
+        "time_temperature", [&](size_t i) { return (rec.temp[i] - tmin) / (tmax - tmin); }, 4);
   else if (rec.has_t())
-    score("time_temperature", [&](size_t i) { return rec.t[i] / std::max(1e-12, rec.t.back()); }, 4);
+    score(
+        "time_temperature", [&](size_t i) { return rec.t[i] / std::max(1e-12, rec.t.back()); }, 4);
   {
     std::vector<double> mag(n);
     double mmax = 0;
@@ -290,7 +304,8 @@ std::vector<DomainScore> gap_domains(const Recording& rec, const std::vector<dou
       mag[i] = std::hypot(rec.d13(i), rec.d24(i));
       mmax = std::max(mmax, mag[i]);
     }
-    score("signal_level", [&](size_t i) { return mag[i] / std::max(1e-12, mmax); }, 4);
+    score(
+        "signal_level", [&](size_t i) { return mag[i] / std::max(1e-12, mmax); }, 4);
   }
   return out;
 }

@@ -48,8 +48,8 @@ struct StageSeries {
   double noise_deg = 0;               // sqrt(mean(noise_var))
   double systematic_deg = 0;          // sqrt(max(0, sys^2))
   double excess_noise_deg = 0;        // sqrt(max(0, exc^2)) when significant
-  double slow_deg = 0;  // sqrt(max(0, slow^2)): the excess that changes slowly in time
-  std::vector<double> g_systematic;   // X beta: the smooth part of g, for plots
+  double slow_deg = 0;               // sqrt(max(0, slow^2)): the excess that changes slowly in time
+  std::vector<double> g_systematic;  // X beta: the smooth part of g, for plots
 };
 
 // The gap basis of one recording, factorized once (it depends on the samples only).
@@ -62,8 +62,8 @@ GapBasis make_gap_basis(const Recording& rec);
 // `predicted` is what the model (possibly with an effect added) says `rec` should be; same size.
 // extra_sigma: white noise per channel that the prediction carries beyond the simulation's
 // (the excess_noise effect); it raises the noise term instead of adding random numbers.
-StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted, double extra_sigma = 0,
-                    const GapBasis* basis = nullptr);
+StageSeries compare(const GapModel& m, const Recording& rec, const Recording& predicted,
+                    double extra_sigma = 0, const GapBasis* basis = nullptr);
 
 // Where the recordings part: per stage, the RMS difference over its noise level (1 = noise only).
 struct StageDivergence {
@@ -72,15 +72,16 @@ struct StageDivergence {
   std::vector<double> ratio;         // RMS(real - model) / expected noise RMS, per signal
   bool diverges = false;
 };
-std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording& rec, const Recording& predicted,
-                                              const StageSeries& s);
+std::vector<StageDivergence> stage_divergence(const GapModel& m, const Recording& rec,
+                                              const Recording& predicted, const StageSeries& s);
 
 // What the gap g depends on: the R^2 of g regressed on each domain's basis (adjusted for size).
 struct DomainScore {
   std::string domain;  // angle, time_temperature, speed, direction, signal_level
   double r2 = 0;
 };
-std::vector<DomainScore> gap_domains(const Recording& rec, const std::vector<double>& g, int periodicity);
+std::vector<DomainScore> gap_domains(const Recording& rec, const std::vector<double>& g,
+                                     int periodicity);
 
 // Signed angular velocity per sample (rad/s, or rad/sample when the recording has no t column).
 std::vector<double> angular_velocity(const Recording& rec);

@@ -7,8 +7,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "diagnose/diagnose.hpp"
 #include "core/errors.hpp"
+#include "diagnose/diagnose.hpp"
 
 namespace acore {
 

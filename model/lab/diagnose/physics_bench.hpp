@@ -10,7 +10,8 @@
 //            reversal, a temperature ramp (the magnet's remanence follows it), another noise seed
 //   holdout  the same perturbation, another ramp, temperature ramp and seed
 // The truth of a scenario is decided by the physics (physics_truth(); README table): what reaches
-// the two differential pairs the estimator sees, named in the vocabulary of docs/contracts.md, effect vocabulary.
+// the two differential pairs the estimator sees, named in the vocabulary of docs/contracts.md,
+// effect vocabulary.
 #pragma once
 #include <cstdint>
 #include <string>

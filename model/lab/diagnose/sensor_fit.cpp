@@ -54,7 +54,8 @@ Recording SensorFit::resample(const Recording& like) const {
 }
 
 double SensorFit::diff_noise_sigma() const {
-  if (channels == 2) return std::sqrt(0.5 * (noise_sigma[0] * noise_sigma[0] + noise_sigma[1] * noise_sigma[1]));
+  if (channels == 2)
+    return std::sqrt(0.5 * (noise_sigma[0] * noise_sigma[0] + noise_sigma[1] * noise_sigma[1]));
   // var(c1 - c3) = s1^2 + s3^2 - 2 rho s1 s3
   const double v13 = noise_sigma[0] * noise_sigma[0] + noise_sigma[2] * noise_sigma[2] -
                      2 * noise_corr[0] * noise_sigma[0] * noise_sigma[2];
@@ -71,8 +72,10 @@ SensorFit fit_sensor(const Recording& rec, int order, int periodicity) {
     throw InputError(fmt::format("sensor model: {} samples, at least {} needed", n, 4 * terms));
   const int covered = turn_sectors_covered(rec.theta_ref, periodicity);
   if (covered < 36)
-    throw InputError(fmt::format("the recording covers only {} of the 36 ten-degree sectors of a turn: "
-                                 "at least one full turn is needed", covered));
+    throw InputError(
+        fmt::format("the recording covers only {} of the 36 ten-degree sectors of a turn: "
+                    "at least one full turn is needed",
+                    covered));
   Eigen::MatrixXd V(n, terms);
   for (size_t i = 0; i < n; ++i) {
     const double e = periodicity * rec.theta_ref[i];

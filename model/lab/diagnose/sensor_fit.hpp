@@ -14,10 +14,12 @@ struct SensorFit {
   int channels = 4;
   int periodicity = 1;
   int order = 0;  // highest harmonic
-  // coef[c] = {C0, a1, b1, a2, b2, ...}: value = C0 + sum_k a_k cos(k e) + b_k sin(k e), e = p theta
+  // coef[c] = {C0, a1, b1, a2, b2, ...}: value = C0 + sum_k a_k cos(k e) + b_k sin(k e), e = p
+  // theta
   std::vector<std::vector<double>> coef;
   std::vector<double> noise_sigma;  // residual standard deviation per channel
-  std::vector<double> noise_corr;   // correlation of the residuals of channel pairs (c1,c3) and (c2,c4)
+  std::vector<double>
+      noise_corr;  // correlation of the residuals of channel pairs (c1,c3) and (c2,c4)
 
   double value(int channel, double theta) const;
   double derivative(int channel, double theta) const;  // d value / d theta (mechanical)

@@ -35,7 +35,8 @@ double consistency(const Observed& obs, const std::vector<std::pair<int, double>
 
 }  // namespace
 
-std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, const AttributionOptions& opt) {
+std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum,
+                                   const AttributionOptions& opt) {
   if (opt.p < 1) throw InputError(fmt::format("attribution: p = {} must be >= 1", opt.p));
   for (size_t k = 0; k < spectrum.size(); ++k)
     if (spectrum[k].order != static_cast<int>(k))
@@ -46,7 +47,8 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, 
   Observed obs;
   for (const auto& o : spectrum) obs.h.push_back(o.amplitude_deg * to_rad);
   double largest = 0;
-  for (size_t k = 1; k < spectrum.size(); ++k) largest = std::max(largest, spectrum[k].amplitude_deg);
+  for (size_t k = 1; k < spectrum.size(); ++k)
+    largest = std::max(largest, spectrum[k].amplitude_deg);
   const double threshold = std::max(opt.min_amplitude_deg, opt.relative_threshold * largest);
 
   // Mismatch parameters fitted from their first-order orders.
@@ -59,7 +61,9 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, 
     delta_2p = -1;  // H_2p too large for any phase mismatch below pi/2
   }
   const auto phase_row = [](double d) { return table1(MismatchType::Phase, {0, 0, 0, 0, d}); };
-  const auto amp_row = [](double diff) { return table1(MismatchType::Amplitude, {0, 0, diff / 2, -diff / 2, 0}); };
+  const auto amp_row = [](double diff) {
+    return table1(MismatchType::Amplitude, {0, 0, diff / 2, -diff / 2, 0});
+  };
   const auto off_row = [](double c) { return table1(MismatchType::Offset, {c, 0, 0, 0, 0}); };
 
   std::vector<OrderCauses> out;
@@ -79,7 +83,8 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, 
     if (k == p) {
       const auto r = off_row(h);
       add({"offset", 0, 1, "sqrt(A0^2+B0^2)", h, 0, 0, 1,
-           fmt::format("offset sqrt(A0^2+B0^2) = {:.4g} of the main amplitude (first order, Table 1)", h)},
+           fmt::format(
+               "offset sqrt(A0^2+B0^2) = {:.4g} of the main amplitude (first order, Table 1)", h)},
           r.Hp, {{2 * p, r.H2p}});
     }
     if (k == 2 * p) {
@@ -96,18 +101,21 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, 
         std::vector<std::pair<int, double>> others = {{4 * p, rp.H4p}};
         if (opt.include_dc) others.push_back({0, rp.H0});
         add({"phase", p, 1, "|delta_p|", delta_2p, 0, 0, 1,
-             fmt::format("phase mismatch |delta_p| = {:.4g} rad = {:.3f} deg (first order)", delta_2p, delta_2p * kDeg)},
+             fmt::format("phase mismatch |delta_p| = {:.4g} rad = {:.3f} deg (first order)",
+                         delta_2p, delta_2p * kDeg)},
             rp.H2p, others);
       }
     }
     if (k == 4 * p) {
       const auto ra = amp_row(amp_diff);
       add({"amplitude", p, 2, "|A_n-B_n|", amp_diff, 0, 0, 1,
-           fmt::format("amplitude mismatch {:.4g} (fitted at order {}) at second order", amp_diff, 2 * p)},
+           fmt::format("amplitude mismatch {:.4g} (fitted at order {}) at second order", amp_diff,
+                       2 * p)},
           ra.H4p, {});
       if (delta_2p >= 0)
         add({"phase", p, 2, "|delta_p|", delta_2p, 0, 0, 1,
-             fmt::format("phase mismatch {:.4g} rad (fitted at order {}) at second order", delta_2p, 2 * p)},
+             fmt::format("phase mismatch {:.4g} rad (fitted at order {}) at second order", delta_2p,
+                         2 * p)},
             phase_row(delta_2p).H4p, {});
     }
     if (k == 0) {
@@ -132,8 +140,8 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, 
       for (const auto& c : oc.causes) seen |= c.kind == "harmonic" && c.signal_order == n;
       if (seen) continue;
       add({"harmonic", n, 1, "A_n+B_n", 2 * h, 0, 0, 1,
-           fmt::format("signal harmonic n = {} with A_n + B_n >= {:.4g} (order {} = {} {} p)", n, 2 * h, k, n,
-                       n > p ? "-" : "+")},
+           fmt::format("signal harmonic n = {} with A_n + B_n >= {:.4g} (order {} = {} {} p)", n,
+                       2 * h, k, n, n > p ? "-" : "+")},
           h, {});
     }
     std::stable_sort(oc.causes.begin(), oc.causes.end(), [](const Cause& a, const Cause& b) {
@@ -146,8 +154,9 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, 
     });
     out.push_back(std::move(oc));
   }
-  std::stable_sort(out.begin(), out.end(),
-                   [](const OrderCauses& a, const OrderCauses& b) { return a.amplitude_deg > b.amplitude_deg; });
+  std::stable_sort(out.begin(), out.end(), [](const OrderCauses& a, const OrderCauses& b) {
+    return a.amplitude_deg > b.amplitude_deg;
+  });
   return out;
 }
 

@@ -36,25 +36,26 @@ struct AttributionOptions {
 };
 
 struct Cause {
-  std::string kind;           // "harmonic", "offset", "amplitude", "phase"
-  int signal_order = 0;       // n of the signal-domain disturbance (0 offset, p mismatch)
-  int taylor_order = 1;       // 1: T^1 term, 2: T^2 term of Eq. 26
-  std::string parameter_name; // "A_n+B_n", "sqrt(A0^2+B0^2)", "|A_n-B_n|", "|delta_p|"
-  double parameter = 0;       // normalised to the main-harmonic amplitude; rad for delta_p
-  double predicted_deg = 0;   // predicted amplitude at this order, same units as the input spectrum
-  double explained = 0;       // 0..1
-  double consistency = 1;     // 0..1
-  std::string text;           // one line for a report
+  std::string kind;            // "harmonic", "offset", "amplitude", "phase"
+  int signal_order = 0;        // n of the signal-domain disturbance (0 offset, p mismatch)
+  int taylor_order = 1;        // 1: T^1 term, 2: T^2 term of Eq. 26
+  std::string parameter_name;  // "A_n+B_n", "sqrt(A0^2+B0^2)", "|A_n-B_n|", "|delta_p|"
+  double parameter = 0;        // normalised to the main-harmonic amplitude; rad for delta_p
+  double predicted_deg = 0;  // predicted amplitude at this order, same units as the input spectrum
+  double explained = 0;      // 0..1
+  double consistency = 1;    // 0..1
+  std::string text;          // one line for a report
 };
 
 struct OrderCauses {
   int order = 0;
-  double amplitude_deg = 0;  // as in the input spectrum
-  std::vector<Cause> causes; // best first
+  double amplitude_deg = 0;   // as in the input spectrum
+  std::vector<Cause> causes;  // best first
 };
 
 // Significant orders of `spectrum` (largest first) with their ranked causes. Throws InputError if
 // p < 1 or the spectrum orders are not 0..K in sequence.
-std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum, const AttributionOptions& opt);
+std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum,
+                                   const AttributionOptions& opt);
 
 }  // namespace acore

@@ -16,34 +16,43 @@ constexpr double kPi = 3.14159265358979323846;
 
 double MismatchHarmonics::at_multiple(int m) const {
   switch (m) {
-    case 0: return H0;
-    case 1: return Hp;
-    case 2: return H2p;
-    case 3: return H3p;
-    case 4: return H4p;
-    default: return 0;
+    case 0:
+      return H0;
+    case 1:
+      return Hp;
+    case 2:
+      return H2p;
+    case 3:
+      return H3p;
+    case 4:
+      return H4p;
+    default:
+      return 0;
   }
 }
 
 const std::vector<MismatchType>& all_mismatch_types() {
-  static const std::vector<MismatchType> all = {
-      MismatchType::Offset,      MismatchType::Amplitude,      MismatchType::Phase,
-      MismatchType::OffsetAmplitude, MismatchType::OffsetPhase, MismatchType::AmplitudePhase,
-      MismatchType::OffsetAmplitudePhase};
+  static const std::vector<MismatchType> all = {MismatchType::Offset,
+                                                MismatchType::Amplitude,
+                                                MismatchType::Phase,
+                                                MismatchType::OffsetAmplitude,
+                                                MismatchType::OffsetPhase,
+                                                MismatchType::AmplitudePhase,
+                                                MismatchType::OffsetAmplitudePhase};
   return all;
 }
 
 bool has_offset(MismatchType t) {
-  return t == MismatchType::Offset || t == MismatchType::OffsetAmplitude || t == MismatchType::OffsetPhase ||
-         t == MismatchType::OffsetAmplitudePhase;
+  return t == MismatchType::Offset || t == MismatchType::OffsetAmplitude ||
+         t == MismatchType::OffsetPhase || t == MismatchType::OffsetAmplitudePhase;
 }
 bool has_amplitude(MismatchType t) {
-  return t == MismatchType::Amplitude || t == MismatchType::OffsetAmplitude || t == MismatchType::AmplitudePhase ||
-         t == MismatchType::OffsetAmplitudePhase;
+  return t == MismatchType::Amplitude || t == MismatchType::OffsetAmplitude ||
+         t == MismatchType::AmplitudePhase || t == MismatchType::OffsetAmplitudePhase;
 }
 bool has_phase(MismatchType t) {
-  return t == MismatchType::Phase || t == MismatchType::OffsetPhase || t == MismatchType::AmplitudePhase ||
-         t == MismatchType::OffsetAmplitudePhase;
+  return t == MismatchType::Phase || t == MismatchType::OffsetPhase ||
+         t == MismatchType::AmplitudePhase || t == MismatchType::OffsetAmplitudePhase;
 }
 
 std::string to_string(MismatchType t) {
@@ -84,29 +93,37 @@ MismatchHarmonics table1(MismatchType t, const MismatchParams& m) {
     case MismatchType::OffsetAmplitude:
       h.Hp = fabs(0.5 * (Bn + An - 2)) * sqrt(r2);
       // Corrected: the paper prints "- 2 A_n" for the last term; Eq. 26 gives "+ 2 A_n".
-      h.H2p = sqrt(B0 * B0 * A0 * A0 + std::pow(2 * B0 * B0 + Bn * Bn - 2 * Bn - 2 * A0 * A0 - An * An + 2 * An, 2) / 16);
+      h.H2p =
+          sqrt(B0 * B0 * A0 * A0 +
+               std::pow(2 * B0 * B0 + Bn * Bn - 2 * Bn - 2 * A0 * A0 - An * An + 2 * An, 2) / 16);
       h.H3p = fabs(0.5 * dab) * sqrt(r2);
       h.H4p = dab * dab / 8;
       break;
     case MismatchType::OffsetPhase:
       h.H0 = fabs(0.75 * sin(d) - 0.125 * sin(2 * d));
       h.Hp = sqrt(2.0) / 2 * sqrt((5 - 3 * cos(d)) * r2);
-      h.H2p = 0.5 * sqrt(std::pow(sin(d) - 2 * A0 * B0, 2) + std::pow(2 * cos(d) - A0 * A0 + B0 * B0 - 2, 2));
+      h.H2p = 0.5 * sqrt(std::pow(sin(d) - 2 * A0 * B0, 2) +
+                         std::pow(2 * cos(d) - A0 * A0 + B0 * B0 - 2, 2));
       h.H3p = sqrt(2.0) / 2 * sqrt((1 - cos(d)) * r2);
       h.H4p = 0.25 * (1 - cos(d));
       break;
     case MismatchType::AmplitudePhase:
       h.H0 = fabs(0.25 * (3 - An - Bn) * sin(d) - 0.125 * sin(2 * d));
-      h.H2p = 0.25 * sqrt(std::pow(An * An - Bn * Bn - 4 * An + 2 * Bn + 2 * An * cos(d) - 4 * cos(d) + 4, 2) +
-                          4 * sin(d) * sin(d) * std::pow(Bn - 1, 2));
+      h.H2p =
+          0.25 *
+          sqrt(std::pow(An * An - Bn * Bn - 4 * An + 2 * Bn + 2 * An * cos(d) - 4 * cos(d) + 4, 2) +
+               4 * sin(d) * sin(d) * std::pow(Bn - 1, 2));
       h.H4p = h4p_amp_phase;
       break;
     case MismatchType::OffsetAmplitudePhase:
       // Corrected: the paper prints (3 - A_n + B_n); Eq. 26 gives (3 - A_n - B_n).
       h.H0 = fabs(0.25 * (3 - An - Bn) * sin(d) - 0.125 * sin(2 * d));
-      h.Hp = 0.5 * sqrt(r2 * (std::pow(An + Bn, 2) - 6 * (An + Bn) + 2 * cos(d) * (An + Bn) - 6 * cos(d) + 10));
+      h.Hp = 0.5 * sqrt(r2 * (std::pow(An + Bn, 2) - 6 * (An + Bn) + 2 * cos(d) * (An + Bn) -
+                              6 * cos(d) + 10));
       h.H2p = 0.5 * sqrt(std::pow(sin(d) * (Bn - 1) + 2 * A0 * B0, 2) +
-                         std::pow(0.5 * (An * An - Bn * Bn) + A0 * A0 - B0 * B0 - 2 * An + Bn + cos(d) * (An - 2) + 2, 2));
+                         std::pow(0.5 * (An * An - Bn * Bn) + A0 * A0 - B0 * B0 - 2 * An + Bn +
+                                      cos(d) * (An - 2) + 2,
+                                  2));
       h.H3p = 0.5 * sqrt(r2 * (dab * dab - 2 * dab + 2 * cos(d) * (dab - 1) + 2));
       h.H4p = h4p_amp_phase;
       break;
@@ -126,7 +143,8 @@ double phase_from_h2p(double h) {
   auto f = [](double d) { return table1(MismatchType::Phase, {0, 0, 0, 0, d}).H2p; };
   double lo = 0, hi = kPi / 2;
   if (!(h >= 0) || h > f(hi))
-    throw InputError(fmt::format("phase mismatch: H_2p = {} rad is out of the range of Table 1's phase row", h));
+    throw InputError(
+        fmt::format("phase mismatch: H_2p = {} rad is out of the range of Table 1's phase row", h));
   for (int i = 0; i < 100; ++i) {
     const double mid = 0.5 * (lo + hi);
     (f(mid) < h ? lo : hi) = mid;

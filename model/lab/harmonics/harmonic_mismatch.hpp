@@ -18,7 +18,15 @@
 
 namespace acore {
 
-enum class MismatchType { Offset, Amplitude, Phase, OffsetAmplitude, OffsetPhase, AmplitudePhase, OffsetAmplitudePhase };
+enum class MismatchType {
+  Offset,
+  Amplitude,
+  Phase,
+  OffsetAmplitude,
+  OffsetPhase,
+  AmplitudePhase,
+  OffsetAmplitudePhase
+};
 
 // The mismatch parameters of Table 1, in units of the (normalised) main-harmonic amplitude:
 // offsets A0 (sine) and B0 (cosine), amplitude deviations An (sine) and Bn (cosine) from 1, phase
@@ -35,7 +43,7 @@ struct MismatchHarmonics {
 };
 
 const std::vector<MismatchType>& all_mismatch_types();
-std::string to_string(MismatchType t);           // "offset", "amplitude", "phase", "offset+amplitude", ...
+std::string to_string(MismatchType t);  // "offset", "amplitude", "phase", "offset+amplitude", ...
 bool has_offset(MismatchType t);
 bool has_amplitude(MismatchType t);
 bool has_phase(MismatchType t);

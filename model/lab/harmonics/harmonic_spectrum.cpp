@@ -15,15 +15,17 @@ namespace {
 constexpr double kHalfPi = 1.57079632679489661923;
 }
 
-std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta, const std::vector<double>& err_deg,
-                                           int max_order) {
+std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta,
+                                           const std::vector<double>& err_deg, int max_order) {
   if (theta.size() != err_deg.size())
-    throw InputError(fmt::format("error spectrum: {} angles but {} errors", theta.size(), err_deg.size()));
+    throw InputError(
+        fmt::format("error spectrum: {} angles but {} errors", theta.size(), err_deg.size()));
   if (max_order < 0) throw InputError("error spectrum: max_order must be >= 0");
   const int m = 2 * max_order + 1;
   if (theta.size() < static_cast<size_t>(m + 1))
-    throw InputError(fmt::format("error spectrum: {} samples cannot resolve order {} (need at least {})", theta.size(),
-                                 max_order, m + 1));
+    throw InputError(
+        fmt::format("error spectrum: {} samples cannot resolve order {} (need at least {})",
+                    theta.size(), max_order, m + 1));
   // Normal equations, accumulated so that long recordings need no N x m matrix.
   Eigen::MatrixXd ata = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd aty = Eigen::VectorXd::Zero(m);
@@ -43,10 +45,11 @@ std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta, con
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(ata, Eigen::EigenvaluesOnly);
   const double lmin = eig.eigenvalues().minCoeff(), lmax = eig.eigenvalues().maxCoeff();
   if (!(lmin > 1e-10 * lmax))
-    throw InputError(fmt::format(
-        "error spectrum: the reference angles do not cover the turn well enough to separate orders up to {} "
-        "(condition {:.3g}); use fewer orders or more of the turn",
-        max_order, lmax / std::max(lmin, 1e-300)));
+    throw InputError(
+        fmt::format("error spectrum: the reference angles do not cover the turn well enough to "
+                    "separate orders up to {} "
+                    "(condition {:.3g}); use fewer orders or more of the turn",
+                    max_order, lmax / std::max(lmin, 1e-300)));
   const Eigen::VectorXd c = ata.ldlt().solve(aty);
   std::vector<OrderAmplitude> out(max_order + 1);
   out[0] = {0, std::fabs(c(0)), c(0) >= 0 ? kHalfPi : -kHalfPi, c(0), 0};
@@ -65,7 +68,8 @@ double spectrum_residual_rms(const std::vector<double>& theta, const std::vector
   double s = 0;
   for (size_t i = 0; i < theta.size(); ++i) {
     double f = 0;
-    for (const auto& o : spectrum) f += o.cos_deg * std::cos(o.order * theta[i]) + o.sin_deg * std::sin(o.order * theta[i]);
+    for (const auto& o : spectrum)
+      f += o.cos_deg * std::cos(o.order * theta[i]) + o.sin_deg * std::sin(o.order * theta[i]);
     s += (err_deg[i] - f) * (err_deg[i] - f);
   }
   return std::sqrt(s / theta.size());

@@ -21,8 +21,8 @@ struct OrderAmplitude {
 // each theta. Returns orders 0..max_order. Throws InputError on size mismatch, non-finite values,
 // fewer than 2 max_order + 2 samples, or samples that do not cover the turn well enough to
 // separate the orders (ill-conditioned fit).
-std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta, const std::vector<double>& err_deg,
-                                           int max_order);
+std::vector<OrderAmplitude> error_spectrum(const std::vector<double>& theta,
+                                           const std::vector<double>& err_deg, int max_order);
 
 // RMS of err_deg minus the fitted series (what the orders up to max_order do not explain).
 double spectrum_residual_rms(const std::vector<double>& theta, const std::vector<double>& err_deg,

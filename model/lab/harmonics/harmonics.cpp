@@ -19,34 +19,39 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 
-double number_field(const nlohmann::json& j, const std::string& key, const std::string& where, double def,
-                    bool required = false) {
+double number_field(const nlohmann::json& j, const std::string& key, const std::string& where,
+                    double def, bool required = false) {
   if (!j.contains(key)) {
     if (required) throw InputError(fmt::format("harmonics spec: missing field '{}{}'", where, key));
     return def;
   }
   const auto& v = j.at(key);
-  if (!v.is_number()) throw InputError(fmt::format("harmonics spec: field '{}{}' must be a number", where, key));
+  if (!v.is_number())
+    throw InputError(fmt::format("harmonics spec: field '{}{}' must be a number", where, key));
   const double x = v.get<double>();
-  if (!std::isfinite(x)) throw InputError(fmt::format("harmonics spec: field '{}{}' is not finite", where, key));
+  if (!std::isfinite(x))
+    throw InputError(fmt::format("harmonics spec: field '{}{}' is not finite", where, key));
   return x;
 }
 
 int int_field(const nlohmann::json& j, const std::string& key, const std::string& where) {
   const double x = number_field(j, key, where, 0, true);
   if (x != std::floor(x) || std::fabs(x) > 1e6)
-    throw InputError(fmt::format("harmonics spec: field '{}{}' = {} must be an integer", where, key, x));
+    throw InputError(
+        fmt::format("harmonics spec: field '{}{}' = {} must be an integer", where, key, x));
   return static_cast<int>(x);
 }
 
-void reject_unknown(const nlohmann::json& j, const std::set<std::string>& known, const std::string& where) {
+void reject_unknown(const nlohmann::json& j, const std::set<std::string>& known,
+                    const std::string& where) {
   for (auto it = j.begin(); it != j.end(); ++it)
     if (!known.count(it.key()))
       throw InputError(fmt::format("harmonics spec: unknown field '{}{}'", where, it.key()));
 }
 
 void require_finite(double x, const std::string& field) {
-  if (!std::isfinite(x)) throw InputError(fmt::format("harmonics spec: field '{}' is not finite", field));
+  if (!std::isfinite(x))
+    throw InputError(fmt::format("harmonics spec: field '{}' is not finite", field));
 }
 
 double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
@@ -72,7 +77,8 @@ SignalSpec parse_signal_spec(const nlohmann::json& j) {
     if (!t.is_array()) throw InputError("harmonics spec: field 'terms' must be an array");
     for (size_t i = 0; i < t.size(); ++i) {
       const std::string where = fmt::format("terms[{}].", i);
-      if (!t[i].is_object()) throw InputError(fmt::format("harmonics spec: field 'terms[{}]' must be an object", i));
+      if (!t[i].is_object())
+        throw InputError(fmt::format("harmonics spec: field 'terms[{}]' must be an object", i));
       reject_unknown(t[i], {"n", "A", "theta", "B", "psi"}, where);
       Disturbance d;
       d.n = int_field(t[i], "n", where);
@@ -101,37 +107,50 @@ SignalSpec load_signal_spec(const std::string& path) {
 
 void validate(const SignalSpec& s) {
   if (s.p < 1) throw InputError(fmt::format("harmonics spec: field 'p' = {} must be >= 1", s.p));
-  for (const auto& [name, v] : {std::pair<const char*, double>{"A0", s.A0}, {"B0", s.B0}, {"Ap", s.Ap},
-                                {"Bp", s.Bp}, {"delta_p", s.delta_p}})
+  for (const auto& [name, v] : {std::pair<const char*, double>{"A0", s.A0},
+                                {"B0", s.B0},
+                                {"Ap", s.Ap},
+                                {"Bp", s.Bp},
+                                {"delta_p", s.delta_p}})
     require_finite(v, name);
-  if (!(s.Ap > 0)) throw InputError(fmt::format("harmonics spec: field 'Ap' = {} must be > 0", s.Ap));
-  if (!(s.Bp > 0)) throw InputError(fmt::format("harmonics spec: field 'Bp' = {} must be > 0", s.Bp));
+  if (!(s.Ap > 0))
+    throw InputError(fmt::format("harmonics spec: field 'Ap' = {} must be > 0", s.Ap));
+  if (!(s.Bp > 0))
+    throw InputError(fmt::format("harmonics spec: field 'Bp' = {} must be > 0", s.Bp));
   if (!(std::fabs(s.delta_p) < kPi / 2))
-    throw InputError(fmt::format("harmonics spec: field 'delta_p' = {} rad must lie in (-pi/2, pi/2)", s.delta_p));
+    throw InputError(fmt::format(
+        "harmonics spec: field 'delta_p' = {} rad must lie in (-pi/2, pi/2)", s.delta_p));
   for (size_t i = 0; i < s.terms.size(); ++i) {
     const auto& t = s.terms[i];
     const std::string w = fmt::format("terms[{}].", i);
-    for (const auto& [name, v] : {std::pair<const char*, double>{"A", t.A}, {"theta", t.theta}, {"B", t.B},
-                                  {"psi", t.psi}})
+    for (const auto& [name, v] :
+         {std::pair<const char*, double>{"A", t.A}, {"theta", t.theta}, {"B", t.B}, {"psi", t.psi}})
       require_finite(v, w + name);
-    if (t.n < 1) throw InputError(fmt::format("harmonics spec: field '{}n' = {} must be >= 1 (offsets are A0, B0)", w, t.n));
+    if (t.n < 1)
+      throw InputError(fmt::format(
+          "harmonics spec: field '{}n' = {} must be >= 1 (offsets are A0, B0)", w, t.n));
     if (t.n == s.p)
-      throw InputError(fmt::format("harmonics spec: field '{}n' = {} equals p: a main-harmonic mismatch must be given "
-                                   "as Ap, Bp (amplitude) and delta_p (phase), not as a term",
-                                   w, t.n));
+      throw InputError(fmt::format(
+          "harmonics spec: field '{}n' = {} equals p: a main-harmonic mismatch must be given "
+          "as Ap, Bp (amplitude) and delta_p (phase), not as a term",
+          w, t.n));
     // Eq. 1: amplitudes are >= 0 so that the phase is unambiguous.
     if (t.A < 0)
-      throw InputError(fmt::format("harmonics spec: field '{}A' = {} must be >= 0 (add pi to theta instead)", w, t.A));
+      throw InputError(fmt::format(
+          "harmonics spec: field '{}A' = {} must be >= 0 (add pi to theta instead)", w, t.A));
     if (t.B < 0)
-      throw InputError(fmt::format("harmonics spec: field '{}B' = {} must be >= 0 (add pi to psi instead)", w, t.B));
+      throw InputError(fmt::format(
+          "harmonics spec: field '{}B' = {} must be >= 0 (add pi to psi instead)", w, t.B));
   }
   const double a = geometric_amplitude_sum(equivalent_disturbances(s));
   if (!(a < 1))
-    throw InputError(fmt::format(
-        "harmonics spec: outside the convergence domain: the normalised disturbance sum (Eq. 28) is {:.4f} >= 1, "
-        "so the signal vector can reach zero and the angle error is unbounded; reduce A0, B0, the Ap/Bp "
-        "mismatch, delta_p or the term amplitudes",
-        a));
+    throw InputError(
+        fmt::format("harmonics spec: outside the convergence domain: the normalised disturbance "
+                    "sum (Eq. 28) is {:.4f} >= 1, "
+                    "so the signal vector can reach zero and the angle error is unbounded; reduce "
+                    "A0, B0, the Ap/Bp "
+                    "mismatch, delta_p or the term amplitudes",
+                    a));
 }
 
 std::vector<Disturbance> equivalent_disturbances(const SignalSpec& s) {
@@ -150,7 +169,8 @@ std::vector<Disturbance> equivalent_disturbances(const SignalSpec& s) {
   if (s.Ap != s.Bp) out.push_back({s.p, s.Ap / g - 1, 0, s.Bp / g - 1, 0, "amplitude"});
   // Eq. 34: phase mismatch at n = p, scaled by Ap/g to stay exact (see header).
   if (s.delta_p != 0)
-    out.push_back({s.p, s.Ap / g * 2 * std::sin(s.delta_p / 2), (s.delta_p + kPi) / 2, 0, 0, "phase"});
+    out.push_back(
+        {s.p, s.Ap / g * 2 * std::sin(s.delta_p / 2), (s.delta_p + kPi) / 2, 0, 0, "phase"});
   return out;
 }
 
@@ -168,20 +188,24 @@ double taylor_amplitude_sum(const std::vector<Disturbance>& d) {
 
 double geometric_bound(double a) {
   if (!(a >= 0 && a < 1))
-    throw InputError(fmt::format("geometric bound (Eq. 29) needs 0 <= sum_amplitude < 1, got {:.4f}", a));
+    throw InputError(
+        fmt::format("geometric bound (Eq. 29) needs 0 <= sum_amplitude < 1, got {:.4f}", a));
   return std::atan(a * std::sqrt(1 - a * a) / (1 - a * a));
 }
 
 double geometric_bound_linear(double a) {
   if (!(a >= 0 && a < 0.5))
-    throw InputError(fmt::format("linear geometric bound (Eq. 30) needs 0 <= sum_amplitude < 1/2, got {:.4f}", a));
+    throw InputError(fmt::format(
+        "linear geometric bound (Eq. 30) needs 0 <= sum_amplitude < 1/2, got {:.4f}", a));
   return kPi / 3 * a;
 }
 
 double taylor_remainder_bound(double at, int k) {
   if (!(at >= 0 && at < 1))
-    throw InputError(fmt::format(
-        "Taylor remainder bound (Eq. 32) needs 0 <= sum(|A|+|B|) < 1 (convergence domain), got {:.4f}", at));
+    throw InputError(
+        fmt::format("Taylor remainder bound (Eq. 32) needs 0 <= sum(|A|+|B|) < 1 (convergence "
+                    "domain), got {:.4f}",
+                    at));
   if (k < 0) throw InputError("Taylor remainder bound: order k must be >= 0");
   // -log(1 - At) - sum_{q=1..k} At^q/q: summed directly as sum_{q>k} At^q/q where that converges
   // quickly (no cancellation for small At), in closed form otherwise.
@@ -206,8 +230,8 @@ std::vector<double> turn_grid(int n) {
 
 namespace {
 
-std::vector<double> unwrapped_error(const std::vector<double>& a, const std::vector<double>& b, int p,
-                                    const std::vector<double>& phi) {
+std::vector<double> unwrapped_error(const std::vector<double>& a, const std::vector<double>& b,
+                                    int p, const std::vector<double>& phi) {
   const size_t n = phi.size();
   std::vector<double> e(n);
   double prev = 0, shift = 0;
@@ -234,7 +258,8 @@ std::vector<double> unwrapped_error(const std::vector<double>& a, const std::vec
 
 }  // namespace
 
-std::vector<double> exact_error(const std::vector<Disturbance>& d, int p, const std::vector<double>& phi) {
+std::vector<double> exact_error(const std::vector<Disturbance>& d, int p,
+                                const std::vector<double>& phi) {
   std::vector<double> a(phi.size()), b(phi.size());
   for (size_t j = 0; j < phi.size(); ++j) {
     a[j] = std::sin(p * phi[j]);
@@ -260,20 +285,23 @@ std::vector<double> exact_error(const SignalSpec& s, const std::vector<double>& 
   return unwrapped_error(a, b, s.p, phi);
 }
 
-std::vector<double> first_order_term(const std::vector<Disturbance>& d, int p, const std::vector<double>& phi) {
+std::vector<double> first_order_term(const std::vector<Disturbance>& d, int p,
+                                     const std::vector<double>& phi) {
   std::vector<double> e(phi.size(), 0.0);
   for (size_t j = 0; j < phi.size(); ++j) {
     const double f = phi[j];
     for (const auto& x : d) {
       // Eq. 18.
-      e[j] += 0.5 * (x.A * std::sin((x.n - p) * f + x.theta) + x.B * std::sin((x.n - p) * f + x.psi) +
-                     x.A * std::sin((x.n + p) * f + x.theta) - x.B * std::sin((x.n + p) * f + x.psi));
+      e[j] +=
+          0.5 * (x.A * std::sin((x.n - p) * f + x.theta) + x.B * std::sin((x.n - p) * f + x.psi) +
+                 x.A * std::sin((x.n + p) * f + x.theta) - x.B * std::sin((x.n + p) * f + x.psi));
     }
   }
   return e;
 }
 
-std::vector<double> second_order_term(const std::vector<Disturbance>& d, int p, const std::vector<double>& phi) {
+std::vector<double> second_order_term(const std::vector<Disturbance>& d, int p,
+                                      const std::vector<double>& phi) {
   std::vector<double> e(phi.size(), 0.0);
   for (size_t j = 0; j < phi.size(); ++j) {
     const double f = phi[j];
@@ -284,7 +312,8 @@ std::vector<double> second_order_term(const std::vector<Disturbance>& d, int p, 
       for (const auto& y : d) {
         const double sa2 = std::sin(y.n * f + y.theta), cb2 = std::cos(y.n * f + y.psi);
         // Eq. 26, second-order part.
-        sum += -x.A * y.A * s2 * sa * sa2 - 2 * x.A * y.B * c2 * sa * cb2 + x.B * y.B * s2 * cb * cb2;
+        sum +=
+            -x.A * y.A * s2 * sa * sa2 - 2 * x.A * y.B * c2 * sa * cb2 + x.B * y.B * s2 * cb * cb2;
       }
     }
     e[j] = 0.5 * sum;
@@ -382,7 +411,8 @@ std::vector<double> dft_amplitudes(const std::vector<double>& x, int max_order) 
   std::vector<double> out(max_order + 1);
   for (int k = 0; k <= max_order; ++k) {
     std::complex<double> s = 0;
-    for (size_t j = 0; j < n; ++j) s += x[j] * std::exp(std::complex<double>(0, -2 * kPi * k * double(j) / n));
+    for (size_t j = 0; j < n; ++j)
+      s += x[j] * std::exp(std::complex<double>(0, -2 * kPi * k * double(j) / n));
     s /= double(n);
     out[k] = k == 0 ? std::fabs(s.real()) : 2 * std::abs(s);
   }
@@ -406,7 +436,8 @@ HarmonicAnalysis analyze(const SignalSpec& spec, int grid) {
     while (grid < 32 * max_order) grid *= 2;
   }
   if (grid < 2 * max_order + 2)
-    throw InputError(fmt::format("harmonics: grid of {} points is too coarse for order {}", grid, max_order));
+    throw InputError(
+        fmt::format("harmonics: grid of {} points is too coarse for order {}", grid, max_order));
   r.phi = turn_grid(grid);
   r.exact = exact_error(r.disturbances, p, r.phi);
   r.first = first_order_term(r.disturbances, p, r.phi);
@@ -422,20 +453,25 @@ HarmonicAnalysis analyze(const SignalSpec& spec, int grid) {
     r.bound_taylor_first = taylor_remainder_bound(r.taylor_sum, 1);
     r.bound_taylor_second = taylor_remainder_bound(r.taylor_sum, 2);
   } else {
-    r.notes.push_back(fmt::format("sum(|A|+|B|) = {:.4f} >= 1: outside the Taylor convergence domain (Eq. 32); "
-                                  "the Taylor bounds are not defined",
-                                  r.taylor_sum));
+    r.notes.push_back(
+        fmt::format("sum(|A|+|B|) = {:.4f} >= 1: outside the Taylor convergence domain (Eq. 32); "
+                    "the Taylor bounds are not defined",
+                    r.taylor_sum));
   }
   if (r.sum_amplitude >= 0.5)
-    r.notes.push_back(fmt::format("sum sqrt(A^2+B^2) = {:.4f} >= 1/2: the linear bound of Eq. 30 does not apply",
-                                  r.sum_amplitude));
+    r.notes.push_back(
+        fmt::format("sum sqrt(A^2+B^2) = {:.4f} >= 1/2: the linear bound of Eq. 30 does not apply",
+                    r.sum_amplitude));
   const auto ex = dft_amplitudes(r.exact, max_order);
-  for (int k = 0; k <= max_order; ++k) r.harmonics.push_back({k, ex[k], t1.amplitude(k), t12.amplitude(k)});
+  for (int k = 0; k <= max_order; ++k)
+    r.harmonics.push_back({k, ex[k], t1.amplitude(k), t12.amplitude(k)});
   return r;
 }
 
 nlohmann::json HarmonicAnalysis::to_json() const {
-  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v * kDeg) : nlohmann::json(nullptr); };
+  auto opt = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v * kDeg) : nlohmann::json(nullptr);
+  };
   nlohmann::json j;
   j["p"] = spec.p;
   j["grid"] = phi.size();
@@ -450,11 +486,18 @@ nlohmann::json HarmonicAnalysis::to_json() const {
   j["taylor_sum"] = taylor_sum;
   j["harmonics"] = nlohmann::json::array();
   for (const auto& h : harmonics)
-    j["harmonics"].push_back(
-        {{"order", h.order}, {"exact_deg", h.exact * kDeg}, {"first_deg", h.first * kDeg}, {"second_deg", h.second * kDeg}});
+    j["harmonics"].push_back({{"order", h.order},
+                              {"exact_deg", h.exact * kDeg},
+                              {"first_deg", h.first * kDeg},
+                              {"second_deg", h.second * kDeg}});
   j["disturbances"] = nlohmann::json::array();
   for (const auto& d : disturbances)
-    j["disturbances"].push_back({{"source", d.source}, {"n", d.n}, {"A", d.A}, {"theta", d.theta}, {"B", d.B}, {"psi", d.psi}});
+    j["disturbances"].push_back({{"source", d.source},
+                                 {"n", d.n},
+                                 {"A", d.A},
+                                 {"theta", d.theta},
+                                 {"B", d.B},
+                                 {"psi", d.psi}});
   j["notes"] = notes;
   return j;
 }

@@ -2,7 +2,8 @@
 // Harmonic analysis of the arctangent angle error (Kuntz et al., "Harmonic analysis of the
 // arctangent function ...", docs/harmonics.md).
 //
-// Signals (Eq. 1 and 11, docs/contracts.md, command line `harmonics` input), mechanical angle phi, periodicity p:
+// Signals (Eq. 1 and 11, docs/contracts.md, command line `harmonics` input), mechanical angle phi,
+// periodicity p:
 //   a(phi) = A0 + Ap sin(p phi + delta_p) + sum_n A_n sin(n phi + theta_n)
 //   b(phi) = B0 + Bp cos(p phi)           + sum_n B_n cos(n phi + psi_n)
 // Electrical angular error (Eq. 9): dphi_p = unwrap(atan2(a, b)) - p phi, in radians.
@@ -74,13 +75,16 @@ std::vector<double> turn_grid(int n);
 
 // Exact electrical error at each phi: unwrapped atan2 of z = e^{i p phi} + disturbances, minus
 // p phi, shifted by a multiple of 2 pi so that its mean lies in (-pi, pi].
-std::vector<double> exact_error(const std::vector<Disturbance>& d, int p, const std::vector<double>& phi);
+std::vector<double> exact_error(const std::vector<Disturbance>& d, int p,
+                                const std::vector<double>& phi);
 // The same from the raw (un-normalised) signals of Eq. 1 / 11.
 std::vector<double> exact_error(const SignalSpec& spec, const std::vector<double>& phi);
 
 // Time-domain Taylor terms: T^1 of Eq. 18 (summed over the disturbances) and T^2 of Eq. 26.
-std::vector<double> first_order_term(const std::vector<Disturbance>& d, int p, const std::vector<double>& phi);
-std::vector<double> second_order_term(const std::vector<Disturbance>& d, int p, const std::vector<double>& phi);
+std::vector<double> first_order_term(const std::vector<Disturbance>& d, int p,
+                                     const std::vector<double>& phi);
+std::vector<double> second_order_term(const std::vector<Disturbance>& d, int p,
+                                      const std::vector<double>& phi);
 
 // A real trigonometric series sum_k c_k e^{i k phi}, two-sided (c_{-k} = conj c_k).
 class TrigSeries {
@@ -117,18 +121,19 @@ struct HarmonicRow {
 struct HarmonicAnalysis {
   SignalSpec spec;
   std::vector<Disturbance> disturbances;
-  double sum_amplitude = 0;  // Eq. 28
-  double taylor_sum = 0;     // Eq. 31
+  double sum_amplitude = 0;                       // Eq. 28
+  double taylor_sum = 0;                          // Eq. 31
   std::vector<double> phi, exact, first, second;  // one turn, electrical error
   double max_error = 0, residual_first = 0, residual_second = 0;
-  double bound_geometric = 0;                     // Eq. 29
-  std::optional<double> bound_geometric_linear;   // Eq. 30, when sum_amplitude < 1/2
-  std::optional<double> bound_taylor_first;       // Eq. 32, k = 1, when taylor_sum < 1
-  std::optional<double> bound_taylor_second;      // Eq. 32, k = 2
-  std::vector<HarmonicRow> harmonics;             // orders 0..max order of T^2
-  std::vector<std::string> notes;                 // e.g. why a Taylor bound is absent
+  double bound_geometric = 0;                    // Eq. 29
+  std::optional<double> bound_geometric_linear;  // Eq. 30, when sum_amplitude < 1/2
+  std::optional<double> bound_taylor_first;      // Eq. 32, k = 1, when taylor_sum < 1
+  std::optional<double> bound_taylor_second;     // Eq. 32, k = 2
+  std::vector<HarmonicRow> harmonics;            // orders 0..max order of T^2
+  std::vector<std::string> notes;                // e.g. why a Taylor bound is absent
 
-  // docs/contracts.md, command line output (degrees); an absent bound is null. Extra fields: p, grid, sums, notes.
+  // docs/contracts.md, command line output (degrees); an absent bound is null. Extra fields: p,
+  // grid, sums, notes.
   nlohmann::json to_json() const;
 };
 

@@ -2,7 +2,8 @@
 // A magnet on a shaft end over an angle sensor, and the recording it makes (physics scenarios,
 // README "Physics benchmark"): the field of physics_magnet.hpp seen by the elements of
 // physics_sensor.hpp through the chain of physics_signal_chain.hpp, on a TrajectoryModel
-// (simulator.hpp) with a temperature ramp, written as a docs/contracts.md, recording file recording.
+// (simulator.hpp) with a temperature ramp, written as a docs/contracts.md, recording file
+// recording.
 //
 // Geometry (lab frame of physics_sensor.hpp: z = rotation axis, sensing plane z = 0):
 //   the magnet's bottom face is `air_gap_m` above the sensing plane; its centre, in the shaft frame
@@ -21,10 +22,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/recording.hpp"
 #include "physics/physics_magnet.hpp"
 #include "physics/physics_sensor.hpp"
 #include "physics/physics_signal_chain.hpp"
-#include "core/recording.hpp"
 #include "sim/simulator.hpp"
 
 namespace acore {

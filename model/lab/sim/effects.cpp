@@ -44,8 +44,9 @@ void change_field(Recording& rec, EffectContext& ctx, const std::string& effect,
     auto& g = ctx.field_gain[static_cast<size_t>(c)];
     auto& x = rec.ch[static_cast<size_t>(c)];
     if (ph.size() != n)
-      throw InputError(fmt::format("effect '{}': context has {} phases for channel {}, the recording {} samples",
-                                   effect, ph.size(), c + 1, n));
+      throw InputError(
+          fmt::format("effect '{}': context has {} phases for channel {}, the recording {} samples",
+                      effect, ph.size(), c + 1, n));
     if (g.size() != n) g.assign(n, 1.0);
     const double dc = factor ? sensor_dc(ctx, c) : 0.0;
     for (size_t i = 0; i < n; ++i) {
@@ -61,8 +62,10 @@ void change_field(Recording& rec, EffectContext& ctx, const std::string& effect,
 }
 
 void need_time(const Recording& rec, const EffectContext& ctx, const std::string& effect) {
-  if (!rec.has_t()) throw InputError(fmt::format("effect '{}': the recording has no 't' column", effect));
-  if (!ctx.theta_at) throw InputError(fmt::format("effect '{}': needs the trajectory's angle at any time", effect));
+  if (!rec.has_t())
+    throw InputError(fmt::format("effect '{}': the recording has no 't' column", effect));
+  if (!ctx.theta_at)
+    throw InputError(fmt::format("effect '{}': needs the trajectory's angle at any time", effect));
 }
 
 }  // namespace
@@ -72,7 +75,8 @@ double Effect::param(const std::string& name) const {
     if (k == name) return v;
   std::vector<std::string> names;
   for (const auto& kv : params) names.push_back(kv.first);
-  throw InputError(fmt::format("effect '{}': no parameter '{}' (has: {})", effect, name, join(names)));
+  throw InputError(
+      fmt::format("effect '{}': no parameter '{}' (has: {})", effect, name, join(names)));
 }
 
 const std::vector<std::string>& effect_names() {
@@ -94,7 +98,8 @@ std::string effect_channel_name(int channels, int c) {
 }
 
 ParamList effect_defaults(const std::string& e, int channels) {
-  if (channels != 2 && channels != 4) throw InputError(fmt::format("effect '{}': channels must be 2 or 4", e));
+  if (channels != 2 && channels != 4)
+    throw InputError(fmt::format("effect '{}': channels must be 2 or 4", e));
   ParamList p;
   auto per_channel = [&](const std::string& prefix, double v) {
     for (int c = 0; c < channels; ++c) p.push_back({prefix + effect_channel_name(channels, c), v});
@@ -139,17 +144,22 @@ ParamList effect_defaults(const std::string& e, int channels) {
 Effect make_effect(const std::string& e, const ParamList& given, int channels) {
   Effect out{e, effect_defaults(e, channels)};
   for (const auto& [k, v] : given) {
-    auto it = std::find_if(out.params.begin(), out.params.end(), [&](const auto& kv) { return kv.first == k; });
+    auto it = std::find_if(out.params.begin(), out.params.end(),
+                           [&](const auto& kv) { return kv.first == k; });
     if (it == out.params.end()) {
       std::vector<std::string> names;
       for (const auto& kv : out.params) names.push_back(kv.first);
-      throw InputError(fmt::format("effect '{}': unknown parameter '{}' (valid for {} channels: {})", e, k, channels,
-                                   join(names)));
+      throw InputError(
+          fmt::format("effect '{}': unknown parameter '{}' (valid for {} channels: {})", e, k,
+                      channels, join(names)));
     }
-    if (!std::isfinite(v)) throw InputError(fmt::format("effect '{}': parameter '{}' is not finite", e, k));
+    if (!std::isfinite(v))
+      throw InputError(fmt::format("effect '{}': parameter '{}' is not finite", e, k));
     it->second = v;
   }
-  auto bad = [&](const std::string& what) { throw InputError(fmt::format("effect '{}': {}", e, what)); };
+  auto bad = [&](const std::string& what) {
+    throw InputError(fmt::format("effect '{}': {}", e, what));
+  };
   if (e == "harmonic") {
     const double n = out.param("order");
     if (n < 1 || n != std::floor(n) || n > 1000) bad("parameter 'order' must be an integer >= 1");
@@ -185,7 +195,8 @@ std::array<double, 4> channel_skew_offsets(const Effect& e, int channels) {
   return s;
 }
 
-EffectContext make_effect_context(const Recording& rec, int p, std::function<double(int, double)> sensor,
+EffectContext make_effect_context(const Recording& rec, int p,
+                                  std::function<double(int, double)> sensor,
                                   std::function<double(double)> theta_at, uint64_t seed) {
   if (!rec.has_theta()) throw InputError("effect context: the recording has no theta_ref column");
   EffectContext ctx;
@@ -200,7 +211,8 @@ EffectContext make_effect_context(const Recording& rec, int p, std::function<dou
     for (size_t i = 0; i < n; ++i) ph[i] = p * rec.theta_ref[i];
   }
   ctx.direction.assign(n, 1.0);
-  for (size_t i = 1; i < n; ++i) ctx.direction[i] = rec.theta_ref[i] >= rec.theta_ref[i - 1] ? 1.0 : -1.0;
+  for (size_t i = 1; i < n; ++i)
+    ctx.direction[i] = rec.theta_ref[i] >= rec.theta_ref[i - 1] ? 1.0 : -1.0;
   if (n > 1) ctx.direction[0] = ctx.direction[1];
   return ctx;
 }
@@ -235,8 +247,10 @@ void apply_effect(const Effect& ef, Recording& rec, EffectContext& ctx) {
     const double order = ef.param("order"), a = ef.param("amplitude"), psi = ef.param("phase_rad");
     for (int c = 0; c < nch; ++c) {
       const auto& ph = ctx.phase[static_cast<size_t>(c)];
-      if (ph.size() != n) throw InputError("effect 'harmonic': the context has no phases for the recording");
-      for (size_t i = 0; i < n; ++i) chan(c)[i] += a * std::sin(order * (ph[i] + c * kPi / 2) + psi);
+      if (ph.size() != n)
+        throw InputError("effect 'harmonic': the context has no phases for the recording");
+      for (size_t i = 0; i < n; ++i)
+        chan(c)[i] += a * std::sin(order * (ph[i] + c * kPi / 2) + psi);
     }
   } else if (e == "eccentricity") {
     const double eps = ef.param("epsilon_rad"), phi0 = ef.param("phi0_rad");
@@ -260,17 +274,20 @@ void apply_effect(const Effect& ef, Recording& rec, EffectContext& ctx) {
     need_time(rec, ctx, e);
     // theta_at(t) is shared by every channel: evaluate once per sample.
     std::vector<double> d(n);
-    for (size_t i = 0; i < n; ++i) d[i] = ctx.p * (ctx.theta_at(rec.t[i] - tau) - ctx.theta_at(rec.t[i]));
+    for (size_t i = 0; i < n; ++i)
+      d[i] = ctx.p * (ctx.theta_at(rec.t[i] - tau) - ctx.theta_at(rec.t[i]));
     change_field(rec, ctx, e, [&](int, size_t i) { return d[i]; });
   } else if (e == "hysteresis") {
     const double h = ef.param("h_rad");
-    if (ctx.direction.size() != n) throw InputError("effect 'hysteresis': the context has no rotation direction");
+    if (ctx.direction.size() != n)
+      throw InputError("effect 'hysteresis': the context has no rotation direction");
     change_field(rec, ctx, e,
                  [&](int, size_t i) { return ctx.p * h * (ctx.direction[i] >= 0 ? 1.0 : -1.0); });
   } else if (e == "drift") {
     if (!rec.has_temp()) throw InputError("effect 'drift': the recording has no 'temp' column");
     for (int c = 0; c < nch; ++c) {
-      const double ko = ef.param("offset_per_C_" + cname(c)), kg = ef.param("gain_per_C_" + cname(c));
+      const double ko = ef.param("offset_per_C_" + cname(c)),
+                   kg = ef.param("gain_per_C_" + cname(c));
       auto& x = chan(c);
       for (size_t i = 0; i < n; ++i) {
         const double dt = rec.temp[i] - kRefTempC;

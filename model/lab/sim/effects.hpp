@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The effect library (docs/contracts.md, effect vocabulary, meanings widened in the README "Effect vocabulary"): parametric
-// transforms of a sensor recording, each named exactly as in the vocabulary, with named parameters
-// (the same names the gap diagnosis fits and reports, effect_fit.hpp).
+// The effect library (docs/contracts.md, effect vocabulary, meanings widened in the README "Effect
+// vocabulary"): parametric transforms of a sensor recording, each named exactly as in the
+// vocabulary, with named parameters (the same names the gap diagnosis fits and reports,
+// effect_fit.hpp).
 //
 // An effect is applied to a recording together with an EffectContext: what the sensor model and the
 // trajectory say beyond the recorded columns. Two kinds:
@@ -90,8 +91,8 @@ struct Effect {
   double param(const std::string& name) const;
 };
 
-// The simulated effects: docs/contracts.md, effect vocabulary's twelve in its order, then the two added since (zero_offset,
-// amplitude). "unexplained" is a verdict, not an effect.
+// The simulated effects: docs/contracts.md, effect vocabulary's twelve in its order, then the two
+// added since (zero_offset, amplitude). "unexplained" is a verdict, not an effect.
 const std::vector<std::string>& effect_names();
 // True for the field-domain effects (see the top of this file).
 bool is_field_effect(const std::string& effect);

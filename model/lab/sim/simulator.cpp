@@ -21,7 +21,8 @@ using nlohmann::json;
 
 // ---- JSON reading with field names in every error ----
 
-[[noreturn]] void field_error(const std::string& where, const std::string& field, const std::string& what) {
+[[noreturn]] void field_error(const std::string& where, const std::string& field,
+                              const std::string& what) {
   throw InputError(fmt::format("{}: field '{}': {}", where, field, what));
 }
 
@@ -29,7 +30,9 @@ std::string type_name(const json& v) { return v.type_name(); }
 
 void check_keys(const json& j, const std::vector<std::string>& allowed, const std::string& where,
                 const std::string& prefix) {
-  if (!j.is_object()) field_error(where, prefix.empty() ? "(top level)" : prefix, "expected an object, got " + type_name(j));
+  if (!j.is_object())
+    field_error(where, prefix.empty() ? "(top level)" : prefix,
+                "expected an object, got " + type_name(j));
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end()) {
       std::string list;
@@ -49,14 +52,15 @@ double get_number(const json& j, const std::string& key, double dflt, const std:
   return d;
 }
 
-int get_int(const json& j, const std::string& key, int dflt, const std::string& where, const std::string& field) {
+int get_int(const json& j, const std::string& key, int dflt, const std::string& where,
+            const std::string& field) {
   const double d = get_number(j, key, dflt, where, field);
   if (d != std::floor(d) || std::fabs(d) > 1e9) field_error(where, field, "expected an integer");
   return static_cast<int>(d);
 }
 
-std::string get_string(const json& j, const std::string& key, const std::string& dflt, const std::string& where,
-                       const std::string& field) {
+std::string get_string(const json& j, const std::string& key, const std::string& dflt,
+                       const std::string& where, const std::string& field) {
   if (!j.contains(key)) return dflt;
   const json& v = j.at(key);
   if (!v.is_string()) field_error(where, field, "expected a string, got " + type_name(v));
@@ -72,17 +76,23 @@ std::vector<double> get_numbers(const json& j, const std::string& key, const std
   for (size_t k = 0; k < v.size(); ++k) {
     if (!v[k].is_number()) field_error(where, fmt::format("{}[{}]", field, k), "expected a number");
     out.push_back(v[k].get<double>());
-    if (!std::isfinite(out.back())) field_error(where, fmt::format("{}[{}]", field, k), "not finite");
+    if (!std::isfinite(out.back()))
+      field_error(where, fmt::format("{}[{}]", field, k), "not finite");
   }
   return out;
 }
 
-// The paper's Table 2 (docs/contracts.md, paper scenario): AF = cosine, BF = sine coefficients, orders 1..5.
+// The paper's Table 2 (docs/contracts.md, paper scenario): AF = cosine, BF = sine coefficients,
+// orders 1..5.
 Scenario paper_base() {
-  static const double AF[4][5] = {{.11, .20, .13, 0, .03}, {.10, .19, .07, .09, .03},
-                                  {.50, .10, .17, .04, 0}, {.13, 0, .10, .01, .01}};
-  static const double BF[4][5] = {{.10, .11, .13, .06, .03}, {.10, .19, .13, .04, .04},
-                                  {.13, .17, 0, .07, .01}, {0, .13, .10, .03, .01}};
+  static const double AF[4][5] = {{.11, .20, .13, 0, .03},
+                                  {.10, .19, .07, .09, .03},
+                                  {.50, .10, .17, .04, 0},
+                                  {.13, 0, .10, .01, .01}};
+  static const double BF[4][5] = {{.10, .11, .13, .06, .03},
+                                  {.10, .19, .13, .04, .04},
+                                  {.13, .17, 0, .07, .01},
+                                  {0, .13, .10, .03, .01}};
   Scenario s;
   for (size_t c = 0; c < 4; ++c) {
     s.sensor[c].af.assign(AF[c], AF[c] + 5);
@@ -98,7 +108,8 @@ ParamList remap_params(const Effect& e, int from, int to) {
     bool per_channel = false;
     for (int c = 0; c < from; ++c) {
       const std::string suffix = effect_channel_name(from, c);
-      if (k.size() > suffix.size() + 1 && k.compare(k.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+      if (k.size() > suffix.size() + 1 &&
+          k.compare(k.size() - suffix.size(), suffix.size(), suffix) == 0 &&
           k[k.size() - suffix.size() - 1] == '_') {
         per_channel = true;
         const std::string prefix = k.substr(0, k.size() - suffix.size());
@@ -122,14 +133,24 @@ double Scenario::channel_value(int c, double phi) const {
   const ChannelModel& m = sensor[static_cast<size_t>(c)];
   double ideal = 0;
   switch (c) {
-    case 0: ideal = std::sin(phi); break;
-    case 1: ideal = std::cos(phi); break;
-    case 2: ideal = -std::sin(phi); break;
-    default: ideal = -std::cos(phi); break;
+    case 0:
+      ideal = std::sin(phi);
+      break;
+    case 1:
+      ideal = std::cos(phi);
+      break;
+    case 2:
+      ideal = -std::sin(phi);
+      break;
+    default:
+      ideal = -std::cos(phi);
+      break;
   }
   double v = m.amplitude * ideal + m.offset;
-  for (size_t k = 0; k < m.af.size(); ++k) v += m.af[k] * std::cos(static_cast<double>(k + 1) * phi);
-  for (size_t k = 0; k < m.bf.size(); ++k) v += m.bf[k] * std::sin(static_cast<double>(k + 1) * phi);
+  for (size_t k = 0; k < m.af.size(); ++k)
+    v += m.af[k] * std::cos(static_cast<double>(k + 1) * phi);
+  for (size_t k = 0; k < m.bf.size(); ++k)
+    v += m.bf[k] * std::sin(static_cast<double>(k + 1) * phi);
   return v;
 }
 
@@ -155,7 +176,9 @@ nlohmann::json Scenario::to_json() const {
                      {"speed_end_rps", trajectory.speed_end_rps},
                      {"sweep_turns", trajectory.sweep_turns},
                      {"cycles", trajectory.cycles}};
-  j["temperature"] = {{"enabled", temperature.enabled}, {"start_C", temperature.start_C}, {"end_C", temperature.end_C}};
+  j["temperature"] = {{"enabled", temperature.enabled},
+                      {"start_C", temperature.start_C},
+                      {"end_C", temperature.end_C}};
   json eff = json::array();
   for (const Effect& e : effects) {
     json o;
@@ -170,8 +193,8 @@ nlohmann::json Scenario::to_json() const {
 Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) {
   Scenario s;
   check_keys(j,
-             {"name", "description", "channels", "p", "sensor", "sigma_common", "sigma_indep", "trajectory",
-              "temperature", "effects"},
+             {"name", "description", "channels", "p", "sensor", "sigma_common", "sigma_indep",
+              "trajectory", "temperature", "effects"},
              where, "");
   s.name = get_string(j, "name", s.name, where, "name");
   s.description = get_string(j, "description", s.description, where, "description");
@@ -182,7 +205,8 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
   if (j.contains("sensor")) {
     const json& a = j.at("sensor");
     if (!a.is_array() || (a.size() != static_cast<size_t>(s.channels) && a.size() != 4))
-      field_error(where, "sensor", fmt::format("expected an array of {} channel objects", s.channels));
+      field_error(where, "sensor",
+                  fmt::format("expected an array of {} channel objects", s.channels));
     for (size_t c = 0; c < a.size(); ++c) {
       const std::string f = fmt::format("sensor[{}]", c);
       check_keys(a[c], {"amplitude", "offset", "AF", "BF"}, where, f + ".");
@@ -200,34 +224,42 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
   if (j.contains("trajectory")) {
     const json& t = j.at("trajectory");
     check_keys(t,
-               {"kind", "sample_rate_hz", "theta0_rad", "turns", "speed_rps", "speed_end_rps", "sweep_turns",
-                "cycles"},
+               {"kind", "sample_rate_hz", "theta0_rad", "turns", "speed_rps", "speed_end_rps",
+                "sweep_turns", "cycles"},
                where, "trajectory.");
     Trajectory& tr = s.trajectory;
     tr.kind = get_string(t, "kind", tr.kind, where, "trajectory.kind");
     if (tr.kind != "turn" && tr.kind != "constant" && tr.kind != "ramp" && tr.kind != "reversal")
-      field_error(where, "trajectory.kind", "'" + tr.kind + "' is not one of turn, constant, ramp, reversal");
-    tr.sample_rate_hz = get_number(t, "sample_rate_hz", tr.sample_rate_hz, where, "trajectory.sample_rate_hz");
+      field_error(where, "trajectory.kind",
+                  "'" + tr.kind + "' is not one of turn, constant, ramp, reversal");
+    tr.sample_rate_hz =
+        get_number(t, "sample_rate_hz", tr.sample_rate_hz, where, "trajectory.sample_rate_hz");
     tr.theta0_rad = get_number(t, "theta0_rad", tr.theta0_rad, where, "trajectory.theta0_rad");
     tr.turns = get_number(t, "turns", tr.turns, where, "trajectory.turns");
     tr.speed_rps = get_number(t, "speed_rps", tr.speed_rps, where, "trajectory.speed_rps");
-    tr.speed_end_rps = get_number(t, "speed_end_rps", tr.speed_end_rps, where, "trajectory.speed_end_rps");
+    tr.speed_end_rps =
+        get_number(t, "speed_end_rps", tr.speed_end_rps, where, "trajectory.speed_end_rps");
     tr.sweep_turns = get_number(t, "sweep_turns", tr.sweep_turns, where, "trajectory.sweep_turns");
     tr.cycles = get_number(t, "cycles", tr.cycles, where, "trajectory.cycles");
-    if (tr.sample_rate_hz < 0) field_error(where, "trajectory.sample_rate_hz", "must be >= 0 (0: N per second)");
-    if (tr.kind == "reversal" && tr.sweep_turns <= 0) field_error(where, "trajectory.sweep_turns", "must be > 0");
+    if (tr.sample_rate_hz < 0)
+      field_error(where, "trajectory.sample_rate_hz", "must be >= 0 (0: N per second)");
+    if (tr.kind == "reversal" && tr.sweep_turns <= 0)
+      field_error(where, "trajectory.sweep_turns", "must be > 0");
     if (tr.kind == "reversal" && tr.speed_rps == 0 && tr.cycles <= 0)
       field_error(where, "trajectory.cycles", "must be > 0");
-    if (tr.kind == "reversal" && tr.speed_rps < 0) field_error(where, "trajectory.speed_rps", "must be >= 0");
+    if (tr.kind == "reversal" && tr.speed_rps < 0)
+      field_error(where, "trajectory.speed_rps", "must be >= 0");
   }
   if (j.contains("temperature")) {
     const json& t = j.at("temperature");
     check_keys(t, {"enabled", "start_C", "end_C"}, where, "temperature.");
     if (t.contains("enabled")) {
-      if (!t.at("enabled").is_boolean()) field_error(where, "temperature.enabled", "expected true or false");
+      if (!t.at("enabled").is_boolean())
+        field_error(where, "temperature.enabled", "expected true or false");
       s.temperature.enabled = t.at("enabled").get<bool>();
     }
-    s.temperature.start_C = get_number(t, "start_C", s.temperature.start_C, where, "temperature.start_C");
+    s.temperature.start_C =
+        get_number(t, "start_C", s.temperature.start_C, where, "temperature.start_C");
     s.temperature.end_C = get_number(t, "end_C", s.temperature.end_C, where, "temperature.end_C");
   }
   if (j.contains("effects")) {
@@ -271,12 +303,14 @@ TrajectoryModel::TrajectoryModel(const Trajectory& tr, size_t samples) : tr_(tr)
     v0_ = v1_ = tr.speed_rps > 0 ? tr.speed_rps : 2.0 * tr.sweep_turns * tr.cycles / duration_;
     if (!(v0_ > 0)) throw InputError("simulate: a reversal trajectory needs a speed > 0");
   } else {
-    throw InputError("simulate: unknown trajectory kind '" + tr.kind + "' (valid: turn, constant, ramp, reversal)");
+    throw InputError("simulate: unknown trajectory kind '" + tr.kind +
+                     "' (valid: turn, constant, ramp, reversal)");
   }
 }
 
 double TrajectoryModel::theta_at(double t) const {
-  if (tr_.kind == "ramp") return tr_.theta0_rad + 2 * kPi * (v0_ * t + (v1_ - v0_) * t * t / (2 * duration_));
+  if (tr_.kind == "ramp")
+    return tr_.theta0_rad + 2 * kPi * (v0_ * t + (v1_ - v0_) * t * t / (2 * duration_));
   if (tr_.kind == "reversal") {
     const double period = 2 * tr_.sweep_turns / v0_;
     const double u = t - period * std::floor(t / period);
@@ -288,7 +322,8 @@ double TrajectoryModel::theta_at(double t) const {
 
 double TrajectoryModel::theta_sample(size_t k) const {
   // The published figures use exactly this grid.
-  if (tr_.kind == "turn") return tr_.theta0_rad + 2 * kPi * static_cast<double>(k) / static_cast<double>(n_);
+  if (tr_.kind == "turn")
+    return tr_.theta0_rad + 2 * kPi * static_cast<double>(k) / static_cast<double>(n_);
   return theta_at(time(k));
 }
 
@@ -304,17 +339,22 @@ double TrajectoryModel::direction_at(double t) const {
 
 // ---- Built-ins ----
 
-std::vector<std::string> builtin_scenario_names() { return {"paper", "paper-indep", "paper-noiseless", "ideal", "tmr"}; }
+std::vector<std::string> builtin_scenario_names() {
+  return {"paper", "paper-indep", "paper-noiseless", "ideal", "tmr"};
+}
 
 Scenario builtin_scenario(const std::string& name) {
   Scenario s;
   if (name == "paper") {
     s = paper_base();
-    s.description = "docs/contracts.md, paper scenario: Table 2 systematic error, common-mode Gaussian noise sigma 0.05";
+    s.description =
+        "docs/contracts.md, paper scenario: Table 2 systematic error, common-mode Gaussian noise "
+        "sigma 0.05";
     s.sigma_common = 0.05;
   } else if (name == "paper-indep") {
     s = paper_base();
-    s.description = "docs/contracts.md, paper scenario with independent per-channel Gaussian noise sigma 0.05";
+    s.description =
+        "docs/contracts.md, paper scenario with independent per-channel Gaussian noise sigma 0.05";
     s.sigma_indep = 0.05;
   } else if (name == "paper-noiseless") {
     s = paper_base();
@@ -323,15 +363,17 @@ Scenario builtin_scenario(const std::string& name) {
     s.description = "pure sine and cosine, no error, no noise";
   } else if (name == "tmr") {
     // A two-channel TMR-like bridge sensor.
-    s.description = "two-channel TMR-like sensor: offsets, 3.5% gain mismatch, 0.3 deg orthogonality error, "
-                    "1.5% third harmonic, small noise";
+    s.description =
+        "two-channel TMR-like sensor: offsets, 3.5% gain mismatch, 0.3 deg orthogonality error, "
+        "1.5% third harmonic, small noise";
     s.channels = 2;
     s.sensor[0].offset = 0.012;
     s.sensor[1].offset = -0.018;
     s.sensor[1].amplitude = 1.035;
     s.sigma_indep = 0.002;
     s.effects.push_back(make_effect("phase_error", {{"delta_rad", 0.3 * kPi / 180}}, 2));
-    s.effects.push_back(make_effect("harmonic", {{"order", 3}, {"amplitude", 0.015}, {"phase_rad", 0}}, 2));
+    s.effects.push_back(
+        make_effect("harmonic", {{"order", 3}, {"amplitude", 0.015}, {"phase_rad", 0}}, 2));
   } else {
     std::string list;
     for (const auto& n : builtin_scenario_names()) list += (list.empty() ? "" : ", ") + n;
@@ -367,7 +409,8 @@ Scenario with_channels(const Scenario& s, int channels) {
     out.sensor[2] = out.sensor[3] = ChannelModel{};
   }
   out.effects.clear();
-  for (const Effect& e : s.effects) out.effects.push_back(make_effect(e.effect, remap_params(e, s.channels, channels), channels));
+  for (const Effect& e : s.effects)
+    out.effects.push_back(make_effect(e.effect, remap_params(e, s.channels, channels), channels));
   return out;
 }
 
@@ -392,7 +435,8 @@ Recording simulate(const Scenario& s, size_t samples, uint64_t seed) {
     rec.temp.resize(samples);
     const double span = samples > 1 ? static_cast<double>(samples - 1) : 1.0;
     for (size_t k = 0; k < samples; ++k)
-      rec.temp[k] = s.temperature.start_C + (s.temperature.end_C - s.temperature.start_C) * static_cast<double>(k) / span;
+      rec.temp[k] = s.temperature.start_C +
+                    (s.temperature.end_C - s.temperature.start_C) * static_cast<double>(k) / span;
   }
 
   EffectContext ctx;

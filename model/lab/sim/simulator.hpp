@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The sensor simulator: the paper's channel model (Eq. 2 with the c4 sign fixed, docs/contracts.md, systematic error of
-// Eq. 7), Gaussian noise, a trajectory, a temperature profile and a list of effects (effects.hpp).
+// The sensor simulator: the paper's channel model (Eq. 2 with the c4 sign fixed, docs/contracts.md,
+// systematic error of Eq. 7), Gaussian noise, a trajectory, a temperature profile and a list of
+// effects (effects.hpp).
 //
 // Four channels at electrical angle phi = p*theta (theta mechanical, rad):
 //   c1 =  A1 sin(phi) + e1(phi)      c2 =  A2 cos(phi) + e2(phi)
@@ -31,8 +32,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/effects.hpp"
 #include "core/recording.hpp"
+#include "sim/effects.hpp"
 
 namespace acore {
 
@@ -72,11 +73,11 @@ struct Temperature {
 struct Scenario {
   std::string name = "custom";
   std::string description;
-  int channels = 4;  // 4 (c1..c4) or 2 (sin, cos)
-  int p = 1;         // periodicity: electrical angle = p * mechanical angle
+  int channels = 4;                    // 4 (c1..c4) or 2 (sin, cos)
+  int p = 1;                           // periodicity: electrical angle = p * mechanical angle
   std::array<ChannelModel, 4> sensor;  // c1..c4 (or sin, cos in [0], [1])
-  double sigma_common = 0;  // Gaussian noise common to all channels
-  double sigma_indep = 0;   // Gaussian noise independent per channel
+  double sigma_common = 0;             // Gaussian noise common to all channels
+  double sigma_indep = 0;              // Gaussian noise independent per channel
   Trajectory trajectory;
   Temperature temperature;
   std::vector<Effect> effects;  // applied in order within their domain (see the top of this file)
@@ -94,8 +95,9 @@ class TrajectoryModel {
   TrajectoryModel(const Trajectory& tr, size_t samples);
   double sample_rate() const { return fs_; }
   double time(size_t k) const { return static_cast<double>(k) / fs_; }
-  double theta_at(double t) const;      // mechanical angle, rad, unwrapped
-  double theta_sample(size_t k) const;  // the angle at sample k ("turn": exactly theta0 + 2 pi k / N)
+  double theta_at(double t) const;  // mechanical angle, rad, unwrapped
+  double theta_sample(
+      size_t k) const;  // the angle at sample k ("turn": exactly theta0 + 2 pi k / N)
   double direction_at(double t) const;  // +1 forward, -1 backward
 
  private:

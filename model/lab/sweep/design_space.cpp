@@ -37,15 +37,19 @@ SweepScenario make_scenario(const std::string& name, Scenario s, size_t cal_n, s
   return sc;
 }
 
-nlohmann::json values_of(const nlohmann::json& v) { return v.is_array() ? v : nlohmann::json::array({v}); }
+nlohmann::json values_of(const nlohmann::json& v) {
+  return v.is_array() ? v : nlohmann::json::array({v});
+}
 
 }  // namespace
 
 std::vector<SweepScenario> sweep_scenarios(size_t cal_samples, size_t val_samples) {
   if (cal_samples < 1024 || val_samples < 256)
-    throw InputError(fmt::format("sweep: need at least 1024 calibration and 256 validation samples (got {}, {})",
-                                 cal_samples, val_samples));
-  return {make_scenario("paper-noiseless", builtin_scenario("paper-noiseless"), cal_samples, val_samples),
+    throw InputError(
+        fmt::format("sweep: need at least 1024 calibration and 256 validation samples (got {}, {})",
+                    cal_samples, val_samples));
+  return {make_scenario("paper-noiseless", builtin_scenario("paper-noiseless"), cal_samples,
+                        val_samples),
           make_scenario("tmr-noiseless", builtin_scenario("tmr"), cal_samples, val_samples)};
 }
 
@@ -55,18 +59,22 @@ std::vector<std::string> expand_grid(const nlohmann::json& grid) {
   std::set<std::string> seen;
   for (size_t g = 0; g < grid.size(); ++g) {
     const nlohmann::json& sub = grid[g];
-    if (!sub.is_object()) throw InputError(fmt::format("sweep grid: sub-grid {} is not an object", g));
+    if (!sub.is_object())
+      throw InputError(fmt::format("sweep grid: sub-grid {} is not an object", g));
     // Cartesian product, the last field varying fastest.
     std::vector<std::string> partial = {""};
     for (const auto& [name, val] : sub.items()) {
       const nlohmann::json vals = values_of(val);
-      if (vals.empty()) throw InputError(fmt::format("sweep grid: sub-grid {} field {}: no values", g, name));
+      if (vals.empty())
+        throw InputError(fmt::format("sweep grid: sub-grid {} field {}: no values", g, name));
       std::vector<std::string> next;
       for (const std::string& head : partial)
         for (const auto& v : vals) {
           if (!v.is_number_integer())
-            throw InputError(fmt::format("sweep grid: sub-grid {} field {}: {} is not an integer", g, name, v.dump()));
-          next.push_back(head + (head.empty() ? "" : " ") + fmt::format("{}={}", name, v.get<long long>()));
+            throw InputError(fmt::format("sweep grid: sub-grid {} field {}: {} is not an integer",
+                                         g, name, v.dump()));
+          next.push_back(head + (head.empty() ? "" : " ") +
+                         fmt::format("{}={}", name, v.get<long long>()));
         }
       partial = std::move(next);
     }
@@ -119,23 +127,29 @@ Shard parse_shard(const std::string& text) {
   } catch (const std::exception&) {
     a = b = 0;
   }
-  if (a == 0 || b == 0 || a != slash || slash + 1 + b != text.size() || s.count < 1 || s.index < 0 ||
-      s.index >= s.count)
+  if (a == 0 || b == 0 || a != slash || slash + 1 + b != text.size() || s.count < 1 ||
+      s.index < 0 || s.index >= s.count)
     throw InputError(fmt::format("--shard '{}': expected i/N with 0 <= i < N", text));
   return s;
 }
 
 nlohmann::json SweepResult::to_json() const {
-  nlohmann::json j = {{"index", index}, {"params", params}, {"final_params", final_params},
-                      {"words", words}, {"seconds", seconds}};
-  auto stats = [](const ErrorStats& s) { return nlohmann::json{{"rms", s.rms}, {"max_abs", s.max_abs}, {"mean", s.mean}}; };
+  nlohmann::json j = {{"index", index},
+                      {"params", params},
+                      {"final_params", final_params},
+                      {"words", words},
+                      {"seconds", seconds}};
+  auto stats = [](const ErrorStats& s) {
+    return nlohmann::json{{"rms", s.rms}, {"max_abs", s.max_abs}, {"mean", s.mean}};
+  };
   for (const ScenarioAccuracy& a : accuracy)
     j["accuracy"][a.scenario] = {{"float", stats(a.floating)}, {"fixed", stats(a.fixed)}};
   if (!error.empty()) j["error"] = error;
   return j;
 }
 
-SweepResult evaluate_point(size_t index, const std::string& params, const std::vector<SweepScenario>& scenarios) {
+SweepResult evaluate_point(size_t index, const std::string& params,
+                           const std::vector<SweepScenario>& scenarios) {
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult r;
   r.index = index;
@@ -143,15 +157,18 @@ SweepResult evaluate_point(size_t index, const std::string& params, const std::v
   const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(params);
   try {
     // One hardware configuration for every scenario: the calibration may lower COEF_F for range,
-    // so the image with the least coefficient fraction bits sets it and the others are re-quantized.
+    // so the image with the least coefficient fraction bits sets it and the others are
+    // re-quantized.
     std::vector<FloatCoefficients> fcs(scenarios.size());
     std::vector<RegImage> imgs;
-    for (size_t i = 0; i < scenarios.size(); ++i) imgs.push_back(calibrate_image(scenarios[i].cal, cfg, scenarios[i].p, &fcs[i]));
+    for (size_t i = 0; i < scenarios.size(); ++i)
+      imgs.push_back(calibrate_image(scenarios[i].cal, cfg, scenarios[i].p, &fcs[i]));
     DatapathConfig built = cfg;
     for (const RegImage& img : imgs)
       if (&img == &imgs.front() || img.cfg.coef_f < built.coef_f) built = img.cfg;
     // Likewise the Fourier words' fraction bits (lowered on their own for range).
-    for (const RegImage& img : imgs) built.fourier_coef_f = std::min(built.fourier_coef_f, img.cfg.fourier_coef_f);
+    for (const RegImage& img : imgs)
+      built.fourier_coef_f = std::min(built.fourier_coef_f, img.cfg.fourier_coef_f);
     r.words = built.words();
     for (const auto& [name, value] : built.rtl_params())
       r.final_params += fmt::format("{}{}={}", r.final_params.empty() ? "" : " ", name, value);
@@ -161,8 +178,10 @@ SweepResult evaluate_point(size_t index, const std::string& params, const std::v
         imgs[i] = quantize(fcs[i], built, choose_in_scale(sc.cal, built.in_w));
       ScenarioAccuracy a;
       a.scenario = sc.name;
-      a.floating = error_stats(angle_error_deg(run_float(sc.val, fcs[i]).angle, sc.val.theta_ref, sc.p));
-      a.fixed = error_stats(angle_error_deg(run_fixed(sc.val, imgs[i]).angle, sc.val.theta_ref, sc.p));
+      a.floating =
+          error_stats(angle_error_deg(run_float(sc.val, fcs[i]).angle, sc.val.theta_ref, sc.p));
+      a.fixed =
+          error_stats(angle_error_deg(run_fixed(sc.val, imgs[i]).angle, sc.val.theta_ref, sc.p));
       r.accuracy.push_back(a);
     }
   } catch (const InputError& e) {

@@ -29,7 +29,8 @@ struct SweepScenario {
 
 // The built-in scenarios, noise-free so that the figures measure the correction, not the noise:
 //   paper-noiseless  the paper scenario's four-channel sensor;
-//   tmr-noiseless    the two-channel TMR-like sensor of `simulate --scenario tmr` without its noise.
+//   tmr-noiseless    the two-channel TMR-like sensor of `simulate --scenario tmr` without its
+//   noise.
 // Calibration: cal_samples uniform angles over one turn; validation: val_samples uniform angles
 // shifted by an irrational fraction of a step, so no validation angle is a calibration angle.
 std::vector<SweepScenario> sweep_scenarios(size_t cal_samples, size_t val_samples);
@@ -48,7 +49,9 @@ nlohmann::json quick_sweep_grid();
 struct Shard {
   int index = 0;
   int count = 1;
-  bool takes(size_t point) const { return static_cast<int>(point % static_cast<size_t>(count)) == index; }
+  bool takes(size_t point) const {
+    return static_cast<int>(point % static_cast<size_t>(count)) == index;
+  }
 };
 Shard parse_shard(const std::string& text);
 
@@ -64,13 +67,14 @@ struct SweepResult {
   std::string final_params;  // every RTL parameter of the image actually built (after auto-range)
   int words = 0;             // register file words
   std::vector<ScenarioAccuracy> accuracy;
-  double seconds = 0;        // wall time of this point
-  std::string error;         // non-empty when the point could not be calibrated (then no accuracy)
+  double seconds = 0;  // wall time of this point
+  std::string error;   // non-empty when the point could not be calibrated (then no accuracy)
   nlohmann::json to_json() const;
 };
 
 // Calibrates and measures one point on every scenario. Errors of the point itself (a calibration
 // that cannot fit) are recorded in `error`, not thrown.
-SweepResult evaluate_point(size_t index, const std::string& params, const std::vector<SweepScenario>& scenarios);
+SweepResult evaluate_point(size_t index, const std::string& params,
+                           const std::vector<SweepScenario>& scenarios);
 
 }  // namespace acore
