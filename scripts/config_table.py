@@ -93,9 +93,9 @@ def parse_params(tokens):
 def named_configs(root):
     rows = []
     for line in open(os.path.join(root, "rtl", "configs.txt")):
-        if re.match(r"[a-z]", line):
-            f = line.split()
-            rows.append(("acore_top", f[0], parse_params(f[1:])))
+        f = line.split()
+        if re.match(r"[a-z]", line) and f[1] == "acore_top" and "sim" in f[2].split(","):
+            rows.append(("acore_top", f[0], parse_params(f[3:])))
     rows.append(("acore_serial_top", "serial (defaults)", {}))
     cfg = [l.strip() for l in open(os.path.join(root, "rtl", "serial_n5r8.cfg")) if re.match(r"[A-Z_]+=", l)]
     rows.append(("acore_serial_top", "serial_n5r8", parse_params(cfg)))

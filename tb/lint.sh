@@ -23,7 +23,8 @@ for f in "${files[@]}"; do
   m=$(basename "$f" .v)
   run "$m" --top-module "$m"
 done
-while read -r name params; do
+while read -r name module flows params; do
+  [ "$module" = acore_top ] && [[ ",$flows," == *",lint,"* ]] || continue
   gargs=()
   for p in $params; do gargs+=("-G$p"); done
   run "acore_top config $name" --top-module acore_top "${gargs[@]}"

@@ -147,8 +147,9 @@ def check_legal(root, top):
 def named_configs(root):
     sets = []
     for line in open(os.path.join(root, "rtl", "configs.txt")):
-        if re.match(r"[a-z]", line):
-            sets.append(parse_params(line.split()[1:], "rtl/configs.txt"))
+        f = line.split()
+        if re.match(r"[a-z]", line) and f[1] == "acore_top":
+            sets.append(parse_params(f[3:], "rtl/configs.txt"))
     return sets
 
 
