@@ -1,16 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Verilated RTL throughput (samples per wall second, one core, tracing off): the RTL engine alone
 // (run_rtl: register load + stream), the RTL at random stalls, and RTL + bit-accurate model compare
-// (what `anglecore cosim` does); the same for the serial core (run_rtl_serial, 226 clocks a sample,
-// on the first 20000 samples). Run: build/tests/bench/bench_rtl_cosim
-// --benchmark_counters_tabular=true
+// (what `anglecore cosim` does); the same for the serial core (226 clocks a sample, on the first
+// 20000 samples). Run: build/tb/bench_rtl_cosim --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include "calibration/calibration.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "rtl_engine.hpp"
-#include "rtl_serial_engine.hpp"
 #include "support/paper_signals.hpp"
 
 namespace {
@@ -55,6 +53,12 @@ void BM_CosimCompare(benchmark::State& state) {
 }
 BENCHMARK(BM_CosimCompare)->Unit(benchmark::kMillisecond);
 
+acore::RtlRunOptions serial_options() {
+  acore::RtlRunOptions opt;
+  opt.top = acore::RtlTop::kSerial;
+  return opt;
+}
+
 std::vector<acore::ChannelCodes> serial_inputs() {
   return {setup().in.begin(), setup().in.begin() + 20000};
 }
@@ -62,14 +66,12 @@ std::vector<acore::ChannelCodes> serial_inputs() {
 void BM_RtlSerialEngine(benchmark::State& state) {
   const Setup& s = setup();
   const auto in = serial_inputs();
-  for (auto _ : state)
-    benchmark::DoNotOptimize(acore::run_rtl_serial(s.img, in, acore::RtlRunOptions{}));
+  for (auto _ : state) benchmark::DoNotOptimize(acore::run_rtl(s.img, in, serial_options()));
   state.counters["samples/s"] = benchmark::Counter(
       static_cast<double>(in.size()) * state.iterations(), benchmark::Counter::kIsRate);
-  state.counters["clocks/s"] =
-      benchmark::Counter(static_cast<double>(in.size()) *
-                             acore::RtlSerialHarness::cycles_per_sample() * state.iterations(),
-                         benchmark::Counter::kIsRate);
+  const int cycles = acore::rtl_build_for(acore::RtlTop::kSerial, s.img.cfg).plugin().cycles;
+  state.counters["clocks/s"] = benchmark::Counter(
+      static_cast<double>(in.size()) * cycles * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RtlSerialEngine)->Unit(benchmark::kMillisecond);
 
@@ -79,7 +81,7 @@ void BM_SerialCosimCompare(benchmark::State& state) {
   const acore::FixedModel model(s.img);
   size_t bad = 0;
   for (auto _ : state) {
-    const auto rtl = acore::run_rtl_serial(s.img, in, acore::RtlRunOptions{});
+    const auto rtl = acore::run_rtl(s.img, in, serial_options());
     for (size_t i = 0; i < in.size(); ++i) bad += !(rtl[i] == model.step(in[i]));
   }
   if (bad) state.SkipWithError("serial RTL and model differ");

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Co-sim of one named configuration (rtl/configs.txt) against the bit-accurate model:
+// Co-sim of one build of the registry (rtl/configs.txt; a configuration of the pipelined top or
+// of the serial core) against the bit-accurate model:
 //   cosim_config NAME [SAMPLES]
 // The paper scenario calibrated for that configuration (random input gaps and output
 // backpressure), corner inputs, and random register images with random inputs (the saturation
@@ -20,7 +21,6 @@
 #include "cosim_stimuli.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "rtl_builds.hpp"
 #include "rtl_engine.hpp"
 #include "support/paper_signals.hpp"
 
@@ -41,7 +41,7 @@ size_t compare(const std::vector<FixedSample>& rtl, const FixedModel& model,
 RegImage paper_image(const DatapathConfig& cfg) {
   const Recording cal = test::paper_recording(8000, true);
   const RegImage img = calibrate_image(cal, cfg, 1);
-  if (img.cfg.describe() != cfg.describe())
+  if (img.cfg != cfg)
     throw InputError("the paper calibration for this configuration needs " + img.cfg.describe() +
                      "; set those parameters in rtl/configs.txt");
   return img;
@@ -88,8 +88,8 @@ std::vector<ChannelCodes> corner_codes(int in_w) {
 
 // Clocks from the accepting edge to out_valid (a folded top may take a sample only some clocks
 // after the last one: the input is held until accepted).
-int measured_latency(const DatapathConfig& cfg, const RegImage& img) {
-  RtlHarness h("", 2, 1, cfg);
+int measured_latency(const RtlBuild& build, const RegImage& img) {
+  RtlHarness h(build, "", 2, 1);
   h.reset();
   h.load(img);
   h.drive(true, {1000, 2000, 0, 0}, true);
@@ -105,13 +105,14 @@ int measured_latency(const DatapathConfig& cfg, const RegImage& img) {
 // the previous one and every output LATENCY clocks after its accept, in order. Returns the number
 // of violations (printing the first).
 size_t full_rate(const RtlBuild& build, const RegImage& img, const std::vector<ChannelCodes>& in) {
-  RtlHarness h("", 2, 7, build.config());
+  RtlHarness h(build, "", 2, 7);
+  const int cycles = h.cycles_per_sample(), latency = h.latency();
   h.reset();
   h.load(img);
   std::vector<uint64_t> taken, out;
   std::vector<FixedSample> rtl;
   size_t next = 0;
-  while (out.size() < in.size() && h.cycles() < 100000 + 20 * in.size()) {
+  while (out.size() < in.size() && h.cycles() < 100000 + 20 * in.size() * cycles) {
     h.drive(next < in.size(), next < in.size() ? in[next] : ChannelCodes{0, 0, 0, 0}, true);
     if (next < in.size() && h.in_ready()) taken.push_back(h.cycles()), ++next;
     if (h.out_valid()) out.push_back(h.cycles()), rtl.push_back(h.output());
@@ -119,22 +120,21 @@ size_t full_rate(const RtlBuild& build, const RegImage& img, const std::vector<C
   }
   size_t bad = out.size() != in.size();
   for (size_t i = 0; i < taken.size(); ++i) {
-    const bool gap_ok = i == 0 || taken[i] - taken[i - 1] == static_cast<uint64_t>(build.cycles);
-    const bool lat_ok = i < out.size() && out[i] - taken[i] == static_cast<uint64_t>(build.latency);
+    const bool gap_ok = i == 0 || taken[i] - taken[i - 1] == static_cast<uint64_t>(cycles);
+    const bool lat_ok = i < out.size() && out[i] - taken[i] == static_cast<uint64_t>(latency);
     if (!gap_ok || !lat_ok) {
       if (!bad)
         std::printf(
             "full rate: sample %zu taken at clock %llu, out at %llu (CYCLES %d, LATENCY %d)\n", i,
             static_cast<unsigned long long>(taken[i]),
-            static_cast<unsigned long long>(i < out.size() ? out[i] : 0), build.cycles,
-            build.latency);
+            static_cast<unsigned long long>(i < out.size() ? out[i] : 0), cycles, latency);
       ++bad;
     }
   }
   const cosim::Comparison c = cosim::compare(rtl, FixedModel(img), in);
   std::printf(
       "%-28s %8zu samples, %zu timing violations, %zu mismatches (a sample every %d clocks)\n",
-      "full rate", in.size(), bad, c.mismatches, build.cycles);
+      "full rate", in.size(), bad, c.mismatches, cycles);
   return bad + c.mismatches;
 }
 
@@ -142,7 +142,7 @@ size_t full_rate(const RtlBuild& build, const RegImage& img, const std::vector<C
 // credits must stop the input before its output FIFO overflows. Every sample must come out once,
 // in order, equal to the model; in_ready must be low during reset.
 size_t long_stall(const RtlBuild& build, const RegImage& img, const std::vector<ChannelCodes>& in) {
-  RtlHarness h("", 2, 9, build.config());
+  RtlHarness h(build, "", 2, 9);
   size_t bad = 0;
   h.drive(true, in[0], false);
   h.set_reset(true);
@@ -173,32 +173,40 @@ size_t long_stall(const RtlBuild& build, const RegImage& img, const std::vector<
 
 int run(const std::string& name, size_t samples) {
   const RtlBuild& build = rtl_build_named(name);
-  const DatapathConfig cfg = build.config();
+  if (build.top == RtlTop::kShell)
+    throw InputError("'" + name + "' is a build of the register shell (tb/test_apb_shell)");
+  const DatapathConfig& cfg = build.cfg;
   cfg.validate();
-  std::printf("configuration %s: %s (%d words, LATENCY %d, CYCLES %d)\n", name.c_str(),
-              cfg.describe().c_str(), cfg.words(), build.latency, build.cycles);
+  const int latency = build.plugin().latency, cycles = build.plugin().cycles;
+  std::printf("configuration %s (%s): %s (%d words, LATENCY %d, CYCLES %d)\n", name.c_str(),
+              build.module.c_str(), cfg.describe().c_str(), cfg.words(), latency, cycles);
   size_t bad = 0;
   const RegImage paper = paper_image(cfg);
-  const int lat = measured_latency(cfg, paper);
-  std::printf("%-28s %8d clocks (LATENCY %d)\n", "latency", lat, build.latency);
-  bad += lat != build.latency;
+  const int lat = measured_latency(build, paper);
+  std::printf("%-28s %8d clocks (LATENCY %d)\n", "latency", lat, latency);
+  bad += lat != latency;
 
   RtlRunOptions opt;
+  opt.top = build.top;
   opt.gaps = 0.3;
   opt.backpressure = 0.3;
   const auto in = to_codes(test::paper_recording(samples, true), paper.in_scale, cfg.in_w);
   bad += compare(run_rtl(paper, in, opt), FixedModel(paper), in, "paper scenario");
   const auto corners = corner_codes(cfg.in_w);
   bad += compare(run_rtl(paper, corners, opt), FixedModel(paper), corners, "corner inputs");
-  const std::vector<ChannelCodes> head(in.begin(), in.begin() + std::min<size_t>(in.size(), 2000));
+  // The serial core computes a sample in CYCLES clocks and has no output FIFO: fewer samples.
+  const size_t n_head = cycles > 8 ? 300 : 2000, n_stall = cycles > 8 ? 60 : 2000;
+  const std::vector<ChannelCodes> head(in.begin(), in.begin() + std::min(in.size(), n_head));
+  const std::vector<ChannelCodes> stall(in.begin(), in.begin() + std::min(in.size(), n_stall));
   bad += full_rate(build, paper, head);
-  bad += long_stall(build, paper, head);
+  bad += long_stall(build, paper, stall);
 
   std::mt19937_64 rng(std::hash<std::string>{}(name));
   for (int k = 0; k < 8; ++k) {
     const RegImage img = random_image(paper, rng);
     const auto rin = cosim::random_codes(rng, 2000, cfg.in_w);
     RtlRunOptions ro;
+    ro.top = build.top;
     ro.seed = k + 1;
     ro.gaps = 0.2;
     ro.backpressure = 0.2;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The host port and reset contract that both tops share (README "RTL": port timing, reset), as
-// measurements on a harness (RtlHarness for rtl/acore_top.v, RtlSerialHarness for
-// rtl/acore_serial_top.v: the same pin-level API). tb/test_cosim.cpp and tb/test_cosim_serial.cpp
-// assert the same numbers on both, so the two tops cannot drift apart. Header-only, test code.
+// measurements on the one RtlHarness (for rtl/acore_top.v at any FOLD and for
+// rtl/acore_serial_top.v). tb/test_cosim.cpp asserts the same numbers on every build of both, so
+// the two tops cannot drift apart. Header-only, test code.
 #pragma once
 #include <cstdint>
 #include <random>

@@ -1,31 +1,46 @@
 // SPDX-License-Identifier: MIT
-// The Verilated builds of rtl/acore_top.v linked into this program: one per named configuration
-// of rtl/configs.txt (tb/CMakeLists.txt generates the list). The RTL engine picks the build whose
-// configuration equals a register image's.
+// The Verilated builds of the registry (rtl/configs.txt): every line with the `sim` flow whose
+// module is acore_top, acore_serial_top or acore_apb, as a table generated at configure time
+// (tb/CMakeLists.txt), each build a run-time module build/rtl/acore_rtl_<name>.so (rtl_plugin.hpp)
+// loaded on first use. A register image finds its build by field equality of its configuration.
 #pragma once
-#include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "core/datapath_config.hpp"
-#include "rtl_pins.hpp"
+#include "rtl_plugin.hpp"
 
 namespace acore {
 
+enum class RtlTop { kPipelined, kSerial, kShell };
+
 struct RtlBuild {
-  std::string name;    // configuration name in rtl/configs.txt
-  std::string params;  // its RTL parameter overrides, "DEGREE=5 REGIONS=8" ("" = the defaults)
-  int latency;         // LATENCY of that build (Verilator public parameter)
-  int cycles;          // CYCLES: clocks per sample at full rate (= FOLD)
-  std::unique_ptr<RtlPins> (*make)(VerilatedContext* ctx, const char* name);
-  DatapathConfig config() const { return DatapathConfig{}.with_rtl_params(params); }
+  std::string name;    // registry name
+  std::string module;  // acore_top, acore_serial_top, acore_apb
+  std::string params;  // the registry line's parameters ("" = the module's defaults)
+  RtlTop top;
+  // The datapath configuration the build computes (the estimator's parameters of the line applied
+  // to the defaults); for the shell, that of the top it wraps.
+  DatapathConfig cfg;
+  bool serial = false;  // the shell wraps the serial core (SERIAL=1)
+  // The loaded module; throws InputError naming the build target when it is not built.
+  const rtl::PluginInfo& plugin() const;
 };
 
-// Every build, "default" first.
+// Every build of the registry with the `sim` flow, in the registry's order.
 const std::vector<RtlBuild>& rtl_builds();
-// The build for exactly this configuration; throws InputError listing the available ones.
-const RtlBuild& rtl_build_for(const DatapathConfig& cfg);
-// The build of this name; throws InputError listing the available ones.
+// The build of this name; throws InputError listing the builds.
 const RtlBuild& rtl_build_named(const std::string& name);
+// The build of this top whose configuration equals cfg (every field, FOLD included); throws
+// InputError naming the configuration and listing the builds of that top.
+const RtlBuild& rtl_build_for(RtlTop top, const DatapathConfig& cfg);
+// The builds of one top (the co-sim tests run over them).
+std::vector<const RtlBuild*> rtl_builds_of(RtlTop top);
+// GoogleTest prints a build parameter by its name.
+inline void PrintTo(const RtlBuild* b, std::ostream* os) { *os << b->name; }
+// Where the modules are looked for: $ACORE_RTL_DIR, else rtl/ beside the running program, else
+// the build tree's rtl/ this program was built in.
+std::string rtl_plugin_dir();
 
 }  // namespace acore

@@ -1,102 +1,56 @@
 // SPDX-License-Identifier: MIT
 #include "rtl_engine.hpp"
 
-#include <verilated.h>
-#include <verilated_fst_c.h>
-
 #include "core/errors.hpp"
-#include "rtl_builds.hpp"
 
 namespace acore {
 
-namespace {
-std::string available_builds() {
-  std::string s;
-  for (const RtlBuild& b : rtl_builds()) s += "\n  " + b.name + ": " + b.config().describe();
-  return s;
-}
-}  // namespace
-
-const RtlBuild& rtl_build_for(const DatapathConfig& cfg) {
-  for (const RtlBuild& b : rtl_builds())
-    if (b.config().describe() == cfg.describe()) return b;
-  throw InputError("no Verilated build of the RTL has the configuration " + cfg.describe() +
-                   "; add it to rtl/configs.txt and rebuild. Available:" + available_builds());
-}
-
-const RtlBuild& rtl_build_named(const std::string& name) {
-  for (const RtlBuild& b : rtl_builds())
-    if (b.name == name) return b;
-  throw InputError("no Verilated build of the RTL is named '" + name +
-                   "'. Available:" + available_builds());
-}
-
 struct RtlHarness::Impl {
-  std::unique_ptr<VerilatedContext> ctx;
-  std::unique_ptr<RtlPins> top;
-  std::unique_ptr<VerilatedFstC> tfp;
+  const RtlBuild* build = nullptr;
+  const rtl::PluginInfo* info = nullptr;
+  std::unique_ptr<rtl::TopModel> top;
   uint64_t cycles = 0;
-  DatapathConfig cfg;
-  int latency = 0;
-  int cycles_per_sample = 1;
-  void eval() {
-    top->eval();
-    if (tfp) tfp->dump(ctx->time());
-  }
+  uint32_t in_mask = 0;
 };
 
-int RtlHarness::latency() const { return impl_->latency; }
-int RtlHarness::cycles_per_sample() const { return impl_->cycles_per_sample; }
-const DatapathConfig& RtlHarness::config() const { return impl_->cfg; }
-
-RtlHarness::RtlHarness(const std::string& trace, int rand_reset, uint64_t seed,
-                       const DatapathConfig& cfg)
+RtlHarness::RtlHarness(const RtlBuild& build, const std::string& trace, int rand_reset,
+                       uint64_t seed)
     : impl_(new Impl) {
-  const RtlBuild& build = rtl_build_for(cfg);
-  impl_->cfg = cfg;
-  impl_->latency = build.latency;
-  impl_->cycles_per_sample = build.cycles;
-  impl_->ctx = std::make_unique<VerilatedContext>();
-  impl_->ctx->randReset(rand_reset);
-  impl_->ctx->randSeed(static_cast<int>(seed & 0x7fffffff));
-  if (!trace.empty()) impl_->ctx->traceEverOn(true);
-  impl_->top = build.make(impl_->ctx.get(), "acore_top");
-  if (!trace.empty()) {
-    impl_->tfp = std::make_unique<VerilatedFstC>();
-    impl_->top->trace(impl_->tfp.get());
-    impl_->tfp->open(trace.c_str());
-  }
-  RtlPins& t = *impl_->top;
-  t.set_clk(false);
-  t.set_rst(false);
+  if (build.top == RtlTop::kShell)
+    throw InputError("RtlHarness drives a top; '" + build.name + "' is the register shell");
+  impl_->build = &build;
+  impl_->info = &build.plugin();
+  rtl::SimOptions opt;
+  opt.trace = trace.empty() ? nullptr : trace.c_str();
+  opt.rand_reset = rand_reset;
+  opt.seed = seed;
+  impl_->top.reset(impl_->info->make_top(opt));
+  impl_->in_mask = static_cast<uint32_t>((uint64_t{1} << build.cfg.in_w) - 1);
+  rtl::TopModel& t = *impl_->top;
   t.set_reg(0, 0, false);
   t.set_in(false, {0, 0, 0, 0}, 0);
   t.set_out_ready(true);
-  set_window(StatusWindow::defaults(impl_->cfg));
-  impl_->eval();
+  set_window(StatusWindow::defaults(build.cfg));
+  t.eval(true);
 }
 
-RtlHarness::~RtlHarness() {
-  impl_->top->final();
-  if (impl_->tfp) impl_->tfp->close();
-}
+RtlHarness::~RtlHarness() = default;
+
+int RtlHarness::latency() const { return impl_->info->latency; }
+int RtlHarness::cycles_per_sample() const { return impl_->info->cycles; }
+const DatapathConfig& RtlHarness::config() const { return impl_->build->cfg; }
+const RtlBuild& RtlHarness::build() const { return *impl_->build; }
 
 void RtlHarness::tick() {
-  Impl& m = *impl_;
-  m.top->set_clk(true);
-  m.ctx->timeInc(1);
-  m.eval();
-  m.top->set_clk(false);
-  m.ctx->timeInc(1);
-  m.eval();
-  ++m.cycles;
+  impl_->top->tick();
+  ++impl_->cycles;
 }
 
 uint64_t RtlHarness::cycles() const { return impl_->cycles; }
 
 void RtlHarness::set_reset(bool rst) {
   impl_->top->set_rst(rst);
-  impl_->eval();
+  impl_->top->eval(true);
 }
 
 void RtlHarness::reset(int cycles) {
@@ -108,7 +62,7 @@ void RtlHarness::reset(int cycles) {
 
 void RtlHarness::drive_host(int addr, bool we, uint64_t wdata) {
   impl_->top->set_reg(static_cast<uint32_t>(addr), wdata, we);
-  impl_->eval();
+  impl_->top->eval(true);
 }
 
 void RtlHarness::write_reg(int addr, uint64_t value) {
@@ -121,12 +75,13 @@ void RtlHarness::load(const RegImage& img) {
   for (size_t a = 0; a < img.words.size(); ++a) write_reg(static_cast<int>(a), img.words[a]);
   for (size_t a = 0; a < img.words.size(); ++a)
     if (read_reg(static_cast<int>(a)) != img.words[a])
-      throw CheckFailed("RTL register " + std::to_string(a) + " read back differs from the image");
+      throw CheckFailed("RTL register " + std::to_string(a) + " of build " + impl_->build->name +
+                        " read back differs from the image");
 }
 
 uint64_t RtlHarness::read_reg(int addr) {
   drive_host(addr, false, 0);
-  // The read-back is pipelined over two clocks (rtl/acore_coef_regfile.v).
+  // The read-back is pipelined over two clocks on both tops.
   tick();
   tick();
   return impl_->top->reg_rdata();
@@ -135,18 +90,17 @@ uint64_t RtlHarness::read_reg(int addr) {
 uint64_t RtlHarness::reg_rdata() const { return impl_->top->reg_rdata(); }
 
 void RtlHarness::set_window(const StatusWindow& w) {
-  const int64_t max = (int64_t{1} << (impl_->cfg.s_w + 2)) - 1;
+  const int64_t max = (int64_t{1} << (config().s_w + 2)) - 1;
   if (w.mag_lo < 0 || w.mag_hi < 0 || w.mag_lo > max || w.mag_hi > max)
     throw InputError("status window outside the RTL's unsigned MAG_W-bit ports");
   impl_->top->set_window(static_cast<uint64_t>(w.mag_lo), static_cast<uint64_t>(w.mag_hi));
 }
 
 void RtlHarness::drive(bool in_valid, const ChannelCodes& c, bool out_ready) {
-  RtlPins& t = *impl_->top;
-  const uint32_t mask = static_cast<uint32_t>((uint64_t{1} << impl_->cfg.in_w) - 1);
-  t.set_in(in_valid, c, mask);
+  rtl::TopModel& t = *impl_->top;
+  t.set_in(in_valid, c, impl_->in_mask);
   t.set_out_ready(out_ready);
-  t.eval();  // settle in_ready_o, which depends on out_ready_i
+  t.eval(false);  // settle in_ready_o, which depends on out_ready_i
 }
 
 bool RtlHarness::in_ready() const { return impl_->top->in_ready(); }
@@ -167,6 +121,9 @@ std::vector<FixedSample> RtlHarness::stream(const std::vector<ChannelCodes>& in,
   const bool random = gaps > 0 || backpressure > 0;
   size_t next = 0;
   // Enough clocks for every sample plus the pipeline, even with random stalls (bounded).
+  const uint64_t limit = impl_->cycles + 1000 +
+                         100 * (in.size() + 1) * static_cast<uint64_t>(cycles_per_sample()) +
+                         static_cast<uint64_t>(latency());
   while (out.size() < in.size()) {
     const bool valid = next < in.size() && (!random || gaps <= 0 || u(rng) >= gaps);
     const bool ready = !random || backpressure <= 0 || u(rng) >= backpressure;
@@ -174,7 +131,8 @@ std::vector<FixedSample> RtlHarness::stream(const std::vector<ChannelCodes>& in,
     if (valid && in_ready()) ++next;
     if (ready && out_valid()) out.push_back(output());
     tick();
-    if (impl_->cycles > (uint64_t{1} << 40)) throw CheckFailed("RTL stream does not finish");
+    if (impl_->cycles > limit)
+      throw CheckFailed("RTL stream of build " + impl_->build->name + " does not finish");
   }
   return out;
 }
@@ -183,10 +141,12 @@ std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelC
                                  const RtlRunOptions& opt) {
   DatapathConfig cfg = img.cfg;
   if (opt.fold != 0) {
+    if (opt.top != RtlTop::kPipelined && opt.fold != 1)
+      throw InputError("a fold factor applies to the pipelined top only");
     cfg.fold = opt.fold;
     cfg.validate();
   }
-  RtlHarness h(opt.trace, 2, opt.seed, cfg);
+  RtlHarness h(rtl_build_for(opt.top, cfg), opt.trace, 2, opt.seed);
   h.set_window(opt.window ? *opt.window : StatusWindow::defaults(img.cfg));
   h.reset();
   h.load(img);

@@ -6,7 +6,7 @@
 // firmware driver performs (load the shadow, commit under a CRC check, poll STATUS). Everything
 // advances in tick(), so the host talks to the shell while samples flow.
 //
-//   ShellDriver d(ShellTop::kSerial);
+//   ShellDriver d(rtl_build_named("apb_serial"));
 //   d.reset();
 //   d.write_shadow(img);                                    // 0x400 + 4a <- word a
 //   uint32_t st = d.commit(true, image_crc32(img));         // CRC_EXPECTED, CTRL.COMMIT, poll BUSY
@@ -22,21 +22,13 @@
 
 #include "engine/fixed_model.hpp"
 #include "regmap/regimage.hpp"
-#include "shell_pins.hpp"
+#include "rtl_builds.hpp"
 #include "shell_regs.hpp"
 
 namespace acore {
 
-// Which top the shell wraps and in which configuration: one Verilated build each
-// (tb/CMakeLists.txt): both tops in the default configuration, and with the ZERO word (the
-// pipelined top as rtl/configs.txt's zero_none_k4, Fourier words before the ZERO word; the serial
-// core as rtl/serial_zero.cfg).
-enum class ShellTop { kPipelined, kSerial, kPipelinedZero, kSerialZero };
-const char* shell_top_name(ShellTop t);
-bool shell_is_serial(ShellTop t);
-// The build's datapath parameters (RTL -G form, "" = defaults) and their DatapathConfig.
-const char* shell_top_params(ShellTop t);
-DatapathConfig shell_top_config(ShellTop t);
+// The shell's builds are the registry's acore_apb lines with the `sim` flow (rtl_builds.hpp):
+// build.serial tells which top it wraps, build.cfg that top's configuration.
 
 // One APB transfer; done, rdata, slverr and cycle are filled in when its access phase completes.
 struct ApbTransfer {
@@ -58,7 +50,7 @@ struct ShellOutput {
 class ShellDriver {
  public:
   // trace: FST file ("" = none); rand_reset: Verilated::randReset mode (2 = random initial state).
-  explicit ShellDriver(ShellTop top, const std::string& trace = "", int rand_reset = 2,
+  explicit ShellDriver(const RtlBuild& build, const std::string& trace = "", int rand_reset = 2,
                        uint64_t seed = 1);
   ~ShellDriver();
   ShellDriver(const ShellDriver&) = delete;
@@ -116,10 +108,10 @@ class ShellDriver {
   // a reset dropped samples in flight) and the APB queue is empty; CheckFailed after max_cycles.
   static constexpr size_t kAllQueued = ~size_t{0};
   void drain(size_t outputs = kAllQueued, uint64_t max_cycles = 50'000'000);
-  ShellPins& pins();
+  rtl::ShellModel& pins();
 
   // ---- the build ----
-  ShellTop top() const;
+  const RtlBuild& build() const;
   const DatapathConfig& config() const;
   // A Verilator-public parameter of the wrapped top (LATENCY; CYCLES for the serial core).
   uint32_t top_param(const char* name) const;

@@ -60,18 +60,13 @@ RegImage random_image_for(const DatapathConfig& c, std::mt19937_64& rng) {
 
 std::string show(const FixedSample& s) { return cosim::show(s); }
 
-class Shell : public ::testing::TestWithParam<ShellTop> {
+class Shell : public ::testing::TestWithParam<const RtlBuild*> {
  protected:
-  bool serial() const { return shell_is_serial(GetParam()); }
+  bool serial() const { return GetParam()->serial; }
   // The build's configuration, its paper image and random images (cached per build).
-  const DatapathConfig& cfg() const {
-    static std::map<ShellTop, DatapathConfig> cache;
-    auto it = cache.find(GetParam());
-    if (it == cache.end()) it = cache.emplace(GetParam(), shell_top_config(GetParam())).first;
-    return it->second;
-  }
+  const DatapathConfig& cfg() const { return GetParam()->cfg; }
   const RegImage& paper_image() const {
-    static std::map<ShellTop, RegImage> cache;
+    static std::map<const RtlBuild*, RegImage> cache;
     auto it = cache.find(GetParam());
     if (it == cache.end()) it = cache.emplace(GetParam(), paper_image_for(cfg())).first;
     return it->second;
@@ -91,7 +86,7 @@ uint32_t wait_passes(ShellDriver& d, uint32_t from, uint32_t passes) {
 }
 
 TEST_P(Shell, IdAndConfigMatchTheParametersAndTheMeasuredLatency) {
-  ShellDriver d(GetParam());
+  ShellDriver d(*GetParam());
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
   const DatapathConfig& c = cfg();
@@ -158,7 +153,7 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
     EXPECT_GT(differ, 150u) << "images " << g - 1 << " and " << g << " agree too often";
   }
 
-  ShellDriver d(GetParam(), "", 2, 5);
+  ShellDriver d(*GetParam(), "", 2, 5);
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));  // the models' LOS/DOS window
   d.set_ctrl(sh::kCtrlScrub | sh::kCtrlCrcCheck);
@@ -244,7 +239,7 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
   std::printf(
       "%s: %zu samples, %d images, %zu mismatches, %zu tag errors, %llu clocks; status 0x%x, %u "
       "scrub passes\n",
-      shell_top_name(GetParam()), in.size(), n_images, mismatches, tag_errors,
+      GetParam()->name.c_str(), in.size(), n_images, mismatches, tag_errors,
       static_cast<unsigned long long>(d.cycles()), st, d.read(sh::kScrubPasses));
   EXPECT_EQ(mismatches, 0u) << first;
   EXPECT_EQ(tag_errors, 0u);
@@ -263,7 +258,7 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
   // Measured as the clocks with in_ready low (out_ready high throughout).
   const uint32_t words = cfg().words(), steps = 32 / crc_w(),
                  pass = 7 + (crc_w() >= 16) + words * steps;
-  ShellDriver d(GetParam());
+  ShellDriver d(*GetParam());
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
   ASSERT_EQ(d.load_and_commit(paper_image()) & sh::kStCrcShadow, 0u);
@@ -279,7 +274,7 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
     }
     const uint64_t expect = pass + words + 4;
     std::printf("%s: commit with an idle core: %llu clocks busy (closed form %llu)\n",
-                shell_top_name(GetParam()), static_cast<unsigned long long>(busy),
+                GetParam()->name.c_str(), static_cast<unsigned long long>(busy),
                 static_cast<unsigned long long>(expect));
     EXPECT_EQ(busy, expect);
   }
@@ -296,7 +291,7 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
       commit_at = t->cycle;
     }
     if (committed && !resumed) {
-      d.pins().eval();
+      d.pins().eval(true);
       if (d.pins().in_ready())
         resumed = true;
       else
@@ -312,7 +307,7 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
       "%s: commit while streaming: %llu input clocks lost (drain %llu, closed form %llu; %u words, "
       "LATENCY %u, "
       "CRC %u bits/clock)\n",
-      shell_top_name(GetParam()), static_cast<unsigned long long>(lost),
+      GetParam()->name.c_str(), static_cast<unsigned long long>(lost),
       static_cast<unsigned long long>(drain), static_cast<unsigned long long>(expect), words,
       latency, crc_w());
   EXPECT_EQ(lost, expect);
@@ -326,7 +321,7 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
 }
 
 TEST_P(Shell, InReadyIsLowInResetAndNothingIsTaken) {
-  ShellDriver d(GetParam(), "", 2, 9);
+  ShellDriver d(*GetParam(), "", 2, 9);
   d.reset();
   d.load_and_commit(paper_image());
   // Reset values the window (MAG_LO = 0, MAG_HI = all ones): the model's never flags either.
@@ -374,7 +369,7 @@ TEST_P(Shell, InReadyIsLowInResetAndNothingIsTaken) {
 TEST_P(Shell, EverySingleBitFlipOfTheShadowIsRefusedByTheCrc) {
   const RegImage img = paper_image();
   const uint32_t crc = image_crc32(img);
-  ShellDriver d(GetParam());
+  ShellDriver d(*GetParam());
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
   uint32_t st = d.load_and_commit(img);
@@ -398,7 +393,7 @@ TEST_P(Shell, EverySingleBitFlipOfTheShadowIsRefusedByTheCrc) {
     d.write(sh::kWindow + 4 * a, static_cast<uint32_t>(img.words[a]));
   }
   const size_t flips = static_cast<size_t>(cfg().words()) * cfg().reg_w;
-  std::printf("%s: %zu single-bit flips of the shadow, %zu refused\n", shell_top_name(GetParam()),
+  std::printf("%s: %zu single-bit flips of the shadow, %zu refused\n", GetParam()->name.c_str(),
               flips, refused);
   EXPECT_EQ(refused, flips);
   EXPECT_EQ(applied, 0u);
@@ -426,7 +421,7 @@ TEST_P(Shell, EverySingleBitFlipOfTheShadowIsRefusedByTheCrc) {
 TEST_P(Shell, EverySingleBitFlipOfTheActiveWordsIsFoundByTheScrubber) {
   const RegImage img = paper_image();
   const uint32_t crc = image_crc32(img);
-  ShellDriver d(GetParam());
+  ShellDriver d(*GetParam());
   d.reset();
   // Before any commit the scrubber reads but has nothing to compare with.
   EXPECT_EQ(d.read(sh::kStatus) & sh::kStRefValid, 0u);
@@ -453,7 +448,7 @@ TEST_P(Shell, EverySingleBitFlipOfTheActiveWordsIsFoundByTheScrubber) {
   }
   const size_t flips = static_cast<size_t>(cfg().words()) * cfg().reg_w;
   std::printf("%s: %zu single-bit upsets of the active words, %zu found\n",
-              shell_top_name(GetParam()), flips, found);
+              GetParam()->name.c_str(), flips, found);
   EXPECT_EQ(found, flips);
   EXPECT_EQ(crc_wrong, 0u);
   EXPECT_EQ(false_alarms, 0u);
@@ -477,7 +472,7 @@ TEST_P(Shell, EverySingleBitFlipOfTheActiveWordsIsFoundByTheScrubber) {
 }
 
 TEST_P(Shell, ResetValuesAndReadWriteOfEveryRegister) {
-  ShellDriver d(GetParam(), "", 2, 13);
+  ShellDriver d(*GetParam(), "", 2, 13);
   d.reset();
   const uint32_t mag_mask = (uint32_t{1} << (cfg().s_w + 2)) - 1,
                  reg_mask = (uint32_t{1} << cfg().reg_w) - 1;
@@ -493,7 +488,7 @@ TEST_P(Shell, ResetValuesAndReadWriteOfEveryRegister) {
   const uint32_t p1 = wait_passes(d, d.read(sh::kScrubPasses), 1);
   const uint64_t t1 = d.cycles();
   wait_passes(d, p1, 4);
-  std::printf("%s: a scrubber pass takes %.1f clocks (idle core)\n", shell_top_name(GetParam()),
+  std::printf("%s: a scrubber pass takes %.1f clocks (idle core)\n", GetParam()->name.c_str(),
               (d.cycles() - t1) / 4.0);
   std::mt19937_64 rng(21);
   for (int k = 0; k < 20; ++k) {
@@ -531,7 +526,7 @@ TEST_P(Shell, ResetValuesAndReadWriteOfEveryRegister) {
 }
 
 TEST_P(Shell, StickyStatusW1CAndIrq) {
-  ShellDriver d(GetParam(), "", 2, 17);
+  ShellDriver d(*GetParam(), "", 2, 17);
   d.reset();
   std::mt19937_64 rng(23);
   // Sticky OVF/LOS/DOS are the OR of the flags of the outputs delivered since the last clear.
@@ -599,7 +594,7 @@ TEST_P(Shell, StickyStatusW1CAndIrq) {
 }
 
 TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
-  ShellDriver d(GetParam(), "", 2, 29);
+  ShellDriver d(*GetParam(), "", 2, 29);
   d.reset();
   // Every word address of the 4 KiB space: reads succeed exactly on the map.
   const std::vector<uint32_t> regs = {sh::kId,      sh::kConfig0,  sh::kConfig1,     sh::kConfig2,
@@ -670,7 +665,7 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   EXPECT_EQ(d.read(sh::kCrcExpected), image_crc32(paper_image()));
   d.drain();
   const ShellDriver::ApbStats& s = d.apb_stats();
-  std::printf("%s: %llu APB transfers, %llu wait states\n", shell_top_name(GetParam()),
+  std::printf("%s: %llu APB transfers, %llu wait states\n", GetParam()->name.c_str(),
               static_cast<unsigned long long>(s.transfers),
               static_cast<unsigned long long>(s.wait_states));
   EXPECT_EQ(s.wait_states, 0u);
@@ -678,20 +673,10 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   EXPECT_EQ(s.stray_prdata, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shell, Shell,
-                         ::testing::Values(ShellTop::kPipelined, ShellTop::kSerial,
-                                           ShellTop::kPipelinedZero, ShellTop::kSerialZero),
-                         [](const ::testing::TestParamInfo<ShellTop>& i) {
-                           switch (i.param) {
-                             case ShellTop::kSerial:
-                               return "Serial";
-                             case ShellTop::kPipelinedZero:
-                               return "PipelinedZeroNoneK4";
-                             case ShellTop::kSerialZero:
-                               return "SerialZero";
-                             default:
-                               return "Pipelined";
-                           }
+// Every build of the shell in the registry (rtl/configs.txt: acore_apb lines with `sim`).
+INSTANTIATE_TEST_SUITE_P(Shell, Shell, ::testing::ValuesIn(rtl_builds_of(RtlTop::kShell)),
+                         [](const ::testing::TestParamInfo<const RtlBuild*>& i) {
+                           return i.param->name;
                          });
 
 }  // namespace

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The 16-bit stand-alone CORDIC (rtl/cordic16.cfg: 16-bit x/y, 16-bit angle, full circle, NORM=1):
+// The 16-bit stand-alone CORDIC (the registry line cordic16: 16-bit x/y, 16-bit angle, full circle,
+// NORM=1):
 //  1. the Verilated RTL equals the C++ model (model/cordic.cpp) bit for bit on a sweep of the input
 //     square plus its edges and every short vector;
 //  2. the model's angle error against double-precision atan2 of the integer inputs, in output
 //     LSBs (one turn = 2^16): at most 0.5 RMS and 1 max over a dense sweep (every 6th code in x and
 //     y, every vector with |x|,|y| <= 300, the edges);
 //  3. no register of the RTL's widths overflows: |X| < 2^(XY_W-1) and |Y_i| < 2^(YW(i)-1).
-// ACORE_CORDIC16_FULL=1 in the environment sweeps all 2^32 inputs instead (about 15 minutes).
+// ACORE_C16_FULL=1 in the environment sweeps all 2^32 inputs instead (about 15 minutes).
 #include <gtest/gtest.h>
 #include <verilated.h>
 
@@ -16,7 +17,7 @@
 #include <functional>
 #include <memory>
 
-#include "Vacore_cordic16.h"
+#include "Vcordic16.h"
 #include "stages/cordic.hpp"
 
 namespace acore {
@@ -24,18 +25,18 @@ namespace {
 
 CordicConfig c16() {
   CordicConfig c;
-  c.in_w = ACORE_C16_IN_W;
-  c.guard = ACORE_C16_G;
-  c.z_w = ACORE_C16_Z_W;
-  c.angle_w = ACORE_C16_ANGLE_W;
-  c.iterations = ACORE_C16_K;
-  c.normalize = ACORE_C16_NORM != 0;
+  c.in_w = ACORE_CORDIC16_IN_W;
+  c.guard = ACORE_CORDIC16_G;
+  c.z_w = ACORE_CORDIC16_Z_W;
+  c.angle_w = ACORE_CORDIC16_ANGLE_W;
+  c.iterations = ACORE_CORDIC16_K;
+  c.normalize = ACORE_CORDIC16_NORM != 0;
   return c;
 }
 
 // Every input of the test set, in a fixed order: sweep with a stride, short vectors, edges.
 void for_each_input(int stride, int short_max, const std::function<void(int, int)>& f) {
-  const int lo = -(1 << (ACORE_C16_IN_W - 1)), hi = (1 << (ACORE_C16_IN_W - 1)) - 1;
+  const int lo = -(1 << (ACORE_CORDIC16_IN_W - 1)), hi = (1 << (ACORE_CORDIC16_IN_W - 1)) - 1;
   for (int x = lo; x <= hi; x += stride)
     for (int y = lo; y <= hi; y += stride) f(x, y);
   for (int x = -short_max; x <= short_max; ++x)
@@ -53,10 +54,10 @@ TEST(Cordic16, RtlEqualsModel) {
   const auto table = cordic_atan_table(cfg.z_w, cfg.iterations);
   auto ctx = std::make_unique<VerilatedContext>();
   ctx->randReset(2);
-  auto top = std::make_unique<Vacore_cordic16>(ctx.get());
+  auto top = std::make_unique<Vcordic16>(ctx.get());
   for (int i = 0; i < cfg.iterations; ++i)
-    for (int b = 0; b < ACORE_C16_AT_W; ++b) {
-      const int bit = i * ACORE_C16_AT_W + b;
+    for (int b = 0; b < ACORE_CORDIC16_AT_W; ++b) {
+      const int bit = i * ACORE_CORDIC16_AT_W + b;
       if ((table[i] >> b) & 1)
         top->atan_i[bit / 32] |= 1u << (bit % 32);
       else
@@ -66,7 +67,8 @@ TEST(Cordic16, RtlEqualsModel) {
   top->clk_i = 0;
   top->eval();
   // LATENCY of rtl/acore_cordic.v: NORM 5 clocks, K stages of SPLIT+1 clocks, output 1 clock.
-  const int latency = (ACORE_C16_NORM ? 5 : 1) + cfg.iterations * (ACORE_C16_SPLIT + 1) + 1;
+  const int latency =
+      (ACORE_CORDIC16_NORM ? 5 : 1) + cfg.iterations * (ACORE_CORDIC16_SPLIT + 1) + 1;
   size_t n = 0, bad = 0;
   auto clock = [&](int x, int y) {
     top->x_i = static_cast<uint16_t>(x);
@@ -149,7 +151,7 @@ TEST(Cordic16, AccuracyAndNoOverflow) {
     }
     ++n;
   };
-  const bool full = std::getenv("ACORE_CORDIC16_FULL") != nullptr;
+  const bool full = std::getenv("ACORE_C16_FULL") != nullptr;
   for_each_input(full ? 1 : 6, full ? 0 : 300, check);
   const double rms = std::sqrt(se / n);
   char line[256];

@@ -37,6 +37,18 @@ struct MulParams {
   int init_at() const { return latency() - f; }
 };
 
+// The registry's parameter sets (rtl/configs.txt lines fold_mul_*, ACORE_FOLD_MUL_<SET>_<PARAM>).
+#define ACORE_FOLD_MUL_PARAMS(S)                                                            \
+  MulParams {                                                                               \
+    ACORE_FOLD_MUL_##S##_A_W, ACORE_FOLD_MUL_##S##_B_W, ACORE_FOLD_MUL_##S##_B_SIGNED,      \
+        ACORE_FOLD_MUL_##S##_RSHIFT, ACORE_FOLD_MUL_##S##_INIT_W, ACORE_FOLD_MUL_##S##_P_W, \
+        ACORE_FOLD_MUL_##S##_F                                                              \
+  }
+MulParams params_h2() { return ACORE_FOLD_MUL_PARAMS(H2); }
+MulParams params_h4() { return ACORE_FOLD_MUL_PARAMS(H4); }
+MulParams params_s4() { return ACORE_FOLD_MUL_PARAMS(S4); }
+MulParams params_r2() { return ACORE_FOLD_MUL_PARAMS(R2); }
+
 int64_t random_value(std::mt19937_64& rng, int w, bool is_signed) {
   const uint64_t r = rng();
   const int64_t lo = is_signed ? -(int64_t{1} << (w - 1)) : 0;
@@ -108,23 +120,23 @@ void run(const MulParams& p, uint64_t seed, bool gaps) {
 }
 
 TEST(FoldMul, HornerStepOverTwoClocks) {
-  run<Vfold_mul_h2>({25, 18, 1, 16, 25, 29, 2}, 1, false);
-  run<Vfold_mul_h2>({25, 18, 1, 16, 25, 29, 2}, 2, true);
+  run<Vfold_mul_h2>(params_h2(), 1, false);
+  run<Vfold_mul_h2>(params_h2(), 2, true);
 }
 
 TEST(FoldMul, HornerStepOverFourClocks) {
-  run<Vfold_mul_h4>({25, 18, 1, 16, 25, 29, 4}, 3, false);
-  run<Vfold_mul_h4>({25, 18, 1, 16, 25, 29, 4}, 4, true);
+  run<Vfold_mul_h4>(params_h4(), 3, false);
+  run<Vfold_mul_h4>(params_h4(), 4, true);
 }
 
 TEST(FoldMul, ScalerProductOverFourClocks) {
-  run<Vfold_mul_s4>({19, 18, 0, 9, 5, 30, 4}, 5, false);
-  run<Vfold_mul_s4>({19, 18, 0, 9, 5, 30, 4}, 6, true);
+  run<Vfold_mul_s4>(params_s4(), 5, false);
+  run<Vfold_mul_s4>(params_s4(), 6, true);
 }
 
 TEST(FoldMul, ShiftBeyondTheMultiplierWidth) {
-  run<Vfold_mul_r2>({20, 12, 1, 14, 20, 23, 2}, 7, false);
-  run<Vfold_mul_r2>({20, 12, 1, 14, 20, 23, 2}, 8, true);
+  run<Vfold_mul_r2>(params_r2(), 7, false);
+  run<Vfold_mul_r2>(params_r2(), 8, true);
 }
 
 }  // namespace

@@ -15,7 +15,6 @@
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "rtl_engine.hpp"
-#include "rtl_serial_builds.hpp"
 
 namespace acore::cli {
 
@@ -48,8 +47,8 @@ void run_cosim(const CosimArgs& a) {
   opt.backpressure = a.backpressure;
   opt.gaps = a.backpressure;
   opt.fold = a.fold;
-  const std::vector<FixedSample> rtl =
-      engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial_for(img, codes, opt);
+  opt.top = engine == Engine::Rtl ? RtlTop::kPipelined : RtlTop::kSerial;
+  const std::vector<FixedSample> rtl = run_rtl(img, codes, opt);
   const FixedModel model(img);
   size_t bad = 0;
   nlohmann::json first = nullptr;

@@ -23,7 +23,6 @@
 #include "sweep/design_space.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
-#include "rtl_serial_builds.hpp"
 #endif
 
 namespace acore::cli {
@@ -85,7 +84,7 @@ void run_demo(const DemoArgs& a) {
   std::ostringstream md;
   nlohmann::json js;
   std::cout << fmt::format(
-      "AngleCore demo: paper scenario (docs/contracts.md, paper scenario), {} samples per "
+      "AngleCore demo: paper scenario (docs/contracts.md), {} samples per "
       "recording, "
       "calibration seed {}, validation seed {}\n\n",
       a.samples, a.seed_cal, a.seed_val);
@@ -122,8 +121,9 @@ void run_demo(const DemoArgs& a) {
     e_rtl = angle_error_deg(series_from_fixed(out, run.img).angle, val.theta_ref);
     rows.push_back({"ours, corrected, RTL (Verilator)", error_stats(e_rtl)});
     // The serial core (226 clocks a sample) on the same image: bit-exact to the same model.
-    const auto ser = run_rtl_serial_for(run.img, to_codes(val, run.img.in_scale, run.img.cfg.in_w),
-                                        RtlRunOptions{});
+    RtlRunOptions serial;
+    serial.top = RtlTop::kSerial;
+    const auto ser = run_rtl(run.img, to_codes(val, run.img.in_scale, run.img.cfg.in_w), serial);
     rows.push_back(
         {"ours, corrected, serial RTL",
          error_stats(angle_error_deg(series_from_fixed(ser, run.img).angle, val.theta_ref))});
@@ -151,7 +151,7 @@ void run_demo(const DemoArgs& a) {
 
   md << "# AngleCore demo report\n\n";
   md << fmt::format(
-      "Paper scenario (docs/contracts.md, paper scenario), {} samples per recording; calibration "
+      "Paper scenario (docs/contracts.md), {} samples per recording; calibration "
       "seed {}, "
       "validation seed {}. Command: `anglecore demo --samples {}`.\n\n",
       a.samples, a.seed_cal, a.seed_val, a.samples);

@@ -16,7 +16,6 @@
 #include "engine/estimator.hpp"
 #ifdef ACORE_WITH_RTL
 #include "rtl_engine.hpp"
-#include "rtl_serial_builds.hpp"
 #endif
 
 namespace acore::cli {
@@ -63,8 +62,8 @@ void run_estimate(const EstimateArgs& a) {
       const auto codes = to_codes(rec, img.in_scale, img.cfg.in_w);
       RtlRunOptions opt;
       opt.fold = a.fold;
-      const auto rows =
-          engine == Engine::Rtl ? run_rtl(img, codes, opt) : run_rtl_serial_for(img, codes, opt);
+      opt.top = engine == Engine::Rtl ? RtlTop::kPipelined : RtlTop::kSerial;
+      const auto rows = run_rtl(img, codes, opt);
       s = series_from_fixed(rows, img);
       // The RTL has no uncorrected output: take it from the bit-accurate model (same front end).
       s.uncorrected = run_fixed(rec, img).uncorrected;

@@ -98,6 +98,10 @@ struct DatapathConfig {
   // The ZERO word: the last word of the map (after the atan words and the Fourier words).
   int addr_zero() const { return 4 + poly_words() + iterations + fourier_words(); }
 
+  // Field equality (every parameter, FOLD included): how a Verilated build is found for an image.
+  bool operator==(const DatapathConfig& o) const { return rtl_params() == o.rtl_params(); }
+  bool operator!=(const DatapathConfig& o) const { return !(*this == o); }
+
   // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
   void validate() const;
   // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0,

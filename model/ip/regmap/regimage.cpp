@@ -225,9 +225,7 @@ RegImage read_regimage(const std::string& path) {
 
 std::string format_regimage(const RegImage& img) {
   const DatapathConfig& c = img.cfg;
-  std::string out =
-      "// AngleCore coefficient register image ($readmemh), docs/contracts.md, register image "
-      "map\n";
+  std::string out = "// AngleCore coefficient register image ($readmemh), docs/register-map.md\n";
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
   out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
