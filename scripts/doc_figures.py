@@ -15,7 +15,8 @@ root (synth/reports/*.md, docs/reports/*); the options are shell words (quote va
                                                 the rows whose first cell matches REGEX, only the
                                                 named columns, then a line naming the source
   text SOURCE [from=REGEX] [to=REGEX]           SOURCE's lines (from the first line matching `from`
-                                                through the next matching `to`) as a code block
+                                                through the next matching `to`) as a code block,
+                                                headed by SOURCE's "$ command" line
   cell SOURCE [n=N] row=REGEX col=NAME          one cell of a Markdown table (inline)
   json SOURCE view=NAME                         a view of a JSON report written by this script's
                                                 renderers (demo, timings)
@@ -187,7 +188,11 @@ def fig_text(root, doc, source, opts):
         if not hits:
             raise FigureError(f"{source}: no line matches to={opts['to']!r}")
         end = hits[0] + 1
-    return ["```"] + lines[start:end] + ["```", "", source_line(doc, source)]
+    # The report's command line ("$ ...") heads every excerpt of it.
+    head = [lines[0]] if start > 0 and lines and lines[0].startswith("$ ") else []
+    if head and start > 1:
+        head.append("...")
+    return ["```"] + head + lines[start:end] + ["```", "", source_line(doc, source)]
 
 
 def fmt_duration(seconds):
@@ -283,9 +288,9 @@ def generate(root, doc, spec):
 
 
 def rewrite(root, doc, text):
-    """Returns (new text, errors, count of figures)."""
+    """Returns (new text, errors, count of figures, lines of the figures that changed)."""
     lines = text.split("\n")
-    out, errors, count, i, fenced = [], [], 0, 0, False
+    out, errors, count, i, fenced, stale = [], [], 0, 0, False, []
     while i < len(lines):
         line = lines[i]
         if line.lstrip().startswith("```"):
@@ -306,6 +311,8 @@ def rewrite(root, doc, text):
                     raise FigureError("an inline figure must be one value (use a block)")
                 close = line.index(CLOSE, m.end())
                 out.append(line[:m.end()] + body[0] + line[close:])
+                if out[-1] != line:
+                    stale.append(i + 1)
             except FigureError as e:
                 errors.append(f"{where}: {e}")
                 out.append(line)
@@ -326,11 +333,13 @@ def rewrite(root, doc, text):
         except FigureError as e:
             errors.append(f"{where}: {e}")
             body = lines[i + 1:end]
+        if body != lines[i + 1:end]:
+            stale.append(i + 1)
         out.append(line)
         out.extend(body)
         out.append(lines[end])
         i = end + 1
-    return "\n".join(out), errors, count
+    return "\n".join(out), errors, count, stale
 
 
 # ---- links ----
@@ -386,12 +395,14 @@ def check_links(root, doc, text):
 
 def run_docs(root, write):
     errors, changed, figures = [], [], 0
+    stale_at = {}
     for doc in doc_files(root):
         path = os.path.join(root, doc)
         with open(path, encoding="utf-8") as f:
             text = f.read()
-        new, errs, count = rewrite(root, doc, text)
+        new, errs, count, stale = rewrite(root, doc, text)
         figures += count
+        stale_at[doc] = stale
         errors += errs
         errors += check_links(root, doc, new)
         if new != text:
@@ -405,7 +416,8 @@ def run_docs(root, write):
         print(f"doc_figures: {figures} figures, rewrote {', '.join(changed) or 'nothing'}")
         return 1 if errors else 0
     for doc in changed:
-        print(f"doc_figures: {doc}: a figure differs from its report "
+        where = ", ".join(f"{doc}:{n}" for n in stale_at[doc]) or doc
+        print(f"doc_figures: {where}: the figure differs from its report "
               f"(run `python3 scripts/doc_figures.py write` and commit)", file=sys.stderr)
     print(f"doc_figures: {figures} figures in {len(doc_files(root))} files, "
           f"{len(changed)} stale, {len(errors)} errors")
@@ -460,6 +472,19 @@ def without_rtl(lines):
     return [l for l in lines if not RTL_ROW.search(l)]
 
 
+def first_difference(a, b, path="$"):
+    """The first place where two JSON values differ: (path, a's value, b's value)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in sorted(set(a) | set(b)):
+            if a.get(k) != b.get(k):
+                return first_difference(a.get(k), b.get(k), f"{path}.{k}")
+    if isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
+        for i, (x, y) in enumerate(zip(a, b)):
+            if x != y:
+                return first_difference(x, y, f"{path}[{i}]")
+    return path, a, b
+
+
 def demo_check(root, anglecore, no_rtl):
     data = json.loads(read(root, DEMO_REPORT))
     stdout, summary, report = run_demo(anglecore, no_rtl)
@@ -481,11 +506,9 @@ def demo_check(root, anglecore, no_rtl):
                     break
     if summary != want_sum:
         bad += 1
-        for key in sorted(set(summary) | set(want_sum)):
-            if summary.get(key) != want_sum.get(key):
-                print(f"doc_figures: demo summary.json differs in {key!r}:\n  now:      "
-                      f"{json.dumps(summary.get(key))[:400]}\n  recorded: "
-                      f"{json.dumps(want_sum.get(key))[:400]}", file=sys.stderr)
+        path, got, want = first_difference(summary, want_sum)
+        print(f"doc_figures: demo summary.json differs at {path}:\n  now:      "
+              f"{json.dumps(got)[:400]}\n  recorded: {json.dumps(want)[:400]}", file=sys.stderr)
     print(f"doc_figures: demo {'differs from' if bad else 'equals'} {DEMO_REPORT} "
           f"({'without' if no_rtl else 'with'} the RTL rows)")
     return 1 if bad else 0
