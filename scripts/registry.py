@@ -369,7 +369,10 @@ def main(argv):
                 params = " ".join(f"{k}={v}" for k, v in d.params)
                 print(" ".join(x for x in (d.name, d.top, d.source or "-", ",".join(d.flows), params) if x))
         else:
-            return 0 if pcf_covers(args.netlist, args.pcf) else 1
+            try:
+                return 0 if pcf_covers(args.netlist, args.pcf) else 1
+            except (OSError, ValueError, KeyError, StopIteration) as e:
+                raise RegistryError(f"pcf-covers {args.netlist} {args.pcf}: not a Yosys netlist and a PCF ({e})")
     except RegistryError as e:
         print(f"registry: {e}", file=sys.stderr)
         return 2
