@@ -167,8 +167,8 @@ def main():
             "script only reads reports). Every `acore_top` and `acore_serial_top` line of the build registry "
             "`rtl/configs.txt` (pipelined `acore_top`, one sample per clock, or folded to one sample every FOLD "
             "clocks; the serial core `acore_serial_top`, one sample every CYCLES clocks). Words, LATENCY and "
-            "CYCLES are the RTL's own constants (`verilator --xml-only` with the configuration's parameters); area and clock come from the reports named in the last "
-            "column (Yosys 0.23 `synth_ice40`, nextpnr-ice40 0.4 on an HX8K ct256, seed 1). samples/s = Fmax / "
+            "CYCLES are the RTL's own constants (`verilator --xml-only` with the configuration's parameters); "
+            "area and clock come from the reports named in the last column (Yosys 0.23 `synth_ice40`, nextpnr-ice40 0.4 on an HX8K ct256, seed 1). samples/s = Fmax / "
             "clocks per sample. \"≤\": the pipelined top was not placed whole, its clock is bounded by its "
             "slowest stage placed alone (routing congestion of the whole design not included).", "",
             "| configuration | top and parameters | words | LATENCY (clk) | clk/sample | iCE40 LUT4 | HX8K LCs | "

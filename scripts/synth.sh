@@ -78,7 +78,10 @@ while read -r d top src fl params; do
   fi
   FLOWS[$d]=${fl//,/ }
 done <<<"$plan"
-[ ${#designs[@]} -gt 0 ] || { echo "scripts/synth.sh: no synthesis flow (${flows:-generic, xilinx, ice40, pnr}) on ${only:-any registry line}" >&2; exit 2; }
+if [ ${#designs[@]} -eq 0 ]; then
+  echo "scripts/synth.sh: no synthesis flow (${flows:-generic, xilinx, ice40, pnr}) on ${only:-any registry line}" >&2
+  exit 2
+fi
 # No stale reports or netlists of what runs now.
 rm -f "$build/failed"
 for d in "${designs[@]}"; do
