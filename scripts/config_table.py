@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Configuration table: every named configuration of rtl/configs.txt (pipelined top) and of the
-serial core (its defaults and rtl/serial_n5r8.cfg) with its register words, LATENCY, clocks per
-sample, iCE40 LUT4, HX8K logic cells, Fmax and samples/s, written as Markdown.
+"""Configuration table: every acore_top and acore_serial_top line of the build registry
+rtl/configs.txt with its register words, LATENCY, clocks per sample, iCE40 LUT4, HX8K logic cells,
+Fmax and samples/s, written as Markdown.
 
 usage: scripts/config_table.py [--root DIR] [--measure] [--out FILE]
   --out      default synth/reports/config_table.md ("-" = stdout)
@@ -11,95 +11,38 @@ usage: scripts/config_table.py [--root DIR] [--measure] [--out FILE]
              kept in synth/reports/config_table_measured.json and reused by later runs.
 
 Where each figure comes from (the table says it per row):
-  words, LATENCY, CYCLES  the RTL itself: `verilator --xml-only` elaborates the top with the
-                          configuration's parameters and the script reads the top's WORDS, LATENCY
-                          and CYCLES constants.
-  default acore_top       scripts/synth.sh reports: ice40_top.txt (LUT4), nextpnr_top_pnr.log (LCs:
-                          it does not fit an HX8K), Fmax bounded by the slowest stage placed alone
-                          (nextpnr_{scaler,region,poly,cordic_top}_pnr.log).
+  words, LATENCY, CYCLES  the RTL itself: `verilator --xml-only` elaborates the top with the line's
+                          parameters and the script reads the top's WORDS, LATENCY and CYCLES.
+  a line with reports     scripts/synth.sh reports of that line (its ice40 flow: ice40_<name>.txt,
+                          LUT4; its pnr flow: nextpnr_<name>_pnr.log, LCs and Fmax of the whole top
+                          or core in its pin wrapper). When the whole top does not fit the HX8K (the
+                          default acore_top), its Fmax is bounded by its slowest stage placed alone:
+                          the registry's placed lines of the modules it instantiates, at their
+                          defaults (scripts/registry.py default_top_stages).
   other acore_top         the design-space sweep (synth/reports/design_space.csv, the row with the
                           same parameters): LUT4 of the whole top (synth_ice40), Fmax of its slowest
                           stage placed alone; not placed whole (no LCs).
-  default acore_top at    scripts/synth.sh reports: ice40_top_fold<N>.txt (LUT4),
-  FOLD=N (2, 4, 8)        nextpnr_top_fold<N>_pnr.log (LCs, Fmax: the whole top placed and routed).
-  default serial core     scripts/synth.sh reports: ice40_serial.txt (LUT4), nextpnr_serial_pnr.log
-                          (LCs, Fmax; pin constraints synth/acore_hx8k_ct256.pcf).
   other serial            --measure (the serial core placed and routed whole).
 Nothing is synthesized for a pipelined configuration without a report: it says "not measured".
+The parameters' defaults (to match a sweep row) are the RTL's (acore_top's header, elaborated).
 """
 import argparse
+import concurrent.futures
 import csv
 import json
 import os
-import re
 import subprocess
 import sys
-import tempfile
-import xml.etree.ElementTree as ET
 
-DEFAULTS = {
-    "IN_W": 16, "REG_W": 18, "S_W": 18, "S_F": 16, "R_SHIFT": 13, "SCALE_G": 4, "CORRECTION": 0,
-    "DEGREE": 3, "REGIONS": 4, "XCENTER": 0, "COEF_F": 15, "ACC_G": 4, "ACC_I": 6, "K": 16,
-    "CORDIC_G": 3, "Z_W": 20, "ANGLE_W": 16, "FOURIER_K": 0, "FOURIER_M": 12, "FOURIER_CF": 22,
-    "FOURIER_W": 16, "FOURIER_G": 2, "ZERO": 0, "FOLD": 1,
-}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import registry  # noqa: E402
+from registry import cells, pnr_result  # noqa: E402
 
-
-def rtl_constants(root, top, params, names):
-    """The top's elaborated constants (verilator --xml-only with -G overrides)."""
-    rtl = os.path.join(root, "rtl")
-    files = [l.strip() for l in open(os.path.join(rtl, "files.f")) if l.strip().endswith(".v")]
-    with tempfile.TemporaryDirectory(prefix="acore_xml_") as tmp:
-        xml = os.path.join(tmp, "top.xml")
-        r = subprocess.run(["verilator", "--xml-only", "--xml-output", xml, "--Mdir", tmp, "verilator.vlt", *files,
-                            "--top-module", top, *[f"-G{k}={v}" for k, v in params.items()]],
-                           cwd=rtl, capture_output=True, text=True)
-        if r.returncode != 0:
-            raise RuntimeError(f"verilator --xml-only {top} {params}: {r.stderr.strip()[:500]}")
-        tree = ET.parse(xml)
-    mod = next(m for m in tree.iter("module") if m.get("topModule") == "1")
-    out = {}
-    for var in mod.findall("var"):
-        if var.get("name") in names:
-            const = var.find("const").get("name")  # e.g. 32'h37 or 32'sh37
-            out[var.get("name")] = int(const.split("h")[-1], 16)
-    return out
-
-
-def cells(path):
-    """Cell type -> count of the last `stat` block of a Yosys report (as scripts/synth_summary.py)."""
-    if not os.path.exists(path):
-        return None
-    blocks = open(path).read().split("Number of cells:")
-    if len(blocks) < 2:
-        return None
-    return {m.group(1): int(m.group(2)) for m in re.finditer(r"^\s+(\S+)\s+(\d+)\s*$", blocks[-1], re.M)}
-
-
-def pnr(path):
-    """(Fmax MHz or None, "used/total" LCs or None) of a nextpnr-ice40 log."""
-    if not os.path.exists(path):
-        return None, None
-    text = open(path).read()
-    fmax = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
-    lc = re.findall(r"ICESTORM_LC:\s+(\d+)/\s*(\d+)", text)
-    return (float(fmax[-1]) if fmax else None), (f"{lc[-1][0]}/{lc[-1][1]}" if lc else None)
+TOPS = ("acore_top", "acore_serial_top")
 
 
 def parse_params(tokens):
     return {k: int(v) for k, v in (t.split("=", 1) for t in tokens)}
-
-
-def named_configs(root):
-    rows = []
-    for line in open(os.path.join(root, "rtl", "configs.txt")):
-        f = line.split()
-        if re.match(r"[a-z]", line) and f[1] == "acore_top" and "sim" in f[2].split(","):
-            rows.append(("acore_top", f[0], parse_params(f[3:])))
-    rows.append(("acore_serial_top", "serial (defaults)", {}))
-    cfg = [l.strip() for l in open(os.path.join(root, "rtl", "serial_n5r8.cfg")) if re.match(r"[A-Z_]+=", l)]
-    rows.append(("acore_serial_top", "serial_n5r8", parse_params(cfg)))
-    return rows
 
 
 def sweep_rows(root):
@@ -107,15 +50,15 @@ def sweep_rows(root):
     return list(csv.DictReader(open(path))) if os.path.exists(path) else []
 
 
-def sweep_match(rows, engine, params):
+def sweep_match(rows, engine, params, defaults):
     """The design-space row with these parameters. The sweep lists the grid point and the COEF_F its
     calibration chose; a lower COEF_F comes with ACC_G raised by as much and ACC_I >= REG_W-COEF_F+1
     (calibration.cpp quantize_auto_range), which a named configuration spells out."""
-    full = dict(DEFAULTS, **params)
+    full = dict(defaults, **params)
     for r in rows:
         if r["engine"] != engine or r.get("error"):
             continue
-        p = dict(DEFAULTS, **parse_params(r["params"].split()))
+        p = dict(defaults, **parse_params(r["params"].split()))
         c = int(r["coef_f"])
         if c != p["COEF_F"]:
             acc_f = p["COEF_F"] + p["ACC_G"]
@@ -147,31 +90,38 @@ def main():
     sweep = sweep_rows(root)
 
     lines = []
-    for top, name, params in named_configs(root):
+    rows = [l for l in registry.load(root) if l.module in TOPS]
+    defaults = registry.rtl_parameters(root, "acore_top")
+    stages = [registry.placed_design(root, l) for l in registry.default_top_stages(root)]
+    with concurrent.futures.ThreadPoolExecutor(2) as ex:  # each elaboration takes a second or two
+        list(ex.map(lambda l: registry.rtl_constants(root, l.module, l.params), rows))
+    for line in rows:
+        top, name, params = line.module, line.name, dict(line.params)
         serial = top == "acore_serial_top"
-        k = rtl_constants(root, top, params, {"WORDS", "LATENCY", "CYCLES"})
+        k = registry.rtl_constants(root, top, line.params)
         cycles = k["CYCLES"]
         lut4 = lcs = fmax = None
         bound = False
-        if not params and not serial:
-            lut4 = (cells(os.path.join(rep, "ice40_top.txt")) or {}).get("SB_LUT4")
-            _, lcs = pnr(os.path.join(rep, "nextpnr_top_pnr.log"))
-            stages = [pnr(os.path.join(rep, f"nextpnr_{s}_pnr.log"))[0] for s in ("scaler", "region", "poly", "cordic_top")]
-            fmax = min(f for f in stages if f) if any(stages) else None
-            bound = True
-            how = ("measured, `scripts/synth.sh`: LUT4 `ice40_top.txt`; LCs `nextpnr_top_pnr.log` (does not fit "
-                   "the HX8K); Fmax = slowest stage placed alone (≤)")
-        elif not serial and list(params) == ["FOLD"]:
-            n = params["FOLD"]
-            lut4 = (cells(os.path.join(rep, f"ice40_top_fold{n}.txt")) or {}).get("SB_LUT4")
-            fmax, lcs = pnr(os.path.join(rep, f"nextpnr_top_fold{n}_pnr.log"))
-            how = (f"measured, `scripts/synth.sh -d top_fold{n},top_fold{n}_pnr`: LUT4 `ice40_top_fold{n}.txt`; "
-                   f"LCs, Fmax `nextpnr_top_fold{n}_pnr.log` (whole top placed and routed)")
-        elif not params:
-            lut4 = (cells(os.path.join(rep, "ice40_serial.txt")) or {}).get("SB_LUT4")
-            fmax, lcs = pnr(os.path.join(rep, "nextpnr_serial_pnr.log"))
-            how = ("measured, `scripts/synth.sh -d serial,serial_pnr`: LUT4 `ice40_serial.txt`; LCs, Fmax "
-                   "`nextpnr_serial_pnr.log` (whole core, PCF)")
+        ice40 = registry.report(root, "ice40", name)
+        log = registry.report(root, "pnr", registry.placed_design(root, line))
+        if os.path.exists(ice40):
+            lut4 = (cells(ice40) or {}).get("SB_LUT4")
+            how = [f"LUT4 `{os.path.basename(ice40)}`"]
+            if os.path.exists(log):
+                fmax, lc, _ = pnr_result(log)
+                lcs = f"{lc[0]}/{lc[1]}" if lc else None
+                whole = "core" if serial else "top"
+                pins = ", PCF" if registry.pnr_used_pcf(log) else ""
+                if fmax:
+                    how.append(f"LCs, Fmax `{os.path.basename(log)}` (whole {whole} placed and routed{pins})")
+                else:
+                    how.append(f"LCs `{os.path.basename(log)}` (does not fit the HX8K)")
+            if fmax is None and not serial and not params:
+                fs = [pnr_result(registry.report(root, "pnr", d))[0] for d in stages]
+                fmax = min(f for f in fs if f) if any(fs) else None
+                bound = True
+                how.append("Fmax = slowest stage placed alone (≤)")
+            how = f"measured, `scripts/synth.sh -d {name}`: " + "; ".join(how)
         elif serial:
             key = " ".join(f"{p}={v}" for p, v in sorted(params.items()))
             if key not in measured and a.measure:
@@ -193,7 +143,7 @@ def main():
             else:
                 how = "not measured (run `scripts/config_table.py --measure`)"
         else:
-            r = sweep_match(sweep, "pipelined", params)
+            r = sweep_match(sweep, "pipelined", params, defaults)
             if r and r.get("lut4"):
                 lut4 = int(r["lut4"])
                 fmax = float(r["fmax_mhz"]) if r.get("fmax_mhz") else None
@@ -209,15 +159,16 @@ def main():
                      f"{lut4 if lut4 is not None else '-'} | {lcs or '-'} | "
                      f"{le + f'{fmax:.1f}' if fmax else '-'} | {le + fmt_rate(rate) if rate else '-'} | {how} |")
 
-    cmd = " ".join(["scripts/config_table.py"] + [x for x in sys.argv[1:] if not x.startswith("--root")])
+    shown = [x for i, x in enumerate(sys.argv[1:]) if not x.startswith("--root") and sys.argv[i] != "--root"]
+    cmd = " ".join(["scripts/config_table.py"] + shown)
     text = ["# Configuration table", "",
             f"Generated by `{cmd}` from the repository root (`--measure` places and routes the serial "
             "configurations no report covers, results kept in `config_table_measured.json`; without it the "
-            "script only reads reports). Every named configuration of `rtl/configs.txt` "
-            "(pipelined `acore_top`, one sample per clock, or folded to one sample every FOLD clocks) and of the serial core (`acore_serial_top`, one sample "
-            "every CYCLES clocks). Words, LATENCY and CYCLES are the RTL's own constants (`verilator --xml-only` "
-            "with the configuration's parameters); area and clock come from the reports named in the last "
-            "column (Yosys 0.23 `synth_ice40`, nextpnr-ice40 0.4 on an HX8K ct256, seed 1). samples/s = Fmax / "
+            "script only reads reports). Every `acore_top` and `acore_serial_top` line of the build registry "
+            "`rtl/configs.txt` (pipelined `acore_top`, one sample per clock, or folded to one sample every FOLD "
+            "clocks; the serial core `acore_serial_top`, one sample every CYCLES clocks). Words, LATENCY and "
+            "CYCLES are the RTL's own constants (`verilator --xml-only` with the configuration's parameters); "
+            "area and clock come from the reports named in the last column (Yosys 0.23 `synth_ice40`, nextpnr-ice40 0.4 on an HX8K ct256, seed 1). samples/s = Fmax / "
             "clocks per sample. \"≤\": the pipelined top was not placed whole, its clock is bounded by its "
             "slowest stage placed alone (routing congestion of the whole design not included).", "",
             "| configuration | top and parameters | words | LATENCY (clk) | clk/sample | iCE40 LUT4 | HX8K LCs | "
@@ -234,4 +185,8 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except registry.RegistryError as e:
+        print(f"config_table: {e}", file=sys.stderr)
+        sys.exit(2)

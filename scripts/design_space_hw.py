@@ -14,8 +14,8 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
          ("whole": {"lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}, "slowest": "acore_top").
          Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage, FOLD 1)
          also get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
-         same parameters, placed and routed whole (it fits an HX8K); cycles = its CYCLES localparam,
-         22 + ZERO + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K (tb/test_cosim_serial checks the formula).
+         same parameters, placed and routed whole (it fits an HX8K); cycles = its CYCLES localparam
+         as Verilator elaborates it (scripts/registry.py rtl_constants).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
 """
@@ -30,9 +30,8 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# The parameters of rtl/acore_serial_top.v (the pipelined top's, without the correction modes).
-SERIAL_PARAMS = {"IN_W", "REG_W", "S_W", "S_F", "R_SHIFT", "SCALE_G", "DEGREE", "REGIONS", "COEF_F", "ACC_G", "ACC_I",
-                 "K", "CORDIC_G", "Z_W", "ANGLE_W", "ZERO"}
+sys.path.insert(0, HERE)
+import registry  # noqa: E402  (the RTL's parameters and constants, elaborated)
 
 
 def rtl_files(root):
@@ -91,14 +90,15 @@ def measure(root, cache, params):
     res["all_stages_fit"] = st["all_fit"]
     res["stages"] = st["stages"]
     if int(p.get("CORRECTION", 0)) == 0 and int(p.get("XCENTER", 0)) == 0 and int(p.get("FOURIER_K", 0)) == 0:
-        serial_params = [f"{k}={v}" for k, v in p.items() if k in SERIAL_PARAMS]
+        # The serial core has the pipelined top's parameters but those of the correction modes and FOLD.
+        serial = [(k, int(v)) for k, v in p.items() if k in registry.rtl_parameters(root, "acore_serial_top")]
+        serial_params = [f"{k}={v}" for k, v in serial]
         out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), "--whole", "acore_serial_top", root,
                               os.path.join(cache, "serial")] + serial_params, capture_output=True, text=True)
         if out.returncode != 0:
             raise RuntimeError("stage_fmax.py --whole acore_serial_top failed for " + params + ": " + out.stderr.strip())
         sr = json.loads(out.stdout)
-        sr["cycles"] = (22 + int(p.get("ZERO", 0)) + 2 * int(p["REG_W"]) + 2 * int(p["DEGREE"]) * (int(p["S_W"]) + 2)
-                        + 3 * int(p["K"]))
+        sr["cycles"] = registry.rtl_constants(root, "acore_serial_top", serial)["CYCLES"]
         res["serial"] = sr
     with open(path, "w") as f:
         json.dump(res, f)

@@ -1,40 +1,24 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 # Builds synth/reports/summary.md from the Yosys `stat` reports and nextpnr-ice40 logs that
-# scripts/synth.sh wrote. usage: synth_summary.py ROOT > synth/reports/summary.md
+# scripts/synth.sh wrote for the lines of the build registry rtl/configs.txt (scripts/registry.py
+# names the designs and their reports). usage: synth_summary.py ROOT > synth/reports/summary.md
+import concurrent.futures
 import os
 import re
 import sys
 
-root = sys.argv[1]
-rep = os.path.join(root, "synth", "reports")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import registry  # noqa: E402
+from registry import cells  # noqa: E402
 
-
-def cells(path):
-    """Cell type -> count from the last (top-level / flattened) `stat` block."""
-    if not os.path.exists(path):
-        return None
-    text = open(path).read()
-    blocks = text.split("Number of cells:")
-    if len(blocks) < 2:
-        return None
-    out = {"total": int(blocks[-1].split()[0])}
-    for m in re.finditer(r"^\s+(\S+)\s+(\d+)\s*$", blocks[-1], re.M):
-        out[m.group(1)] = int(m.group(2))
-    return out
+root = os.path.abspath(sys.argv[1])
+lines = {l.name: l for l in registry.load(root)}
+designs = registry.synth_designs(root)
 
 
 def pnr(design):
-    path = os.path.join(rep, f"nextpnr_{design}.log")
-    if not os.path.exists(path):
-        return None, None, "not run"
-    text = open(path).read()
-    fmax = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
-    lc = re.findall(r"ICESTORM_LC:\s+(\d+)/\s*(\d+)", text)
-    if not fmax:
-        why = "does not fit" if re.search(r"(Unable to place|utilisation|too many)", text, re.I) else "failed"
-        return None, lc[-1] if lc else None, why
-    return float(fmax[-1]), lc[-1] if lc else None, ""
+    return registry.pnr_result(registry.report(root, "pnr", design))
 
 
 def s(d, *keys):
@@ -43,39 +27,59 @@ def s(d, *keys):
     return str(sum(v for k, v in d.items() if any(re.fullmatch(p, k) for p in keys)))
 
 
-# design -> (description, latency in clocks, clocks per sample). The serial core's figures are
-# CYCLES and LATENCY of rtl/acore_serial_top.v at the defaults (tb/test_cosim_serial checks both).
-SERIAL_CYCLES, SERIAL_LATENCY = 226, 227
-# LATENCY of rtl/acore_top.v at FOLD = 2, 4, 8 (the default configuration); build/tb/cosim_config
-# fold2|fold4|fold8 prints each and checks it against the RTL's handshake.
-FOLD_LATENCY = {2: 60, 4: 66, 8: 74}
-designs = {
-    "top": ("acore_top, default configuration (n=3, 4 regions, K=16)", 55, 1),
-    "top_pnr": ("acore_top, default, in the pin wrapper (P&R)", 55, 1),
-    "scaler_pnr": ("stage: acore_scaler, pin wrapper (P&R)", 8, 1),
-    "region_pnr": ("stage: acore_region_select, pin wrapper (P&R)", 2, 1),
-    "poly_pnr": ("stage: acore_poly_correct, pin wrapper (P&R)", 25, 1),
-    "poly2d_pnr": ("stage: acore_poly2d_correct (CORRECTION=1, d=3, 4 regions, one curve), pin wrapper (P&R)", 27, 1),
-    "poly2d1_pnr": ("stage: acore_poly2d_correct, d=1 (same step logic, fits for Fmax), pin wrapper (P&R)", 13, 1),
-    "cordic_top_pnr": ("stage: the top's CORDIC (18-bit, K=16), pin wrapper (P&R)", 18, 1),
-    "serial": ("acore_serial_top, serial core, default configuration", SERIAL_LATENCY, SERIAL_CYCLES),
-    "serial_pnr": ("acore_serial_top, default, in the pin wrapper (P&R)", SERIAL_LATENCY, SERIAL_CYCLES),
-    "cordic16": ("CORDIC alone, 16-bit (rtl/cordic16.cfg), atan table as constants, inputs registered", 41, 1),
-    "cordic16_bus": ("CORDIC alone, 16-bit, atan words on an input bus", 40, 1),
-    "fourier": ("stage: acore_fourier_correct, K=21 harmonics, M=12 (area)", 22, 1),
-    "fourier_pnr": ("stage: acore_fourier_correct, K=4 harmonics, M=12, pin wrapper (P&R)", 19, 1),
-    "apb_serial": ("acore_apb, APB register shell around the serial core (default)", SERIAL_LATENCY, SERIAL_CYCLES),
-    "apb_serial_pnr": ("acore_apb around the serial core, in the pin wrapper (P&R)", SERIAL_LATENCY, SERIAL_CYCLES),
-    "apb_top": ("acore_apb, APB register shell around acore_top (default)", 55, 1),
-    "apb_none_pnr": ("acore_apb around acore_top with CORRECTION=2 (no polynomial, fits), pin wrapper (P&R)", 30, 1),
+# Row descriptions, in the table's order, by design (a registry name; <name>_pnr: its pin wrapper
+# placed and routed). A line with synthesis flows that is not here gets a row after these, described
+# by its module and parameters.
+DESCRIPTIONS = {
+    "default": "acore_top, default configuration (n=3, 4 regions, K=16)",
+    "default_pnr": "acore_top, default, in the pin wrapper (P&R)",
+    "stage_scaler_pnr": "stage: acore_scaler, pin wrapper (P&R)",
+    "stage_region_pnr": "stage: acore_region_select, pin wrapper (P&R)",
+    "stage_poly_pnr": "stage: acore_poly_correct, pin wrapper (P&R)",
+    "stage_poly2d_pnr": "stage: acore_poly2d_correct (CORRECTION=1, d=3, 4 regions, one curve), pin wrapper (P&R)",
+    "stage_poly2d_d1_pnr": "stage: acore_poly2d_correct, d=1 (same step logic, fits for Fmax), pin wrapper (P&R)",
+    "stage_cordic_pnr": "stage: the top's CORDIC (18-bit, K=16), pin wrapper (P&R)",
+    "serial": "acore_serial_top, serial core, default configuration",
+    "serial_pnr": "acore_serial_top, default, in the pin wrapper (P&R)",
+    "cordic16_rom": "CORDIC alone, 16-bit (registry line cordic16), atan table as constants, inputs registered",
+    "cordic16": "CORDIC alone, 16-bit, atan words on an input bus",
+    "stage_fourier": "stage: acore_fourier_correct, K=21 harmonics, M=12 (area)",
+    "stage_fourier_k4_pnr": "stage: acore_fourier_correct, K=4 harmonics, M=12, pin wrapper (P&R)",
+    "apb_serial": "acore_apb, APB register shell around the serial core (default)",
+    "apb_serial_pnr": "acore_apb around the serial core, in the pin wrapper (P&R)",
+    "apb": "acore_apb, APB register shell around acore_top (default)",
+    "apb_none_pnr": "acore_apb around acore_top with CORRECTION=2 (no polynomial, fits), pin wrapper (P&R)",
 }
 for n in (2, 4, 8):
-    designs[f"top_fold{n}"] = (f"acore_top, default, FOLD={n} (folded: a sample every {n} clocks)", FOLD_LATENCY[n], n)
-    designs[f"top_fold{n}_pnr"] = (f"acore_top, default, FOLD={n}, whole top in the pin wrapper (P&R)",
-                                   FOLD_LATENCY[n], n)
-pnr_designs = ("cordic16", "top_pnr", "scaler_pnr", "region_pnr", "poly_pnr", "poly2d_pnr", "poly2d1_pnr",
-               "cordic_top_pnr", "serial_pnr", "fourier_pnr", "top_fold2_pnr", "top_fold4_pnr", "top_fold8_pnr",
-               "apb_serial_pnr", "apb_none_pnr")
+    DESCRIPTIONS[f"fold{n}"] = f"acore_top, default, FOLD={n} (folded: a sample every {n} clocks)"
+    DESCRIPTIONS[f"fold{n}_pnr"] = f"acore_top, default, FOLD={n}, whole top in the pin wrapper (P&R)"
+# The Fmax cell of an area row whose figure is elsewhere (default: the P&R rows of the whole top and
+# of its stages; apb: the shell around a top that does not fit is not placed). Any other area row
+# of a placed line points at its P&R row.
+FMAX_NOTES = {"default": "see P&R rows", "apb": "does not fit (as acore_top)"}
+
+
+def line_of(design):
+    return lines[design[:-len("_pnr")] if design.endswith("_pnr") else design]
+
+
+def timing(line):
+    """(latency, clocks per sample): the module's LATENCY and CYCLES (1 when it has none) with the
+    line's parameters, as the RTL elaborates them. acore_cordic16 (synth/) is acore_cordic at the
+    cordic16 line's parameters with its inputs registered once: one clock more."""
+    if line.module == "acore_cordic16":
+        k = registry.rtl_constants(root, "acore_cordic", lines["cordic16"].params)
+        return k["LATENCY"] + 1, 1
+    k = registry.rtl_constants(root, line.module, line.params)
+    return k.get("LATENCY", "-"), k.get("CYCLES", 1)
+
+
+order = [d for d in DESCRIPTIONS if any(x.name == d for x in designs)]
+order += [x.name for x in designs if x.name not in DESCRIPTIONS]
+by_name = {x.name: x for x in designs}
+with concurrent.futures.ThreadPoolExecutor(2) as ex:
+    times = dict(zip(order, ex.map(lambda d: timing(line_of(d)), order)))
+SERIAL_CYCLES = times["serial"][1] if "serial" in times else None
 
 print("# AngleCore synthesis summary\n")
 print("Generated by `scripts/synth.sh` (Yosys 0.23, nextpnr-ice40 0.4, iCE40 HX8K ct256, seed 1, "
@@ -84,19 +88,23 @@ print("Generated by `scripts/synth.sh` (Yosys 0.23, nextpnr-ice40 0.4, iCE40 HX8
 print("| design | latency (clk) | clk/sample | generic cells | iCE40 LUT4 | iCE40 DFF | iCE40 CARRY | "
       "iCE40 BRAM | HX8K LCs | Fmax HX8K (MHz) | samples/s at Fmax | xc7 LUT | xc7 FF | xc7 RAM | xc7 DSP |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+stage_designs = {registry.placed_design(root, l) for l in registry.default_top_stages(root)}
 stage_fmax = []
-for d, (desc, lat, cps) in designs.items():
-    g = cells(os.path.join(rep, f"generic_{d}.txt"))
-    i = cells(os.path.join(rep, f"ice40_{d}.txt"))
-    x = cells(os.path.join(rep, f"xilinx_{d}.txt"))
-    fmax, lc, why = pnr(d) if d in pnr_designs else (None, None, "")
-    if d in ("scaler_pnr", "region_pnr", "poly_pnr", "cordic_top_pnr") and fmax:
+for d in order:
+    line = line_of(d)
+    desc = DESCRIPTIONS.get(d) or (f"{line.module} {line.param_text() or '(defaults)'}"
+                                   + (", in its pin wrapper (P&R)" if d != line.name else ""))
+    lat, cps = times[d]
+    g = cells(registry.report(root, "generic", d))
+    i = cells(registry.report(root, "ice40", d))
+    x = cells(registry.report(root, "xilinx", d))
+    placed = "pnr" in by_name[d].flows
+    fmax, lc, why = pnr(d) if placed else (None, None, "")
+    if d in stage_designs and fmax:
         stage_fmax.append(fmax)
-    if d == "top":
-        fmax_s = "see P&R rows"
-    elif d == "apb_top":
-        fmax_s = "does not fit (as acore_top)"
-    elif d in ("serial", "apb_serial") or d.startswith("top_fold") and not d.endswith("_pnr"):
+    if d in FMAX_NOTES:
+        fmax_s = FMAX_NOTES[d]
+    elif not placed and "pnr" in line.flows:
         fmax_s = "see P&R row"
     elif fmax is not None:
         fmax_s = f"{fmax:.1f}"
@@ -115,14 +123,14 @@ if stage_fmax:
           f"the full design is not included; the pre-filter and the output register are one short adder or "
           f"compare deep).")
 
-ff, _, _ = pnr("fourier_pnr")
+ff, _, _ = pnr("stage_fourier_k4_pnr")
 if ff and stage_fmax:
     print(f"\nWith the Fourier correction (any K: each harmonic's pipeline, the adder tree and the output "
           f"subtraction do not change with K but for the tree's depth) the bound is "
           f"**{min(min(stage_fmax), ff):.1f} MHz**; the Fourier stage alone places at {ff:.1f} MHz.")
 
-top = cells(os.path.join(rep, "ice40_top.txt"))
-ser = cells(os.path.join(rep, "ice40_serial.txt"))
+top = cells(registry.report(root, "ice40", "default"))
+ser = cells(registry.report(root, "ice40", "serial"))
 fser, _, _ = pnr("serial_pnr")
 if top and ser:
     lt, ls = int(s(top, "SB_LUT4")), int(s(ser, "SB_LUT4"))
@@ -135,7 +143,12 @@ if top and ser:
         print(f"| throughput on the HX8K | - | {fser:.1f} MHz / {SERIAL_CYCLES} clk = "
               f"{fser * 1e6 / SERIAL_CYCLES:.3g} samples/s |")
 
-fold_rows = [(n, cells(os.path.join(rep, f"ice40_top_fold{n}.txt")), pnr(f"top_fold{n}_pnr")) for n in (2, 4, 8)]
+# The folded tops: the acore_top lines whose only parameter is FOLD (the default configuration
+# folded), with their area and their whole-top P&R.
+folds = sorted((dict(l.params)["FOLD"], l) for l in lines.values()
+               if l.module == "acore_top" and [k for k, _ in l.params] == ["FOLD"])
+fold_rows = [(n, cells(registry.report(root, "ice40", l.name)), pnr(registry.placed_design(root, l)))
+             for n, l in folds]
 if any(c for _, c, _ in fold_rows):
     print("\n## Folded top targets\n")
     print("| FOLD | iCE40 LUT4 / DFF / BRAM | HX8K LCs (whole top, pin wrapper) | Fmax | samples/s | target |")
@@ -143,14 +156,14 @@ if any(c for _, c, _ in fold_rows):
     for n, c, (fm, lc, why) in fold_rows:
         if not c:
             continue
-        lcs = f"{lc[0]}/{lc[1]} ({100.0 * int(lc[0]) / int(lc[1]):.1f} %)" if lc else "-"
+        lcs = f"{lc[0]}/{lc[1]} ({100.0 * lc[0] / lc[1]:.1f} %)" if lc else "-"
         target = {2: "<= 87 % of the LCs (6681) and >= 100 MHz", 8: "<= 2500 LUT4"}.get(n, "-")
         print(f"| {n} | {s(c, 'SB_LUT4')} / {s(c, 'SB_DFF.*')} / {s(c, 'SB_RAM40_4K')} | {lcs} | "
               f"{f'{fm:.1f} MHz' if fm else why} | {f'{fm * 1e6 / n:.3g}' if fm else '-'} | {target} |")
 # What the register shell adds to each top (rtl/acore_apb.v: APB decode and registers, shadow bank,
 # commit, CRC-32, scrubber).
-shell_rows = [(name, cells(os.path.join(rep, f"ice40_{core}.txt")), cells(os.path.join(rep, f"ice40_{shell}.txt")))
-              for name, core, shell in (("serial core", "serial", "apb_serial"), ("pipelined top", "top", "apb_top"))]
+shell_rows = [(name, cells(registry.report(root, "ice40", core)), cells(registry.report(root, "ice40", shell)))
+              for name, core, shell in (("serial core", "serial", "apb_serial"), ("pipelined top", "default", "apb"))]
 if any(c and sh for _, c, sh in shell_rows):
     print("\n## Register shell (rtl/acore_apb.v)\n")
     print("| around | core LUT4 / DFF / BRAM | with the shell | the shell adds |")
@@ -172,14 +185,14 @@ if any(c and sh for _, c, sh in shell_rows):
         print(f"Around a pipelined top that fits (CORRECTION=2, {lcn[0]}/{lcn[1]} logic cells): **{fn:.1f} MHz** "
               f"(see the critical path in synth/reports/nextpnr_apb_none_pnr.log).")
 
-c16 = cells(os.path.join(rep, "ice40_cordic16.txt"))
-f16, _, _ = pnr("cordic16")
+c16 = cells(registry.report(root, "ice40", "cordic16_rom"))
+f16, _, _ = pnr(registry.placed_design(root, lines["cordic16_rom"]))
 print("\n## 16-bit CORDIC targets\n")
 print("| target | required | measured |")
 print("|---|---|---|")
 print(f"| iCE40 LUT4 | <= 1600 | {s(c16, 'SB_LUT4')} |")
 print(f"| Fmax on HX8K (nextpnr-ice40) | >= 150 MHz | {f'{f16:.1f} MHz' if f16 else '-'} |")
-acc = os.path.join(rep, "cordic16_accuracy.txt")
+acc = os.path.join(root, "synth", "reports", "cordic16_accuracy.txt")
 measured = open(acc).read().strip() if os.path.exists(acc) else "not measured (see synth/README.md)"
 print(f"| angle error vs double atan2, RMS / max; no overflow | <= 0.5 / 1 LSB | {measured} |")
 print("\nAccuracy: the C++ model (bit-exact to the RTL, tb/test_cordic16.cpp checks both) over every "

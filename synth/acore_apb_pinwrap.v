@@ -9,8 +9,8 @@
 
 module acore_apb_pinwrap #(
   // 0: around acore_top (with the default correction it does not fit an HX8K); 1: around the
-  // serial core.
-  parameter integer SERIAL = 1,
+  // serial core. The defaults are acore_apb's: a registry line's parameters mean the same here.
+  parameter integer SERIAL = 0,
   // acore_top's correction mode (2 = none: a pipelined top that fits, to time the shell beside it).
   parameter integer CORRECTION = 0
 ) (

@@ -4,6 +4,9 @@
 // is measured per stage (every path of the top is inside one stage or a register-to-register hop
 // between stages). Each wrapper loads the stage's inputs (data and register-file words) through a
 // serial shift register (sdi_i, shift_i), registers the enable, and puts the outputs on pins.
+// <module>_pinwrap is the wrapper of <module> that scripts/synth.sh places for a registry line of
+// that module with the pnr flow (rtl/configs.txt); the line's parameters are set on the wrapper, so
+// a wrapper has the parameters such lines set, with the module's defaults.
 `resetall
 `default_nettype none
 
@@ -27,7 +30,7 @@ module acore_scaler_pinwrap (
     .s_o(s_o), .ovf_o(ovf_o));
 endmodule
 
-module acore_region_pinwrap (
+module acore_region_select_pinwrap (
   input  wire        clk_i,
   input  wire        sdi_i,
   input  wire        shift_i,
@@ -49,7 +52,7 @@ module acore_region_pinwrap (
     .s13_o(s13_o), .s24_o(s24_o));
 endmodule
 
-module acore_poly_pinwrap (
+module acore_poly_correct_pinwrap (
   input  wire        clk_i,
   input  wire        sdi_i,
   input  wire        shift_i,
@@ -72,7 +75,7 @@ endmodule
 
 // The 2-D correction stage (CORRECTION = 1, 4 regions, curve c13) of total degree DEGREE: its
 // coefficient words (4 regions x 2 curves x terms), x, s13, s24 and the region shifted in.
-module acore_poly2d_pinwrap #(
+module acore_poly2d_correct_pinwrap #(
   parameter integer DEGREE = 3
 ) (
   input  wire        clk_i,
@@ -96,7 +99,9 @@ module acore_poly2d_pinwrap #(
     .region_i(sr_q[55:54]), .coef_i(sr_q[56 +: NC]), .y_o(y_o), .ovf_o(ovf_o));
 endmodule
 
-module acore_cordic_top_pinwrap (
+// The top's CORDIC (acore_cordic's defaults are the top's CORDIC configuration), its arctangent words
+// shifted in as the register file feeds them.
+module acore_cordic_pinwrap (
   input  wire        clk_i,
   input  wire        sdi_i,
   input  wire        shift_i,
@@ -119,12 +124,13 @@ endmodule
 
 // The Fourier correction (acore_fourier_correct.v) with the top's widths (ANGLE_W 16, REG_W 18,
 // Z_W 20) and FOURIER_M = 12. The full 21-harmonic stage needs more logic cells than an HX8K has, so
-// P&R places K harmonics (default 4): every register-to-register path lies inside one harmonic's
-// pipeline (k theta, start vector, rotation stages), the adder tree or the output subtraction, and
-// each of those is the same for any K but for the tree's depth (one adder per clock regardless).
-module acore_fourier_pinwrap #(
-  // Harmonics placed.
-  parameter integer K = 4
+// P&R places fewer harmonics (registry line stage_fourier_k4: K = 4): every register-to-register
+// path lies inside one harmonic's pipeline (k theta, start vector, rotation stages), the adder tree
+// or the output subtraction, and each of those is the same for any K but for the tree's depth (one
+// adder per clock regardless).
+module acore_fourier_correct_pinwrap #(
+  // Harmonics placed (acore_fourier_correct's default).
+  parameter integer K = 21
 ) (
   input  wire        clk_i,
   input  wire        sdi_i,

@@ -24,28 +24,17 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
+import registry  # noqa: E402  (scripts/registry.py: the build registry and the RTL's parameters)
+from registry import rtl_files  # noqa: E402
+
 TOPS = ("acore_top", "acore_serial_top")
 # The register shell around either top (rtl/acore_apb.v): its defaults are a control too.
 SHELLS = ("acore_apb",)
-# Parameters of acore_top and their defaults (rtl/acore_top.v, model/datapath_config.hpp).
-DEFAULTS = {
-    "IN_W": 16, "REG_W": 18, "S_W": 18, "S_F": 16, "R_SHIFT": 13, "SCALE_G": 4, "CORRECTION": 0,
-    "DEGREE": 3, "REGIONS": 4, "XCENTER": 0, "COEF_F": 15, "ACC_G": 4, "ACC_I": 6, "K": 16,
-    "CORDIC_G": 3, "Z_W": 20, "ANGLE_W": 16, "FOURIER_K": 0, "FOURIER_M": 12, "FOURIER_CF": 22,
-    "FOURIER_W": 16, "FOURIER_G": 2, "ZERO": 0, "FOLD": 1,
-}
-# The serial core has the 1-D polynomial datapath only (and no fold factor).
-SERIAL_PARAMS = [p for p in DEFAULTS
-                 if p not in ("CORRECTION", "XCENTER", "FOLD") and not p.startswith("FOURIER")]
 
 
 class Usage(Exception):
     pass
-
-
-def rtl_files(root):
-    with open(os.path.join(root, "rtl", "files.f")) as f:
-        return [l.strip() for l in f if l.strip().endswith(".v") and not l.startswith("#")]
 
 
 def run(cmd, cwd):
@@ -145,17 +134,14 @@ def check_legal(root, top):
 
 
 def named_configs(root):
-    sets = []
-    for line in open(os.path.join(root, "rtl", "configs.txt")):
-        f = line.split()
-        if re.match(r"[a-z]", line) and f[1] == "acore_top":
-            sets.append(parse_params(f[3:], "rtl/configs.txt"))
-    return sets
+    """The parameters of every acore_top line of the build registry (rtl/configs.txt)."""
+    return [list(l.params) for l in registry.select(root, module="acore_top")]
 
 
-def candidates(p, c):
-    """Values of parameter p around its limits, given the current configuration c."""
-    r = {
+def candidate_table(c):
+    """Parameter -> values around its limits, given the current configuration c: the parameters
+    the random sets move (each top moves those of them it has)."""
+    return {
         "IN_W": [7, 8, 12, 16, 18, 24, 25],
         "REG_W": [c["IN_W"] + 1, c["IN_W"] + 2, 18, 20, 22, 30, 31],
         "S_W": [c["S_F"] + 1, c["S_F"] + 2, 18, 20, 30, 31],
@@ -182,7 +168,30 @@ def candidates(p, c):
         "ZERO": [-1, 0, 1, 1, 2],
         "FOLD": [0, 1, 2, 3, 4, 8, 16],
     }
-    return r[p]
+
+
+def candidates(p, c):
+    return candidate_table(c)[p]
+
+
+def rtl_defaults(root):
+    """(defaults, {top: the parameters it moves}): the moved parameters' defaults as the RTL
+    elaborates them (acore_top's header; the serial core must agree on the ones it has, since the
+    model applies every set to one default configuration)."""
+    top = registry.rtl_parameters(root, "acore_top")
+    moved = list(candidate_table(top))
+    missing = [p for p in moved if p not in top]
+    if missing:
+        raise Usage(f"acore_top has no parameter {', '.join(missing)} (tb/param_checks.py candidate_table)")
+    defaults = {p: top[p] for p in moved}
+    names = {}
+    for t in TOPS:
+        have = registry.rtl_parameters(root, t)
+        names[t] = [p for p in moved if p in have]
+        differ = [f"{p}={have[p]} (acore_top: {defaults[p]})" for p in names[t] if have[p] != defaults[p]]
+        if differ:
+            raise Usage(f"{t}'s defaults differ from acore_top's: {', '.join(differ)}")
+    return defaults, names
 
 
 def random_sets(root, n, seed):
@@ -190,17 +199,18 @@ def random_sets(root, n, seed):
     parameters moved to values around their limits."""
     rng = random.Random(seed)
     bases = named_configs(root)
+    defaults, top_names = rtl_defaults(root)
     sets = []
     for i in range(n):
         top = TOPS[i % 2]
-        c = dict(DEFAULTS)
-        names = list(DEFAULTS) if top == "acore_top" else SERIAL_PARAMS
+        c = dict(defaults)
+        names = top_names[top]
         if top == "acore_top":
             c.update(rng.choice(bases))
         for _ in range(rng.choice((1, 1, 2, 3))):
             p = rng.choice(names)
             c[p] = rng.choice(candidates(p, c))
-        sets.append((top, [(k, c[k]) for k in names if c[k] != DEFAULTS[k]]))
+        sets.append((top, [(k, c[k]) for k in names if c[k] != defaults[k]]))
     return sets
 
 
@@ -273,7 +283,7 @@ def main():
                 raise Usage("agree needs --validator BIN")
             return agree(args)
         return illegal(args)
-    except Usage as e:
+    except (Usage, registry.RegistryError) as e:
         print(f"param_checks: {e}", file=sys.stderr)
         return 2
 
