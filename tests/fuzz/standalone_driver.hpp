@@ -121,7 +121,10 @@ inline int standalone_main(int argc, char** argv, const Target& t) {
   uint64_t n = 0, parsed = 0;
   const auto start = std::chrono::steady_clock::now();
   const auto end = start + std::chrono::duration<double>(seconds);
-  while (n < runs && std::chrono::steady_clock::now() < end) {
+  // -runs alone is a count, -seconds alone a time, both: whichever ends first, neither: replay
+  // only.
+  const bool timed = seconds > 0 || runs == UINT64_MAX;
+  while (n < runs && (!timed || std::chrono::steady_clock::now() < end)) {
     for (int batch = 0; batch < 64 && n < runs; ++batch, ++n) {
       std::string s = corpus[rng() % corpus.size()];
       for (int e = 1 + static_cast<int>(rng() % 6); e > 0; --e) mutate(s, corpus, t.alphabet, rng);
