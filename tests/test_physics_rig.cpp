@@ -1,63 +1,22 @@
 // SPDX-License-Identifier: MIT
-// The magnet + sensor + ADC-chain model of the physics scenarios (model/physics_*.hpp) against
-// closed forms and the physics the scenario truths rest on. The field itself is also checked
-// against magpylib at 4800 points by the CTest physics_field_vs_magpylib.
+// The physics rig (physics/physics_rig.*): magnet on a shaft over a sensor layout, through the
+// analog chain, against closed forms and the physics the scenario truths rest on (the layouts'
+// design channels, what stray fields, run-out and package shifts leave in the pairs), the rig's
+// covariance under a turn of the whole set-up, the remanence's temperature law, and the recording
+// it writes (reference, temperature ramp, multiplexer, noise, ADC).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
+#include <random>
 
+#include "core/errors.hpp"
 #include "physics/physics_rig.hpp"
 
 namespace acore {
 namespace {
 
 constexpr double kDeg = M_PI / 180;
-
-TEST(PhysicsMagnet, OnAxisFieldMatchesTheClosedForm) {
-  const DiametricCylinder m(3e-3, 2.5e-3, 1.25);
-  for (double z : {-1.3e-3, -2e-3, -3e-3, -6e-3, 2e-3, 9e-3}) {
-    const Eigen::Vector3d b = m.field({0, 0, z});
-    const double want = axial_bx_closed_form(3e-3, 2.5e-3, 1.25, z);
-    EXPECT_NEAR(b.x(), want, 1e-9 * std::fabs(want)) << z;
-    EXPECT_NEAR(b.y(), 0, 1e-12);
-    EXPECT_NEAR(b.z(), 0, 1e-12);
-    EXPECT_LT(b.x(), 0) << "on the axis outside the magnet the field opposes M";
-  }
-  // Just outside the end face the in-plane field tends to -Br/4 * (1 - h/sqrt(R^2 + h^2)) ... the
-  // limit of the closed form at u1 -> 0: -Br/4 * (0 - (-h)/sqrt(R^2 + h^2)).
-  const double h = 2.5e-3, r = 3e-3;
-  EXPECT_NEAR(m.field({0, 0, -h / 2 - 1e-9}).x(), -1.25 / 4 * h / std::sqrt(r * r + h * h), 1e-6);
-}
-
-TEST(PhysicsMagnet, FarFieldIsTheDipoleOfMomentBrTimesVolume) {
-  const DiametricCylinder m(3e-3, 2.5e-3, 1.25);
-  double previous = 1;
-  for (double dist : {30e-3, 60e-3, 120e-3}) {
-    double worst = 0;
-    for (int k = 0; k < 12; ++k) {
-      const double a = 0.3 + k * 0.5, pol = 0.2 + k * 0.23;
-      const Eigen::Vector3d p = dist * Eigen::Vector3d(std::sin(pol) * std::cos(a),
-                                                       std::sin(pol) * std::sin(a), std::cos(pol));
-      const Eigen::Vector3d want = dipole_field(m.moment_T_m3(), p);
-      worst = std::max(worst, (m.field(p) - want).norm() / want.norm());
-    }
-    // The next multipole (octupole) falls off as (size / distance)^2 relative to the dipole.
-    EXPECT_LT(worst, 2 * std::pow(3e-3 / dist, 2)) << dist;
-    if (dist > 30e-3) EXPECT_NEAR(previous / worst, 4, 0.5) << dist;
-    previous = worst;
-  }
-}
-
-TEST(PhysicsMagnet, AxialFieldBelowFollowsTheCosineOfTheAzimuth) {
-  // sigma ~ cos(phi') on the curved surface: Bz(rho, phi) = f(rho, z) cos(phi) exactly.
-  const DiametricCylinder m(3e-3, 2.5e-3, 1.25);
-  const double rho = 1.1e-3, z = -3e-3;
-  const double bz0 = m.field({rho, 0, z}).z();
-  for (double a = 0; a < 2 * M_PI; a += 0.37)
-    EXPECT_NEAR(m.field({rho * std::cos(a), rho * std::sin(a), z}).z(), bz0 * std::cos(a), 1e-12);
-  EXPECT_THROW(m.field({3e-3, 0, 0}), std::exception);  // on the curved surface
-}
 
 PhysicsRig nominal(const std::string& kind) {
   PhysicsRig r;
@@ -176,43 +135,6 @@ TEST(PhysicsSensor, ACubicNonlinearityIsAThirdHarmonicSeenFromEveryPosition) {
   }
 }
 
-TEST(PhysicsChain, RcFilterLagsARampByTauAndFollowsTheSineResponse) {
-  const double tau = 1e-3, h = 1e-4;
-  RcFilter f(tau, h);
-  double y = 0;
-  for (int k = 0; k <= 2000; ++k) y = f.step(3.0 * k * h);
-  EXPECT_NEAR(y, 3.0 * (2000 * h - tau), 1e-9);  // exact for a ramp once settled
-  // A sine at omega: gain 1/sqrt(1 + (omega tau)^2), phase -atan(omega tau) (to O(h^2)).
-  const double w = 2 * M_PI * 50;
-  RcFilter g(tau, h);
-  double a = 0, b = 0;
-  const int n = 20000;
-  for (int k = 0; k < n; ++k) {
-    const double out = g.step(std::sin(w * k * h));
-    if (k >= n / 2) a += out * std::sin(w * k * h), b += out * std::cos(w * k * h);
-  }
-  const double gain = 2 * std::hypot(a, b) / (n / 2), phase = std::atan2(b, a);
-  EXPECT_NEAR(gain, 1 / std::sqrt(1 + w * tau * w * tau), 1e-3);
-  EXPECT_NEAR(phase, -std::atan(w * tau), 1e-3);
-  RcFilter through(0, h);
-  EXPECT_EQ(through.step(0.25), 0.25);
-  EXPECT_THROW(RcFilter(-1, h), std::exception);
-}
-
-TEST(PhysicsChain, AdcRoundsToItsStepAndClamps) {
-  Adc adc{8, 1.0, 0.0};
-  EXPECT_DOUBLE_EQ(adc.step(), 2.0 / 256);
-  EXPECT_DOUBLE_EQ(adc.convert(0.3), std::nearbyint(0.3 / adc.step()) * adc.step());
-  EXPECT_DOUBLE_EQ(adc.convert(2.0), 1.0 - adc.step());
-  EXPECT_DOUBLE_EQ(adc.convert(-2.0), -1.0);
-  EXPECT_DOUBLE_EQ(adc.convert(0.5 * adc.step()), 0.0);  // ties to even
-  Adc ideal;
-  EXPECT_EQ(ideal.convert(0.123456), 0.123456);
-  const std::vector<double> d = multiplex_delays({2, 0, 3, 1}, 1e-5), want = {2e-5, 0, 3e-5, 1e-5};
-  for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(d[c], want[c], 1e-18);
-  EXPECT_THROW(multiplex_delays({0, 0, 1, 2}, 1e-5), std::exception);
-}
-
 TEST(PhysicsRecording, ChannelsReferenceTemperatureAndMultiplexer) {
   PhysicsRig r = nominal("hall4");
   r.encoder_zero_rad = 30 * kDeg;
@@ -236,6 +158,82 @@ TEST(PhysicsRecording, ChannelsReferenceTemperatureAndMultiplexer) {
                 1e-12);
   }
   EXPECT_EQ(rec.meta.at("sensor"), "hall_ring");
+}
+
+Eigen::Vector3d turned(const Eigen::Vector3d& v, double a) {
+  return {std::cos(a) * v.x() - std::sin(a) * v.y(), std::sin(a) * v.x() + std::cos(a) * v.y(),
+          v.z()};
+}
+
+TEST(PhysicsRig, TurningShaftAndObserverTogetherTurnsTheField) {
+  // Magnet, run-out and magnetization all turn with the shaft: the field at the point turned by d,
+  // for the shaft turned by d, is the field turned by d (no stray field, which does not turn).
+  PhysicsRig r = nominal("hall4");
+  r.runout_m = 0.2e-3;
+  r.runout_angle_rad = 0.7;
+  const DiametricCylinder m = make_magnet(r.magnet);
+  const Eigen::Vector3d p(0.9e-3, -0.3e-3, 0.1e-3);
+  for (double th : {0.0, 1.3, 4.0})
+    for (double d : {0.25, -2.0, M_PI}) {
+      const Eigen::Vector3d a = turned(rig_field(r, m, p, th, 25), d);
+      const Eigen::Vector3d b = rig_field(r, m, turned(p, d), th + d, 25);
+      EXPECT_LT((a - b).norm(), 1e-12 * a.norm()) << th << " " << d;
+    }
+}
+
+TEST(PhysicsRig, RemanenceFollowsTemperatureAndStrayFieldAdds) {
+  PhysicsRig r = nominal("tmr2");
+  const DiametricCylinder m = make_magnet(r.magnet);
+  const Eigen::Vector3d p(0.2e-3, 0.1e-3, 0);
+  const Eigen::Vector3d b25 = rig_field(r, m, p, 0.8, 25);
+  for (double t : {-40.0, 0.0, 85.0, 150.0}) {
+    const double k = 1 + r.magnet.br_per_C * (t - 25);
+    EXPECT_LT((rig_field(r, m, p, 0.8, t) - k * b25).norm(), 1e-15 * b25.norm()) << t;
+  }
+  r.stray_T = {1e-3, -2e-3, 3e-3};
+  EXPECT_LT((rig_field(r, m, p, 0.8, 25) - b25 - r.stray_T).norm(), 1e-15);
+  // The amplitude that sets the sensitivities ignores the stray field.
+  EXPECT_NEAR(rig_amplitude(r, 0), 1.0, 1e-12);
+}
+
+TEST(PhysicsRecording, NoiseIsSeededAdcQuantizesAndBadRigsAreRejected) {
+  PhysicsRig r = nominal("tmr2");
+  for (auto& e : r.sensor.elements) e.noise = 0.01;
+  Trajectory t;
+  t.kind = "constant";
+  t.speed_rps = 1;
+  t.sample_rate_hz = 2000;
+  const size_t n = 4000;
+  const Recording a = simulate_physics(r, t, Temperature{}, n, 5);
+  const Recording b = simulate_physics(r, t, Temperature{}, n, 5);
+  const Recording c = simulate_physics(r, t, Temperature{}, n, 6);
+  EXPECT_EQ(a.ch[0], b.ch[0]);
+  EXPECT_NE(a.ch[0], c.ch[0]);
+  EXPECT_FALSE(a.has_temp());
+  // The noise around the clean output has the element's sigma.
+  const DiametricCylinder m = make_magnet(r.magnet);
+  double ss = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const double e = a.ch[1][k] - rig_output(r, m, 1, a.theta_ref[k], 25);
+    ss += e * e;
+  }
+  EXPECT_NEAR(std::sqrt(ss / n), 0.01, 0.0005);
+  // A 10-bit ADC over +-2: every value on its lattice.
+  r.adc = Adc{10, 2.0, 0.0};
+  const Recording q = simulate_physics(r, t, Temperature{}, 500, 5);
+  for (double v : q.ch[0]) EXPECT_EQ(v / r.adc.step(), std::nearbyint(v / r.adc.step()));
+  EXPECT_EQ(q.meta.at("sensor"), "inplane_pair");
+  EXPECT_EQ(q.meta.at("samples"), "500");
+  // Bad rigs: 3 elements, a filter or a slot per channel missing.
+  PhysicsRig three = r;
+  three.sensor.elements.push_back(three.sensor.elements[0]);
+  EXPECT_THROW(simulate_physics(three, t, Temperature{}, 10, 1), InputError);
+  PhysicsRig rc = r;
+  rc.rc_tau_s = {1e-4};
+  EXPECT_THROW(simulate_physics(rc, t, Temperature{}, 10, 1), InputError);
+  PhysicsRig mux = r;
+  mux.mux_order = {0, 1, 2};
+  EXPECT_THROW(simulate_physics(mux, t, Temperature{}, 10, 1), InputError);
 }
 
 }  // namespace
