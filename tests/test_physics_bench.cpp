@@ -2,7 +2,7 @@
 // The physics benchmark (model/physics_bench.hpp): its draws perturb exactly what each scenario
 // says, within the documented ranges, blind; and a fixed-seed run of the diagnosis over every
 // scenario meets the physics benchmark's targets (README "Physics benchmark" lists what fails and
-// why). The truth is decided by the physics (and tested in test_physics.cpp), never by what the
+// why). The truth is decided by the physics (and tested in test_physics_rig.cpp), never by what the
 // diagnosis computes.
 #include <gtest/gtest.h>
 
