@@ -4,10 +4,11 @@
 #include <fmt/format.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <sstream>
+#include <tuple>
 
 #include "core/errors.hpp"
 #include "core/fixed_point.hpp"
@@ -19,37 +20,19 @@ namespace {
 
 uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
 
-// Header keys and the config field each sets.
-std::map<std::string, int DatapathConfig::*> config_fields() {
-  return {{"in_w", &DatapathConfig::in_w},
-          {"reg_w", &DatapathConfig::reg_w},
-          {"s_w", &DatapathConfig::s_w},
-          {"s_f", &DatapathConfig::s_f},
-          {"r_shift", &DatapathConfig::r_shift},
-          {"scale_guard", &DatapathConfig::scale_guard},
-          {"degree", &DatapathConfig::degree},
-          {"regions", &DatapathConfig::regions},
-          {"xcenter", &DatapathConfig::xcenter},
-          {"coef_f", &DatapathConfig::coef_f},
-          {"acc_guard", &DatapathConfig::acc_guard},
-          {"acc_int", &DatapathConfig::acc_int},
-          {"iterations", &DatapathConfig::iterations},
-          {"cordic_guard", &DatapathConfig::cordic_guard},
-          {"z_w", &DatapathConfig::z_w},
-          {"angle_w", &DatapathConfig::angle_w}};
-}
-
-// Written only when 1, so images without the ZERO word keep their exact text.
-constexpr const char* kZeroWordKey = "zero_word";
-
-// The Fourier stage's keys: written only when fourier_k > 0, so images without the stage keep
-// their exact text.
-std::map<std::string, int DatapathConfig::*> fourier_fields() {
-  return {{"fourier_k", &DatapathConfig::fourier_k},
-          {"fourier_iterations", &DatapathConfig::fourier_iterations},
-          {"fourier_coef_f", &DatapathConfig::fourier_coef_f},
-          {"fourier_word_w", &DatapathConfig::fourier_word_w},
-          {"fourier_guard", &DatapathConfig::fourier_guard}};
+// The header's configuration keys in the order images have always had them: the correction,
+// then the keys written always, those of the Fourier stage (only with it) and zero_word (only when
+// 1), each group alphabetically. The table is DatapathConfig's (config_fields()).
+std::vector<const ConfigField*> header_fields() {
+  std::vector<const ConfigField*> v;
+  for (const ConfigField& f : config_fields())
+    if (f.in_image) v.push_back(&f);
+  auto rank = [](const ConfigField* f) {
+    return std::make_tuple(f->member != &DatapathConfig::correction, static_cast<int>(f->shown),
+                           std::string(f->key));
+  };
+  std::sort(v.begin(), v.end(), [&](auto* a, auto* b) { return rank(a) < rank(b); });
+  return v;
 }
 
 std::string trim(const std::string& s) {
@@ -110,9 +93,7 @@ uint32_t image_crc32(const RegImage& img) {
 
 RegImage parse_regimage(const std::string& text, const std::string& name) {
   RegImage img;
-  auto fields = config_fields();
-  fields.merge(fourier_fields());
-  fields.emplace(kZeroWordKey, &DatapathConfig::zero_word);
+  const std::vector<const ConfigField*> fields = header_fields();
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -157,11 +138,12 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
           zero_code = std::stoll(val, &used);
           if (zero_code < 0 || val[0] == '-' || val[0] == '+') used = 0;
           code_line = lineno;
-        } else if (key == "correction") {
-          img.cfg.correction = parse_correction(val);  // absent: poly (images before the field)
+        } else if (auto it = std::find_if(fields.begin(), fields.end(),
+                                          [&](const ConfigField* f) { return key == f->key; });
+                   it != fields.end()) {
+          // An absent key keeps the default (correction=poly in images made before the field).
+          set_field_text(**it, &img.cfg, val);
           used = val.size();
-        } else if (auto it = fields.find(key); it != fields.end()) {
-          img.cfg.*(it->second) = std::stoi(val, &used);
         } else {
           used = val.size();  // unknown keys (command, date, ...) are provenance
           img.provenance.push_back(kv);
@@ -231,13 +213,8 @@ std::string format_regimage(const RegImage& img) {
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
   out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
-  out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
-  for (const auto& [key, field] : config_fields())
-    out += fmt::format("// acore: {}={}\n", key, c.*field);
-  if (c.fourier_k > 0)
-    for (const auto& [key, field] : fourier_fields())
-      out += fmt::format("// acore: {}={}\n", key, c.*field);
-  if (c.zero_word) out += fmt::format("// acore: {}=1\n", kZeroWordKey);
+  for (const ConfigField* f : header_fields())
+    if (shows(*f, c)) out += fmt::format("// acore: {}={}\n", f->key, field_text(*f, c));
   if (img.zero_offset != 0.0 || c.zero_word) {
     out += fmt::format("// acore: zero_offset_rad={}\n", img.zero_offset);
     out += fmt::format("// acore: zero_offset_code={}\n", img.zero_offset_code());
