@@ -12,7 +12,7 @@
 
 #include "core/errors.hpp"
 #include "core/fixed_point.hpp"
-#include "stages/fourier_correct.hpp"
+#include "regmap/codec.hpp"
 
 namespace acore {
 
@@ -44,22 +44,19 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-int64_t RegImage::offset(int curve) const {
-  return fx::sext(words.at(cfg.addr_offset(curve)), cfg.reg_w);
-}
-int64_t RegImage::recip(int curve) const {
-  return static_cast<int64_t>(words.at(cfg.addr_recip(curve)));
-}
-int64_t RegImage::poly(int r, int c, int j) const {
-  return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
-}
-int64_t RegImage::atan(int i) const { return static_cast<int64_t>(words.at(cfg.addr_atan(i))); }
-int64_t RegImage::fourier(int j) const {
-  return fx::sext(words.at(cfg.addr_fourier(j)), j == 0 ? cfg.reg_w : cfg.fourier_word_w);
-}
+namespace {
+int64_t field_of(const RegImage& img, const CodecField& f) { return f.field(img.words.at(f.addr)); }
+}  // namespace
 
+int64_t RegImage::offset(int curve) const { return field_of(*this, offset_field(cfg, curve)); }
+int64_t RegImage::recip(int curve) const { return field_of(*this, recip_field(cfg, curve)); }
+int64_t RegImage::poly(int r, int c, int j) const {
+  return field_of(*this, poly_field(cfg, r, c, j));
+}
+int64_t RegImage::atan(int i) const { return field_of(*this, atan_field(cfg, i)); }
+int64_t RegImage::fourier(int j) const { return field_of(*this, fourier_field(cfg, j)); }
 uint32_t RegImage::zero_position() const {
-  return static_cast<uint32_t>(words.at(cfg.addr_zero()) & word_mask(cfg.angle_w));
+  return static_cast<uint32_t>(field_of(*this, zero_field(cfg)));
 }
 
 uint32_t RegImage::zero_offset_code() const { return angle_code(zero_offset, cfg.angle_w); }
@@ -224,44 +221,38 @@ std::string format_regimage(const RegImage& img) {
         c.zero_word ? "subtracted by the ZERO word" : "subtracted by `estimate` in software");
   }
   const int digits = (c.reg_w + 3) / 4;
-  auto line = [&](int addr, const std::string& what) {
-    out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
-  };
-  for (int k = 0; k < 2; ++k)
-    line(c.addr_offset(k), fmt::format("offset O{} = {} codes", k ? "24" : "13", img.offset(k)));
-  for (int k = 0; k < 2; ++k)
-    line(c.addr_recip(k),
-         fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
-                     std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
-  const char* x_name = c.xcenter ? "u" : "x";
-  for (int r = 0; r < c.regions; ++r)
-    for (int k = 0; k < 2; ++k)
-      for (int t = 0; t < c.coef_per_curve(); ++t) {
-        std::string term = fmt::format("{}^{}", x_name, t);
-        if (c.correction == kPoly2d)
-          for (int i = 0; i <= c.degree; ++i)
-            for (int j = 0; i + j <= c.degree; ++j)
-              if (c.term2d(i, j) == t) term = fmt::format("{}^{} v^{}", x_name, i, j);
-        line(c.addr_poly(r, k, t),
-             fmt::format("region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
-                         std::ldexp(static_cast<double>(img.poly(r, k, t)), -c.coef_f)));
+  for (const CodecField& f : codec_table(c)) {
+    const uint64_t w = img.words.at(f.addr);
+    const std::string name = f.name(c);
+    std::string value;
+    switch (f.kind) {
+      case CodecKind::kOffset:
+        value = fmt::format("{} = {} codes", name, f.field(w));
+        break;
+      case CodecKind::kRecip:  // the amplitude the reciprocal stands for
+        value = fmt::format("{} : A = {:.3f} codes", name, 1.0 / f.value(std::max<uint64_t>(1, w)));
+        break;
+      case CodecKind::kPoly:
+        value = fmt::format("{} = {:+.6f}", name, f.value(w));
+        break;
+      case CodecKind::kAtan:
+        value = fmt::format("{} = {:.6f} deg", name, f.value(w, 360.0));
+        break;
+      case CodecKind::kFourierA0:
+        value = fmt::format("{} = {:+.6f} deg", name, f.value(w, 360.0));
+        break;
+      case CodecKind::kFourierHarmonic:
+        value = fmt::format("{} = {:+.6f} deg (word = value / G_M)", name, f.value(w, 360.0));
+        break;
+      case CodecKind::kZero: {
+        const auto code = static_cast<uint32_t>(f.field(w));
+        value = fmt::format("{} = {} = {:+.6f} deg (angle_out = angle - zero)", name, code,
+                            code_angle(code, f.width) * 180 / M_PI);
+        break;
       }
-  for (int i = 0; i < c.iterations; ++i)
-    line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,
-                                     std::ldexp(static_cast<double>(img.atan(i)), -c.z_w) * 360.0));
-  const double gain = c.fourier_k > 0 ? fourier_gain(c) : 1.0;
-  for (int j = 0; j < c.fourier_words(); ++j) {
-    const double deg = std::ldexp(static_cast<double>(img.fourier(j)), -c.fourier_coef_f) * 360.0;
-    if (j == 0)
-      line(c.addr_fourier(j), fmt::format("fourier a_0 = {:+.6f} deg", deg));
-    else
-      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)",
-                                          j % 2 ? "a" : "b", (j + 1) / 2, deg * gain));
+    }
+    out += fmt::format("{:0{}x}  // {:3d} {}\n", w, digits, f.addr, value);
   }
-  if (c.zero_word)
-    line(c.addr_zero(),
-         fmt::format("zero position = {} = {:+.6f} deg (angle_out = angle - zero)",
-                     img.zero_position(), code_angle(img.zero_position(), c.angle_w) * 180 / M_PI));
   return out;
 }
 
