@@ -103,17 +103,72 @@ std::string cordic16_atan(const std::string& registry) {
   return out;
 }
 
+const char* kind_name(acore::CodecKind k) {
+  switch (k) {
+    case acore::CodecKind::kOffset:
+      return "offset";
+    case acore::CodecKind::kRecip:
+      return "amplitude reciprocal";
+    case acore::CodecKind::kPoly:
+      return "polynomial coefficient";
+    case acore::CodecKind::kAtan:
+      return "CORDIC constant";
+    case acore::CodecKind::kFourierA0:
+      return "Fourier a_0";
+    case acore::CodecKind::kFourierHarmonic:
+      return "Fourier harmonic (word = value / G_M)";
+    case acore::CodecKind::kZero:
+      return "zero position (angle code)";
+  }
+  return "?";
+}
+
+std::string register_map(const std::string& overrides) {
+  const acore::DatapathConfig cfg = acore::DatapathConfig{}.with_rtl_params(overrides);
+  cfg.validate();
+  const auto t = acore::codec_table(cfg);
+  std::string out = fmt::format(
+      "Register map of `{}` ({} words of {} bits; written by `{}` from the codec table, "
+      "model/ip/regmap/codec.cpp). Value = gain x field x 2^-frac in the unit; a signed field is "
+      "two's complement in its low `width` bits, the word's upper bits repeating its sign; an "
+      "unsigned field's upper bits are ignored.\n\n"
+      "| addresses | registers | kind | width | signed | fraction bits | gain | unit |\n"
+      "|---|---|---|---|---|---|---|---|\n",
+      cfg.describe(), cfg.words(), cfg.reg_w, acore::cli::command_line());
+  for (size_t a = 0; a < t.size();) {
+    size_t b = a;
+    while (b + 1 < t.size() && t[b + 1].kind == t[a].kind) ++b;
+    const acore::CodecField& f = t[a];
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n",
+                       a == b ? std::to_string(a) : fmt::format("{}-{}", a, b),
+                       a == b ? f.name(cfg) : fmt::format("{} .. {}", f.name(cfg), t[b].name(cfg)),
+                       kind_name(f.kind), f.width, f.is_signed ? "yes" : "no", f.frac,
+                       f.gain == 1.0 ? std::string("1") : fmt::format("{:.6f}", f.gain),
+                       *f.unit ? f.unit : "-");
+    a = b + 1;
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   acore::cli::set_command_line(argc, argv);
-  if (argc != 3 || std::string(argv[1]) != "cordic16_atan") {
-    std::cerr << "usage: acore_gen_tables cordic16_atan REGISTRY   (REGISTRY: rtl/configs.txt; "
-                 "writes to standard output)\n";
+  const std::string what = argc > 1 ? argv[1] : "";
+  if (!((what == "cordic16_atan" && argc == 3) || what == "register_map")) {
+    std::cerr << "usage: acore_gen_tables cordic16_atan REGISTRY   (REGISTRY: rtl/configs.txt)\n"
+                 "       acore_gen_tables register_map [PARAM=value ...]\n"
+                 "writes to standard output\n";
     return 2;
   }
   try {
-    std::cout << cordic16_atan(argv[2]);
+    if (what == "cordic16_atan") {
+      std::cout << cordic16_atan(argv[2]);
+    } else {
+      std::string overrides;
+      for (int i = 2; i < argc; ++i) overrides += std::string(" ") + argv[i];
+      std::cout << register_map(overrides);
+    }
   } catch (const InputError& e) {
     std::cerr << "acore_gen_tables: error: " << e.what() << "\n";
     return 2;

@@ -111,7 +111,7 @@ struct DatapathConfig {
   bool operator!=(const DatapathConfig& o) const { return !(*this == o); }
 
   // Every field as its RTL parameter (name in upper case as in rtl/acore_top.v, value), in the
-  // order of the top's parameter list.
+  // order of config_fields().
   std::vector<std::pair<std::string, int>> rtl_params() const;
   // A copy with RTL parameter overrides applied, e.g. "DEGREE=5 REGIONS=8" (a named configuration
   // line of rtl/configs.txt). Throws InputError naming an unknown parameter or a malformed token.
@@ -140,7 +140,8 @@ struct ConfigField {
   const char* (*name)(int) = nullptr;
   int (*parse)(const std::string&) = nullptr;  // the name's inverse; throws InputError
 };
-// The rows in the order of the top's parameter list.
+// The rows in the order of the top's parameter list, except that ZERO comes before FOLD (the
+// order rtl_params() has always had: the sweep's reports list the parameters in it).
 const std::vector<ConfigField>& config_fields();
 // True when describe() and the image header write the field for configuration c.
 bool shows(const ConfigField& f, const DatapathConfig& c);
