@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
-// acore_cordic16: the stand-alone 16-bit CORDIC measured by synth/ (rtl/cordic16.cfg: 16-bit x/y,
-// 16-bit angle over the full circle, NORM=1) with its arctangent table as constants, like a core
-// with a ROM table; the atan words come from synth/build/cordic16_atan.vh, which scripts/synth.sh
-// generates with the formula of model/cordic.cpp cordic_atan_table(). The inputs are registered
-// once here (one clock more than acore_cordic's LATENCY) so that every timed path is register to
-// register. 69 I/O pins: no pin wrapper needed.
+// acore_cordic16: the stand-alone 16-bit CORDIC measured by synth/ (the `cordic16` line of
+// rtl/configs.txt: 16-bit x/y, 16-bit angle over the full circle, NORM=1) with its arctangent table
+// as constants, like a core with a ROM table. Its parameters and atan words are in
+// synth/acore_cordic16_atan.vh, written from the model's cordic_atan_table() by acore_gen_tables
+// (checked in; the CTest gen_tables_current fails when it is not what the model writes). The
+// inputs are registered once here (one clock more than acore_cordic's LATENCY) so that every timed
+// path is register to register. 69 I/O pins: no pin wrapper needed.
 `resetall
 `default_nettype none
 
@@ -16,7 +17,7 @@ module acore_cordic16 (
   output wire [15:0] angle_o,
   output wire [17:0] mag_o
 );
-`include "cordic16_atan.vh"
+`include "acore_cordic16_atan.vh"
 
   reg [15:0] x_q, y_q;
   always @(posedge clk_i) begin

@@ -20,9 +20,6 @@ MODEL_DIRS = ["model/ip", "model/lab"]
 EXCEPTIONS = {
     "errors": "core/errors.hpp declares the two exception types and nothing else: no behaviour "
               "to test; the exit statuses they select are asserted by every CLI test",
-    "codec": "quantize/dequantize are covered by test_regimage.cpp today (DequantizeInvertsQuantize"
-             "WithinOneLsb, QuantizeRejectsCoefficientsOutOfRange); tests/test_codec.cpp is being "
-             "written with the codec table: remove this line when it lands",
 }
 
 

@@ -1,18 +1,25 @@
 // SPDX-License-Identifier: MIT
-// Register image: the docs/contracts.md, register image map, round trip through the $readmemh text,
+// Register image: the map of docs/register-map.md, round trip through the $readmemh text,
 // and bad input.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <random>
+#include <set>
+#include <sstream>
 
 #include "calibration/calibration.hpp"
+#include "core/angle.hpp"
 #include "core/errors.hpp"
+#include "core/fixed_point.hpp"
 #include "engine/fixed_model.hpp"
 #include "regmap/regimage.hpp"
 #include "stages/cordic.hpp"
+#include "stages/fourier_correct.hpp"
 #include "support/paper_signals.hpp"
 
 namespace acore {
@@ -87,6 +94,197 @@ TEST(RegImage, FoldIsTheRtlScheduleNotPartOfTheImage) {
   for (int k = 0; k < 200; ++k) {
     const int32_t a = (k * 7919) % 20000 - 10000, b = (k * 104729) % 20000 - 10000;
     EXPECT_TRUE(m1.step({a, b, -a / 3, b / 5}) == m8.step({a, b, -a / 3, b / 5}));
+  }
+}
+
+// format_regimage() as it was written before the codec and field tables (a Q-format and a header
+// key list of its own): the images made so far, byte for byte.
+std::string legacy_format(const RegImage& img) {
+  const DatapathConfig& c = img.cfg;
+  std::string out = "// AngleCore coefficient register image ($readmemh), docs/register-map.md\n";
+  for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
+  out += fmt::format("// acore: in_scale={}\n", img.in_scale);
+  out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
+  out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
+  const std::map<std::string, int DatapathConfig::*> keys = {
+      {"in_w", &DatapathConfig::in_w},
+      {"reg_w", &DatapathConfig::reg_w},
+      {"s_w", &DatapathConfig::s_w},
+      {"s_f", &DatapathConfig::s_f},
+      {"r_shift", &DatapathConfig::r_shift},
+      {"scale_guard", &DatapathConfig::scale_guard},
+      {"degree", &DatapathConfig::degree},
+      {"regions", &DatapathConfig::regions},
+      {"xcenter", &DatapathConfig::xcenter},
+      {"coef_f", &DatapathConfig::coef_f},
+      {"acc_guard", &DatapathConfig::acc_guard},
+      {"acc_int", &DatapathConfig::acc_int},
+      {"iterations", &DatapathConfig::iterations},
+      {"cordic_guard", &DatapathConfig::cordic_guard},
+      {"z_w", &DatapathConfig::z_w},
+      {"angle_w", &DatapathConfig::angle_w}};
+  const std::map<std::string, int DatapathConfig::*> fourier_keys = {
+      {"fourier_k", &DatapathConfig::fourier_k},
+      {"fourier_iterations", &DatapathConfig::fourier_iterations},
+      {"fourier_coef_f", &DatapathConfig::fourier_coef_f},
+      {"fourier_word_w", &DatapathConfig::fourier_word_w},
+      {"fourier_guard", &DatapathConfig::fourier_guard}};
+  for (const auto& [key, field] : keys) out += fmt::format("// acore: {}={}\n", key, c.*field);
+  if (c.fourier_k > 0)
+    for (const auto& [key, field] : fourier_keys)
+      out += fmt::format("// acore: {}={}\n", key, c.*field);
+  if (c.zero_word) out += "// acore: zero_word=1\n";
+  if (img.zero_offset != 0.0 || c.zero_word) {
+    out += fmt::format("// acore: zero_offset_rad={}\n", img.zero_offset);
+    out += fmt::format("// acore: zero_offset_code={}\n", img.zero_offset_code());
+    out += fmt::format(
+        "// zero offset = {:+.6f} deg electrical (sensor angle - p theta_ref), {}\n",
+        img.zero_offset * 180 / M_PI,
+        c.zero_word ? "subtracted by the ZERO word" : "subtracted by `estimate` in software");
+  }
+  const int digits = (c.reg_w + 3) / 4;
+  auto sx = [&](int addr, int w) { return fx::sext(static_cast<int64_t>(img.words[addr]), w); };
+  auto line = [&](int addr, const std::string& what) {
+    out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
+  };
+  for (int k = 0; k < 2; ++k)
+    line(c.addr_offset(k),
+         fmt::format("offset O{} = {} codes", k ? "24" : "13", sx(c.addr_offset(k), c.reg_w)));
+  for (int k = 0; k < 2; ++k)
+    line(c.addr_recip(k),
+         fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
+                     std::ldexp(1.0, c.s_f + c.r_shift) /
+                         std::max<int64_t>(1, static_cast<int64_t>(img.words[c.addr_recip(k)]))));
+  const char* x_name = c.xcenter ? "u" : "x";
+  for (int r = 0; r < c.regions; ++r)
+    for (int k = 0; k < 2; ++k)
+      for (int t = 0; t < c.coef_per_curve(); ++t) {
+        std::string term = fmt::format("{}^{}", x_name, t);
+        if (c.correction == kPoly2d)
+          for (int i = 0; i <= c.degree; ++i)
+            for (int j = 0; i + j <= c.degree; ++j)
+              if (c.term2d(i, j) == t) term = fmt::format("{}^{} v^{}", x_name, i, j);
+        line(c.addr_poly(r, k, t),
+             fmt::format(
+                 "region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
+                 std::ldexp(static_cast<double>(sx(c.addr_poly(r, k, t), c.reg_w)), -c.coef_f)));
+      }
+  for (int i = 0; i < c.iterations; ++i)
+    line(c.addr_atan(i),
+         fmt::format("atan(2^-{}) = {:.6f} deg", i,
+                     std::ldexp(static_cast<double>(img.words[c.addr_atan(i)]), -c.z_w) * 360.0));
+  const double gain = c.fourier_k > 0 ? fourier_gain(c) : 1.0;
+  for (int j = 0; j < c.fourier_words(); ++j) {
+    const int64_t v = sx(c.addr_fourier(j), j == 0 ? c.reg_w : c.fourier_word_w);
+    const double deg = std::ldexp(static_cast<double>(v), -c.fourier_coef_f) * 360.0;
+    if (j == 0)
+      line(c.addr_fourier(j), fmt::format("fourier a_0 = {:+.6f} deg", deg));
+    else
+      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)",
+                                          j % 2 ? "a" : "b", (j + 1) / 2, deg * gain));
+  }
+  if (c.zero_word) {
+    const auto z = static_cast<uint32_t>(img.words[c.addr_zero()] & ((1u << c.angle_w) - 1));
+    line(c.addr_zero(), fmt::format("zero position = {} = {:+.6f} deg (angle_out = angle - zero)",
+                                    z, code_angle(z, c.angle_w) * 180 / M_PI));
+  }
+  return out;
+}
+
+// Configurations of every map shape: the modes, 8 centred regions, the Fourier stage with and
+// without polynomials, the ZERO word, the wide CORDIC.
+const char* kShapes[] = {
+    "",
+    "DEGREE=5 REGIONS=8 COEF_F=12 ACC_G=7 ACC_I=7",
+    "CORRECTION=1",
+    "CORRECTION=1 DEGREE=1 REGIONS=8 XCENTER=1",
+    "CORRECTION=2",
+    "DEGREE=7 REGIONS=8 XCENTER=1",
+    "FOURIER_K=5",
+    "CORRECTION=2 FOURIER_K=21 ZERO=1",
+    "ZERO=1",
+    "CORRECTION=1 IN_W=18 REG_W=20 COEF_F=17 K=18 CORDIC_G=4 Z_W=22 ANGLE_W=18",
+    "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20 ZERO=1 FOURIER_K=3"};
+
+// An image of configuration cfg with random words (signed fields sign-extended, as quantize()
+// writes them), random zero offset and in_scale, and provenance lines.
+RegImage random_image(const DatapathConfig& cfg, std::mt19937_64& rng) {
+  RegImage img;
+  img.cfg = cfg;
+  img.in_scale = std::ldexp(1.0, static_cast<int>(rng() % 16));
+  img.zero_offset = rng() % 3 ? std::uniform_real_distribution<double>(-M_PI, M_PI)(rng) : 0.0;
+  img.provenance = {"command=anglecore calibrate --in 'a b.csv'", "periodicity=3"};
+  img.words.assign(cfg.words(), 0);
+  for (auto& w : img.words) w = rng() & ((uint64_t{1} << cfg.reg_w) - 1);
+  for (int j = 1; j < cfg.fourier_words(); ++j)  // a harmonic's upper bits repeat its sign
+    img.words[cfg.addr_fourier(j)] =
+        static_cast<uint64_t>(
+            fx::sext(static_cast<int64_t>(img.words[cfg.addr_fourier(j)]), cfg.fourier_word_w)) &
+        ((uint64_t{1} << cfg.reg_w) - 1);
+  return img;
+}
+
+TEST(RegImage, TextIsByteIdenticalToTheHandWrittenFormat) {
+  std::mt19937_64 rng(5);
+  for (const char* p : kShapes) {
+    const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
+    ASSERT_NO_THROW(cfg.validate()) << p;
+    for (int n = 0; n < 40; ++n) {
+      const RegImage img = random_image(cfg, rng);
+      const std::string text = format_regimage(img);
+      ASSERT_EQ(text, legacy_format(img)) << p;
+      const RegImage back = parse_regimage(text, "x");
+      EXPECT_EQ(back.words, img.words) << p;
+      EXPECT_TRUE(back.cfg == img.cfg) << p;
+      EXPECT_EQ(back.provenance, img.provenance) << p;
+    }
+  }
+  // And on calibrated images.
+  EXPECT_EQ(format_regimage(paper_image()), legacy_format(paper_image()));
+}
+
+// The header's configuration keys are the field table's image keys that shows() writes, and each
+// one read back sets its own field.
+TEST(RegImage, HeaderKeysAreTheFieldTablesImageKeys) {
+  for (const char* p : kShapes) {
+    const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
+    std::mt19937_64 rng(6);
+    const std::string text = format_regimage(random_image(cfg, rng));
+    std::set<std::string> keys;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line))
+      if (line.rfind("// acore: ", 0) == 0) keys.insert(line.substr(10, line.find('=') - 10));
+    for (const char* other :
+         {"in_scale", "crc32", "command", "periodicity", "zero_offset_rad", "zero_offset_code"})
+      keys.erase(other);
+    std::set<std::string> want;
+    for (const ConfigField& f : config_fields())
+      if (f.in_image && shows(f, cfg)) want.insert(f.key);
+    EXPECT_EQ(keys, want) << p;
+  }
+  // Each image key read back sets its own field: for every field, an image of a legal
+  // configuration that differs from the base in that field alone.
+  const DatapathConfig base = DatapathConfig{}.with_rtl_params("FOURIER_K=3 REGIONS=8");
+  std::mt19937_64 rng(7);
+  for (const ConfigField& f : config_fields()) {
+    if (!f.in_image) continue;
+    bool found = false;
+    for (int delta : {1, -1, 2, -2, 3, -3, 4, -4}) {
+      DatapathConfig want = base;
+      want.*f.member += delta;
+      try {
+        want.validate();
+      } catch (const InputError&) {
+        continue;
+      }
+      found = true;
+      const DatapathConfig got = parse_regimage(format_regimage(random_image(want, rng)), "x").cfg;
+      for (const ConfigField& g : config_fields())
+        EXPECT_EQ(got.*g.member, want.*g.member) << f.key << " changed, " << g.key << " read";
+      break;
+    }
+    EXPECT_TRUE(found) << f.key;
   }
 }
 

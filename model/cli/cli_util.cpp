@@ -1,12 +1,67 @@
 // SPDX-License-Identifier: MIT
 #include "cli_util.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "core/errors.hpp"
 
 namespace acore::cli {
+
+namespace {
+std::string& recorded_command_line() {
+  static std::string s;
+  return s;
+}
+}  // namespace
+
+std::string shell_quote(const std::string& t) {
+  const char* safe = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_@%+=:,./-";
+  if (!t.empty() && t.find_first_not_of(safe) == std::string::npos) return t;
+  const bool control = std::any_of(t.begin(), t.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7f;
+  });
+  std::string q;
+  if (!control) {
+    q = "'";
+    for (const char c : t) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  }
+  q = "$'";
+  for (const char c : t) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\\' || c == '\'')
+      q += std::string("\\") + c;
+    else if (c == '\n')
+      q += "\\n";
+    else if (c == '\t')
+      q += "\\t";
+    else if (c == '\r')
+      q += "\\r";
+    else if (u < 0x20 || u == 0x7f)
+      q += fmt::format("\\x{:02x}", u);
+    else
+      q += c;
+  }
+  return q + "'";
+}
+
+void set_command_line(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) {
+    std::string t = argv[i];
+    if (i == 0) t = std::filesystem::path(t).filename().string();
+    s += (i ? " " : "") + shell_quote(t);
+  }
+  recorded_command_line() = s;
+}
+
+const std::string& command_line() { return recorded_command_line(); }
 
 std::ostream& json_stdout() {
   static std::ostream out(std::cout.rdbuf());  // bound before main() may redirect std::cout

@@ -78,15 +78,7 @@ void run_calibrate(const CalibrateArgs& a) {
   RegImage img =
       a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
   cfg = img.cfg;
-  std::string fourier_args;
-  if (a.fourier > 0)
-    fourier_args = fmt::format(" --fourier {} --fourier-iterations {} --fourier-guard {}",
-                               a.fourier, a.fourier_iterations, a.fourier_guard);
-  img.provenance.push_back(fmt::format(
-      "command=anglecore calibrate --in {} --correction {} --degree {} "
-      "--regions {}{} --angle-w {} --in-w {} --iterations {}{} --zero-offset {}{}",
-      a.in, a.correction, a.degree, a.regions, a.xcenter ? " --xcenter" : "", a.angle_w, a.in_w,
-      cfg.iterations, fourier_args, a.zero_offset, a.zero_word ? " --zero-word" : ""));
+  img.provenance.push_back("command=" + command_line());
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
   write_regimage(img, a.out);
 

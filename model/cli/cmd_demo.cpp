@@ -96,8 +96,9 @@ void run_demo(const DemoArgs& a) {
   write_recording(cal, (fs::path(a.out) / "calibration.csv").string());
   write_recording(val, (fs::path(a.out) / "validation.csv").string());
   ChainRun run = run_chain(cal, val, CalOptions{}, DatapathConfig{});
+  run.img.provenance.push_back("command=" + command_line());
   run.img.provenance.push_back(
-      fmt::format("command=anglecore demo --samples {} (seed {})", a.samples, a.seed_cal));
+      fmt::format("calibration=paper scenario, {} samples, seed {}", a.samples, a.seed_cal));
   write_regimage(run.img, (fs::path(a.out) / "regs.hex").string());
 
   // "uncorrected" as the paper reports it: atan2 of the scaled curves against the reference; then
@@ -153,8 +154,8 @@ void run_demo(const DemoArgs& a) {
   md << fmt::format(
       "Paper scenario (docs/contracts.md), {} samples per recording; calibration "
       "seed {}, "
-      "validation seed {}. Command: `anglecore demo --samples {}`.\n\n",
-      a.samples, a.seed_cal, a.seed_val, a.samples);
+      "validation seed {}. Command: `{}`.\n\n",
+      a.samples, a.seed_cal, a.seed_val, command_line());
   md << "## Table 3, reproduced and beaten (validation recording)\n\n";
   md << "Error = estimate − reference, wrapped to (−180°, 180°], in degrees.\n\n";
   md << "| chain | RMS | max abs | mean | note |\n|---|---|---|---|---|\n";

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 
 int main(int argc, char** argv) {
+  acore::cli::set_command_line(argc, argv);  // provenance: images record the command verbatim
   CLI::App app{"AngleCore: angle-sensor calibration, estimation, co-simulation and diagnosis"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");

@@ -25,8 +25,8 @@ bool accepts(const std::string& text) {
   }
   // A parsed image round-trips exactly.
   const acore::RegImage b = acore::parse_regimage(acore::format_regimage(img), "fuzz-roundtrip");
-  if (b.words != img.words || b.in_scale != img.in_scale ||
-      b.cfg.describe() != img.cfg.describe() || b.zero_offset != img.zero_offset)
+  if (b.words != img.words || b.in_scale != img.in_scale || b.cfg != img.cfg ||
+      b.zero_offset != img.zero_offset)
     std::abort();
   if (static_cast<int>(img.words.size()) != img.cfg.words()) std::abort();
   // And the bit-accurate model runs on it (any words: saturation paths), extreme inputs included.

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <sstream>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 
@@ -131,60 +132,97 @@ DatapathConfig cordic_width_preset(int angle_w) {
   return c;
 }
 
-std::string DatapathConfig::describe() const {
-  std::string fourier;
-  if (fourier_k > 0)
-    fourier = fmt::format(
-        " fourier_k={} fourier_iterations={} fourier_coef_f={} fourier_word_w={} fourier_guard={}",
-        fourier_k, fourier_iterations, fourier_coef_f, fourier_word_w, fourier_guard);
-  const std::string folded = fold != 1 ? fmt::format(" fold={}", fold) : "";
-  return fmt::format(
-      "correction={} in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} "
-      "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} "
-      "angle_w={}{}{}{}",
-      correction_name(correction), in_w, reg_w, s_w, s_f, r_shift, scale_guard, degree, regions,
-      xcenter, coef_f, acc_guard, acc_int, iterations, cordic_guard, z_w, angle_w, fourier,
-      zero_word ? " zero_word=1" : "", folded);
-}
-
 namespace {
-// RTL parameter name -> field. One table, so the model, the named configurations (rtl/configs.txt)
-// and the synthesis sweep cannot disagree on a name.
-using Field = int DatapathConfig::*;
-const std::vector<std::pair<const char*, Field>>& rtl_param_table() {
-  static const std::vector<std::pair<const char*, Field>> t = {
-      {"IN_W", &DatapathConfig::in_w},
-      {"REG_W", &DatapathConfig::reg_w},
-      {"S_W", &DatapathConfig::s_w},
-      {"S_F", &DatapathConfig::s_f},
-      {"R_SHIFT", &DatapathConfig::r_shift},
-      {"SCALE_G", &DatapathConfig::scale_guard},
-      {"CORRECTION", &DatapathConfig::correction},
-      {"DEGREE", &DatapathConfig::degree},
-      {"REGIONS", &DatapathConfig::regions},
-      {"XCENTER", &DatapathConfig::xcenter},
-      {"COEF_F", &DatapathConfig::coef_f},
-      {"ACC_G", &DatapathConfig::acc_guard},
-      {"ACC_I", &DatapathConfig::acc_int},
-      {"K", &DatapathConfig::iterations},
-      {"CORDIC_G", &DatapathConfig::cordic_guard},
-      {"Z_W", &DatapathConfig::z_w},
-      {"ANGLE_W", &DatapathConfig::angle_w},
-      {"FOURIER_K", &DatapathConfig::fourier_k},
-      {"FOURIER_M", &DatapathConfig::fourier_iterations},
-      {"FOURIER_CF", &DatapathConfig::fourier_coef_f},
-      {"FOURIER_W", &DatapathConfig::fourier_word_w},
-      {"FOURIER_G", &DatapathConfig::fourier_guard},
-      {"ZERO", &DatapathConfig::zero_word},
-      {"FOLD", &DatapathConfig::fold},
+// The correction names the map's shape, so describe() and the image header name it first.
+bool leads(const ConfigField& f) { return f.member == &DatapathConfig::correction; }
+}  // namespace
+
+const std::vector<ConfigField>& config_fields() {
+  using D = DatapathConfig;
+  using S = FieldShown;
+  static const std::vector<ConfigField> t = {
+      {&D::in_w, "IN_W", "in_w", S::kAlways, true},
+      {&D::reg_w, "REG_W", "reg_w", S::kAlways, true},
+      {&D::s_w, "S_W", "s_w", S::kAlways, true},
+      {&D::s_f, "S_F", "s_f", S::kAlways, true},
+      {&D::r_shift, "R_SHIFT", "r_shift", S::kAlways, true},
+      {&D::scale_guard, "SCALE_G", "scale_guard", S::kAlways, true},
+      {&D::correction, "CORRECTION", "correction", S::kAlways, true, correction_name,
+       parse_correction},
+      {&D::degree, "DEGREE", "degree", S::kAlways, true},
+      {&D::regions, "REGIONS", "regions", S::kAlways, true},
+      {&D::xcenter, "XCENTER", "xcenter", S::kAlways, true},
+      {&D::coef_f, "COEF_F", "coef_f", S::kAlways, true},
+      {&D::acc_guard, "ACC_G", "acc_guard", S::kAlways, true},
+      {&D::acc_int, "ACC_I", "acc_int", S::kAlways, true},
+      {&D::iterations, "K", "iterations", S::kAlways, true},
+      {&D::cordic_guard, "CORDIC_G", "cordic_guard", S::kAlways, true},
+      {&D::z_w, "Z_W", "z_w", S::kAlways, true},
+      {&D::angle_w, "ANGLE_W", "angle_w", S::kAlways, true},
+      {&D::fourier_k, "FOURIER_K", "fourier_k", S::kWithFourier, true},
+      {&D::fourier_iterations, "FOURIER_M", "fourier_iterations", S::kWithFourier, true},
+      {&D::fourier_coef_f, "FOURIER_CF", "fourier_coef_f", S::kWithFourier, true},
+      {&D::fourier_word_w, "FOURIER_W", "fourier_word_w", S::kWithFourier, true},
+      {&D::fourier_guard, "FOURIER_G", "fourier_guard", S::kWithFourier, true},
+      {&D::zero_word, "ZERO", "zero_word", S::kWhenOne, true},
+      {&D::fold, "FOLD", "fold", S::kWhenNotOne, false},
   };
   return t;
 }
-}  // namespace
+
+bool shows(const ConfigField& f, const DatapathConfig& c) {
+  switch (f.shown) {
+    case FieldShown::kAlways:
+      return true;
+    case FieldShown::kWithFourier:
+      return c.fourier_k > 0;
+    case FieldShown::kWhenOne:
+      return c.*f.member == 1;
+    case FieldShown::kWhenNotOne:
+      return c.*f.member != 1;
+  }
+  return true;
+}
+
+std::string field_text(const ConfigField& f, const DatapathConfig& c) {
+  return f.name ? std::string(f.name(c.*f.member)) : std::to_string(c.*f.member);
+}
+
+void set_field_text(const ConfigField& f, DatapathConfig* c, const std::string& text) {
+  if (f.parse) {
+    c->*f.member = f.parse(text);
+    return;
+  }
+  size_t used = 0;
+  const int v = std::stoi(text, &used);
+  if (used != text.size()) throw std::invalid_argument(text);
+  c->*f.member = v;
+}
+
+std::string DatapathConfig::describe() const {
+  std::string s;
+  auto add = [&](const ConfigField& f) {
+    if (shows(f, *this))
+      s += fmt::format("{}{}={}", s.empty() ? "" : " ", f.key, field_text(f, *this));
+  };
+  for (const ConfigField& f : config_fields())
+    if (leads(f)) add(f);
+  for (const ConfigField& f : config_fields())
+    if (!leads(f)) add(f);
+  return s;
+}
+
+bool DatapathConfig::operator==(const DatapathConfig& o) const {
+  for (const ConfigField& f : config_fields()) {
+    if (f.shown == FieldShown::kWithFourier && fourier_k == 0 && o.fourier_k == 0) continue;
+    if (this->*f.member != o.*f.member) return false;
+  }
+  return true;
+}
 
 std::vector<std::pair<std::string, int>> DatapathConfig::rtl_params() const {
   std::vector<std::pair<std::string, int>> v;
-  for (const auto& [name, field] : rtl_param_table()) v.emplace_back(name, this->*field);
+  for (const ConfigField& f : config_fields()) v.emplace_back(f.rtl, this->*f.member);
   return v;
 }
 
@@ -197,13 +235,13 @@ DatapathConfig DatapathConfig::with_rtl_params(const std::string& overrides) con
     if (eq == std::string::npos || eq == 0 || eq + 1 == tok.size())
       throw InputError(fmt::format("RTL parameter '{}': expected NAME=value", tok));
     const std::string name = tok.substr(0, eq), value = tok.substr(eq + 1);
-    Field field = nullptr;
-    for (const auto& [n, f] : rtl_param_table())
-      if (name == n) field = f;
+    const ConfigField* field = nullptr;
+    for (const ConfigField& f : config_fields())
+      if (name == f.rtl) field = &f;
     if (!field) {
       std::string known;
-      for (const auto& [n, f] : rtl_param_table())
-        known += std::string(known.empty() ? "" : ", ") + n;
+      for (const ConfigField& f : config_fields())
+        known += std::string(known.empty() ? "" : ", ") + f.rtl;
       throw InputError(fmt::format("RTL parameter '{}' is unknown (known: {})", name, known));
     }
     size_t used = 0;
@@ -215,7 +253,7 @@ DatapathConfig DatapathConfig::with_rtl_params(const std::string& overrides) con
     }
     if (used != value.size())
       throw InputError(fmt::format("RTL parameter {}: '{}' is not an integer", name, value));
-    c.*field = v;
+    c.*(field->member) = v;
   }
   return c;
 }

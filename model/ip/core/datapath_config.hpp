@@ -98,24 +98,59 @@ struct DatapathConfig {
   // The ZERO word: the last word of the map (after the atan words and the Fourier words).
   int addr_zero() const { return 4 + poly_words() + iterations + fourier_words(); }
 
-  // Field equality (every parameter, FOLD included): how a Verilated build is found for an image.
-  bool operator==(const DatapathConfig& o) const { return rtl_params() == o.rtl_params(); }
-  bool operator!=(const DatapathConfig& o) const { return !(*this == o); }
-
   // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
   void validate() const;
-  // "degree=3 regions=4 iterations=16 ..." for headers and logs (fourier_* only when fourier_k > 0,
-  // zero_word only when it is 1, fold only when it is not 1: the RTL engine matches builds by this
-  // string).
+  // "correction=poly in_w=16 ..." for headers and logs: every field of config_fields() that it
+  // shows (shows()), the correction first, then in the table's order.
   std::string describe() const;
+  // Field equality over config_fields(). The Fourier stage's parameters count only when either
+  // side has the stage (fourier_k > 0): without it they are not part of the datapath (validate()
+  // and describe() ignore them, and the image header does not record them), so two legal
+  // configurations are equal exactly when their describe() strings are. FOLD counts: this is how
+  // the RTL engine finds the Verilated build of an image's configuration.
+  bool operator==(const DatapathConfig& o) const;
+  bool operator!=(const DatapathConfig& o) const { return !(*this == o); }
 
   // Every field as its RTL parameter (name in upper case as in rtl/acore_top.v, value), in the
-  // order of the top's parameter list.
+  // order of config_fields().
   std::vector<std::pair<std::string, int>> rtl_params() const;
   // A copy with RTL parameter overrides applied, e.g. "DEGREE=5 REGIONS=8" (a named configuration
   // line of rtl/configs.txt). Throws InputError naming an unknown parameter or a malformed token.
   DatapathConfig with_rtl_params(const std::string& overrides) const;
 };
+
+// When a field is written into describe() and the image header. Fields added after images were
+// first written appear only when they differ from the value that older images imply, so those
+// images keep their exact text.
+enum class FieldShown {
+  kAlways,
+  kWithFourier,  // only with the Fourier stage (fourier_k > 0)
+  kWhenOne,      // only when 1 (zero_word)
+  kWhenNotOne,   // only when not 1 (fold)
+};
+
+// One row per field of DatapathConfig: the one table behind describe(), operator==, rtl_params(),
+// with_rtl_params() and the register image header (regmap/regimage.cpp reads and writes its keys).
+struct ConfigField {
+  int DatapathConfig::*member;
+  const char* rtl;  // RTL parameter of rtl/acore_top.v
+  const char* key;  // describe() key, and the image header key when in_image
+  FieldShown shown;
+  bool in_image;  // false: the RTL's schedule (fold), which the image does not record
+  // A field written as a name (correction: poly, poly2d, none) instead of a number.
+  const char* (*name)(int) = nullptr;
+  int (*parse)(const std::string&) = nullptr;  // the name's inverse; throws InputError
+};
+// The rows in the order of the top's parameter list, except that ZERO comes before FOLD (the
+// order rtl_params() has always had: the sweep's reports list the parameters in it).
+const std::vector<ConfigField>& config_fields();
+// True when describe() and the image header write the field for configuration c.
+bool shows(const ConfigField& f, const DatapathConfig& c);
+// The field's value as describe() and the header write it (a number, or its name).
+std::string field_text(const ConfigField& f, const DatapathConfig& c);
+// Sets the field from its text (a number, or its name). Throws InputError (an unknown name) or
+// std::invalid_argument (not a whole integer).
+void set_field_text(const ConfigField& f, DatapathConfig* c, const std::string& text);
 
 // The default configuration with the CORDIC sized for an ANGLE_W-bit output (README "CORDIC width
 // options"): 8..16 -> K=16, CORDIC_G=3, Z_W=20, REG_W=18 (the paper's point); 18 -> K=18, G=4,

@@ -4,14 +4,15 @@
 #include <fmt/format.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <sstream>
+#include <tuple>
 
 #include "core/errors.hpp"
 #include "core/fixed_point.hpp"
-#include "stages/fourier_correct.hpp"
+#include "regmap/codec.hpp"
 
 namespace acore {
 
@@ -19,37 +20,19 @@ namespace {
 
 uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
 
-// Header keys and the config field each sets.
-std::map<std::string, int DatapathConfig::*> config_fields() {
-  return {{"in_w", &DatapathConfig::in_w},
-          {"reg_w", &DatapathConfig::reg_w},
-          {"s_w", &DatapathConfig::s_w},
-          {"s_f", &DatapathConfig::s_f},
-          {"r_shift", &DatapathConfig::r_shift},
-          {"scale_guard", &DatapathConfig::scale_guard},
-          {"degree", &DatapathConfig::degree},
-          {"regions", &DatapathConfig::regions},
-          {"xcenter", &DatapathConfig::xcenter},
-          {"coef_f", &DatapathConfig::coef_f},
-          {"acc_guard", &DatapathConfig::acc_guard},
-          {"acc_int", &DatapathConfig::acc_int},
-          {"iterations", &DatapathConfig::iterations},
-          {"cordic_guard", &DatapathConfig::cordic_guard},
-          {"z_w", &DatapathConfig::z_w},
-          {"angle_w", &DatapathConfig::angle_w}};
-}
-
-// Written only when 1, so images without the ZERO word keep their exact text.
-constexpr const char* kZeroWordKey = "zero_word";
-
-// The Fourier stage's keys: written only when fourier_k > 0, so images without the stage keep
-// their exact text.
-std::map<std::string, int DatapathConfig::*> fourier_fields() {
-  return {{"fourier_k", &DatapathConfig::fourier_k},
-          {"fourier_iterations", &DatapathConfig::fourier_iterations},
-          {"fourier_coef_f", &DatapathConfig::fourier_coef_f},
-          {"fourier_word_w", &DatapathConfig::fourier_word_w},
-          {"fourier_guard", &DatapathConfig::fourier_guard}};
+// The header's configuration keys in the order images have always had them: the correction,
+// then the keys written always, those of the Fourier stage (only with it) and zero_word (only when
+// 1), each group alphabetically. The table is DatapathConfig's (config_fields()).
+std::vector<const ConfigField*> header_fields() {
+  std::vector<const ConfigField*> v;
+  for (const ConfigField& f : config_fields())
+    if (f.in_image) v.push_back(&f);
+  auto rank = [](const ConfigField* f) {
+    return std::make_tuple(f->member != &DatapathConfig::correction, static_cast<int>(f->shown),
+                           std::string(f->key));
+  };
+  std::sort(v.begin(), v.end(), [&](auto* a, auto* b) { return rank(a) < rank(b); });
+  return v;
 }
 
 std::string trim(const std::string& s) {
@@ -61,22 +44,19 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-int64_t RegImage::offset(int curve) const {
-  return fx::sext(words.at(cfg.addr_offset(curve)), cfg.reg_w);
-}
-int64_t RegImage::recip(int curve) const {
-  return static_cast<int64_t>(words.at(cfg.addr_recip(curve)));
-}
-int64_t RegImage::poly(int r, int c, int j) const {
-  return fx::sext(words.at(cfg.addr_poly(r, c, j)), cfg.reg_w);
-}
-int64_t RegImage::atan(int i) const { return static_cast<int64_t>(words.at(cfg.addr_atan(i))); }
-int64_t RegImage::fourier(int j) const {
-  return fx::sext(words.at(cfg.addr_fourier(j)), j == 0 ? cfg.reg_w : cfg.fourier_word_w);
-}
+namespace {
+int64_t field_of(const RegImage& img, const CodecField& f) { return f.field(img.words.at(f.addr)); }
+}  // namespace
 
+int64_t RegImage::offset(int curve) const { return field_of(*this, offset_field(cfg, curve)); }
+int64_t RegImage::recip(int curve) const { return field_of(*this, recip_field(cfg, curve)); }
+int64_t RegImage::poly(int r, int c, int j) const {
+  return field_of(*this, poly_field(cfg, r, c, j));
+}
+int64_t RegImage::atan(int i) const { return field_of(*this, atan_field(cfg, i)); }
+int64_t RegImage::fourier(int j) const { return field_of(*this, fourier_field(cfg, j)); }
 uint32_t RegImage::zero_position() const {
-  return static_cast<uint32_t>(words.at(cfg.addr_zero()) & word_mask(cfg.angle_w));
+  return static_cast<uint32_t>(field_of(*this, zero_field(cfg)));
 }
 
 uint32_t RegImage::zero_offset_code() const { return angle_code(zero_offset, cfg.angle_w); }
@@ -110,9 +90,7 @@ uint32_t image_crc32(const RegImage& img) {
 
 RegImage parse_regimage(const std::string& text, const std::string& name) {
   RegImage img;
-  auto fields = config_fields();
-  fields.merge(fourier_fields());
-  fields.emplace(kZeroWordKey, &DatapathConfig::zero_word);
+  const std::vector<const ConfigField*> fields = header_fields();
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -157,11 +135,12 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
           zero_code = std::stoll(val, &used);
           if (zero_code < 0 || val[0] == '-' || val[0] == '+') used = 0;
           code_line = lineno;
-        } else if (key == "correction") {
-          img.cfg.correction = parse_correction(val);  // absent: poly (images before the field)
+        } else if (auto it = std::find_if(fields.begin(), fields.end(),
+                                          [&](const ConfigField* f) { return key == f->key; });
+                   it != fields.end()) {
+          // An absent key keeps the default (correction=poly in images made before the field).
+          set_field_text(**it, &img.cfg, val);
           used = val.size();
-        } else if (auto it = fields.find(key); it != fields.end()) {
-          img.cfg.*(it->second) = std::stoi(val, &used);
         } else {
           used = val.size();  // unknown keys (command, date, ...) are provenance
           img.provenance.push_back(kv);
@@ -229,13 +208,8 @@ std::string format_regimage(const RegImage& img) {
   for (const auto& p : img.provenance) out += "// acore: " + p + "\n";
   out += fmt::format("// acore: in_scale={}\n", img.in_scale);
   out += fmt::format("// acore: crc32=0x{:08x}\n", image_crc32(img));
-  out += fmt::format("// acore: correction={}\n", correction_name(c.correction));
-  for (const auto& [key, field] : config_fields())
-    out += fmt::format("// acore: {}={}\n", key, c.*field);
-  if (c.fourier_k > 0)
-    for (const auto& [key, field] : fourier_fields())
-      out += fmt::format("// acore: {}={}\n", key, c.*field);
-  if (c.zero_word) out += fmt::format("// acore: {}=1\n", kZeroWordKey);
+  for (const ConfigField* f : header_fields())
+    if (shows(*f, c)) out += fmt::format("// acore: {}={}\n", f->key, field_text(*f, c));
   if (img.zero_offset != 0.0 || c.zero_word) {
     out += fmt::format("// acore: zero_offset_rad={}\n", img.zero_offset);
     out += fmt::format("// acore: zero_offset_code={}\n", img.zero_offset_code());
@@ -245,44 +219,38 @@ std::string format_regimage(const RegImage& img) {
         c.zero_word ? "subtracted by the ZERO word" : "subtracted by `estimate` in software");
   }
   const int digits = (c.reg_w + 3) / 4;
-  auto line = [&](int addr, const std::string& what) {
-    out += fmt::format("{:0{}x}  // {:3d} {}\n", img.words[addr], digits, addr, what);
-  };
-  for (int k = 0; k < 2; ++k)
-    line(c.addr_offset(k), fmt::format("offset O{} = {} codes", k ? "24" : "13", img.offset(k)));
-  for (int k = 0; k < 2; ++k)
-    line(c.addr_recip(k),
-         fmt::format("1/A{} : A = {:.3f} codes", k ? "24" : "13",
-                     std::ldexp(1.0, c.s_f + c.r_shift) / std::max<int64_t>(1, img.recip(k))));
-  const char* x_name = c.xcenter ? "u" : "x";
-  for (int r = 0; r < c.regions; ++r)
-    for (int k = 0; k < 2; ++k)
-      for (int t = 0; t < c.coef_per_curve(); ++t) {
-        std::string term = fmt::format("{}^{}", x_name, t);
-        if (c.correction == kPoly2d)
-          for (int i = 0; i <= c.degree; ++i)
-            for (int j = 0; i + j <= c.degree; ++j)
-              if (c.term2d(i, j) == t) term = fmt::format("{}^{} v^{}", x_name, i, j);
-        line(c.addr_poly(r, k, t),
-             fmt::format("region {} {} {} = {:+.6f}", r, k ? "c24" : "c13", term,
-                         std::ldexp(static_cast<double>(img.poly(r, k, t)), -c.coef_f)));
+  for (const CodecField& f : codec_table(c)) {
+    const uint64_t w = img.words.at(f.addr);
+    const std::string name = f.name(c);
+    std::string value;
+    switch (f.kind) {
+      case CodecKind::kOffset:
+        value = fmt::format("{} = {} codes", name, f.field(w));
+        break;
+      case CodecKind::kRecip:  // the amplitude the reciprocal stands for
+        value = fmt::format("{} : A = {:.3f} codes", name, 1.0 / f.value(std::max<uint64_t>(1, w)));
+        break;
+      case CodecKind::kPoly:
+        value = fmt::format("{} = {:+.6f}", name, f.value(w));
+        break;
+      case CodecKind::kAtan:
+        value = fmt::format("{} = {:.6f} deg", name, f.value(w, 360.0));
+        break;
+      case CodecKind::kFourierA0:
+        value = fmt::format("{} = {:+.6f} deg", name, f.value(w, 360.0));
+        break;
+      case CodecKind::kFourierHarmonic:
+        value = fmt::format("{} = {:+.6f} deg (word = value / G_M)", name, f.value(w, 360.0));
+        break;
+      case CodecKind::kZero: {
+        const auto code = static_cast<uint32_t>(f.field(w));
+        value = fmt::format("{} = {} = {:+.6f} deg (angle_out = angle - zero)", name, code,
+                            code_angle(code, f.width) * 180 / M_PI);
+        break;
       }
-  for (int i = 0; i < c.iterations; ++i)
-    line(c.addr_atan(i), fmt::format("atan(2^-{}) = {:.6f} deg", i,
-                                     std::ldexp(static_cast<double>(img.atan(i)), -c.z_w) * 360.0));
-  const double gain = c.fourier_k > 0 ? fourier_gain(c) : 1.0;
-  for (int j = 0; j < c.fourier_words(); ++j) {
-    const double deg = std::ldexp(static_cast<double>(img.fourier(j)), -c.fourier_coef_f) * 360.0;
-    if (j == 0)
-      line(c.addr_fourier(j), fmt::format("fourier a_0 = {:+.6f} deg", deg));
-    else
-      line(c.addr_fourier(j), fmt::format("fourier {}_{} = {:+.6f} deg (word = value / G_M)",
-                                          j % 2 ? "a" : "b", (j + 1) / 2, deg * gain));
+    }
+    out += fmt::format("{:0{}x}  // {:3d} {}\n", w, digits, f.addr, value);
   }
-  if (c.zero_word)
-    line(c.addr_zero(),
-         fmt::format("zero position = {} = {:+.6f} deg (angle_out = angle - zero)",
-                     img.zero_position(), code_angle(img.zero_position(), c.angle_w) * 180 / M_PI));
   return out;
 }
 

@@ -23,7 +23,8 @@ struct RegImage {
   // (images made before) = 0. The estimate subtracts it in software unless the ZERO word does.
   double zero_offset = 0.0;
 
-  // Field accessors (sign-extended where the field is signed).
+  // Field accessors: the field integer of a word as the codec table reads it (regmap/codec.hpp:
+  // the field's low bits, sign-extended where the field is signed).
   int64_t offset(int curve) const;
   int64_t recip(int curve) const;
   int64_t poly(int region, int curve, int power) const;

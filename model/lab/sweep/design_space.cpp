@@ -174,7 +174,7 @@ SweepResult evaluate_point(size_t index, const std::string& params,
       r.final_params += fmt::format("{}{}={}", r.final_params.empty() ? "" : " ", name, value);
     for (size_t i = 0; i < scenarios.size(); ++i) {
       const SweepScenario& sc = scenarios[i];
-      if (imgs[i].cfg.describe() != built.describe())
+      if (imgs[i].cfg != built)
         imgs[i] = quantize(fcs[i], built, choose_in_scale(sc.cal, built.in_w));
       ScenarioAccuracy a;
       a.scenario = sc.name;
