@@ -37,6 +37,15 @@ const RtlBuild& rtl_build_named(const std::string& name);
 const RtlBuild& rtl_build_for(RtlTop top, const DatapathConfig& cfg);
 // The builds of one top (the co-sim tests run over them).
 std::vector<const RtlBuild*> rtl_builds_of(RtlTop top);
+// The registry's lines as tb/CMakeLists.txt writes them into the generated rtl_registry.cpp.
+struct RtlRegistryLine {
+  const char* name;
+  const char* module;
+  const char* params;
+};
+extern const RtlRegistryLine kRtlRegistry[];
+extern const int kRtlRegistrySize;
+
 // GoogleTest prints a build parameter by its name.
 inline void PrintTo(const RtlBuild* b, std::ostream* os) { *os << b->name; }
 // Where the modules are looked for: $ACORE_RTL_DIR, else rtl/ beside the running program, else
