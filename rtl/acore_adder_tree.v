@@ -14,28 +14,19 @@ module acore_adder_tree #(
   // Width of a term and of the sum.
   parameter integer W = 16
 ) (
-  clk_i, en_i, terms_i, sum_o
+  input  wire           clk_i,
+  // Pipeline advance (the whole pipeline stalls together).
+  input  wire           en_i,
+  input  wire [N*W-1:0] terms_i,
+  output wire [W-1:0]   sum_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only.
-  function integer at_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      at_cmul = 0;
-      for (n = 0; n < b; n = n + 1) at_cmul = at_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer LEVELS = $clog2(N);
-  localparam integer LATENCY = LEVELS;
-  localparam integer BUS_W = at_cmul(N, W);
-
-  input  wire             clk_i;
-  // Pipeline advance (the whole pipeline stalls together).
-  input  wire             en_i;
-  input  wire [BUS_W-1:0] terms_i;
-  output wire [W-1:0]     sum_o;
+  localparam integer LATENCY = acore_adder_tree_latency(N);
+  localparam integer LEVELS = LATENCY;  // one level a clock
+  localparam integer BUS_W = N * W;
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(N >= 2), .VALUE(N),
@@ -52,9 +43,9 @@ module acore_adder_tree #(
       localparam integer N_PREV = (N + (1 << (l - 1)) - 1) >> (l - 1);
       localparam integer N_THIS = (N + (1 << l) - 1) >> l;
       for (k = 0; k < N; k = k + 1) begin : g_node
-        localparam integer OFF = at_cmul(k, W);
-        localparam integer OFF_L = at_cmul(k << 1, W);
-        localparam integer OFF_R = at_cmul((k << 1) + 1, W);
+        localparam integer OFF = k * W;
+        localparam integer OFF_L = 2 * k * W;
+        localparam integer OFF_R = (2 * k + 1) * W;
         if (k < N_THIS) begin : g_used
           reg [W-1:0] sum_q;
           if ((k << 1) + 1 < N_PREV) begin : g_pair

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
-// acore_coef_regfile: the coefficient register file (docs/contracts.md, register image), WORDS REG_W-bit words.
+// acore_coef_regfile: the coefficient register file of the pipelined top (docs/contracts.md,
+// register image), WORDS REG_W-bit words in flops. The map (rtl/acore_derived.vh, the same
+// addresses as the model's DatapathConfig; defaults DEGREE=3, REGIONS=4, K=16 -> 52 words):
 //
-//   address              content (defaults: DEGREE=3, REGIONS=4, K=16 -> 52 words)
-//   0, 1                 offsets O13, O24                       signed
-//   2, 3                 amplitude reciprocals 1/A13, 1/A24     unsigned, 2^(S_F+R_SHIFT)/A
-//   4 + 2(n+1)r + (n+1)c + j   coefficient of x^j, region r, curve c   signed, COEF_F fraction bits
-//   4 + 2 REGIONS (n+1) + i    atan(2^-i), one turn = 2^Z_W             unsigned
+//   address                            content
+//   0, 1                               offsets O13, O24                          signed
+//   2, 3                               amplitude reciprocals 1/A13, 1/A24        unsigned, 2^(S_F+R_SHIFT)/A
+//   4 + TERMS (2 r + c) + t            polynomial word t of region r, curve c    signed, COEF_F fraction bits
+//                                      (1-D: t = power of x, TERMS = DEGREE+1; 2-D: acore_term2d; none: no words)
+//   4 + 2 REGIONS TERMS + i            atan(2^-i), i < K, one turn = 2^Z_W         unsigned
+//   then a_0, a_1, b_1 .. a_K, b_K     Fourier words (FOURIER_K > 0)              signed, FOURIER_CF fraction bits of a turn
+//   WORDS - 1                          the ZERO word (ZERO = 1)                   zero position, low ANGLE_W bits
 //
 // Host port: one address for a write (we_i; the word changes one clock after the edge that takes
 // it, the port being registered first) and a read-back pipelined over two clocks
@@ -21,7 +26,7 @@
 
 module acore_coef_regfile #(
   parameter integer REG_W = 18,
-  // 4 + 2 REGIONS (DEGREE+1) + K.
+  // Words of the map (acore_words).
   parameter integer WORDS = 52,
   // $readmemh image for the initial contents ("" = none).
   parameter INIT_FILE = "",
@@ -31,30 +36,16 @@ module acore_coef_regfile #(
   parameter integer GROUP_W = (ADDR_W > 3) ? 3 : ADDR_W - 1,
   parameter integer GROUPS = (WORDS + (1 << GROUP_W) - 1) >> GROUP_W
 ) (
-  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, words_o
-);
-
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
-  function integer rf_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      rf_cmul = 0;
-      for (n = 0; n < b; n = n + 1) rf_cmul = rf_cmul + a;
-    end
-  endfunction
-
-  // Derived, do not override: width of the flat word bus.
-  localparam integer BUS_W = rf_cmul(WORDS, REG_W);
-
-  input  wire               clk_i;
+  input  wire                     clk_i,
   // Synchronous reset of the registered write enable only (the words keep their contents).
-  input  wire               rst_i;
-  input  wire [ADDR_W-1:0]  addr_i;
-  input  wire [REG_W-1:0]   wdata_i;
-  input  wire               we_i;
-  output reg  [REG_W-1:0]   rdata_o;
-  output wire [BUS_W-1:0]   words_o;
+  input  wire                     rst_i,
+  input  wire [ADDR_W-1:0]        addr_i,
+  input  wire [REG_W-1:0]         wdata_i,
+  input  wire                     we_i,
+  output reg  [REG_W-1:0]         rdata_o,
+  // Every word, word a at bits [a REG_W +: REG_W].
+  output wire [WORDS*REG_W-1:0]   words_o
+);
 
   reg [REG_W-1:0] mem_q [0:WORDS-1];
   // Addresses past the last word (WORDS need not be a power of two).
@@ -104,7 +95,7 @@ module acore_coef_regfile #(
   genvar a;
   generate
     for (a = 0; a < WORDS; a = a + 1) begin : g_word
-      localparam integer OFF = rf_cmul(a, REG_W);
+      localparam integer OFF = a * REG_W;
       assign words_o[OFF +: REG_W] = mem_q[a];
     end
   endgenerate

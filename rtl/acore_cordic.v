@@ -38,37 +38,25 @@ module acore_cordic #(
   // so the clock period is one carry chain (for Fmax on iCE40); 0: one clock per stage.
   parameter integer SPLIT = 0,
   // Derived, do not override.
-  parameter integer XY_W = IN_W + 2 + G,
-  parameter integer MAG_W = IN_W + 2
+  parameter integer XY_W = acore_xy_w(IN_W, G),
+  parameter integer MAG_W = acore_mag_w(IN_W)
 ) (
-  clk_i, en_i, x_i, y_i, atan_i, angle_o, mag_o
+  input  wire                clk_i,
+  input  wire                en_i,
+  // Cosine-like input x and sine-like input y.
+  input  wire [IN_W-1:0]     x_i,
+  input  wire [IN_W-1:0]     y_i,
+  // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
+  input  wire [K*AT_W-1:0]   atan_i,
+  output reg  [ANGLE_W-1:0]  angle_o,
+  // X_K >>> G: vector length times the CORDIC gain, never negative.
+  output reg  [MAG_W-1:0]    mag_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
-  function integer co_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      co_cmul = 0;
-      for (n = 0; n < b; n = n + 1) co_cmul = co_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer AT_BUS_W = co_cmul(K, AT_W);
-  localparam integer PRE = (NORM != 0) ? 5 : 1;  // normalization + pre-rotation clocks
-  localparam integer LATENCY = PRE + co_cmul(K, SPLIT + 1) + 1;
-
-  input  wire                clk_i;
-  input  wire                en_i;
-  // Cosine-like input x and sine-like input y.
-  input  wire [IN_W-1:0]     x_i;
-  input  wire [IN_W-1:0]     y_i;
-  // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
-  input  wire [AT_BUS_W-1:0] atan_i;
-  output reg  [ANGLE_W-1:0]  angle_o;
-  // X_K >>> G: vector length times the CORDIC gain, never negative.
-  output reg  [MAG_W-1:0]    mag_o;
+  localparam integer LATENCY = acore_cordic_latency(K, NORM, SPLIT);
   localparam integer DROP = Z_W - ANGLE_W;
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
@@ -78,10 +66,10 @@ module acore_cordic #(
   acore_check #(.OK(K >= 1 && K < XY_W), .VALUE(K),
     .MSG("illegal parameter: acore_cordic: K must be 1..XY_W-1"))
     K_must_be_1_to_XY_W_minus_1 ();
-  acore_check #(.OK(XY_W == IN_W + 2 + G), .VALUE(XY_W),
+  acore_check #(.OK(XY_W == acore_xy_w(IN_W, G)), .VALUE(XY_W),
     .MSG("illegal parameter: acore_cordic: XY_W is derived (IN_W+2+G), do not override"))
     XY_W_is_derived ();
-  acore_check #(.OK(MAG_W == IN_W + 2), .VALUE(MAG_W),
+  acore_check #(.OK(MAG_W == acore_mag_w(IN_W)), .VALUE(MAG_W),
     .MSG("illegal parameter: acore_cordic: MAG_W is derived (IN_W+2), do not override"))
     MAG_W_is_derived ();
 
@@ -124,7 +112,7 @@ module acore_cordic #(
       reg [IN_W-1:0] ay_q;
       reg [(NG<<2)-1:0] m_q;
       reg [NG-1:0]   any_q;
-      localparam integer CAND_W = co_cmul(SH_W, NG);
+      localparam integer CAND_W = SH_W * NG;
       reg [CAND_W-1:0] cand_q;
       reg [SH_W-1:0] sh_q;
       wire [(NG<<2)-1:0] m = {{((NG<<2)-IN_W){1'b0}}, ax_q[0] | ay_q};
@@ -145,7 +133,7 @@ module acore_cordic #(
       wire [CAND_W-1:0] cand_d;
       genvar gg;
       for (gg = 0; gg < NG; gg = gg + 1) begin : g_grp
-        localparam integer OFF = co_cmul(SH_W, gg);
+        localparam integer OFF = gg * SH_W;
         assign any_d[gg] = |m_q[(gg << 2) +: 4];
         assign cand_d[OFF +: SH_W] = cand_of(gg, m_q[(gg << 2) +: 4]);
       end
@@ -212,7 +200,7 @@ module acore_cordic #(
       wire s = y_q[i][XY_W-1];
       wire [XY_W-1:0] ys_full = $signed(y_q[i]) >>> i;
       wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
-      localparam integer AT_OFF = co_cmul(i, AT_W);
+      localparam integer AT_OFF = i * AT_W;
       wire [Z_W-1:0]  at;
       if (AT_W > Z_W) begin : g_at_low
         // Z counts modulo a turn (2^Z_W), so a word's bits above Z_W do not change it (the model

@@ -27,35 +27,24 @@ module acore_cordic_rotate #(
   // Width of one arctangent word on atan_i (unsigned, atan_i = round(atan(2^-i)/2pi 2^Z_W)).
   parameter integer AT_W = 18
 ) (
-  clk_i, en_i, x_i, y_i, z_i, atan_i, x_o
+  input  wire                clk_i,
+  // Pipeline advance (the whole pipeline stalls together).
+  input  wire                en_i,
+  input  wire [XY_W-1:0]     x_i,
+  input  wire [XY_W-1:0]     y_i,
+  // Angle to turn clockwise, signed, |z_i| < 2^(Z_W-3).
+  input  wire [Z_W-3:0]      z_i,
+  // atan_i for i = 0..M-1, word i at bits [i AT_W +: AT_W].
+  input  wire [M*AT_W-1:0]   atan_i,
+  // X after M stages, LATENCY = M advancing clocks after x_i/y_i/z_i.
+  output wire [XY_W-1:0]     x_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all.
-  function integer cr_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      cr_cmul = 0;
-      for (n = 0; n < b; n = n + 1) cr_cmul = cr_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer AT_BUS_W = cr_cmul(M, AT_W);
   localparam integer ZI_W = Z_W - 2;
-  localparam integer LATENCY = M;
-
-  input  wire                clk_i;
-  // Pipeline advance (the whole pipeline stalls together).
-  input  wire                en_i;
-  input  wire [XY_W-1:0]     x_i;
-  input  wire [XY_W-1:0]     y_i;
-  // Angle to turn clockwise, signed, |z_i| < 2^(Z_W-3).
-  input  wire [ZI_W-1:0]     z_i;
-  // atan_i for i = 0..M-1, word i at bits [i AT_W +: AT_W].
-  input  wire [AT_BUS_W-1:0] atan_i;
-  // X after M stages, LATENCY = M advancing clocks after x_i/y_i/z_i.
-  output wire [XY_W-1:0]     x_o;
+  localparam integer LATENCY = acore_cordic_rotate_latency(M);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(M >= 2 && M < XY_W && M <= Z_W - 4), .VALUE(M),
@@ -93,7 +82,7 @@ module acore_cordic_rotate #(
         localparam integer ZWN = (i + 1 <= 2) ? ZI_W : Z_W - i - 1;
         wire [XY_W-1:0] xs = $signed(x_c) >>> i;
         wire [XY_W:0] y_sum = {y_c, 1'b1} + {xs ^ {XY_W{~s}}, ~s};
-        localparam integer AT_OFF = cr_cmul(i, AT_W);
+        localparam integer AT_OFF = i * AT_W;
         // Only the low bits count (z wraps modulo a turn): a word wider than Z_W is cut.
         wire [Z_W-1:0] at;
         if (AT_W > Z_W) begin : g_at_low

@@ -44,46 +44,34 @@ module acore_fold_cordic #(
   // theirs from atan_i.
   parameter integer AT_RAM_UNITS = 0,
   // Derived, do not override.
-  parameter integer XY_W = IN_W + 2 + G,
-  parameter integer MAG_W = IN_W + 2
+  parameter integer XY_W = acore_xy_w(IN_W, G),
+  parameter integer MAG_W = acore_mag_w(IN_W)
 ) (
-  clk_i, start_i, x_i, y_i, atan_i, at_idx_o, at_word_i, angle_o, mag_o
+  input  wire                  clk_i,
+  // x_i, y_i are valid: a vector starts (at least N clocks after the previous one).
+  input  wire                  start_i,
+  // Cosine-like input x and sine-like input y.
+  input  wire [IN_W-1:0]       x_i,
+  input  wire [IN_W-1:0]       y_i,
+  // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
+  input  wire [K*AT_W-1:0]     atan_i,
+  // Per unit (AT_RAM_UNITS), the iteration whose word it needs next clock, and that word.
+  output wire [acore_fold_cordic_units(K, N)*acore_fold_cordic_idx_w(K, N)-1:0] at_idx_o,
+  input  wire [acore_fold_cordic_units(K, N)*AT_W-1:0] at_word_i,
+  output reg  [ANGLE_W-1:0]    angle_o,
+  // X_K >>> G: vector length times the CORDIC gain, never negative.
+  output reg  [MAG_W-1:0]      mag_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all.
-  function integer fc_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      fc_cmul = 0;
-      for (n = 0; n < b; n = n + 1) fc_cmul = fc_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer AT_BUS_W = fc_cmul(K, AT_W);
   localparam integer PW = $clog2(N);                 // phase counter width
-  localparam integer U = (K + N - 1) >> PW;          // stage units
-  localparam integer LATENCY = K + 2;
+  localparam integer U = acore_fold_cordic_units(K, N);
+  localparam integer LATENCY = acore_cordic_latency(K, 0, 0);
   localparam integer DROP = Z_W - ANGLE_W;
-  localparam integer AT_IDX_W = $clog2(fc_cmul(U, N));  // iteration index width
-  localparam integer IDX_BUS_W = fc_cmul(U, AT_IDX_W);
-  localparam integer WORD_BUS_W = fc_cmul(U, AT_W);
-
-  input  wire                clk_i;
-  // x_i, y_i are valid: a vector starts (at least N clocks after the previous one).
-  input  wire                start_i;
-  // Cosine-like input x and sine-like input y.
-  input  wire [IN_W-1:0]     x_i;
-  input  wire [IN_W-1:0]     y_i;
-  // atan_i for i = 0..K-1, word i at bits [i AT_W +: AT_W].
-  input  wire [AT_BUS_W-1:0] atan_i;
-  // Per unit (AT_RAM_UNITS), the iteration whose word it needs next clock, and that word.
-  output wire [IDX_BUS_W-1:0] at_idx_o;
-  input  wire [WORD_BUS_W-1:0] at_word_i;
-  output reg  [ANGLE_W-1:0]  angle_o;
-  // X_K >>> G: vector length times the CORDIC gain, never negative.
-  output reg  [MAG_W-1:0]    mag_o;
+  localparam integer AT_IDX_W = acore_fold_cordic_idx_w(K, N);
+  localparam integer WORD_BUS_W = U * AT_W;
 
   // v shifted right by sh (arithmetic if sgn): log2(N) stages of 2:1, stage k shifting by 2^k.
   function automatic [XY_W-1:0] barrel(input [XY_W-1:0] v, input [PW-1:0] sh, input sgn);
@@ -115,10 +103,10 @@ module acore_fold_cordic #(
   acore_check #(.OK(N >= 2 && (1 << PW) == N), .VALUE(N),
     .MSG("illegal parameter: acore_fold_cordic: N must be a power of two >= 2"))
     N_must_be_a_power_of_two ();
-  acore_check #(.OK(XY_W == IN_W + 2 + G), .VALUE(XY_W),
+  acore_check #(.OK(XY_W == acore_xy_w(IN_W, G)), .VALUE(XY_W),
     .MSG("illegal parameter: acore_fold_cordic: XY_W is derived (IN_W+2+G), do not override"))
     XY_W_is_derived ();
-  acore_check #(.OK(MAG_W == IN_W + 2), .VALUE(MAG_W),
+  acore_check #(.OK(MAG_W == acore_mag_w(IN_W)), .VALUE(MAG_W),
     .MSG("illegal parameter: acore_fold_cordic: MAG_W is derived (IN_W+2), do not override"))
     MAG_W_is_derived ();
 
@@ -152,7 +140,7 @@ module acore_fold_cordic #(
   assign zr[0] = z_pre_q;
 
   // The start, delayed: unit u's phase restarts when start_i delayed uN clocks is high.
-  localparam integer ST_D = fc_cmul(U - 1, N);
+  localparam integer ST_D = (U - 1) * N;
   wire [ST_D:0] st;
   assign st[0] = start_i;
   genvar u, p;
@@ -173,12 +161,12 @@ module acore_fold_cordic #(
     end else if (AT_RAM_UNITS == 0) begin : g_no_ram
       wire unused_ram = ^at_word_i;
     end else begin : g_part
-      wire unused_ram = ^at_word_i[WORD_BUS_W-1:fc_cmul(AT_RAM_UNITS, AT_W)];
-      wire unused_bus = ^atan_i[fc_cmul(fc_cmul(AT_RAM_UNITS, N), AT_W)-1:0];
+      wire unused_ram = ^at_word_i[WORD_BUS_W-1:AT_RAM_UNITS*AT_W];
+      wire unused_bus = ^atan_i[AT_RAM_UNITS*N*AT_W-1:0];
     end
 
     for (u = 0; u < U; u = u + 1) begin : g_unit
-      localparam integer I0 = fc_cmul(u, N);  // first iteration of the unit
+      localparam integer I0 = u * N;  // first iteration of the unit
       localparam integer YW = (I0 + 1 <= 2) ? XY_W : XY_W + 1 - I0;
       // Phase: 0 the clock the vector arrives, then 1 .. N-1 (ph_d: the next clock's).
       // take: phase 0 (operands from the previous unit); s = (Y < 0), the rotation direction. Both
@@ -216,20 +204,20 @@ module acore_fold_cordic #(
         end else begin : g_lo
           assign idx = ph_d;
         end
-        assign at_idx_o[fc_cmul(u, AT_IDX_W) +: AT_IDX_W] = idx;
-        assign at = {{(Z_W-AT_W){1'b0}}, at_word_i[fc_cmul(u, AT_W) +: AT_W]};
+        assign at_idx_o[u * AT_IDX_W +: AT_IDX_W] = idx;
+        assign at = {{(Z_W-AT_W){1'b0}}, at_word_i[u * AT_W +: AT_W]};
       end else begin : g_at_bus
         wire [Z_W-1:0] at_p [0:N-1];
         for (p = 0; p < N; p = p + 1) begin : g_ph
           localparam integer I = I0 + p;
           if (I < K) begin : g_at
-            assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[fc_cmul(I, AT_W) +: AT_W]};
+            assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[I * AT_W +: AT_W]};
           end else begin : g_noat
             assign at_p[p] = {Z_W{1'b0}};
           end
         end
         assign at = at_p[ph_q];
-        assign at_idx_o[fc_cmul(u, AT_IDX_W) +: AT_IDX_W] = {AT_IDX_W{1'b0}};
+        assign at_idx_o[u * AT_IDX_W +: AT_IDX_W] = {AT_IDX_W{1'b0}};
       end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
       wire [XY_W-1:0] x_sum = {xa, 1'b1} + {ys ^ {(XY_W-1){s}}, s};

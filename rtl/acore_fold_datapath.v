@@ -46,108 +46,81 @@ module acore_fold_datapath #(
   parameter integer FOLD = 2,
   // 1: the register file's last word is the ZERO word (after the arctangent words), on last_o.
   parameter integer ZERO = 0,
-  // Register file: words (4 + 2 REGIONS (DEGREE+1) + K, or 4 + K without a polynomial, plus ZERO)
-  // and the power-up image.
+  // Register file: words (acore_words: no Fourier words, the ZERO word with ZERO) and the power-up
+  // image.
   parameter integer WORDS = 52,
   parameter INIT_FILE = "",
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer MAG_W = S_W + 2
+  parameter integer MAG_W = acore_mag_w(S_W)
 ) (
-  clk_i, rst_i, reg_addr_i, reg_wdata_i, reg_we_i, reg_rdata_o, accept_i, c1_i, c2_i, c3_i, c4_i,
-  valid_o, angle_o, mag_o, region_o, ovf_o, last_o
+  input  wire                  clk_i,
+  // Synchronous reset of the valid bits (and of the register file's write enable).
+  input  wire                  rst_i,
+  // Register file host port (acore_coef_regfile's timing: write lands one clock later, read-back
+  // two clocks after the address).
+  input  wire [ADDR_W-1:0]     reg_addr_i,
+  input  wire [REG_W-1:0]      reg_wdata_i,
+  input  wire                  reg_we_i,
+  output wire [REG_W-1:0]      reg_rdata_o,
+  // A sample is taken (at least FOLD clocks after the previous one): c1..c4 are valid.
+  input  wire                  accept_i,
+  input  wire [IN_W-1:0]       c1_i,
+  input  wire [IN_W-1:0]       c2_i,
+  input  wire [IN_W-1:0]       c3_i,
+  input  wire [IN_W-1:0]       c4_i,
+  // A sample's results (valid for one clock).
+  output wire                  valid_o,
+  output wire [ANGLE_W-1:0]    angle_o,
+  output wire [MAG_W-1:0]      mag_o,
+  output wire [RG_W-1:0]       region_o,
+  output wire                  ovf_o,
+  // The register file's last word (ZERO = 1: the ZERO word, from flops; else zero), for the top's
+  // output register.
+  output wire [REG_W-1:0]      last_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all.
-  function integer fd_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      fd_cmul = 0;
-      for (n = 0; n < b; n = n + 1) fd_cmul = fd_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
-  // Derived, do not override: the register file's read ports and the block RAM budget (iCE40
-  // SB_RAM40_4K, 256 x 16; an HX8K has 32). Fixed: the Horner chain's PP ports (a_n, then one per
-  // step), the scaler's 2 (offset, reciprocal), the host read-back copy (BPW blocks each) and the
-  // output FIFO. Then, while they fit, in this order (flops saved per block): the curves' and the
-  // region's delay lines (S_RAM), the Horner steps' argument lines (U_RAM), and for as many CORDIC
-  // units as fit a port of their own for the arctangent words (AT_UNITS; the other units take
-  // their words from flops, with an N:1 choice that shares the negation's LUT at N = 2 only).
-  localparam integer H = FOLD >> 1;
-  localparam integer U = (K + FOLD - 1) >> $clog2(FOLD);
-  localparam integer PP = (CORRECTION == 2) ? 0 : DEGREE + 1;
+  // Derived, do not override: the map, the register file's read ports and the block RAM budget
+  // (iCE40 SB_RAM40_4K, 256 x 16; an HX8K has 32). Fixed: the Horner chain's PP ports (a_n, then
+  // one per step), the scaler's 2 (offset, reciprocal), the host read-back copy (BPW blocks each)
+  // and the output FIFO. Then, while they fit, in this order (flops saved per block): the curves'
+  // and the region's delay lines (S_RAM), the Horner steps' argument lines (U_RAM), and for as
+  // many CORDIC units as fit a port of their own for the arctangent words (AT_UNITS; the other
+  // units take their words from flops, with an N:1 choice that shares the negation's LUT at N = 2
+  // only).
+  localparam integer TERMS = acore_terms(CORRECTION, DEGREE);
+  localparam integer ATAN_BASE = acore_addr_atan(TERMS, REGIONS, 0);
+  localparam integer H = FOLD / 2;
+  localparam integer U = acore_fold_cordic_units(K, FOLD);
+  localparam integer PP = (CORRECTION == 2) ? 0 : acore_fold_poly_ports(DEGREE);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
-  localparam integer BLOCKS = FIFO_B + fd_cmul(PP + 3, BPW);
+  localparam integer BLOCKS = FIFO_B + (PP + 3) * BPW;
   localparam integer SR_B = ((CORRECTION == 2) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
-  localparam integer U_B = fd_cmul(DEGREE - 1, (S_W + ADDR_W > 16) ? 2 : 1);  // argument lines
+  localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer S_RAM = (BLOCKS + SR_B <= 32) ? 1 : 0;
   localparam integer U_RAM = (S_RAM != 0 && CORRECTION != 2 && BLOCKS + SR_B + U_B <= 32) ? 1 : 0;
   localparam integer FREE_B = 32 - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
   localparam integer AT_UNITS = (AT_FIT >= U) ? U : AT_FIT;
   localparam integer PORTS = PP + 2 + AT_UNITS;
-  localparam integer PA_W = fd_cmul(PORTS, ADDR_W);
-  localparam integer PD_W = fd_cmul(PORTS, REG_W);
-  localparam integer AT_BUS_W = fd_cmul(K, REG_W);
-  localparam integer ATAN_BASE = WORDS - K - ZERO;
+  localparam integer PA_W = PORTS * ADDR_W;
+  localparam integer PD_W = PORTS * REG_W;
+  localparam integer AT_BUS_W = K * REG_W;
 
-  input  wire                  clk_i;
-  // Synchronous reset of the valid bits (and of the register file's write enable).
-  input  wire                  rst_i;
-  // Register file host port (acore_coef_regfile's timing: write lands one clock later, read-back
-  // two clocks after the address).
-  input  wire [ADDR_W-1:0]     reg_addr_i;
-  input  wire [REG_W-1:0]      reg_wdata_i;
-  input  wire                  reg_we_i;
-  output wire [REG_W-1:0]      reg_rdata_o;
-  // A sample is taken (at least FOLD clocks after the previous one): c1..c4 are valid.
-  input  wire                  accept_i;
-  input  wire [IN_W-1:0]       c1_i;
-  input  wire [IN_W-1:0]       c2_i;
-  input  wire [IN_W-1:0]       c3_i;
-  input  wire [IN_W-1:0]       c4_i;
-  // A sample's results (valid for one clock).
-  output wire                  valid_o;
-  output wire [ANGLE_W-1:0]    angle_o;
-  output wire [MAG_W-1:0]      mag_o;
-  output wire [RG_W-1:0]       region_o;
-  output wire                  ovf_o;
-  // The register file's last word (ZERO = 1: the ZERO word, from flops; else zero), for the top's
-  // output register.
-  output wire [REG_W-1:0]      last_o;
-
-  // Derived, do not override: stage latencies (each module documents its own) and the schedule.
-  localparam integer D_W = IN_W + 1;
+  // Derived, do not override: stage latencies and the schedule (rtl/acore_derived.vh).
+  localparam integer D_W = acore_d_w(IN_W);
   localparam integer F = H;
-  localparam integer SC_B = (F == 1) ? REG_W : (REG_W + F - 1) >> $clog2(F);
-  localparam integer SC_ML = (F == 1) ? $clog2(REG_W) + 1 : $clog2(SC_B) + 1 + F;
-  localparam integer SL = SC_ML + 2;
-  localparam integer PC_B = (F == 1) ? S_W : (S_W + F - 1) >> $clog2(F);
-  localparam integer PC_ML = (F == 1) ? $clog2(S_W) + 1 : $clog2(PC_B) + 1 + F;
-  localparam integer PL = (CORRECTION == 2) ? 0 : 5 + fd_cmul(DEGREE, PC_ML + 1);
-  localparam integer CL = K + 2;
-  localparam integer R = H + SL + 2;
-  localparam integer C = (CORRECTION == 2) ? R : R + H + PL;
-  localparam integer LATENCY = C + CL;  // accepting edge -> valid_o, in clocks after it, minus one
-  localparam integer TERMS = DEGREE + 1;
-
-  // Address of an item's word 0: 4 + (2 region + curve) TERMS (a table over region and curve).
-  function automatic [ADDR_W-1:0] base_of(input [RG_W-1:0] r, input c);
-    integer k;
-    reg [ADDR_W-1:0] b;
-    begin
-      base_of = {ADDR_W{1'b0}};
-      b = 4;
-      for (k = 0; k < (REGIONS << 1); k = k + 1) begin
-        if ({r, c} == k[RG_W:0]) base_of = b;
-        b = b + TERMS[ADDR_W-1:0];
-      end
-    end
-  endfunction
+  localparam integer SL = acore_fold_scaler_latency(REG_W, F);
+  localparam integer PL = (CORRECTION == 2) ? 0 : acore_fold_poly_latency(DEGREE, S_W, F);
+  localparam integer CL = acore_cordic_latency(K, 0, 0);
+  localparam integer R = acore_fold_r(REG_W, FOLD);
+  localparam integer C = acore_fold_c(REG_W, S_W, CORRECTION, DEGREE, FOLD);
+  // The accepting edge to valid_o, in clocks after it, minus one.
+  localparam integer LATENCY = acore_fold_datapath_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOLD);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
@@ -186,15 +159,17 @@ module acore_fold_datapath #(
     .d13_o(d13), .d24_o(d24));
 
   // ---- 2: scaling, one item per curve: c13 at clock 0, c24 at clock H; the curve's offset and
-  // reciprocal (words 0/1, 2/3) read the clock before ----
+  // reciprocal read the clock before ----
   wire sc_second = v_q[H];
   wire sc_second_next = v_q[H - 1];
-  localparam [ADDR_W-1:0] A_OFF = 0;
-  localparam [ADDR_W-1:0] A_RCP = 2;
-  assign raddr[fd_cmul(PP, ADDR_W) +: ADDR_W] = A_OFF | {{(ADDR_W-1){1'b0}}, sc_second_next};
-  assign raddr[fd_cmul(PP + 1, ADDR_W) +: ADDR_W] = A_RCP | {{(ADDR_W-1){1'b0}}, sc_second_next};
-  wire [REG_W-1:0] offset = rdata[fd_cmul(PP, REG_W) +: REG_W];
-  wire [REG_W-1:0] recip = rdata[fd_cmul(PP + 1, REG_W) +: REG_W];
+  localparam integer A_OFF13_I = acore_addr_offset(0), A_OFF24_I = acore_addr_offset(1);
+  localparam integer A_RCP13_I = acore_addr_recip(0), A_RCP24_I = acore_addr_recip(1);
+  localparam [ADDR_W-1:0] A_OFF13 = A_OFF13_I[ADDR_W-1:0], A_OFF24 = A_OFF24_I[ADDR_W-1:0];
+  localparam [ADDR_W-1:0] A_RCP13 = A_RCP13_I[ADDR_W-1:0], A_RCP24 = A_RCP24_I[ADDR_W-1:0];
+  assign raddr[PP * ADDR_W +: ADDR_W] = sc_second_next ? A_OFF24 : A_OFF13;
+  assign raddr[(PP + 1) * ADDR_W +: ADDR_W] = sc_second_next ? A_RCP24 : A_RCP13;
+  wire [REG_W-1:0] offset = rdata[PP * REG_W +: REG_W];
+  wire [REG_W-1:0] recip = rdata[(PP + 1) * REG_W +: REG_W];
   wire [S_W-1:0] s_sc;
   wire ovf_sc;
   acore_fold_scaler #(
@@ -256,6 +231,13 @@ module acore_fold_datapath #(
         acore_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
           .clk_i(clk_i), .en_i(1'b1), .d_i(s_sc), .q_o(s_pc));
       end
+      // Address of an item's word 0, region r and curve c: a table indexed by {r, c}.
+      wire [ADDR_W-1:0] base_tab [0:2*REGIONS-1];
+      genvar gb;
+      for (gb = 0; gb < 2 * REGIONS; gb = gb + 1) begin : g_base
+        localparam integer BASE_I = acore_addr_poly(TERMS, gb >> 1, gb & 1, 0);
+        assign base_tab[gb] = BASE_I[ADDR_W-1:0];
+      end
       wire [S_W-1:0] y_pc;
       wire ovf_pc;
       acore_fold_poly #(
@@ -264,9 +246,9 @@ module acore_fold_datapath #(
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
         .s_i(s_pc),
-        .base_i(pc_second ? base_of(region_h_q, 1'b1) : base_of(region, 1'b0)),
-        .ovf_i(pc_second ? sc_ovf_h_q : sc_ovf_r_q), .coef_addr_o(raddr[0 +: fd_cmul(PP, ADDR_W)]),
-        .coef_i(rdata[0 +: fd_cmul(PP, REG_W)]), .y_o(y_pc), .ovf_o(ovf_pc));
+        .base_i(pc_second ? base_tab[{region_h_q, 1'b1}] : base_tab[{region, 1'b0}]),
+        .ovf_i(pc_second ? sc_ovf_h_q : sc_ovf_r_q), .coef_addr_o(raddr[0 +: PP * ADDR_W]),
+        .coef_i(rdata[0 +: PP * REG_W]), .y_o(y_pc), .ovf_o(ovf_pc));
       reg [S_W-1:0] y13_q;
       reg           ovf13_q;
       always @(posedge clk_i) begin
@@ -282,12 +264,12 @@ module acore_fold_datapath #(
   endgenerate
 
   // ---- 5: CORDIC from clock C, x = corrected cosine curve, y = corrected sine curve ----
-  localparam integer AT_IDX_W = $clog2(fd_cmul(U, FOLD));
+  localparam integer AT_IDX_W = acore_fold_cordic_idx_w(K, FOLD);
   acore_check #(.OK(ADDR_W >= AT_IDX_W), .VALUE(ADDR_W),
     .MSG("illegal parameter: acore_fold_datapath: ADDR_W must be >= clog2(CORDIC iterations on the units)"))
     ADDR_W_must_index_the_CORDIC_iterations ();
-  wire [fd_cmul(U, AT_IDX_W)-1:0] at_idx;
-  wire [fd_cmul(U, REG_W)-1:0]    at_word;
+  wire [U*AT_IDX_W-1:0] at_idx;
+  wire [U*REG_W-1:0]    at_word;
   acore_fold_cordic #(
     .IN_W(S_W), .G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .K(K), .AT_W(REG_W), .N(FOLD),
     .AT_RAM_UNITS(AT_UNITS)
@@ -301,18 +283,18 @@ module acore_fold_datapath #(
     localparam [ADDR_W-1:0] A_ATAN = ATAN_BASE[ADDR_W-1:0];
     for (gu = 0; gu < U; gu = gu + 1) begin : g_at
       if (gu < AT_UNITS) begin : g_port
-        wire [AT_IDX_W-1:0] idx = at_idx[fd_cmul(gu, AT_IDX_W) +: AT_IDX_W];
+        wire [AT_IDX_W-1:0] idx = at_idx[gu * AT_IDX_W +: AT_IDX_W];
         wire [ADDR_W-1:0] idx_a;
         if (ADDR_W > AT_IDX_W) begin : g_ext
           assign idx_a = {{(ADDR_W-AT_IDX_W){1'b0}}, idx};
         end else begin : g_same
           assign idx_a = idx;
         end
-        assign raddr[fd_cmul(PP + 2 + gu, ADDR_W) +: ADDR_W] = A_ATAN + idx_a;
-        assign at_word[fd_cmul(gu, REG_W) +: REG_W] = rdata[fd_cmul(PP + 2 + gu, REG_W) +: REG_W];
+        assign raddr[(PP + 2 + gu) * ADDR_W +: ADDR_W] = A_ATAN + idx_a;
+        assign at_word[gu * REG_W +: REG_W] = rdata[(PP + 2 + gu) * REG_W +: REG_W];
       end else begin : g_flops
-        assign at_word[fd_cmul(gu, REG_W) +: REG_W] = {REG_W{1'b0}};
-        wire unused_idx = ^at_idx[fd_cmul(gu, AT_IDX_W) +: AT_IDX_W];
+        assign at_word[gu * REG_W +: REG_W] = {REG_W{1'b0}};
+        wire unused_idx = ^at_idx[gu * AT_IDX_W +: AT_IDX_W];
       end
     end
   endgenerate

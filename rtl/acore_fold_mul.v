@@ -51,26 +51,11 @@ module acore_fold_mul #(
   output wire [P_W-1:0]    p_o
 );
 
-  // Constant product and ceiling quotient by repetition, for widths at elaboration only: the RTL
-  // has no multiplication operator at all.
-  function integer fm_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      fm_cmul = 0;
-      for (n = 0; n < b; n = n + 1) fm_cmul = fm_cmul + a;
-    end
-  endfunction
-  function integer fm_cdiv(input integer a, input integer b);
-    begin
-      fm_cdiv = 0;
-      while (fm_cmul(fm_cdiv, b) < a) fm_cdiv = fm_cdiv + 1;
-    end
-  endfunction
+`include "acore_derived.vh"
 
-  // Derived, do not override: bits per clock, tree levels, latency.
-  localparam integer B = fm_cdiv(B_W, F);
-  localparam integer L = (F == 1) ? $clog2(B_W) : $clog2(B);
-  localparam integer LATENCY = (F == 1) ? L + 1 : L + 1 + F;
+  // Derived, do not override: bits per clock, latency, the clock init_i is read.
+  localparam integer B = acore_fold_mul_b(B_W, F);
+  localparam integer LATENCY = acore_fold_mul_latency(B_W, F);
   localparam integer INIT_AT = LATENCY - F;
   // Bits the exact product can need (as acore_shift_add_mul), plus one for init.
   localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
@@ -105,7 +90,7 @@ module acore_fold_mul #(
       // O_0 = floor(a 2^SH0) for the top bit B_W-1 of b.
       localparam integer SH0 = B_W - 1 - RSHIFT;
       localparam integer O_W = A_W + ((SH0 > 0) ? SH0 : 0);
-      localparam integer X_W = fm_cmul(F, B);
+      localparam integer X_W = F * B;
       localparam integer PAD = X_W - B_W;
       localparam integer NT = (B + 1) >> 1;  // terms after the first tree level
       wire [O_W-1:0] o0;
@@ -161,7 +146,7 @@ module acore_fold_mul #(
       end
       // First tree level: pairs (0, 1), (2, 3), ...; the carry-in completes -O_0 = ~O_0 + 1 (bit 0
       // of the wider add makes the carry-in).
-      localparam integer T_BUS = fm_cmul(NT, P_W);
+      localparam integer T_BUS = NT * P_W;
       wire [T_BUS-1:0] lvl1;
       for (k = 0; k < NT; k = k + 1) begin : g_l1
         reg [P_W-1:0] s_q;
@@ -173,7 +158,7 @@ module acore_fold_mul #(
         end else begin : g_single
           always @(posedge clk_i) s_q <= pp[k << 1];
         end
-        assign lvl1[fm_cmul(k, P_W) +: P_W] = s_q;
+        assign lvl1[k * P_W +: P_W] = s_q;
       end
       reg first1_q;
       always @(posedge clk_i) first1_q <= first_q;

@@ -5,7 +5,7 @@
 //   (a_j << ACC_G), ACC_W);  y = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W)
 // with u = x (XCENTER = 0) or x -+ 3/8 (XCENTER = 1, U_SH = S_F - 1), as acore_poly_correct.
 // An item is one curve of one sample: u, s and base_i, the register address of the item's word 0
-// (4 + (2 region + curve) (DEGREE + 1)). Items come at least F clocks apart; each Horner step is
+// (acore_addr_poly(TERMS, region, curve, 0); the word of power j is j words further). Items come at least F clocks apart; each Horner step is
 // an acore_fold_mul folded F times whose addend is the coefficient.
 //
 // The coefficients come from a synchronous-read memory (the register file's block RAM copies):
@@ -14,7 +14,7 @@
 //
 //   clock 0: item in, a_n addressed | 1: a_n read | 2: step 0 | step m: ML clocks of multiplier
 //   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
-//   LATENCY = 5 + DEGREE (ML + 1), ML = acore_fold_mul's LATENCY (26 at F = 1, the defaults)
+//   LATENCY = 5 + DEGREE (ML + 1) (26 at F = 1 with the defaults), ML = acore_fold_mul's LATENCY
 `resetall
 `default_nettype none
 
@@ -40,55 +40,47 @@ module acore_fold_poly #(
   // (acore_ram_delay), not in flops: DEGREE - 1 lines of S_W + ADDR_W bits.
   parameter integer RAM_DELAY = 0,
   // Derived, do not override: coefficient read ports.
-  parameter integer PORTS = DEGREE + 1
+  parameter integer PORTS = acore_fold_poly_ports(DEGREE)
 ) (
-  clk_i, rst_i, start_i, x_i, s_i, base_i, ovf_i, coef_addr_o, coef_i, y_o, ovf_o
-);
-
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all.
-  function integer fp_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      fp_cmul = 0;
-      for (n = 0; n < b; n = n + 1) fp_cmul = fp_cmul + a;
-    end
-  endfunction
-
-  localparam integer ADDR_BUS_W = fp_cmul(PORTS, ADDR_W);
-  localparam integer COEF_BUS_W = fp_cmul(PORTS, REG_W);
-
-  input  wire                  clk_i;
+  input  wire                     clk_i,
   // Synchronous reset (of the block RAM delay lines' pointers).
-  input  wire                  rst_i;
+  input  wire                     rst_i,
   // An item starts: x_i, base_i, ovf_i are valid.
-  input  wire                  start_i;
+  input  wire                     start_i,
   // Polynomial argument; the curve to correct, LATENCY - 3 clocks after start_i (when the
   // polynomial's value is ready: the caller delays it, from wherever it is cheapest).
-  input  wire [S_W-1:0]        x_i;
-  input  wire [S_W-1:0]        s_i;
+  input  wire [S_W-1:0]           x_i,
+  input  wire [S_W-1:0]           s_i,
   // Address of the item's coefficient of x^0.
-  input  wire [ADDR_W-1:0]     base_i;
+  input  wire [ADDR_W-1:0]        base_i,
   // An earlier stage saturated (carried to ovf_o).
-  input  wire                  ovf_i;
+  input  wire                     ovf_i,
   // Read port p: address (port p at bits [p ADDR_W +: ADDR_W]) and its word one clock later.
-  output wire [ADDR_BUS_W-1:0] coef_addr_o;
-  input  wire [COEF_BUS_W-1:0] coef_i;
+  output wire [PORTS*ADDR_W-1:0]  coef_addr_o,
+  input  wire [PORTS*REG_W-1:0]   coef_i,
   // Corrected curve and "some stage saturated".
-  output wire [S_W-1:0]        y_o;
-  output wire                  ovf_o;
+  output wire [S_W-1:0]           y_o,
+  output wire                     ovf_o
+);
+
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer ACC_F = COEF_F + ACC_G;
-  localparam integer ACC_W = ACC_F + ACC_I;
+  localparam integer TERMS = acore_terms(0, DEGREE);
+  localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
+  localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);
   localparam integer U_SH = S_F - XCENTER;
   localparam integer P_W = ACC_W + ((S_W > U_SH) ? (S_W - U_SH) : 0) + 2;  // product + addend
-  localparam integer MUL_B = (F == 1) ? S_W : (S_W + F - 1) >> $clog2(F);
-  localparam integer ML = (F == 1) ? $clog2(S_W) + 1 : $clog2(MUL_B) + 1 + F;
+  localparam integer ML = acore_fold_mul_latency(S_W, F);
   localparam integer INIT_AT = ML - F;
   localparam integer STEP = ML + 1;
-  localparam integer LATENCY = 5 + fp_cmul(DEGREE, STEP);
+  localparam integer LATENCY = acore_fold_poly_latency(DEGREE, S_W, F);
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
+  // The address of the item's word of power j, from its word 0 (the map: the powers of a region's
+  // curve are consecutive words).
+  function integer term_off(input integer j);
+    term_off = acore_addr_poly(TERMS, 0, 0, j) - acore_addr_poly(TERMS, 0, 0, 0);
+  endfunction
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(ACC_F >= S_F), .VALUE(ACC_F),
@@ -106,6 +98,9 @@ module acore_fold_poly #(
   acore_check #(.OK(F == 1 || F == 2 || F == 4), .VALUE(F),
     .MSG("illegal parameter: acore_fold_poly: F must be 1, 2 or 4"))
     F_must_be_1_2_or_4 ();
+  acore_check #(.OK(PORTS == acore_fold_poly_ports(DEGREE)), .VALUE(PORTS),
+    .MSG("illegal parameter: acore_fold_poly: PORTS is derived (DEGREE+1), do not override"))
+    PORTS_is_derived ();
 
   // A coefficient word, sign-extended and shifted to ACC_F fraction bits.
   function automatic [ACC_W-1:0] coef_acc(input [REG_W-1:0] w);
@@ -123,7 +118,8 @@ module acore_fold_poly #(
       assign u_next = x_i;
     end
   endgenerate
-  localparam [ADDR_W-1:0] DEG_A = DEGREE[ADDR_W-1:0];
+  localparam integer DEG_I = term_off(DEGREE);
+  localparam [ADDR_W-1:0] DEG_A = DEG_I[ADDR_W-1:0];
   assign coef_addr_o[ADDR_W-1:0] = base_i + DEG_A;
 
   // Per step m: its inputs at its start clock (accumulator, argument, curve, base address,
@@ -142,7 +138,7 @@ module acore_fold_poly #(
     b0_q  <= base_i;
     ov0_q <= ovf_i;
     st0_q <= start_i;
-    an_q  <= coef_acc(coef_i[fp_cmul(DEGREE, 0) +: REG_W]);
+    an_q  <= coef_acc(coef_i[0 +: REG_W]);
     u1_q  <= u0_q;
     b1_q  <= b0_q;
     ov1_q <= ov0_q;
@@ -159,16 +155,16 @@ module acore_fold_poly #(
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
       // Address of a_j, formed at the step's start and presented one clock before the multiplier
       // adds the word (INIT_AT clocks into the step).
-      localparam integer J = DEGREE - 1 - m;
-      localparam [ADDR_W-1:0] J_A = J[ADDR_W-1:0];
+      localparam integer J_I = term_off(DEGREE - 1 - m);
+      localparam [ADDR_W-1:0] J_A = J_I[ADDR_W-1:0];
       acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_da (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(coef_addr_o[fp_cmul(m + 1, ADDR_W) +: ADDR_W]));
+        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(coef_addr_o[(m + 1) * ADDR_W +: ADDR_W]));
       wire [P_W-1:0] sum;
       acore_fold_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F)
       ) u_mul (
         .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
-        .init_i(coef_acc(coef_i[fp_cmul(m + 1, REG_W) +: REG_W])), .p_o(sum));
+        .init_i(coef_acc(coef_i[(m + 1) * REG_W +: REG_W])), .p_o(sum));
       // The item beside the multiplier to the next step: start, and argument with base address.
       acore_delay #(.W(1), .DEPTH(STEP)) u_dst (
         .clk_i(clk_i), .en_i(1'b1), .d_i(st[m]), .q_o(st[m+1]));

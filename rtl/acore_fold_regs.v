@@ -34,37 +34,22 @@ module acore_fold_regs #(
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(WORDS)
 ) (
-  clk_i, rst_i, addr_i, wdata_i, we_i, rdata_o, atan_o, last_o, raddr_i, rdata_p_o
-);
-
-  // Constant product by repeated addition, for widths and offsets at elaboration only.
-  function integer fr_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      fr_cmul = 0;
-      for (n = 0; n < b; n = n + 1) fr_cmul = fr_cmul + a;
-    end
-  endfunction
-
-  localparam integer AT_BUS_W = fr_cmul(K, REG_W);
-  localparam integer PA_W = fr_cmul(PORTS, ADDR_W);
-  localparam integer PD_W = fr_cmul(PORTS, REG_W);
-
-  input  wire                clk_i;
+  input  wire                     clk_i,
   // Synchronous reset of the registered write enable only (the words keep their contents).
-  input  wire                rst_i;
+  input  wire                     rst_i,
   // Host port.
-  input  wire [ADDR_W-1:0]   addr_i;
-  input  wire [REG_W-1:0]    wdata_i;
-  input  wire                we_i;
-  output reg  [REG_W-1:0]    rdata_o;
+  input  wire [ADDR_W-1:0]        addr_i,
+  input  wire [REG_W-1:0]         wdata_i,
+  input  wire                     we_i,
+  output reg  [REG_W-1:0]         rdata_o,
   // The arctangent words (ATAN_FLOPS), word 0 in the low bits.
-  output wire [AT_BUS_W-1:0] atan_o;
+  output wire [K*REG_W-1:0]       atan_o,
   // The last word (LAST_FLOP).
-  output wire [REG_W-1:0]    last_o;
+  output wire [REG_W-1:0]         last_o,
   // Datapath read ports: address of port p at bits [p ADDR_W +: ADDR_W], its word one clock later.
-  input  wire [PA_W-1:0]     raddr_i;
-  output wire [PD_W-1:0]     rdata_p_o;
+  input  wire [PORTS*ADDR_W-1:0]  raddr_i,
+  output wire [PORTS*REG_W-1:0]   rdata_p_o
+);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(ATAN_BASE >= 4 && ATAN_BASE + K <= WORDS), .VALUE(ATAN_BASE),
@@ -117,8 +102,8 @@ module acore_fold_regs #(
   generate
     for (p = 0; p < PORTS; p = p + 1) begin : g_port
       reg [REG_W-1:0] rd_q;
-      always @(posedge clk_i) rd_q <= dp_mem_q[raddr_i[fr_cmul(p, ADDR_W) +: ADDR_W]];
-      assign rdata_p_o[fr_cmul(p, REG_W) +: REG_W] = rd_q;
+      always @(posedge clk_i) rd_q <= dp_mem_q[raddr_i[p * ADDR_W +: ADDR_W]];
+      assign rdata_p_o[p * REG_W +: REG_W] = rd_q;
     end
     if (ATAN_FLOPS != 0 || LAST_FLOP != 0) begin : g_flops
       // A flop copy of every word, written with the memories; only the arctangent words and the
@@ -129,11 +114,11 @@ module acore_fold_regs #(
       end
       always @(posedge clk_i) if (we_q) flop_q[waddr_q] <= wdata_q;
       for (a = 0; a < K; a = a + 1) begin : g_atan
-        assign atan_o[fr_cmul(a, REG_W) +: REG_W] = (ATAN_FLOPS != 0) ? flop_q[ATAN_BASE + a] : {REG_W{1'b0}};
+        assign atan_o[a * REG_W +: REG_W] = (ATAN_FLOPS != 0) ? flop_q[ATAN_BASE + a] : {REG_W{1'b0}};
       end
       assign last_o = (LAST_FLOP != 0) ? flop_q[WORDS - 1] : {REG_W{1'b0}};
     end else begin : g_no_flops
-      assign atan_o = {AT_BUS_W{1'b0}};
+      assign atan_o = {(K*REG_W){1'b0}};
       assign last_o = {REG_W{1'b0}};
     end
   endgenerate

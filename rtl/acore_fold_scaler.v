@@ -39,13 +39,13 @@ module acore_fold_scaler #(
   output wire             ovf_o
 );
 
+`include "acore_derived.vh"
+
   // Derived, do not override: widths as in acore_scaler, plus one bit for the rounding addend.
-  localparam integer T_W = ((D_W > REG_W) ? D_W : REG_W) + 1;
+  localparam integer T_W = acore_t_w(D_W, REG_W);
   localparam integer RS = R_SHIFT - SCALE_G;
   localparam integer P_W = T_W + ((REG_W > RS) ? (REG_W - RS) : 0) + 2;
-  localparam integer MUL_B = (F == 1) ? REG_W : (REG_W + F - 1) >> $clog2(F);
-  localparam integer ML = (F == 1) ? $clog2(REG_W) + 1 : $clog2(MUL_B) + 1 + F;
-  localparam integer LATENCY = ML + 2;
+  localparam integer LATENCY = acore_fold_scaler_latency(REG_W, F);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),

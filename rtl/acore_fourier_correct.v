@@ -46,42 +46,27 @@ module acore_fourier_correct #(
   // Width of one arctangent word on atan_i.
   parameter integer AT_W = 18
 ) (
-  clk_i, en_i, angle_i, coef_i, atan_i, angle_o
+  input  wire                        clk_i,
+  // Pipeline advance (the whole pipeline stalls together).
+  input  wire                        en_i,
+  // The CORDIC's angle.
+  input  wire [ANGLE_W-1:0]          angle_i,
+  // The Fourier words of the map, a_0, a'_1, b'_1, ..., a'_K, b'_K; word j at bits [j REG_W +: REG_W].
+  input  wire [acore_fourier_words(K)*REG_W-1:0] coef_i,
+  // atan(2^-i) for i = 0..M-1 (the register file's first M CORDIC words).
+  input  wire [M*AT_W-1:0]           atan_i,
+  // Corrected angle, LATENCY advancing clocks after angle_i.
+  output reg  [ANGLE_W-1:0]          angle_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all.
-  function integer fc_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      fc_cmul = 0;
-      for (n = 0; n < b; n = n + 1) fc_cmul = fc_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer NW = (K << 1) + 1;                       // coefficient words
-  localparam integer COEF_BUS_W = fc_cmul(NW, REG_W);
-  localparam integer AT_BUS_W = fc_cmul(M, AT_W);
   localparam integer F = CF + G;                              // fraction bits of D (turns)
   localparam integer S = F - ANGLE_W;                         // rounding shift of the output
-  localparam integer XY_W = W + 2 + G;
-  localparam integer KB = ($clog2(K + 1) > 2) ? $clog2(K + 1) : 2;  // bits of the constant k
-  localparam integer KL = $clog2(KB);                         // adder levels of k theta
-  localparam integer TL = $clog2(K + 1);                      // adder levels of the sum
-  localparam integer LATENCY = KL + 1 + M + TL + 1;
-
-  input  wire                  clk_i;
-  // Pipeline advance (the whole pipeline stalls together).
-  input  wire                  en_i;
-  // The CORDIC's angle.
-  input  wire [ANGLE_W-1:0]    angle_i;
-  // Words a_0, a'_1, b'_1, ..., a'_K, b'_K; word j at bits [j REG_W +: REG_W].
-  input  wire [COEF_BUS_W-1:0] coef_i;
-  // atan(2^-i) for i = 0..M-1 (the register file's first M CORDIC words).
-  input  wire [AT_BUS_W-1:0]   atan_i;
-  // Corrected angle, LATENCY advancing clocks after angle_i.
-  output reg  [ANGLE_W-1:0]    angle_o;
+  localparam integer XY_W = acore_xy_w(W, G);
+  localparam integer KB = acore_fourier_kb(K);                // bits of the constant k
+  localparam integer LATENCY = acore_fourier_latency(K, M);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(K >= 1 && K <= 31), .VALUE(K),
@@ -101,7 +86,7 @@ module acore_fourier_correct #(
     W_must_be_8_to_REG_W ();
 
   // ---- per harmonic: k theta, quadrant and start vector, rotation ----
-  localparam integer TERMS_W = fc_cmul(K + 1, F);
+  localparam integer TERMS_W = (K + 1) * F;
   wire [TERMS_W-1:0] terms;
   // Term 0: a_0 << G, sign-extended (or wrapped) to F bits.
   wire [REG_W+G-1:0] a0_g = {coef_i[REG_W-1:0], {G{1'b0}}};
@@ -123,8 +108,8 @@ module acore_fourier_correct #(
       wire [ANGLE_W-1:0] u = kp[ANGLE_W-1:0];
       wire [1:0] q = u[ANGLE_W-1:ANGLE_W-2] + {1'b0, u[ANGLE_W-3]};
       // Start vector (a'_k, b'_k) << G.
-      localparam integer OFF_A = fc_cmul((k << 1) - 1, REG_W);
-      localparam integer OFF_B = fc_cmul(k << 1, REG_W);
+      localparam integer OFF_A = acore_fourier_a(k) * REG_W;
+      localparam integer OFF_B = acore_fourier_b(k) * REG_W;
       wire [XY_W-1:0] xa = {{2{coef_i[OFF_A + W - 1]}}, coef_i[OFF_A +: W], {G{1'b0}}};
       wire [XY_W-1:0] yb = {{2{coef_i[OFF_B + W - 1]}}, coef_i[OFF_B +: W], {G{1'b0}}};
       reg [XY_W-1:0] x0_q, y0_q;
@@ -145,7 +130,7 @@ module acore_fourier_correct #(
         .clk_i(clk_i), .en_i(en_i), .x_i(x0_q), .y_i(y0_q), .z_i(z0_q), .atan_i(atan_i), .x_o(xk));
       // Sign-extended (or wrapped) to F bits: the sum is modulo a turn.
       wire [F+XY_W-1:0] xk_ext = {{F{xk[XY_W-1]}}, xk};
-      localparam integer OFF_T = fc_cmul(k, F);
+      localparam integer OFF_T = k * F;
       assign terms[OFF_T +: F] = xk_ext[F-1:0];
     end
   endgenerate
@@ -156,7 +141,8 @@ module acore_fourier_correct #(
 
   // ---- angle_o = round_shr((theta << S) - D, S): half an LSB is a constant bit below theta ----
   wire [ANGLE_W-1:0] theta_d;
-  acore_delay #(.W(ANGLE_W), .DEPTH(KL + 1 + M + TL)) u_dtheta (
+  // theta beside k theta, the rotations and the sum, to the round-and-subtract clock.
+  acore_delay #(.W(ANGLE_W), .DEPTH(LATENCY - 1)) u_dtheta (
     .clk_i(clk_i), .en_i(en_i), .d_i(angle_i), .q_o(theta_d));
   localparam [F-1:0] HALF = {{(F-1){1'b0}}, 1'b1} << (S - 1);
   wire [F-1:0] theta_half = {theta_d, {S{1'b0}}} | HALF;

@@ -47,59 +47,46 @@ module acore_poly2d_correct #(
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS)
 ) (
-  clk_i, en_i, x_i, s13_i, s24_i, region_i, coef_i, y_o, ovf_o
+  input  wire                clk_i,
+  input  wire                en_i,
+  // Linear curve x, both scaled curves (this instance corrects s13 or s24, see CURVE), region.
+  input  wire [S_W-1:0]      x_i,
+  input  wire [S_W-1:0]      s13_i,
+  input  wire [S_W-1:0]      s24_i,
+  input  wire [RG_W-1:0]     region_i,
+  // The polynomial words of the map (from word 4: [region][curve][term]), first in the low bits.
+  input  wire [acore_poly_words(acore_terms(1, DEGREE), REGIONS)*REG_W-1:0] coef_i,
+  // Corrected curve and "some step saturated".
+  output wire [S_W-1:0]      y_o,
+  output wire                ovf_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
-  function integer p2_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      p2_cmul = 0;
-      for (n = 0; n < b; n = n + 1) p2_cmul = p2_cmul + a;
-    end
-  endfunction
-
-  // Term index of u^i v^j (see the header).
-  function integer p2_term(input integer i, input integer j);
-    begin
-      p2_term = p2_cmul(i, DEGREE + 1) - ((p2_cmul(i, i - 1)) >> 1) + j;
-    end
-  endfunction
-
-  // Derived, do not override: terms per curve and region, coefficient words, bus width.
-  localparam integer TERMS = p2_term(DEGREE, 0) + 1;
-  localparam integer NCOEF = p2_cmul(REGIONS << 1, TERMS);
-  localparam integer COEF_BUS_W = p2_cmul(NCOEF, REG_W);
-
-  input  wire                  clk_i;
-  input  wire                  en_i;
-  // Linear curve x, both scaled curves (this instance corrects s13 or s24, see CURVE), region.
-  input  wire [S_W-1:0]        x_i;
-  input  wire [S_W-1:0]        s13_i;
-  input  wire [S_W-1:0]        s24_i;
-  input  wire [RG_W-1:0]       region_i;
-  // Register words 4.. of the map: [region][curve][term], word 0 in the low bits.
-  input  wire [COEF_BUS_W-1:0] coef_i;
-  // Corrected curve and "some step saturated".
-  output wire [S_W-1:0]        y_o;
-  output wire                  ovf_o;
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer ACC_F = COEF_F + ACC_G;
-  localparam integer ACC_W = ACC_F + ACC_I;
-  localparam integer ML = $clog2(S_W);
+  localparam integer TERMS = acore_terms(1, DEGREE);
+  localparam integer COEF_BUS_W = acore_poly_words(TERMS, REGIONS) * REG_W;
+  localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
+  localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);
+  localparam integer ML = acore_shift_add_mul_latency(S_W);
   localparam integer L = ML + 2;
-  localparam integer LATENCY = 6 + p2_cmul(DEGREE, L);
+  localparam integer LATENCY = acore_poly2d_latency(DEGREE, S_W);
   localparam integer U_SH = S_F - XCENTER;
   localparam integer V_SH = S_F - 2;
   // Products acc u and acc v: |acc| 2^(S_W - shift) plus floor slack, plus sign.
   localparam integer PU_W = ACC_W + S_W - U_SH + 1;
   localparam integer PV_W = ACC_W + S_W - V_SH + 1;
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
-  localparam integer STRIDE = p2_cmul(TERMS << 1, REG_W);  // bits from region r to r + 1
-  localparam integer CBASE = p2_cmul(p2_cmul(CURVE, TERMS), REG_W);
   localparam [S_W-1:0] ONE = {{(S_W-S_F-1){1'b0}}, 1'b1, {S_F{1'b0}}};
+  // Term index of u^i v^j (see the header).
+  function integer p2_term(input integer i, input integer j);
+    p2_term = acore_term2d(DEGREE, i, j);
+  endfunction
+  // Bit offset on coef_i of term t, region r, this curve (the map's address, counted from the
+  // first polynomial word).
+  function integer coef_off(input integer r, input integer t);
+    coef_off = (acore_addr_poly(TERMS, r, CURVE, t) - acore_addr_poly(TERMS, 0, 0, 0)) * REG_W;
+  endfunction
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(DEGREE >= 1 && DEGREE <= 3), .VALUE(DEGREE),
@@ -131,14 +118,11 @@ module acore_poly2d_correct #(
   function automatic [ACC_W-1:0] coef_acc(input [COEF_BUS_W-1:0] bus, input [RG_W-1:0] r,
                                           input integer t);
     reg [REG_W-1:0] w;
-    integer k, off;
+    integer k;
     begin
       w = {REG_W{1'b0}};
-      off = CBASE + p2_cmul(t, REG_W);
-      for (k = 0; k < REGIONS; k = k + 1) begin
-        if (r == k[RG_W-1:0]) w = bus[off +: REG_W];
-        off = off + STRIDE;
-      end
+      for (k = 0; k < REGIONS; k = k + 1)
+        if (r == k[RG_W-1:0]) w = bus[coef_off(k, t) +: REG_W];
       coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
     end
   endfunction
@@ -184,7 +168,7 @@ module acore_poly2d_correct #(
     wire [S_W-1:0] v_at [0:DEGREE-1];
     assign v_at[0] = v0_q;
     for (k = 0; k < DEGREE; k = k + 1) begin : g_rline
-      acore_delay #(.W(RG_W), .DEPTH(p2_cmul(k, L) + ML - 1)) u_dr (
+      acore_delay #(.W(RG_W), .DEPTH(k * L + ML - 1)) u_dr (
         .clk_i(clk_i), .en_i(en_i), .d_i(r0_q), .q_o(r_pick[k]));
       if (k + 1 < DEGREE) begin : g_vnext
         acore_delay #(.W(S_W), .DEPTH(L)) u_dv (.clk_i(clk_i), .en_i(en_i), .d_i(v_at[k]), .q_o(v_at[k+1]));

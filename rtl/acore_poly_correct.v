@@ -38,43 +38,36 @@ module acore_poly_correct #(
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS)
 ) (
-  clk_i, en_i, x_i, s_i, region_i, coef_i, y_o, ovf_o
+  input  wire                clk_i,
+  input  wire                en_i,
+  // Polynomial argument and the curve to correct.
+  input  wire [S_W-1:0]      x_i,
+  input  wire [S_W-1:0]      s_i,
+  input  wire [RG_W-1:0]     region_i,
+  // The polynomial words of the map (from word 4: [region][curve][power]), first in the low bits.
+  input  wire [acore_poly_words(acore_terms(0, DEGREE), REGIONS)*REG_W-1:0] coef_i,
+  // Corrected curve and "some step saturated".
+  output wire [S_W-1:0]      y_o,
+  output wire                ovf_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
-  function integer pc_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      pc_cmul = 0;
-      for (n = 0; n < b; n = n + 1) pc_cmul = pc_cmul + a;
-    end
-  endfunction
-
-  // Derived, do not override: coefficient words (2 curves, REGIONS regions, DEGREE+1 powers).
-  localparam integer NCOEF = pc_cmul(REGIONS << 1, DEGREE + 1);
-  localparam integer COEF_BUS_W = pc_cmul(NCOEF, REG_W);
-
-  input  wire                  clk_i;
-  input  wire                  en_i;
-  // Polynomial argument and the curve to correct.
-  input  wire [S_W-1:0]        x_i;
-  input  wire [S_W-1:0]        s_i;
-  input  wire [RG_W-1:0]       region_i;
-  // Register words 4.. of the map: [region][curve][power], word 0 in the low bits.
-  input  wire [COEF_BUS_W-1:0] coef_i;
-  // Corrected curve and "some step saturated".
-  output wire [S_W-1:0]        y_o;
-  output wire                  ovf_o;
+`include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer ACC_F = COEF_F + ACC_G;
-  localparam integer ACC_W = ACC_F + ACC_I;
-  localparam integer ML = $clog2(S_W);
-  localparam integer LATENCY = 1 + pc_cmul(DEGREE, ML + 2) + 3;
+  localparam integer TERMS = acore_terms(0, DEGREE);
+  localparam integer COEF_BUS_W = acore_poly_words(TERMS, REGIONS) * REG_W;
+  localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
+  localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);
+  localparam integer ML = acore_shift_add_mul_latency(S_W);
+  localparam integer LATENCY = acore_poly_latency(DEGREE, S_W);
   localparam integer U_SH = S_F - XCENTER;
   localparam integer P_W = ACC_W + ((S_W > U_SH) ? (S_W - U_SH) : 0) + 1;
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
+  // Bit offset on coef_i of the word of power j, region r, this curve (the map's address, counted
+  // from the first polynomial word).
+  function integer coef_off(input integer r, input integer j);
+    coef_off = (acore_addr_poly(TERMS, r, CURVE, j) - acore_addr_poly(TERMS, 0, 0, 0)) * REG_W;
+  endfunction
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(ACC_F >= S_F), .VALUE(ACC_F),
@@ -98,19 +91,15 @@ module acore_poly_correct #(
   wire             ov  [0:DEGREE];
 
   // Coefficient of x^j for region r of this curve, sign-extended and shifted to ACC_F fraction
-  // bits. base = bit offset of region 0's word for x^j; region k's word is k STRIDE bits higher.
-  localparam integer STRIDE = pc_cmul(pc_cmul(2, DEGREE + 1), REG_W);
+  // bits.
   function automatic [ACC_W-1:0] coef_acc(input [COEF_BUS_W-1:0] bus, input [RG_W-1:0] r,
-                                          input integer base);
+                                          input integer j);
     reg [REG_W-1:0] w;
-    integer k, off;
+    integer k;
     begin
       w = {REG_W{1'b0}};
-      off = base;
-      for (k = 0; k < REGIONS; k = k + 1) begin
-        if (r == k[RG_W-1:0]) w = bus[off +: REG_W];
-        off = off + STRIDE;
-      end
+      for (k = 0; k < REGIONS; k = k + 1)
+        if (r == k[RG_W-1:0]) w = bus[coef_off(k, j) +: REG_W];
       coef_acc = {{(ACC_W-REG_W-ACC_G){w[REG_W-1]}}, w, {ACC_G{1'b0}}};
     end
   endfunction
@@ -125,13 +114,12 @@ module acore_poly_correct #(
       assign u_next = x_i;
     end
   endgenerate
-  localparam integer BASE_N = pc_cmul(pc_cmul(CURVE, DEGREE + 1) + DEGREE, REG_W);
   reg [ACC_W-1:0] acc0_q;
   reg [S_W-1:0]   x0_q, s0_q;
   reg [RG_W-1:0]  r0_q;
   always @(posedge clk_i) begin
     if (en_i) begin
-      acc0_q <= coef_acc(coef_i, region_i, BASE_N);
+      acc0_q <= coef_acc(coef_i, region_i, DEGREE);
       x0_q   <= u_next;
       s0_q   <= s_i;
       r0_q   <= region_i;
@@ -148,7 +136,6 @@ module acore_poly_correct #(
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
       // ML clocks: acc times x on the adder tree. Beside it the region travels ML-1 clocks, then
       // picks a_j into a register (so no multiplexer sits in front of the adder).
-      localparam integer BASE_J = pc_cmul(pc_cmul(CURVE, DEGREE + 1) + DEGREE - 1 - m, REG_W);
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .P_W(P_W)
@@ -173,7 +160,7 @@ module acore_poly_correct #(
       acore_saturate #(.IN_W(P_W + 1), .OUT_W(ACC_W)) u_sat (.d_i(sum_q), .q_o(sum_sat), .ovf_o(sum_ovf));
       always @(posedge clk_i) begin
         if (en_i) begin
-          a_j_q  <= coef_acc(coef_i, r_e, BASE_J);
+          a_j_q  <= coef_acc(coef_i, r_e, DEGREE - 1 - m);
           r_d_q  <= r_e;
           ov_d_q <= ov_e;
           sum_q  <= sum;

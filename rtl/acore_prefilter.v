@@ -10,7 +10,7 @@ module acore_prefilter #(
   // Channel code width, signed two's complement.
   parameter integer IN_W = 16,
   // Derived, do not override: difference width.
-  parameter integer D_W = IN_W + 1
+  parameter integer D_W = acore_d_w(IN_W)
 ) (
   input  wire            clk_i,
   // Pipeline advance.
@@ -25,10 +25,12 @@ module acore_prefilter #(
   output reg  [D_W-1:0]  d24_o
 );
 
-  localparam integer LATENCY = 1;
+`include "acore_derived.vh"
+
+  localparam integer LATENCY = acore_prefilter_latency();
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
-  acore_check #(.OK(D_W == IN_W + 1), .VALUE(D_W),
+  acore_check #(.OK(D_W == acore_d_w(IN_W)), .VALUE(D_W),
     .MSG("illegal parameter: acore_prefilter: D_W is derived (IN_W+1), do not override"))
     D_W_is_derived ();
 

@@ -32,7 +32,9 @@ module acore_region_select #(
   output reg  [S_W-1:0]  s24_o
 );
 
-  localparam integer LATENCY = 2;
+`include "acore_derived.vh"
+
+  localparam integer LATENCY = acore_region_select_latency();
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(REGIONS == 4 || REGIONS == 8), .VALUE(REGIONS),

@@ -24,7 +24,10 @@ module acore_round_sub_sat #(
   output wire             ovf_o
 );
 
+`include "acore_derived.vh"
+
   // Derived, do not override.
+  localparam integer LATENCY = acore_round_sub_sat_latency();
   localparam integer R_W = ACC_W + 1 - RN;  // width of round_shr(acc, RN)
   localparam integer Y_W = ((R_W > S_W) ? R_W : S_W) + 1;
 

@@ -36,12 +36,13 @@ module acore_scaler #(
   output wire             ovf_o
 );
 
+`include "acore_derived.vh"
+
   // Derived, do not override.
-  localparam integer T_W = ((D_W > REG_W) ? D_W : REG_W) + 1;
+  localparam integer T_W = acore_t_w(D_W, REG_W);
   localparam integer RS = R_SHIFT - SCALE_G;
   localparam integer P_W = T_W + ((REG_W > RS) ? (REG_W - RS) : 0) + 1;
-  localparam integer MUL_LATENCY = $clog2(REG_W);
-  localparam integer LATENCY = MUL_LATENCY + 3;
+  localparam integer LATENCY = acore_scaler_latency(REG_W);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),

@@ -67,7 +67,7 @@ module acore_serial_ctrl #(
   parameter integer K = 16,
   // 1: the ZERO word (the map's last word) and the ZR operation.
   parameter integer ZERO = 0,
-  // Words of the coefficient map: 4 + 2 REGIONS (DEGREE + 1) + K (+ 1 with ZERO).
+  // Words of the coefficient map (acore_words: 4 + 2 REGIONS (DEGREE + 1) + K, + 1 with ZERO).
   parameter integer WORDS = 52,
   // Shift amounts: sh_amt = LS - k for a shift by k (k < 0: right), see acore_serial_datapath.v.
   parameter integer LS = 8,
@@ -133,13 +133,8 @@ module acore_serial_ctrl #(
   output reg  [DA_W-1:0]   waddr_o
 );
 
-  function integer sc_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      sc_cmul = 0;
-      for (n = 0; n < b; n = n + 1) sc_cmul = sc_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
+
   function integer sc_max(input integer a, input integer b);
     sc_max = (a > b) ? a : b;
   endfunction
@@ -168,13 +163,13 @@ module acore_serial_ctrl #(
   localparam integer CNT_N = sc_max(sc_max(REG_W, S_W), K);
   localparam integer CNT_W = $clog2(CNT_N);
   localparam integer J_W = (DEGREE > 1) ? $clog2(DEGREE) : 1;
-  localparam integer NCOEF = sc_cmul(REGIONS << 1, DEGREE + 1);
+  localparam integer TERMS = acore_terms(0, DEGREE);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(BI_W <= CNT_W), .VALUE(BI_W),
     .MSG("illegal parameter: acore_serial_ctrl: BI_W must be <= the counter's width"))
     BI_W_must_fit_the_counter ();
-  acore_check #(.OK(WORDS == 4 + NCOEF + K + ((ZERO != 0) ? 1 : 0)), .VALUE(WORDS),
+  acore_check #(.OK(WORDS == acore_words(TERMS, REGIONS, K, 0, ZERO)), .VALUE(WORDS),
     .MSG("illegal parameter: acore_serial_ctrl: WORDS is derived (4 + 2 REGIONS (DEGREE+1) + K + ZERO word), do not override"))
     WORDS_is_derived ();
   acore_check #(.OK(DA_W == $clog2(WORDS + 3)), .VALUE(DA_W),
@@ -189,16 +184,17 @@ module acore_serial_ctrl #(
     .MSG("illegal parameter: acore_serial_ctrl: K must be >= 2"))
     K_must_be_at_least_2 ();
 
-  // Addresses (register map of README / model/datapath_config.hpp) and the scratch words.
-  localparam integer ATAN0_I = 4 + NCOEF;
-  localparam [DA_W-1:0] AD_O13 = 0, AD_O24 = 1, AD_R13 = 2, AD_R24 = 3;
+  // Addresses (the register map, rtl/acore_derived.vh) and the scratch words after the map.
+  localparam integer O13_I = acore_addr_offset(0), O24_I = acore_addr_offset(1);
+  localparam integer R13_I = acore_addr_recip(0), R24_I = acore_addr_recip(1);
+  localparam [DA_W-1:0] AD_O13 = O13_I[DA_W-1:0], AD_O24 = O24_I[DA_W-1:0];
+  localparam [DA_W-1:0] AD_R13 = R13_I[DA_W-1:0], AD_R24 = R24_I[DA_W-1:0];
   localparam integer S13_I = WORDS, S24_I = WORDS + 1, Y13_I = WORDS + 2;
   localparam [DA_W-1:0] AD_S13 = S13_I[DA_W-1:0], AD_S24 = S24_I[DA_W-1:0], AD_Y13 = Y13_I[DA_W-1:0];
+  localparam integer ATAN0_I = acore_addr_atan(TERMS, REGIONS, 0);
   localparam [DA_W-1:0] AD_ATAN0 = ATAN0_I[DA_W-1:0];
-  localparam integer ZERO_I = WORDS - 1;  // the ZERO word (ZERO = 1 only)
+  localparam integer ZERO_I = acore_addr_zero(TERMS, REGIONS, K, 0);  // read with ZERO = 1 only
   localparam [DA_W-1:0] AD_ZERO = ZERO_I[DA_W-1:0];
-  localparam integer STRIDE_I = DEGREE + 1, J_N_I = DEGREE;
-  localparam [DA_W-1:0] STRIDE = STRIDE_I[DA_W-1:0], J_N = J_N_I[DA_W-1:0], AD_POLY0 = 4;
 
   // Shift amounts (sh_amt = LS - k).
   localparam integer AM_ZERO_I = LS, AM_SC_I = LS + RS, AM_HB_I = LS + S_F, AM_HB0_I = LS + S_F - ACC_G;
@@ -222,21 +218,29 @@ module acore_serial_ctrl #(
   reg             curve_q, curve_d;
   reg             out_valid_q;
 
-  // Address of the coefficient of x^j, region r, curve c: 4 + (DEGREE+1)(2r + c) + j (a chain of
-  // constant bases, no multiplier).
-  function automatic [DA_W-1:0] coef_addr(input [RG_W-1:0] r, input c, input [DA_W-1:0] j);
+  wire [DA_W-1:0] j_ext = {{(DA_W-J_W){1'b0}}, j_q};
+  // The address of the polynomial word of power j, region r, curve c: word 0 of {r, c} (the map's
+  // addresses on a bus) plus j (the word of power j is j words further; J_N: the leading
+  // coefficient's).
+  localparam integer J_N_I = acore_addr_poly(TERMS, 0, 0, DEGREE) - acore_addr_poly(TERMS, 0, 0, 0);
+  localparam [DA_W-1:0] J_N = J_N_I[DA_W-1:0];
+  wire [2*REGIONS*DA_W-1:0] poly_base;
+  genvar gb;
+  generate
+    for (gb = 0; gb < 2 * REGIONS; gb = gb + 1) begin : g_poly_base
+      localparam integer BASE_I = acore_addr_poly(TERMS, gb >> 1, gb & 1, 0);
+      assign poly_base[gb * DA_W +: DA_W] = BASE_I[DA_W-1:0];
+    end
+  endgenerate
+  function automatic [DA_W-1:0] coef_addr(input [2*REGIONS*DA_W-1:0] bases, input [RG_W-1:0] r,
+                                           input c, input [DA_W-1:0] j);
     integer k;
-    reg [DA_W-1:0] base;
     begin
       coef_addr = {DA_W{1'b0}};
-      base = AD_POLY0;
-      for (k = 0; k < (REGIONS << 1); k = k + 1) begin
-        if ({r, c} == k[RG_W:0]) coef_addr = base + j;
-        base = base + STRIDE;
-      end
+      for (k = 0; k < 2 * REGIONS; k = k + 1)
+        if ({r, c} == k[RG_W:0]) coef_addr = bases[k * DA_W +: DA_W] + j;
     end
   endfunction
-  wire [DA_W-1:0] j_ext = {{(DA_W-J_W){1'b0}}, j_q};
   // The counter as a shift amount and as an address offset (its values fit both: cnt <= LS + MAXR
   // where it shifts, cnt < K where it addresses).
   wire [SHA_W-1:0] cnt_sh;
@@ -409,7 +413,7 @@ module acore_serial_ctrl #(
         state_d = ST_RSB;
       end
       ST_RSB: begin
-        raddr_o = coef_addr(region_i, 1'b0, J_N);
+        raddr_o = coef_addr(poly_base, region_i, 1'b0, J_N);
         curve_d = 1'b0;
         cnt_d = CNT_HB;
         j_d = J_TOP;
@@ -430,7 +434,7 @@ module acore_serial_ctrl #(
         end
         sh_amt_o = (step0 ? AM_HB0 : AM_HB) - cnt_sh;
         gate_sel_o = G_XBIT;
-        raddr_o = coef_addr(region_i, curve_q, j_ext);
+        raddr_o = coef_addr(poly_base, region_i, curve_q, j_ext);
         acc_we_d = 1'b1;
         cnt_d = cnt_q - CNT_ONE;
         if (cnt_zero) state_d = ST_HC;
@@ -458,7 +462,7 @@ module acore_serial_ctrl #(
         q_ext_o = Q_SC;
         b_sel_o = B_ACC;
         sh_amt_o = AM_RN;
-        raddr_o = coef_addr(region_i, 1'b1, J_N);
+        raddr_o = coef_addr(poly_base, region_i, 1'b1, J_N);
         sub_sel_o = S_SUB;
         cin_sel_o = C_NRND;
         sat_sel_d = SAT_S;

@@ -45,7 +45,7 @@ module acore_serial_datapath #(
   parameter integer BI_W = 5,
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer MAG_W = S_W + 2
+  parameter integer MAG_W = acore_mag_w(S_W)
 ) (
   input  wire               clk_i,
   // Advance: 0 holds every register.
@@ -103,6 +103,8 @@ module acore_serial_datapath #(
   output wire               los_o,
   output wire               dos_o
 );
+
+`include "acore_derived.vh"
 
   // Operation encodings (acore_serial_ctrl.v uses the same numbers).
   localparam [2:0] A_ZERO = 3'd0, A_T1 = 3'd1, A_T2 = 3'd2, A_Q = 3'd3, A_C1 = 3'd4, A_MLO = 3'd5,

@@ -29,7 +29,7 @@ module acore_serial_ram #(
   parameter integer REG_W = 18,
   // Stored word width, >= REG_W (the scratch words hold S_W-bit values).
   parameter integer MEM_W = 18,
-  // Host-visible words: 4 + 2 REGIONS (DEGREE+1) + K.
+  // Host-visible words: the map (acore_words: 4 + 2 REGIONS (DEGREE+1) + K, + 1 with ZERO).
   parameter integer WORDS = 52,
   // Datapath-only words after them.
   parameter integer SCRATCH = 3,

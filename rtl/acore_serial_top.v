@@ -71,11 +71,11 @@ module acore_serial_top #(
   parameter integer ZERO = 0,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
-  // Derived, do not override.
+  // Derived, do not override (rtl/acore_derived.vh).
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer WORDS = 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K + ((ZERO != 0) ? 1 : 0),
+  parameter integer WORDS = acore_words(acore_terms(0, DEGREE), REGIONS, K, 0, ZERO),
   parameter integer ADDR_W = $clog2(WORDS),
-  parameter integer MAG_W = S_W + 2
+  parameter integer MAG_W = acore_mag_w(S_W)
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -107,28 +107,23 @@ module acore_serial_top #(
   output wire               dos_o
 );
 
-  function integer st_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      st_cmul = 0;
-      for (n = 0; n < b; n = n + 1) st_cmul = st_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
+
   function integer st_max(input integer a, input integer b);
     st_max = (a > b) ? a : b;
   endfunction
 
   // ---- derived widths: W holds every exact intermediate of the fixed-point contract ----
-  localparam integer D_W = IN_W + 1;
-  localparam integer T_W = st_max(D_W, REG_W) + 1;                   // t = d - O
+  localparam integer D_W = acore_d_w(IN_W);
+  localparam integer T_W = acore_t_w(D_W, REG_W);                    // t = d - O
   localparam integer RS = R_SHIFT - SCALE_G;                         // scaling product shift
   localparam integer P_SC_W = T_W + st_max(REG_W - RS, 0) + 1;       // scaling product
-  localparam integer ACC_F = COEF_F + ACC_G;
-  localparam integer ACC_W = ACC_F + ACC_I;
+  localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
+  localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);
   localparam integer P_H_W = ACC_W + st_max(S_W - S_F, 0) + 2;       // Horner product + a_j
   localparam integer RN = ACC_F - S_F;                               // correction rounding
   localparam integer Y_W = st_max(ACC_W + 1 - RN, S_W) + 1;          // s - round(acc_0)
-  localparam integer XY_W = S_W + 2 + CORDIC_G;                      // CORDIC X, Y
+  localparam integer XY_W = acore_xy_w(S_W, CORDIC_G);               // CORDIC X, Y
   localparam integer DROP = Z_W - ANGLE_W;
   localparam integer W = st_max(st_max(st_max(P_SC_W, P_H_W), st_max(Y_W, XY_W + 1)),
                                 st_max(st_max(MAG_W + 1, Z_W), st_max(REG_W + 1, S_W + 2)));
@@ -145,9 +140,8 @@ module acore_serial_top #(
   // Clocks per sample (between two accepts at full rate) and from the accepting clock to
   // out_valid_o (see the schedule in acore_serial_ctrl.v). The testbench reads both
   // (rtl/verilator.vlt).
-  localparam integer CYCLES = 22 + ((ZERO != 0) ? 1 : 0) + (REG_W << 1) + st_cmul(DEGREE << 1, S_W + 2) +
-                              st_cmul(3, K);
-  localparam integer LATENCY = CYCLES + 1;
+  localparam integer CYCLES = acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO);
+  localparam integer LATENCY = acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO);
 
   // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v; the serial core
   // is the 1-D polynomial correction without Fourier stage: those parameters keep their defaults),
@@ -160,14 +154,14 @@ module acore_serial_top #(
   acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
     .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
     RG_W_is_derived ();
-  acore_check #(.OK(WORDS == 4 + ((DEGREE + 1) << ($clog2(REGIONS) + 1)) + K + ((ZERO != 0) ? 1 : 0)),
+  acore_check #(.OK(WORDS == acore_words(acore_terms(0, DEGREE), REGIONS, K, 0, ZERO)),
     .VALUE(WORDS),
     .MSG("illegal parameter: WORDS is derived (4 + 2 REGIONS (DEGREE+1) + K + ZERO word), do not override"))
     WORDS_is_derived ();
   acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
     .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
     ADDR_W_is_derived ();
-  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+  acore_check #(.OK(MAG_W == acore_mag_w(S_W)), .VALUE(MAG_W),
     .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
     MAG_W_is_derived ();
 

@@ -32,19 +32,11 @@ module acore_shift_add_mul #(
   output wire [P_W-1:0] p_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
-  function integer sam_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      sam_cmul = 0;
-      for (n = 0; n < b; n = n + 1) sam_cmul = sam_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
   // Derived, do not override: tree levels = pipeline latency.
-  localparam integer LEVELS = (B_W > 1) ? $clog2(B_W) : 1;
-  localparam integer LATENCY = LEVELS;
+  localparam integer LATENCY = acore_shift_add_mul_latency(B_W);
+  localparam integer LEVELS = LATENCY;
   // Bits the exact product can need: |a| 2^(B_W - RSHIFT) plus floor slack, plus sign.
   localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
 
@@ -57,7 +49,7 @@ module acore_shift_add_mul #(
     B_W_must_be_at_least_2 ();
 
   // Entries per level: level l holds ceil(B_W / 2^l) partial sums; unused slots are zero.
-  localparam integer LVL_W = sam_cmul(B_W, P_W);
+  localparam integer LVL_W = B_W * P_W;
   wire [LVL_W-1:0] lvl [0:LEVELS];
 
   genvar l, k;
@@ -73,7 +65,7 @@ module acore_shift_add_mul #(
       end else begin : g_sign
         assign shifted = {P_W{a_i[A_W-1]}};
       end
-      localparam integer OFF = sam_cmul(k, P_W);
+      localparam integer OFF = k * P_W;
       assign lvl[0][OFF +: P_W] = shifted & {P_W{b_i[k]}};
     end
 
@@ -81,9 +73,9 @@ module acore_shift_add_mul #(
       localparam integer N_PREV = (B_W + (1 << (l - 1)) - 1) >> (l - 1);
       localparam integer N_THIS = (B_W + (1 << l) - 1) >> l;
       for (k = 0; k < B_W; k = k + 1) begin : g_node
-        localparam integer OFF = sam_cmul(k, P_W);
-        localparam integer OFF_L = sam_cmul(k << 1, P_W);
-        localparam integer OFF_R = sam_cmul((k << 1) + 1, P_W);
+        localparam integer OFF = k * P_W;
+        localparam integer OFF_L = 2 * k * P_W;
+        localparam integer OFF_R = (2 * k + 1) * P_W;
         if (k < N_THIS) begin : g_used
           reg [P_W-1:0] sum_q;
           wire [P_W-1:0] lhs = lvl[l-1][OFF_L +: P_W];

@@ -84,17 +84,15 @@ module acore_top #(
   parameter integer ZERO = 0,
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
-  // Derived, do not override.
+  // Derived, do not override (rtl/acore_derived.vh).
   parameter integer RG_W = $clog2(REGIONS),
   // Coefficients per region and curve: DEGREE + 1 (poly), (DEGREE + 1)(DEGREE + 2) / 2 (poly2d), 0.
-  parameter integer TERMS = (CORRECTION == 2) ? 0 :
-                            (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1,
-  // 4 + 2 REGIONS TERMS + K (REGIONS is a power of two, so the product is a shift), plus
-  // 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0, plus the ZERO word.
-  parameter integer WORDS = 4 + (TERMS << ($clog2(REGIONS) + 1)) + K +
-                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) + ((ZERO != 0) ? 1 : 0),
+  parameter integer TERMS = acore_terms(CORRECTION, DEGREE),
+  // 4 + 2 REGIONS TERMS + K, plus 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0, plus the ZERO
+  // word.
+  parameter integer WORDS = acore_words(TERMS, REGIONS, K, FOURIER_K, ZERO),
   parameter integer ADDR_W = $clog2(WORDS),
-  parameter integer MAG_W = S_W + 2
+  parameter integer MAG_W = acore_mag_w(S_W)
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -125,54 +123,24 @@ module acore_top #(
   output wire               dos_o
 );
 
-  // Constant product by repeated addition, for widths and offsets at elaboration only: the RTL
-  // has no multiplication operator at all (the datapath multiplies on adders and shifters).
-  function integer top_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      top_cmul = 0;
-      for (n = 0; n < b; n = n + 1) top_cmul = top_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
-  // Derived, do not override: stage latencies (each module documents its own) and the total.
-  localparam integer D_W = IN_W + 1;
-  localparam integer PRE_LATENCY = 1;
-  localparam integer SCALER_LATENCY = $clog2(REG_W) + 3;
-  localparam integer REGION_LATENCY = 2;
-  localparam integer POLY_LATENCY = (CORRECTION == 2) ? 0 :
-                                    (CORRECTION == 1) ? 6 + top_cmul(DEGREE, $clog2(S_W) + 2) :
-                                    1 + top_cmul(DEGREE, $clog2(S_W) + 2) + 3;
-  localparam integer CORDIC_LATENCY = 1 + K + 1;
-  // acore_fourier_correct: clog2(KB) + 1 + FOURIER_M + clog2(FOURIER_K + 1) + 1, KB = bits of K.
-  localparam integer FOURIER_KB = ($clog2(FOURIER_K + 1) > 2) ? $clog2(FOURIER_K + 1) : 2;
-  localparam integer FOURIER_LATENCY = (FOURIER_K > 0) ?
-      $clog2(FOURIER_KB) + 1 + FOURIER_M + $clog2(FOURIER_K + 1) + 1 : 0;
-  localparam integer OUT_LATENCY = 1;
-  // FOLD > 1 (acore_fold_datapath.v's schedule): the curves are items FOLD_H = FOLD/2 clocks apart,
-  // the multipliers folded FOLD_H times (acore_fold_mul: ML clocks, B bits of the multiplier a
-  // clock); output register 1, output FIFO 2, plus the clock of the accepting edge.
-  localparam integer FOLD_H = FOLD >> 1;
-  localparam integer FOLD_HB = (FOLD_H > 1) ? $clog2(FOLD_H) : 0;
-  localparam integer FOLD_SC_ML = (FOLD_H <= 1) ? $clog2(REG_W) + 1 :
-                                  $clog2((REG_W + FOLD_H - 1) >> FOLD_HB) + 1 + FOLD_H;
-  localparam integer FOLD_PC_ML = (FOLD_H <= 1) ? $clog2(S_W) + 1 :
-                                  $clog2((S_W + FOLD_H - 1) >> FOLD_HB) + 1 + FOLD_H;
-  localparam integer FOLD_R = FOLD_H + FOLD_SC_ML + 2 + 2;
-  localparam integer FOLD_C = (CORRECTION == 2) ? FOLD_R :
-                              FOLD_R + FOLD_H + 5 + top_cmul(DEGREE, FOLD_PC_ML + 1);
-  localparam integer FOLD_LATENCY = FOLD_C + K + 2 + 1 + 2 + 1;
+  // Derived, do not override: the stages' latencies (rtl/acore_derived.vh, each module declares
+  // its own from the same function) and the top's.
+  localparam integer D_W = acore_d_w(IN_W);
+  localparam integer REGION_LATENCY = acore_region_select_latency();
+  localparam integer POLY_LATENCY = acore_correction_latency(CORRECTION, DEGREE, S_W);
+  localparam integer CORDIC_LATENCY = acore_cordic_latency(K, 0, 0);
+  localparam integer FOURIER_LATENCY = acore_fourier_latency(FOURIER_K, FOURIER_M);
   // The folded datapath is built only for a legal folded configuration; an illegal one (FOLD not
   // 1, 2, 4, 8, or folded poly2d/Fourier) elaborates the pipeline, and acore_config_check stops it.
-  localparam integer FOLDED = ((FOLD == 2 || FOLD == 4 || FOLD == 8) && CORRECTION != 1 &&
-                               FOURIER_K == 0) ? 1 : 0;
-  localparam integer LATENCY = (FOLDED != 0) ? FOLD_LATENCY :
-                               PRE_LATENCY + SCALER_LATENCY + REGION_LATENCY + POLY_LATENCY +
-                               CORDIC_LATENCY + FOURIER_LATENCY + OUT_LATENCY;
+  localparam integer FOLDED = acore_folded(FOLD, CORRECTION, FOURIER_K);
+  // Pipelined: the stages in a row; folded (acore_fold_datapath.v's schedule): the accepting edge
+  // to out_valid_o with the output FIFO empty.
+  localparam integer LATENCY = acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K,
+                                                 FOURIER_M, FOLD);
   // Clocks per sample at full rate (Verilator public, read by the tests).
-  localparam integer CYCLES = FOLD;
-  localparam integer NCOEF = top_cmul(REGIONS << 1, TERMS);
-  localparam integer NFOURIER = (FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0;
+  localparam integer CYCLES = acore_top_cycles(FOLD);
 
   // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v), and the derived
   // parameters. An illegal configuration stops elaboration in Verilator, Icarus and Yosys.
@@ -183,26 +151,21 @@ module acore_top #(
     .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
     .FOURIER_G(FOURIER_G), .ZERO(ZERO), .FOLD(FOLD)
   ) u_config ();
+  // (The same functions as the defaults: only an override differs.)
   acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
     .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
     RG_W_is_derived ();
-  // (The same expressions as the defaults: only an override differs.)
-  acore_check #(
-    .OK(TERMS == ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ?
-                  ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1)),
-    .VALUE(TERMS),
+  acore_check #(.OK(TERMS == acore_terms(CORRECTION, DEGREE)), .VALUE(TERMS),
     .MSG("illegal parameter: TERMS is derived (coefficients per region and curve), do not override"))
     TERMS_is_derived ();
-  acore_check #(
-    .OK(WORDS == 4 + (TERMS << ($clog2(REGIONS) + 1)) + K + ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) +
-              ((ZERO != 0) ? 1 : 0)),
+  acore_check #(.OK(WORDS == acore_words(acore_terms(CORRECTION, DEGREE), REGIONS, K, FOURIER_K, ZERO)),
     .VALUE(WORDS),
     .MSG("illegal parameter: WORDS is derived (4 + 2 REGIONS TERMS + K + Fourier words + ZERO word), do not override"))
     WORDS_is_derived ();
   acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
     .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
     ADDR_W_is_derived ();
-  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+  acore_check #(.OK(MAG_W == acore_mag_w(S_W)), .VALUE(MAG_W),
     .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
     MAG_W_is_derived ();
 
@@ -216,8 +179,8 @@ module acore_top #(
   // The output register's word and the word on the output pins: {dos, los, ovf, region, angle}.
   localparam integer OUT_W = ANGLE_W + RG_W + 3;
   wire [OUT_W-1:0]   out_word_q, out_word;
-  // The register file's last word (the ZERO word when ZERO = 1), from either datapath.
-  wire [REG_W-1:0]   last_word;
+  // The ZERO word (ZERO = 1; else zero), from either datapath's register file.
+  wire [REG_W-1:0]   zero_word;
   generate
     if (FOLDED == 0) begin : g_pipe
     // ---- handshake: one enable for the whole pipeline ----
@@ -230,21 +193,22 @@ module acore_top #(
       else if (en) vld_q <= {vld_q[LATENCY-2:0], in_valid_i};
     end
 
-    // ---- register file ----
-    localparam integer BUS_W = top_cmul(WORDS, REG_W);
-    localparam integer AT_BUS_W = top_cmul(K, REG_W);
-    localparam integer OFF_RCP24 = top_cmul(3, REG_W);
-    localparam integer OFF_ATAN = top_cmul(4 + NCOEF, REG_W);
-    wire [BUS_W-1:0] words;
+    // ---- register file: the map's words on a flat bus, word a at bits [a REG_W +: REG_W] ----
+    localparam integer AT_BUS_W = K * REG_W;
+    wire [WORDS*REG_W-1:0] words;
     acore_coef_regfile #(.REG_W(REG_W), .WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_regs (
       .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
       .rdata_o(reg_rdata_o), .words_o(words));
-    wire [REG_W-1:0] off13 = words[0 +: REG_W];
-    wire [REG_W-1:0] off24 = words[REG_W +: REG_W];
-    wire [REG_W-1:0] rcp13 = words[(REG_W << 1) +: REG_W];
-    wire [REG_W-1:0] rcp24 = words[OFF_RCP24 +: REG_W];
-    wire [AT_BUS_W-1:0] atan = words[OFF_ATAN +: AT_BUS_W];
-    assign last_word = words[top_cmul(WORDS - 1, REG_W) +: REG_W];
+    wire [REG_W-1:0] off13 = words[acore_addr_offset(0) * REG_W +: REG_W];
+    wire [REG_W-1:0] off24 = words[acore_addr_offset(1) * REG_W +: REG_W];
+    wire [REG_W-1:0] rcp13 = words[acore_addr_recip(0) * REG_W +: REG_W];
+    wire [REG_W-1:0] rcp24 = words[acore_addr_recip(1) * REG_W +: REG_W];
+    wire [AT_BUS_W-1:0] atan = words[acore_addr_atan(TERMS, REGIONS, 0) * REG_W +: AT_BUS_W];
+    if (ZERO != 0) begin : g_zero_word
+      assign zero_word = words[acore_addr_zero(TERMS, REGIONS, K, FOURIER_K) * REG_W +: REG_W];
+    end else begin : g_no_zero_word
+      assign zero_word = {REG_W{1'b0}};
+    end
 
     // ---- 1: pre-filter ----
     wire [D_W-1:0] d13, d24;
@@ -267,7 +231,7 @@ module acore_top #(
       .clk_i(clk_i), .en_i(en), .s13_i(s13), .s24_i(s24),
       .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
 
-    // ---- 4: correction (CORRECTION), coefficients from word 4 on ----
+    // ---- 4: correction (CORRECTION), the polynomial words ----
     wire [S_W-1:0] y13, y24;
     wire pc_ovf13, pc_ovf24;
     if (CORRECTION == 2) begin : g_none
@@ -278,8 +242,8 @@ module acore_top #(
       assign pc_ovf13 = 1'b0;
       assign pc_ovf24 = 1'b0;
     end else begin : g_coef
-      localparam integer COEF_BUS_W = top_cmul(NCOEF, REG_W);
-      wire [COEF_BUS_W-1:0] coef = words[(REG_W << 2) +: COEF_BUS_W];
+      localparam integer COEF_BUS_W = acore_poly_words(TERMS, REGIONS) * REG_W;
+      wire [COEF_BUS_W-1:0] coef = words[acore_addr_poly(TERMS, 0, 0, 0) * REG_W +: COEF_BUS_W];
       if (CORRECTION == 1) begin : g_poly2d
         acore_poly2d_correct #(
           .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER),
@@ -319,9 +283,9 @@ module acore_top #(
 
     // ---- 6 (optional): Fourier correction of the angle ----
     if (FOURIER_K > 0) begin : g_fourier
-      localparam integer OFF_FOURIER = top_cmul(4 + NCOEF + K, REG_W);
-      localparam integer FOURIER_BUS_W = top_cmul(NFOURIER, REG_W);
-      localparam integer FOURIER_AT_W = top_cmul(FOURIER_M, REG_W);
+      localparam integer OFF_FOURIER = acore_addr_fourier(TERMS, REGIONS, K, 0) * REG_W;
+      localparam integer FOURIER_BUS_W = acore_fourier_words(FOURIER_K) * REG_W;
+      localparam integer FOURIER_AT_W = FOURIER_M * REG_W;
       acore_fourier_correct #(
         .ANGLE_W(ANGLE_W), .REG_W(REG_W), .Z_W(Z_W), .K(FOURIER_K), .M(FOURIER_M), .CF(FOURIER_CF),
         .W(FOURIER_W), .G(FOURIER_G), .AT_W(REG_W)
@@ -349,7 +313,7 @@ module acore_top #(
     end else begin : g_fold
       // ---- handshake: a sample at least FOLD clocks after the previous one, while the output
       // FIFO can take every sample in flight (credits); the datapath itself never stalls ----
-      localparam integer FIFO_DEPTH = 256;  // one block RAM deep
+      localparam integer FIFO_DEPTH = acore_fold_fifo_depth();
       localparam integer OCC_W = $clog2(FIFO_DEPTH) + 1;
       localparam integer CNT_W = $clog2(FOLD);
       localparam integer CNT_FULL_I = FOLD - 1;
@@ -388,7 +352,7 @@ module acore_top #(
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
         .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .accept_i(accept), .c1_i(c1_i), .c2_i(c2_i),
         .c3_i(c3_i), .c4_i(c4_i), .valid_o(dp_valid), .angle_o(angle_c), .mag_o(mag_c),
-        .region_o(region_d), .ovf_o(dp_ovf), .last_o(last_word));
+        .region_o(region_d), .ovf_o(dp_ovf), .last_o(zero_word));
       assign sc_ovf_d = dp_ovf;
       assign pc_ovf_d = 1'b0;
       // The output register advances every clock; the FIFO takes its sample one clock later.
@@ -404,15 +368,15 @@ module acore_top #(
     end
   endgenerate
 
-  // ---- zero position (ZERO): the last word's low ANGLE_W bits, else 0 ----
+  // ---- zero position (ZERO): the ZERO word's low ANGLE_W bits, else 0 ----
   wire [ANGLE_W-1:0] zero_pos;
   generate
     if (ZERO != 0) begin : g_zero
       // The word's upper bits are not part of the zero position (named unused_* for lint).
-      wire unused_zero_hi = ^{1'b0, last_word[REG_W-1:ANGLE_W-1]};
-      assign zero_pos = last_word[ANGLE_W-1:0];
+      wire unused_zero_hi = ^{1'b0, zero_word[REG_W-1:ANGLE_W-1]};
+      assign zero_pos = zero_word[ANGLE_W-1:0];
     end else begin : g_no_zero
-      wire unused_last = ^last_word;
+      wire unused_zero = ^zero_word;
       assign zero_pos = {ANGLE_W{1'b0}};
     end
   endgenerate

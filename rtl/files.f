@@ -1,3 +1,4 @@
+acore_derived.vh
 acore_check.v
 acore_config_check.v
 acore_delay.v

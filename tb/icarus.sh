@@ -29,7 +29,8 @@ for line in "${lines[@]}"; do
       *) echo "icarus.sh: $name: the bench runs the default widths only ($p)"; exit 1 ;;
     esac
   done
-  iverilog -g2012 -Wall -Wno-timescale "${args[@]}" -o "$work/$name.vvp" \
+  # -I: the modules include rtl/acore_derived.vh and the shell rtl/acore_apb_regs.vh.
+  iverilog -g2012 -Wall -Wno-timescale -I "$src/rtl" "${args[@]}" -o "$work/$name.vvp" \
     -s "$bench" "${files[@]}" "$src/tb/$bench.v"
   variants+=("$name")
 done

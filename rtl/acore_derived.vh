@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: MIT
+// acore_derived.vh: every quantity the RTL derives from the datapath parameters, defined once as
+// constant functions (evaluated at elaboration: no hardware), `include`d inside each module that
+// needs one, after its port list. The register map (model/ip/core/datapath_config.hpp, the same
+// addresses), the widths the stages share, each stage's LATENCY (the pipelined and the folded
+// schedules) and each top's LATENCY, CYCLES and the samples it can hold. A module that declares a
+// LATENCY takes it from here, and a schedule adds the same functions: no figure is computed twice.
+// Arguments are named f_<parameter>: no module names a signal or genvar f_*.
+//
+// Constant products are written with `*` (and ceilings with `/`): they are evaluated at
+// elaboration. The datapath itself multiplies on adders and shifters only; tb/no_multiplier.py
+// proves it on every registered build's netlist (no $mul, $macc, $div, $mod or $pow cell).
+
+// ---- widths ----
+
+// D_W: c1 - c3 (pre-filter difference).
+function integer acore_d_w(input integer f_in_w);
+  acore_d_w = f_in_w + 1;
+endfunction
+
+// T_W: d - O, exact (scaler).
+function integer acore_t_w(input integer f_d_w, input integer f_reg_w);
+  acore_t_w = ((f_d_w > f_reg_w) ? f_d_w : f_reg_w) + 1;
+endfunction
+
+// MAG_W: the CORDIC's magnitude X_K >>> G for IN_W-bit inputs (the status window's width).
+function integer acore_mag_w(input integer f_in_w);
+  acore_mag_w = f_in_w + 2;
+endfunction
+
+// XY_W: the CORDIC's X/Y registers (|(x, y)| grows by the gain 1.65 and sqrt 2, plus G guard bits).
+function integer acore_xy_w(input integer f_in_w, input integer f_g);
+  acore_xy_w = f_in_w + 2 + f_g;
+endfunction
+
+// ACC_F, ACC_W: the Horner accumulator's fraction bits and width.
+function integer acore_acc_f(input integer f_coef_f, input integer f_acc_g);
+  acore_acc_f = f_coef_f + f_acc_g;
+endfunction
+function integer acore_acc_w(input integer f_coef_f, input integer f_acc_g, input integer f_acc_i);
+  acore_acc_w = f_coef_f + f_acc_g + f_acc_i;
+endfunction
+
+// ---- the register map (docs/contracts.md, register image) ----
+//   0, 1                        offsets O13, O24
+//   2, 3                        amplitude reciprocals 1/A13, 1/A24
+//   4 + TERMS (2 r + c) + t     polynomial word t of region r, curve c (none without correction)
+//   then K words                atan(2^-i), i = 0..K-1
+//   then 2 FOURIER_K + 1 words  Fourier a_0, a_1, b_1, .., a_K, b_K (FOURIER_K > 0)
+//   then the ZERO word          the zero position (ZERO = 1), the last word
+
+// Words per region and curve: DEGREE + 1 (poly, CORRECTION 0), (DEGREE + 1)(DEGREE + 2) / 2
+// (poly2d, 1), none (2).
+function integer acore_terms(input integer f_correction, input integer f_degree);
+  acore_terms = (f_correction == 2) ? 0 :
+                (f_correction == 1) ? ((f_degree + 1) * (f_degree + 2)) / 2 : f_degree + 1;
+endfunction
+
+// poly2d: the term of u^i v^j (i + j <= DEGREE), grouped by the power of u: (0,0), (0,1) .. (0,d),
+// (1,0) .., (d,0).
+function integer acore_term2d(input integer f_degree, input integer f_i, input integer f_j);
+  acore_term2d = f_i * (f_degree + 1) - (f_i * (f_i - 1)) / 2 + f_j;
+endfunction
+
+function integer acore_poly_words(input integer f_terms, input integer f_regions);
+  acore_poly_words = 2 * f_regions * f_terms;
+endfunction
+
+function integer acore_fourier_words(input integer f_fourier_k);
+  acore_fourier_words = (f_fourier_k > 0) ? 2 * f_fourier_k + 1 : 0;
+endfunction
+
+// WORDS: every word of the map.
+function integer acore_words(input integer f_terms, input integer f_regions, input integer f_k,
+                             input integer f_fourier_k, input integer f_zero);
+  acore_words = 4 + acore_poly_words(f_terms, f_regions) + f_k + acore_fourier_words(f_fourier_k) +
+                ((f_zero != 0) ? 1 : 0);
+endfunction
+
+// Curve 0 = the sine curve c13, 1 = the cosine curve c24.
+function integer acore_addr_offset(input integer f_curve);
+  acore_addr_offset = f_curve;
+endfunction
+
+function integer acore_addr_recip(input integer f_curve);
+  acore_addr_recip = 2 + f_curve;
+endfunction
+
+function integer acore_addr_poly(input integer f_terms, input integer f_region,
+                                 input integer f_curve, input integer f_term);
+  acore_addr_poly = 4 + f_terms * (2 * f_region + f_curve) + f_term;
+endfunction
+
+function integer acore_addr_atan(input integer f_terms, input integer f_regions, input integer f_i);
+  acore_addr_atan = 4 + acore_poly_words(f_terms, f_regions) + f_i;
+endfunction
+
+// Fourier word j: 0 = a_0, acore_fourier_a(k) = a_k, acore_fourier_b(k) = b_k (k = 1..FOURIER_K).
+function integer acore_addr_fourier(input integer f_terms, input integer f_regions,
+                                    input integer f_k, input integer f_j);
+  acore_addr_fourier = acore_addr_atan(f_terms, f_regions, f_k) + f_j;
+endfunction
+function integer acore_fourier_a(input integer f_harmonic);
+  acore_fourier_a = 2 * f_harmonic - 1;
+endfunction
+function integer acore_fourier_b(input integer f_harmonic);
+  acore_fourier_b = 2 * f_harmonic;
+endfunction
+
+function integer acore_addr_zero(input integer f_terms, input integer f_regions, input integer f_k,
+                                 input integer f_fourier_k);
+  acore_addr_zero = acore_addr_fourier(f_terms, f_regions, f_k, acore_fourier_words(f_fourier_k));
+endfunction
+
+// ---- stage latencies (advancing clocks from a stage's input to its output) ----
+
+// acore_prefilter: one register.
+function integer acore_prefilter_latency();
+  acore_prefilter_latency = 1;
+endfunction
+
+// acore_shift_add_mul: one adder-tree level a clock over the B_W partial products.
+function integer acore_shift_add_mul_latency(input integer f_b_w);
+  acore_shift_add_mul_latency = (f_b_w > 1) ? $clog2(f_b_w) : 1;
+endfunction
+
+// acore_adder_tree: one level a clock over N terms.
+function integer acore_adder_tree_latency(input integer f_n);
+  acore_adder_tree_latency = $clog2(f_n);
+endfunction
+
+// acore_scaler: t = d - O, the multiplier, round, saturate.
+function integer acore_scaler_latency(input integer f_reg_w);
+  acore_scaler_latency = 1 + acore_shift_add_mul_latency(f_reg_w) + 2;
+endfunction
+
+// acore_region_select: magnitudes, then compare and select.
+function integer acore_region_select_latency();
+  acore_region_select_latency = 2;
+endfunction
+
+// acore_round_sub_sat: round, subtract, saturate.
+function integer acore_round_sub_sat_latency();
+  acore_round_sub_sat_latency = 3;
+endfunction
+
+// acore_poly_correct: the leading coefficient, DEGREE Horner steps (multiplier, add, saturate),
+// then round, subtract, saturate.
+function integer acore_poly_latency(input integer f_degree, input integer f_s_w);
+  acore_poly_latency = 1 + f_degree * (acore_shift_add_mul_latency(f_s_w) + 2) +
+                       acore_round_sub_sat_latency();
+endfunction
+
+// acore_poly2d_correct: u, v and the leading coefficients, two clocks to the outer chain's first
+// step, DEGREE outer steps (the inner chains run beside them), round, subtract, saturate.
+function integer acore_poly2d_latency(input integer f_degree, input integer f_s_w);
+  acore_poly2d_latency = 3 + f_degree * (acore_shift_add_mul_latency(f_s_w) + 2) +
+                         acore_round_sub_sat_latency();
+endfunction
+
+// Stage 4 by CORRECTION (0 poly, 1 poly2d, 2 none).
+function integer acore_correction_latency(input integer f_correction, input integer f_degree,
+                                          input integer f_s_w);
+  acore_correction_latency = (f_correction == 2) ? 0 :
+                             (f_correction == 1) ? acore_poly2d_latency(f_degree, f_s_w) :
+                                                   acore_poly_latency(f_degree, f_s_w);
+endfunction
+
+// acore_cordic: normalization and pre-rotation (5 clocks with NORM, else 1), K stages (two clocks
+// each with SPLIT), the output rounding. acore_fold_cordic has the same latency (NORM = SPLIT = 0).
+function integer acore_cordic_latency(input integer f_k, input integer f_norm,
+                                      input integer f_split);
+  acore_cordic_latency = ((f_norm != 0) ? 5 : 1) + f_k * ((f_split != 0) ? 2 : 1) + 1;
+endfunction
+
+// acore_cordic_rotate: one clock a stage.
+function integer acore_cordic_rotate_latency(input integer f_m);
+  acore_cordic_rotate_latency = f_m;
+endfunction
+
+// acore_fourier_correct: bits of the constant k of k theta (>= 2).
+function integer acore_fourier_kb(input integer f_fourier_k);
+  acore_fourier_kb = ($clog2(f_fourier_k + 1) > 2) ? $clog2(f_fourier_k + 1) : 2;
+endfunction
+
+// acore_fourier_correct (0 without it): k theta, quadrant and start vector, the rotations, the
+// sum of the FOURIER_K + 1 terms, round and subtract.
+function integer acore_fourier_latency(input integer f_fourier_k, input integer f_fourier_m);
+  acore_fourier_latency = (f_fourier_k > 0) ?
+      acore_shift_add_mul_latency(acore_fourier_kb(f_fourier_k)) + 1 +
+      acore_cordic_rotate_latency(f_fourier_m) + acore_adder_tree_latency(f_fourier_k + 1) + 1 : 0;
+endfunction
+
+// The top's output register (zero position, status window).
+function integer acore_out_latency();
+  acore_out_latency = 1;
+endfunction
+
+// ---- the folded schedule (FOLD = 2, 4, 8: acore_fold_*.v) ----
+
+// acore_fold_mul: bits of b a clock (B_W over F clocks), and the latency from start_i to p_o.
+function integer acore_fold_mul_b(input integer f_b_w, input integer f_f);
+  acore_fold_mul_b = (f_b_w + f_f - 1) / f_f;
+endfunction
+function integer acore_fold_mul_latency(input integer f_b_w, input integer f_f);
+  acore_fold_mul_latency = (f_f == 1) ? acore_shift_add_mul_latency(f_b_w) + 1 :
+                                        $clog2(acore_fold_mul_b(f_b_w, f_f)) + 1 + f_f;
+endfunction
+
+// acore_fold_scaler: t = d - O, the folded multiplier (rounding constant as its addend), saturate.
+function integer acore_fold_scaler_latency(input integer f_reg_w, input integer f_f);
+  acore_fold_scaler_latency = 1 + acore_fold_mul_latency(f_reg_w, f_f) + 1;
+endfunction
+
+// acore_fold_poly: its coefficient read ports (a_n, then one per Horner step).
+function integer acore_fold_poly_ports(input integer f_degree);
+  acore_fold_poly_ports = f_degree + 1;
+endfunction
+
+// acore_fold_poly: a_n addressed and read, DEGREE steps (folded multiplier with a_j as addend,
+// saturate), round, subtract, saturate.
+function integer acore_fold_poly_latency(input integer f_degree, input integer f_s_w,
+                                         input integer f_f);
+  acore_fold_poly_latency = 2 + f_degree * (acore_fold_mul_latency(f_s_w, f_f) + 1) +
+                            acore_round_sub_sat_latency();
+endfunction
+
+// The folded datapath's schedule (acore_fold_datapath.v), in clocks after the accepting edge: the
+// c24 item follows the c13 item by H = FOLD/2 clocks; R: the region select's output (c13 item into
+// the correction); C: both corrected curves into the CORDIC (R without correction).
+function integer acore_fold_r(input integer f_reg_w, input integer f_fold);
+  acore_fold_r = (f_fold / 2) + acore_fold_scaler_latency(f_reg_w, f_fold / 2) +
+                 acore_region_select_latency();
+endfunction
+function integer acore_fold_c(input integer f_reg_w, input integer f_s_w,
+                              input integer f_correction, input integer f_degree,
+                              input integer f_fold);
+  acore_fold_c = acore_fold_r(f_reg_w, f_fold) + ((f_correction == 2) ? 0 :
+                 (f_fold / 2) + acore_fold_poly_latency(f_degree, f_s_w, f_fold / 2));
+endfunction
+// The accepting edge to valid_o, in clocks after it, minus one (v_q[LATENCY]).
+function integer acore_fold_datapath_latency(input integer f_reg_w, input integer f_s_w,
+                                             input integer f_correction, input integer f_degree,
+                                             input integer f_k, input integer f_fold);
+  acore_fold_datapath_latency = acore_fold_c(f_reg_w, f_s_w, f_correction, f_degree, f_fold) +
+                                acore_cordic_latency(f_k, 0, 0);
+endfunction
+
+// acore_fold_cordic: stage units (N iterations each), and the width of an iteration index.
+function integer acore_fold_cordic_units(input integer f_k, input integer f_n);
+  acore_fold_cordic_units = (f_k + f_n - 1) / f_n;
+endfunction
+function integer acore_fold_cordic_idx_w(input integer f_k, input integer f_n);
+  acore_fold_cordic_idx_w = $clog2(acore_fold_cordic_units(f_k, f_n) * f_n);
+endfunction
+
+// acore_fold_fifo: a word is on its output two clocks after the clock it is written in (empty
+// FIFO); it holds FIFO_DEPTH words (one block RAM deep).
+function integer acore_fold_fifo_latency();
+  acore_fold_fifo_latency = 2;
+endfunction
+function integer acore_fold_fifo_depth();
+  acore_fold_fifo_depth = 256;
+endfunction
+
+// ---- the tops ----
+
+// acore_top builds the folded datapath for a legal folded configuration only (FOLD 2, 4, 8, not
+// poly2d, no Fourier stage); otherwise the pipeline, and acore_config_check stops an illegal one.
+function integer acore_folded(input integer f_fold, input integer f_correction,
+                              input integer f_fourier_k);
+  acore_folded = ((f_fold == 2 || f_fold == 4 || f_fold == 8) && f_correction != 1 &&
+                  f_fourier_k == 0) ? 1 : 0;
+endfunction
+
+// acore_top's LATENCY: pipelined, the stages in a row; folded, the accepting edge to out_valid_o
+// with the output FIFO empty (the accepting clock, the datapath, the output register, the FIFO).
+function integer acore_top_latency(input integer f_reg_w, input integer f_s_w,
+                                   input integer f_correction, input integer f_degree,
+                                   input integer f_k, input integer f_fourier_k,
+                                   input integer f_fourier_m, input integer f_fold);
+  acore_top_latency = (acore_folded(f_fold, f_correction, f_fourier_k) != 0) ?
+      1 + acore_fold_datapath_latency(f_reg_w, f_s_w, f_correction, f_degree, f_k, f_fold) +
+      acore_out_latency() + acore_fold_fifo_latency() :
+      acore_prefilter_latency() + acore_scaler_latency(f_reg_w) + acore_region_select_latency() +
+      acore_correction_latency(f_correction, f_degree, f_s_w) + acore_cordic_latency(f_k, 0, 0) +
+      acore_fourier_latency(f_fourier_k, f_fourier_m) + acore_out_latency();
+endfunction
+
+// acore_top's clocks per sample at full rate.
+function integer acore_top_cycles(input integer f_fold);
+  acore_top_cycles = f_fold;
+endfunction
+
+// The most samples acore_top holds at once (accepted, not yet delivered): one per pipeline stage;
+// folded, its credit counter admits a sample only while the output FIFO can take every one.
+function integer acore_top_capacity(input integer f_reg_w, input integer f_s_w,
+                                    input integer f_correction, input integer f_degree,
+                                    input integer f_k, input integer f_fourier_k,
+                                    input integer f_fourier_m, input integer f_fold);
+  acore_top_capacity = (acore_folded(f_fold, f_correction, f_fourier_k) != 0) ?
+      acore_fold_fifo_depth() :
+      acore_top_latency(f_reg_w, f_s_w, f_correction, f_degree, f_k, f_fourier_k, f_fourier_m,
+                        f_fold);
+endfunction
+
+// acore_serial_top: clocks per sample (the schedule in acore_serial_ctrl.v: 22 single operations,
+// the ZR operation with ZERO, REG_W scaling bits per curve, S_W + 2 per Horner step and curve,
+// 3 per CORDIC iteration), and from the accepting clock to out_valid_o.
+function integer acore_serial_cycles(input integer f_reg_w, input integer f_s_w,
+                                     input integer f_degree, input integer f_k,
+                                     input integer f_zero);
+  acore_serial_cycles = 22 + ((f_zero != 0) ? 1 : 0) + 2 * f_reg_w + 2 * f_degree * (f_s_w + 2) +
+                        3 * f_k;
+endfunction
+function integer acore_serial_latency(input integer f_reg_w, input integer f_s_w,
+                                      input integer f_degree, input integer f_k,
+                                      input integer f_zero);
+  acore_serial_latency = acore_serial_cycles(f_reg_w, f_s_w, f_degree, f_k, f_zero) + 1;
+endfunction
+
+// The serial core holds one sample in work and one result waiting for out_ready_i.
+function integer acore_serial_capacity();
+  acore_serial_capacity = 2;
+endfunction
