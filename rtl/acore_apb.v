@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // acore_apb: the AngleCore register shell. An APB4 slave (AMBA APB protocol v2.0) around either
-// top (SERIAL = 0: the pipelined rtl/acore_top.v with all its parameters; SERIAL = 1: the serial
-// core rtl/acore_serial_top.v), with identification and configuration registers, a shadow
+// top (SERIAL = 0: rtl/acore_top.v with all its parameters, pipelined or folded by FOLD; SERIAL = 1:
+// the serial core rtl/acore_serial_top.v), with identification and configuration registers, a shadow
 // coefficient bank committed between samples under a CRC-32 check (rtl/acore_coef_bank.v), a
 // background scrubber of the active words, sticky status, an interrupt, and the LOS/DOS window as
 // registers. The tops are used as they are: their raw host port belongs to the shell, their
@@ -25,30 +25,10 @@
 // waits for the samples in flight, and those wait for the output's out_ready_i: a wait state could
 // hold the bus for ever. A driver polls STATUS.BUSY or enables the DONE interrupt.
 //
-// Register map (byte addresses, 32-bit registers; see README "Register shell (APB)"):
-//   0x000 ID            RO  0x4143_0100: "AC", version 1.0
-//   0x004 CONFIG0       RO  [3:0] DEGREE [7:4] REGIONS [9:8] CORRECTION [10] XCENTER [11] ZERO
-//                           [12] SERIAL [19:16] FOLD [28:24] K
-//   0x008 CONFIG1       RO  [15:0] WORDS [20:16] FOURIER_K [28:24] REG_W
-//   0x00C CONFIG2       RO  [15:0] LATENCY [31:16] CYCLES (clocks per sample)
-//   0x010 CONFIG3       RO  [7:0] IN_W [15:8] ANGLE_W [23:16] MAG_W [31:24] CRC_W
-//   0x020 CTRL          RW  [0] COMMIT (write 1: start a commit; reads 0) [1] CLEAR (write 1:
-//                           clear every sticky STATUS bit; reads 0) [2] CRC_CHECK (reset 0)
-//                           [3] SCRUB (reset 1) [13:8] IRQ_EN for STATUS[5:0] (reset 0)
-//   0x024 STATUS        W1C [0] OVF [1] LOS [2] DOS [3] CRC_SHADOW (a commit was refused: shadow
-//                           CRC != CRC_EXPECTED) [4] CRC_ACTIVE (the scrubber found the active words
-//                           changed) [5] DONE (a commit ended); RO live: [16] BUSY [17] BANK
-//                           [18] REF_VALID (an image was committed since reset: the scrubber checks)
-//   0x028 IRQ           RO  [5:0] STATUS[5:0] & IRQ_EN; irq_o = |IRQ
-//   0x030 MAG_LO        RW  [MAG_W-1:0] LOS below this magnitude (reset MAG_LO_RESET)
-//   0x034 MAG_HI        RW  [MAG_W-1:0] DOS above this magnitude (reset MAG_HI_RESET)
-//   0x040 CRC_EXPECTED  RW  CRC-32 the shadow must have for a checked commit (reset 0)
-//   0x044 CRC_SHADOW    RO  CRC-32 of the shadow at the last commit
-//   0x048 CRC_REF       RO  CRC-32 of the active image (set by each applied commit)
-//   0x04C CRC_SCRUB     RO  CRC-32 of the active words at the scrubber's last pass
-//   0x050 SCRUB_PASSES  RO  [15:0] completed scrubber passes (wrapping)
-//   0x400 + 4a          RW  shadow coefficient word a < WORDS ([REG_W-1:0]; upper bits read 0 and
-//                           are ignored on write)
+// Register map: docs/register-shell.md, generated with tb/shell_regs.hpp and the localparams this
+// module includes (rtl/acore_apb_regs.vh) from one description, rtl/acore_apb_regs.txt:
+// identification and configuration at 0x000..0x010, CTRL, STATUS, IRQ at 0x020..0x028, MAG_LO/HI,
+// the CRC registers and the scrubber's count, and the shadow coefficient words at 0x400 + 4a.
 `resetall
 `default_nettype none
 
@@ -81,7 +61,7 @@ module acore_apb #(
   parameter integer FOURIER_G = 2,
   // 1: the ZERO word (the zero position, last register word; both tops): WORDS counts it.
   parameter integer ZERO = 0,
-  // Fold factor of acore_top, reported in CONFIG0 (the shell wraps FOLD = 1 only, see its rule).
+  // Fold factor of acore_top (1, 2, 4, 8; reported in CONFIG0). The serial core has none: 1.
   parameter integer FOLD = 1,
   // $readmemh register image: power-up contents of the top's words and of the shadow ("" = none).
   parameter INIT_FILE = "",
@@ -95,15 +75,13 @@ module acore_apb #(
   // Reset values of the LOS/DOS window (MAG_W bits): the default never flags.
   parameter integer MAG_LO_RESET = 0,
   parameter integer MAG_HI_RESET = -1,
-  // Derived, do not override (the tops' formulas; WORDS is handed to the top, whose own rule
-  // then confirms it).
+  // Derived, do not override (rtl/acore_derived.vh, the tops' functions; WORDS is handed to the
+  // top, whose own rule then confirms it).
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer TERMS = (CORRECTION == 2) ? 0 :
-                            (CORRECTION == 1) ? ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1,
-  parameter integer WORDS = 4 + (TERMS << ($clog2(REGIONS) + 1)) + K +
-                            ((FOURIER_K > 0) ? (FOURIER_K << 1) + 1 : 0) + ((ZERO != 0) ? 1 : 0),
+  parameter integer TERMS = acore_terms(CORRECTION, DEGREE),
+  parameter integer WORDS = acore_words(TERMS, REGIONS, K, FOURIER_K, ZERO),
   parameter integer ADDR_W = $clog2(WORDS),
-  parameter integer MAG_W = S_W + 2
+  parameter integer MAG_W = acore_mag_w(S_W)
 ) (
   input  wire               clk_i,
   // Synchronous, active high: the shell's control state and the top's (in_ready_o is low).
@@ -138,30 +116,32 @@ module acore_apb #(
   output wire               out_tag_o
 );
 
-  function integer apb_cmul(input integer a, input integer b);
-    integer n;
-    begin
-      apb_cmul = 0;
-      for (n = 0; n < b; n = n + 1) apb_cmul = apb_cmul + a;
-    end
-  endfunction
+`include "acore_derived.vh"
 
-  // ---- the top's timing, by its own formulas (README "RTL", "Serial core") ----
-  localparam integer FOURIER_KB = ($clog2(FOURIER_K + 1) > 2) ? $clog2(FOURIER_K + 1) : 2;
-  localparam integer TOP_LATENCY = 1 + ($clog2(REG_W) + 3) + 2 +
-      ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ? 6 + apb_cmul(DEGREE, $clog2(S_W) + 2) :
-                                                   4 + apb_cmul(DEGREE, $clog2(S_W) + 2)) +
-      (K + 2) + ((FOURIER_K > 0) ? $clog2(FOURIER_KB) + 1 + FOURIER_M + $clog2(FOURIER_K + 1) + 1 : 0) + 1;
-  localparam integer SERIAL_CYCLES = 22 + ((ZERO != 0) ? 1 : 0) + (REG_W << 1) + apb_cmul(DEGREE << 1, S_W + 2) +
-                                     apb_cmul(3, K);
-  localparam integer LATENCY = (SERIAL != 0) ? SERIAL_CYCLES + 1 : TOP_LATENCY;
-  localparam integer CYCLES = (SERIAL != 0) ? SERIAL_CYCLES : FOLD;
-  // Samples the top can hold at once: one per pipeline stage, or the serial core's one in work
-  // and one result waiting.
-  localparam integer CNT_W = $clog2(LATENCY + 2);
+  // ---- the top's timing, by its own functions (rtl/acore_derived.vh) ----
+  localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO) :
+      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD);
+  localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO) :
+      acore_top_cycles(FOLD);
+  // The most samples the top holds at once (a commit waits until none is left): one per pipeline
+  // stage; the folded top's output FIFO (its credit counter's bound); the serial core's one in work
+  // and one result waiting. The shell's in-flight counter counts 0 .. CAPACITY.
+  localparam integer CAPACITY = (SERIAL != 0) ? acore_serial_capacity() :
+      acore_top_capacity(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD);
+  localparam integer CNT_W = $clog2(CAPACITY + 1);
 
   // Clocks from the top's host address to its reg_rdata_o: both tops share this port timing.
   localparam integer HOST_RD_LAT = 2;
+
+  // ---- the register map (generated: word indices R_*, field positions <REG>_<FIELD>, the
+  // decode's register sets, reset values, the constant registers ID_VALUE and CONFIG*_VALUE) ----
+`include "acore_apb_regs.vh"
+  // The coefficient window: address bits [WIN_AW-1:2] index a word, the bits above select it.
+  localparam integer WIN_AW = $clog2(COEF_WORDS) + 2;
+  // (The width is kept positive for an illegal APB_AW, so that its rule, below, reports it.)
+  localparam integer WIN_SEL_W = (APB_AW > WIN_AW) ? APB_AW - WIN_AW : 1;
+  localparam integer WIN_SEL_I = COEF_BASE >> WIN_AW;
+  localparam [WIN_SEL_W-1:0] WIN_SEL = WIN_SEL_I[WIN_SEL_W-1:0];
 
   // Parameter rules of the shell (rtl/acore_check.v: they stop Verilator, Icarus and Yosys); the
   // datapath's own rules are the top's (acore_config_check), applied when it is built below.
@@ -177,10 +157,10 @@ module acore_apb #(
   acore_check #(.OK(SERIAL == 0 || FOURIER_K == 0), .VALUE(FOURIER_K),
     .MSG("illegal parameter: FOURIER_K must be 0 with SERIAL=1 (the serial core has no Fourier stage)"))
     FOURIER_K_must_be_0_with_SERIAL ();
-  acore_check #(.OK(FOLD == 1), .VALUE(FOLD),
-    .MSG("illegal parameter: FOLD must be 1 (acore_top has no fold factor in this build)"))
-    FOLD_must_be_1 ();
-  acore_check #(.OK(WORDS <= 256), .VALUE(WORDS),
+  acore_check #(.OK(SERIAL == 0 || FOLD == 1), .VALUE(FOLD),
+    .MSG("illegal parameter: FOLD must be 1 with SERIAL=1 (the serial core is not folded)"))
+    FOLD_must_be_1_with_SERIAL ();
+  acore_check #(.OK(WORDS <= COEF_WORDS), .VALUE(WORDS),
     .MSG("illegal parameter: WORDS must be at most 256 (the shadow window)"))
     WORDS_must_fit_the_shadow_window ();
   acore_check #(.OK(APB_AW >= 11 && APB_AW <= 32), .VALUE(APB_AW),
@@ -192,32 +172,15 @@ module acore_apb #(
   acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
     .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
     RG_W_is_derived ();
-  acore_check #(
-    .OK(TERMS == ((CORRECTION == 2) ? 0 : (CORRECTION == 1) ?
-                  ((DEGREE == 1) ? 3 : (DEGREE == 2) ? 6 : 10) : DEGREE + 1)),
-    .VALUE(TERMS),
+  acore_check #(.OK(TERMS == acore_terms(CORRECTION, DEGREE)), .VALUE(TERMS),
     .MSG("illegal parameter: TERMS is derived (coefficients per region and curve), do not override"))
     TERMS_is_derived ();
   acore_check #(.OK(ADDR_W == $clog2(WORDS)), .VALUE(ADDR_W),
     .MSG("illegal parameter: ADDR_W is derived (clog2(WORDS)), do not override"))
     ADDR_W_is_derived ();
-  acore_check #(.OK(MAG_W == S_W + 2), .VALUE(MAG_W),
+  acore_check #(.OK(MAG_W == acore_mag_w(S_W)), .VALUE(MAG_W),
     .MSG("illegal parameter: MAG_W is derived (S_W+2), do not override"))
     MAG_W_is_derived ();
-
-  // ---- identification and configuration (constants) ----
-  localparam [31:0] ID = 32'h4143_0100;
-  localparam [31:0] CONFIG0 = {3'd0, K[4:0], 4'd0, FOLD[3:0], 3'd0, SERIAL[0], ZERO[0], XCENTER[0],
-                               CORRECTION[1:0], REGIONS[3:0], DEGREE[3:0]};
-  localparam [31:0] CONFIG1 = {3'd0, REG_W[4:0], 3'd0, FOURIER_K[4:0], WORDS[15:0]};
-  localparam [31:0] CONFIG2 = {CYCLES[15:0], LATENCY[15:0]};
-  localparam [31:0] CONFIG3 = {CRC_W[7:0], MAG_W[7:0], ANGLE_W[7:0], IN_W[7:0]};
-
-  // Register word addresses (byte address / 4).
-  localparam [5:0] R_ID = 6'h00, R_CONFIG0 = 6'h01, R_CONFIG1 = 6'h02, R_CONFIG2 = 6'h03,
-                   R_CONFIG3 = 6'h04, R_CTRL = 6'h08, R_STATUS = 6'h09, R_IRQ = 6'h0A,
-                   R_MAG_LO = 6'h0C, R_MAG_HI = 6'h0D, R_CRC_EXP = 6'h10, R_CRC_SHADOW = 6'h11,
-                   R_CRC_REF = 6'h12, R_CRC_SCRUB = 6'h13, R_SCRUB_PASSES = 6'h14;
 
   // ---- the top ----
   wire top_in_valid, top_in_ready, top_out_valid;
@@ -247,7 +210,7 @@ module acore_apb #(
         .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
         .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
         .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
-        .FOURIER_G(FOURIER_G), .ZERO(ZERO), .INIT_FILE(INIT_FILE), .WORDS(WORDS)
+        .FOURIER_G(FOURIER_G), .FOLD(FOLD), .ZERO(ZERO), .INIT_FILE(INIT_FILE), .WORDS(WORDS)
       ) u_top (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(top_addr), .reg_wdata_i(top_wdata), .reg_we_i(top_we),
         .reg_rdata_o(top_rdata), .mag_lo_i(mag_lo_q), .mag_hi_i(mag_hi_q),
@@ -276,47 +239,58 @@ module acore_apb #(
   wire setup = psel_i & ~penable_i;
   wire access = psel_i & penable_i;
   wire [5:0] ridx = paddr_i[7:2];
-  wire [7:0] widx = paddr_i[9:2];
+  wire [WIN_AW-3:0] widx = paddr_i[WIN_AW-1:2];
   wire in_regs = (paddr_i[APB_AW-1:8] == {(APB_AW-8){1'b0}});
-  wire in_win = (paddr_i[APB_AW-1:10] == {{(APB_AW-11){1'b0}}, 1'b1}) && ({1'b0, widx} < WORDS[8:0]);
-  wire is_ro = (ridx == R_ID) | (ridx == R_CONFIG0) | (ridx == R_CONFIG1) | (ridx == R_CONFIG2) |
-               (ridx == R_CONFIG3) | (ridx == R_IRQ) | (ridx == R_CRC_SHADOW) | (ridx == R_CRC_REF) |
-               (ridx == R_CRC_SCRUB) | (ridx == R_SCRUB_PASSES);
-  wire is_rw = (ridx == R_CTRL) | (ridx == R_STATUS) | (ridx == R_MAG_LO) | (ridx == R_MAG_HI) |
-               (ridx == R_CRC_EXP);
+  wire in_win = (paddr_i[APB_AW-1:WIN_AW] == WIN_SEL) && ({1'b0, widx} < WORDS[WIN_AW-2:0]);
+  wire is_ro = REGS_RO[ridx];
+  wire is_rw = REGS_WR[ridx];
   wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));
-  wire busy_err = busy & (in_win | (in_regs & pwrite_i & ((ridx == R_CRC_EXP) | ((ridx == R_CTRL) & pwdata_i[0]))));
+  wire busy_err = busy & (in_win | (in_regs & pwrite_i & ((ridx == R_CRC_EXPECTED) |
+                                                          ((ridx == R_CTRL) & pwdata_i[CTRL_COMMIT]))));
   wire err_d = (paddr_i[1:0] != 2'b00) | (pwrite_i & (pstrb_i != 4'hF)) | ~(reg_ok | in_win) | busy_err;
 
-  // Control and status registers.
+  // Control and status registers. The sticky STATUS bits are STATUS[STICKY_W-1:0] (the map's W1C
+  // bits, scripts/gen_apb_regs.py checks it); their interrupt enables and pending bits have the same
+  // positions in CTRL.IRQ_EN and IRQ.PENDING.
+  localparam integer STICKY_W = CTRL_IRQ_EN_W;
   reg check_q, scrub_q;
-  reg [5:0] irq_en_q, sticky_q;
+  reg [STICKY_W-1:0] irq_en_q, sticky_q;
   reg [31:0] crc_exp_q;
   wire [31:0] crc_shadow, crc_ref, crc_scrub;
   wire [15:0] scrub_passes;
   wire ref_valid, done, refused, scrub_err;
-  wire [5:0] irq_pend = sticky_q & irq_en_q;
+  wire [STICKY_W-1:0] irq_pend = sticky_q & irq_en_q;
   assign irq_o = |irq_pend;
 
+  // Each register's fields at their positions, zero elsewhere.
   reg [31:0] rd_d;
   always @(*) begin
     rd_d = 32'd0;
     case (ridx)
-      R_ID: rd_d = ID;
-      R_CONFIG0: rd_d = CONFIG0;
-      R_CONFIG1: rd_d = CONFIG1;
-      R_CONFIG2: rd_d = CONFIG2;
-      R_CONFIG3: rd_d = CONFIG3;
-      R_CTRL: rd_d = {18'd0, irq_en_q, 4'd0, scrub_q, check_q, 2'b00};
-      R_STATUS: rd_d = {13'd0, ref_valid, bank, busy, 10'd0, sticky_q};
-      R_IRQ: rd_d = {26'd0, irq_pend};
-      R_MAG_LO: rd_d[MAG_W-1:0] = mag_lo_q;
-      R_MAG_HI: rd_d[MAG_W-1:0] = mag_hi_q;
-      R_CRC_EXP: rd_d = crc_exp_q;
-      R_CRC_SHADOW: rd_d = crc_shadow;
-      R_CRC_REF: rd_d = crc_ref;
-      R_CRC_SCRUB: rd_d = crc_scrub;
-      R_SCRUB_PASSES: rd_d = {16'd0, scrub_passes};
+      R_ID: rd_d = ID_VALUE;
+      R_CONFIG0: rd_d = CONFIG0_VALUE;
+      R_CONFIG1: rd_d = CONFIG1_VALUE;
+      R_CONFIG2: rd_d = CONFIG2_VALUE;
+      R_CONFIG3: rd_d = CONFIG3_VALUE;
+      R_CTRL: begin
+        rd_d[CTRL_CRC_CHECK] = check_q;
+        rd_d[CTRL_SCRUB] = scrub_q;
+        rd_d[CTRL_IRQ_EN +: CTRL_IRQ_EN_W] = irq_en_q;
+      end
+      R_STATUS: begin
+        rd_d[STICKY_W-1:0] = sticky_q;
+        rd_d[STATUS_BUSY] = busy;
+        rd_d[STATUS_BANK] = bank;
+        rd_d[STATUS_REF_VALID] = ref_valid;
+      end
+      R_IRQ: rd_d[IRQ_PENDING +: IRQ_PENDING_W] = irq_pend;
+      R_MAG_LO: rd_d[MAG_LO_MAG_LO +: MAG_LO_MAG_LO_W] = mag_lo_q;
+      R_MAG_HI: rd_d[MAG_HI_MAG_HI +: MAG_HI_MAG_HI_W] = mag_hi_q;
+      R_CRC_EXPECTED: rd_d[CRC_EXPECTED_CRC_EXPECTED +: CRC_EXPECTED_CRC_EXPECTED_W] = crc_exp_q;
+      R_CRC_SHADOW: rd_d[CRC_SHADOW_CRC_SHADOW +: CRC_SHADOW_CRC_SHADOW_W] = crc_shadow;
+      R_CRC_REF: rd_d[CRC_REF_CRC_REF +: CRC_REF_CRC_REF_W] = crc_ref;
+      R_CRC_SCRUB: rd_d[CRC_SCRUB_CRC_SCRUB +: CRC_SCRUB_CRC_SCRUB_W] = crc_scrub;
+      R_SCRUB_PASSES: rd_d[SCRUB_PASSES_PASSES +: SCRUB_PASSES_PASSES_W] = scrub_passes;
       default: rd_d = 32'd0;
     endcase
   end
@@ -336,11 +310,11 @@ module acore_apb #(
       err_q <= err_d;
       win_q <= in_win;
       rdata_q <= rd_d;
-      w_ctrl_q <= ok_reg_wr & (ridx == R_CTRL) & ~(busy & pwdata_i[0]);
+      w_ctrl_q <= ok_reg_wr & (ridx == R_CTRL) & ~(busy & pwdata_i[CTRL_COMMIT]);
       w_status_q <= ok_reg_wr & (ridx == R_STATUS);
       w_mag_lo_q <= ok_reg_wr & (ridx == R_MAG_LO);
       w_mag_hi_q <= ok_reg_wr & (ridx == R_MAG_HI);
-      w_crc_q <= ok_reg_wr & (ridx == R_CRC_EXP) & ~busy;
+      w_crc_q <= ok_reg_wr & (ridx == R_CRC_EXPECTED) & ~busy;
       w_win_q <= ok_wr & in_win & ~busy;
     end
   end
@@ -352,32 +326,42 @@ module acore_apb #(
 
   // Access phase: the write.
   wire wr_ctrl = access & w_ctrl_q;
-  wire commit = wr_ctrl & pwdata_i[0];
-  wire clear = wr_ctrl & pwdata_i[1];
-  wire [5:0] w1c = (access && w_status_q) ? pwdata_i[5:0] : 6'd0;
+  wire commit = wr_ctrl & pwdata_i[CTRL_COMMIT];
+  wire clear = wr_ctrl & pwdata_i[CTRL_CLEAR];
+  wire [STICKY_W-1:0] w1c = (access && w_status_q) ? pwdata_i[STICKY_W-1:0] : {STICKY_W{1'b0}};
   localparam [MAG_W-1:0] MAG_LO_R = MAG_LO_RESET[MAG_W-1:0];
   localparam [MAG_W-1:0] MAG_HI_R = MAG_HI_RESET[MAG_W-1:0];
-  // Events of this clock (set wins over a clear in the same clock: no event is lost).
-  wire [5:0] events = {done, scrub_err, refused, emit & top_dos, emit & top_los, emit & top_ovf};
+  // Events of this clock at their STATUS positions (set wins over a clear in the same clock: no
+  // event is lost).
+  reg [STICKY_W-1:0] events;
+  always @(*) begin
+    events = {STICKY_W{1'b0}};
+    events[STATUS_OVF] = emit & top_ovf;
+    events[STATUS_LOS] = emit & top_los;
+    events[STATUS_DOS] = emit & top_dos;
+    events[STATUS_CRC_SHADOW] = refused;
+    events[STATUS_CRC_ACTIVE] = scrub_err;
+    events[STATUS_DONE] = done;
+  end
   always @(posedge clk_i) begin
     if (rst_i) begin
-      check_q <= 1'b0;
-      scrub_q <= 1'b1;
-      irq_en_q <= 6'd0;
-      sticky_q <= 6'd0;
+      check_q <= CTRL_RESET[CTRL_CRC_CHECK];
+      scrub_q <= CTRL_RESET[CTRL_SCRUB];
+      irq_en_q <= CTRL_RESET[CTRL_IRQ_EN +: CTRL_IRQ_EN_W];
+      sticky_q <= {STICKY_W{1'b0}};
       mag_lo_q <= MAG_LO_R;
       mag_hi_q <= MAG_HI_R;
-      crc_exp_q <= 32'd0;
+      crc_exp_q <= CRC_EXPECTED_RESET;
     end else begin
       if (wr_ctrl) begin
-        check_q <= pwdata_i[2];
-        scrub_q <= pwdata_i[3];
-        irq_en_q <= pwdata_i[13:8];
+        check_q <= pwdata_i[CTRL_CRC_CHECK];
+        scrub_q <= pwdata_i[CTRL_SCRUB];
+        irq_en_q <= pwdata_i[CTRL_IRQ_EN +: CTRL_IRQ_EN_W];
       end
-      if (access && w_mag_lo_q) mag_lo_q <= pwdata_i[MAG_W-1:0];
-      if (access && w_mag_hi_q) mag_hi_q <= pwdata_i[MAG_W-1:0];
-      if (access && w_crc_q) crc_exp_q <= pwdata_i;
-      sticky_q <= (sticky_q & ~(w1c | {6{clear}})) | events;
+      if (access && w_mag_lo_q) mag_lo_q <= pwdata_i[MAG_LO_MAG_LO +: MAG_LO_MAG_LO_W];
+      if (access && w_mag_hi_q) mag_hi_q <= pwdata_i[MAG_HI_MAG_HI +: MAG_HI_MAG_HI_W];
+      if (access && w_crc_q) crc_exp_q <= pwdata_i[CRC_EXPECTED_CRC_EXPECTED +: CRC_EXPECTED_CRC_EXPECTED_W];
+      sticky_q <= (sticky_q & ~(w1c | {STICKY_W{clear}})) | events;
     end
   end
 

@@ -263,6 +263,11 @@ function integer acore_fold_fifo_depth();
   acore_fold_fifo_depth = 256;
 endfunction
 
+// An HX8K's iCE40 block RAMs (SB_RAM40_4K), the folded datapath's budget.
+function integer acore_hx8k_blocks();
+  acore_hx8k_blocks = 32;
+endfunction
+
 // ---- the tops ----
 
 // acore_top builds the folded datapath for a legal folded configuration only (FOLD 2, 4, 8, not

@@ -84,13 +84,13 @@ module acore_fold_datapath #(
 `include "acore_derived.vh"
 
   // Derived, do not override: the map, the register file's read ports and the block RAM budget
-  // (iCE40 SB_RAM40_4K, 256 x 16; an HX8K has 32). Fixed: the Horner chain's PP ports (a_n, then
-  // one per step), the scaler's 2 (offset, reciprocal), the host read-back copy (BPW blocks each)
-  // and the output FIFO. Then, while they fit, in this order (flops saved per block): the curves'
-  // and the region's delay lines (S_RAM), the Horner steps' argument lines (U_RAM), and for as
-  // many CORDIC units as fit a port of their own for the arctangent words (AT_UNITS; the other
-  // units take their words from flops, with an N:1 choice that shares the negation's LUT at N = 2
-  // only).
+  // (iCE40 SB_RAM40_4K, 256 x 16: an HX8K's 32, acore_hx8k_blocks). Fixed: the Horner chain's PP
+  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal), the host read-back copy
+  // (BPW blocks each) and the output FIFO. Then, while they fit, in this order (flops saved per
+  // block): the curves' and the region's delay lines (S_RAM), the Horner steps' argument lines
+  // (U_RAM), and for as many CORDIC units as fit a port of their own for the arctangent words
+  // (AT_UNITS; the other units take their words from flops, with an N:1 choice that shares the
+  // negation's LUT at N = 2 only).
   localparam integer TERMS = acore_terms(CORRECTION, DEGREE);
   localparam integer ATAN_BASE = acore_addr_atan(TERMS, REGIONS, 0);
   localparam integer H = FOLD / 2;
@@ -101,9 +101,10 @@ module acore_fold_datapath #(
   localparam integer BLOCKS = FIFO_B + (PP + 3) * BPW;
   localparam integer SR_B = ((CORRECTION == 2) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
-  localparam integer S_RAM = (BLOCKS + SR_B <= 32) ? 1 : 0;
-  localparam integer U_RAM = (S_RAM != 0 && CORRECTION != 2 && BLOCKS + SR_B + U_B <= 32) ? 1 : 0;
-  localparam integer FREE_B = 32 - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
+  localparam integer RAM_BLOCKS = acore_hx8k_blocks();
+  localparam integer S_RAM = (BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
+  localparam integer U_RAM = (S_RAM != 0 && CORRECTION != 2 && BLOCKS + SR_B + U_B <= RAM_BLOCKS) ? 1 : 0;
+  localparam integer FREE_B = RAM_BLOCKS - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
   localparam integer AT_UNITS = (AT_FIT >= U) ? U : AT_FIT;
   localparam integer PORTS = PP + 2 + AT_UNITS;

@@ -1,4 +1,5 @@
 acore_derived.vh
+acore_apb_regs.vh
 acore_check.v
 acore_config_check.v
 acore_delay.v

@@ -12,7 +12,11 @@ module acore_apb_pinwrap #(
   // serial core. The defaults are acore_apb's: a registry line's parameters mean the same here.
   parameter integer SERIAL = 0,
   // acore_top's correction mode (2 = none: a pipelined top that fits, to time the shell beside it).
-  parameter integer CORRECTION = 0
+  parameter integer CORRECTION = 0,
+  // acore_top's fold factor (2: the default configuration folded, which fits an HX8K) and the ZERO
+  // word, passed to the shell.
+  parameter integer FOLD = 1,
+  parameter integer ZERO = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -62,7 +66,7 @@ module acore_apb_pinwrap #(
   reg [63:0] sr_q;
   always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[62:0], sdi_i};
 
-  acore_apb #(.SERIAL(SERIAL), .CORRECTION(CORRECTION)) u_shell (
+  acore_apb #(.SERIAL(SERIAL), .CORRECTION(CORRECTION), .FOLD(FOLD), .ZERO(ZERO)) u_shell (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_q), .penable_i(penable_q), .pwrite_i(pwrite_q),
     .paddr_i(paddr_q), .pwdata_i(pwdata_q), .pstrb_i(pstrb_q), .prdata_o(prdata), .pready_o(pready),
     .pslverr_o(pslverr), .irq_o(irq_o), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),

@@ -10,13 +10,20 @@ namespace acore {
 namespace {
 
 // Where the wrapped top sits in the shell's hierarchy (its public LATENCY and CYCLES), and its
-// active coefficient words (mem_q, public through tb/shell_public.vlt).
+// active coefficient words (public through tb/shell_public.vlt): mem_q of the serial core's RAM or
+// of the pipelined top's register file; the folded top (FOLD > 1) keeps its words in several
+// memory copies (acore_fold_regs.v), and the upset goes into the one its host port reads back
+// (rb_mem_q), the copy the scrubber checks.
 std::string top_scope(const RtlBuild& b) {
   return b.serial ? "acore_apb.g_serial.u_top" : "acore_apb.g_pipe.u_top";
 }
 std::string words_scope(const RtlBuild& b) {
   if (b.serial) return "acore_apb.g_serial.u_top.u_ram";
+  if (b.cfg.fold > 1) return "acore_apb.g_pipe.u_top.g_fold.u_dp.u_regs";
   return "acore_apb.g_pipe.u_top.g_pipe.u_regs";
+}
+const char* words_var(const RtlBuild& b) {
+  return !b.serial && b.cfg.fold > 1 ? "rb_mem_q" : "mem_q";
 }
 
 }  // namespace
@@ -179,7 +186,7 @@ const ShellDriver::ApbStats& ShellDriver::apb_stats() const { return impl_->stat
 
 void ShellDriver::write_shadow(const RegImage& img) {
   for (size_t a = 0; a < img.words.size(); ++a)
-    if (write(shell::kWindow + 4 * static_cast<uint32_t>(a), static_cast<uint32_t>(img.words[a])))
+    if (write(shell::kCoef + 4 * static_cast<uint32_t>(a), static_cast<uint32_t>(img.words[a])))
       throw CheckFailed("APB shell: shadow word " + std::to_string(a) + " write refused (PSLVERR)");
 }
 
@@ -198,7 +205,7 @@ uint32_t ShellDriver::commit(bool check, uint32_t crc_expected) {
     throw CheckFailed("APB shell: commit refused (busy)");
   for (int n = 0;; ++n) {
     const uint32_t st = read(shell::kStatus);
-    if (!(st & shell::kStBusy)) return st;
+    if (!(st & shell::kStatusBusy)) return st;
     if (n > 1000000) throw CheckFailed("APB shell: commit does not finish");
   }
 }
@@ -246,7 +253,7 @@ uint32_t ShellDriver::top_param(const char* name) const {
 }
 
 void ShellDriver::flip_active_bit(int addr, int bit) {
-  uint32_t* words = impl_->var(words_scope(*impl_->build), "mem_q");
+  uint32_t* words = impl_->var(words_scope(*impl_->build), words_var(*impl_->build));
   if (impl_->cfg.reg_w > 32 || addr < 0 || addr >= impl_->cfg.words() || bit < 0 ||
       bit >= impl_->cfg.reg_w)
     throw CheckFailed("shell driver: no active word bit " + std::to_string(addr) + "." +
@@ -255,7 +262,7 @@ void ShellDriver::flip_active_bit(int addr, int bit) {
 }
 
 uint64_t ShellDriver::active_word(int addr) const {
-  return impl_->var(words_scope(*impl_->build), "mem_q")[addr];
+  return impl_->var(words_scope(*impl_->build), words_var(*impl_->build))[addr];
 }
 
 }  // namespace acore

@@ -10,7 +10,7 @@
 //   d.reset();
 //   d.write_shadow(img);                                    // 0x400 + 4a <- word a
 //   uint32_t st = d.commit(true, image_crc32(img));         // CRC_EXPECTED, CTRL.COMMIT, poll BUSY
-//   if (st & shell::kStCrcShadow) ...                       // refused: the active image is
+//   if (st & shell::kStatusCrcShadow) ...                       // refused: the active image is
 //   unchanged d.stream(codes, 0.0, 0.3, seed); d.drain();             // outputs() carry their tags
 #pragma once
 #include <cstdint>
@@ -115,7 +115,9 @@ class ShellDriver {
   const DatapathConfig& config() const;
   // A Verilator-public parameter of the wrapped top (LATENCY; CYCLES for the serial core).
   uint32_t top_param(const char* name) const;
-  // Backdoor into the top's active coefficient words (tb/shell_public.vlt): an upset.
+  // Backdoor into the top's active coefficient words (tb/shell_public.vlt): an upset. The folded
+  // top keeps its words in several memory copies (acore_fold_regs.v); the upset goes into the one
+  // its host port reads back, the copy the scrubber checks.
   void flip_active_bit(int addr, int bit);
   uint64_t active_word(int addr) const;
 

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The APB register shell (rtl/acore_apb.v) around both tops, through one driver
-// (tb/shell_driver.hpp) and one parameterized suite (Shell/Pipelined.*, Shell/Serial.*):
+// The APB register shell (rtl/acore_apb.v) around both tops, the pipelined one also folded,
+// through one driver (tb/shell_driver.hpp) and one suite parameterized over the registry's shell
+// builds (Shell/Shell.*/apb, .../apb_serial, .../apb_fold2, ...):
 //   - coefficient reloads every 1000 samples at full input rate under random output backpressure:
 //     every output equals the bit-accurate model under the image the test committed before the
 //     sample was taken, and carries that image's generation tag;
-//   - the busy time of a commit against its closed form (the README's throughput cost);
+//   - the busy time of a commit against its closed form (the README's throughput cost), and a
+//     commit waiting for every sample the top can hold;
 //   - in_ready low in reset; every single-bit flip of every shadow word refused by the CRC check,
 //     and every single-bit flip of every active word found by the scrubber;
 //   - the register map (ID and CONFIG against the parameters and the measured latency, reset
@@ -93,24 +95,36 @@ TEST_P(Shell, IdAndConfigMatchTheParametersAndTheMeasuredLatency) {
   EXPECT_EQ(d.read(sh::kId), sh::kIdValue);
   const uint32_t c0 = d.read(sh::kConfig0), c1 = d.read(sh::kConfig1), c2 = d.read(sh::kConfig2),
                  c3 = d.read(sh::kConfig3);
-  EXPECT_EQ(c0 & 0xf, static_cast<uint32_t>(c.degree));
-  EXPECT_EQ((c0 >> 4) & 0xf, static_cast<uint32_t>(c.regions));
-  EXPECT_EQ((c0 >> 8) & 3, static_cast<uint32_t>(c.correction));
-  EXPECT_EQ((c0 >> 10) & 1, static_cast<uint32_t>(c.xcenter));
-  EXPECT_EQ((c0 >> 11) & 1, static_cast<uint32_t>(c.zero_word));
-  EXPECT_EQ((c0 >> 12) & 1, serial() ? 1u : 0u);
-  EXPECT_EQ((c0 >> 16) & 0xf, 1u);  // FOLD
-  EXPECT_EQ((c0 >> 24) & 0x1f, static_cast<uint32_t>(c.iterations));
-  EXPECT_EQ(c1 & 0xffff, static_cast<uint32_t>(c.words()));
-  EXPECT_EQ((c1 >> 16) & 0x1f, static_cast<uint32_t>(c.fourier_k));
-  EXPECT_EQ((c1 >> 24) & 0x1f, static_cast<uint32_t>(c.reg_w));
-  const uint32_t latency = c2 & 0xffff, cycles = c2 >> 16;
+  // A field of a register value (tb/shell_regs.hpp: mask in place, shift).
+  const auto field = [](uint32_t v, uint32_t mask, int shift) { return (v & mask) >> shift; };
+  EXPECT_EQ(field(c0, sh::kConfig0DegreeMask, sh::kConfig0DegreeShift),
+            static_cast<uint32_t>(c.degree));
+  EXPECT_EQ(field(c0, sh::kConfig0RegionsMask, sh::kConfig0RegionsShift),
+            static_cast<uint32_t>(c.regions));
+  EXPECT_EQ(field(c0, sh::kConfig0CorrectionMask, sh::kConfig0CorrectionShift),
+            static_cast<uint32_t>(c.correction));
+  EXPECT_EQ((c0 & sh::kConfig0Xcenter) != 0, c.xcenter != 0);
+  EXPECT_EQ((c0 & sh::kConfig0Zero) != 0, c.zero_word != 0);
+  EXPECT_EQ((c0 & sh::kConfig0Serial) != 0, serial());
+  EXPECT_EQ(field(c0, sh::kConfig0FoldMask, sh::kConfig0FoldShift), static_cast<uint32_t>(c.fold));
+  EXPECT_EQ(field(c0, sh::kConfig0KMask, sh::kConfig0KShift), static_cast<uint32_t>(c.iterations));
+  EXPECT_EQ(field(c1, sh::kConfig1WordsMask, sh::kConfig1WordsShift),
+            static_cast<uint32_t>(c.words()));
+  EXPECT_EQ(field(c1, sh::kConfig1FourierKMask, sh::kConfig1FourierKShift),
+            static_cast<uint32_t>(c.fourier_k));
+  EXPECT_EQ(field(c1, sh::kConfig1RegWMask, sh::kConfig1RegWShift), static_cast<uint32_t>(c.reg_w));
+  const uint32_t latency = field(c2, sh::kConfig2LatencyMask, sh::kConfig2LatencyShift),
+                 cycles = field(c2, sh::kConfig2CyclesMask, sh::kConfig2CyclesShift);
   EXPECT_EQ(latency, d.top_param("LATENCY"));
-  EXPECT_EQ(cycles, serial() ? d.top_param("CYCLES") : 1u);
-  EXPECT_EQ(c3 & 0xff, static_cast<uint32_t>(c.in_w));
-  EXPECT_EQ((c3 >> 8) & 0xff, static_cast<uint32_t>(c.angle_w));
-  EXPECT_EQ((c3 >> 16) & 0xff, static_cast<uint32_t>(c.s_w + 2));
-  EXPECT_EQ(c3 >> 24, static_cast<uint32_t>(crc_w()));
+  // Clocks per sample: the serial core's own count, FOLD for acore_top (1: pipelined).
+  EXPECT_EQ(cycles, d.top_param("CYCLES"));
+  if (!serial()) EXPECT_EQ(cycles, static_cast<uint32_t>(c.fold));
+  EXPECT_EQ(field(c3, sh::kConfig3InWMask, sh::kConfig3InWShift), static_cast<uint32_t>(c.in_w));
+  EXPECT_EQ(field(c3, sh::kConfig3AngleWMask, sh::kConfig3AngleWShift),
+            static_cast<uint32_t>(c.angle_w));
+  EXPECT_EQ(field(c3, sh::kConfig3MagWMask, sh::kConfig3MagWShift),
+            static_cast<uint32_t>(c.s_w + 2));
+  EXPECT_EQ(field(c3, sh::kConfig3CrcWMask, sh::kConfig3CrcWShift), static_cast<uint32_t>(crc_w()));
   // LATENCY measured through the shell: the output of a lone sample comes LATENCY clocks after it
   // was taken.
   d.load_and_commit(paper_image());
@@ -158,9 +172,9 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
   d.set_window(StatusWindow::defaults(cfg()));  // the models' LOS/DOS window
   d.set_ctrl(sh::kCtrlScrub | sh::kCtrlCrcCheck);
   std::vector<uint64_t> commit_cycle;  // the clock whose edge took each CTRL.COMMIT write
-  ASSERT_EQ(d.load_and_commit(images[0]) & (sh::kStCrcShadow | sh::kStBusy), 0u);
+  ASSERT_EQ(d.load_and_commit(images[0]) & (sh::kStatusCrcShadow | sh::kStatusBusy), 0u);
   commit_cycle.push_back(d.cycles());
-  d.write(sh::kStatus, sh::kStSticky);
+  d.write(sh::kStatus, sh::kStatusW1cMask);
   d.stream(in, 0.0, 0.3, 99);
 
   // The host program, advanced one clock at a time beside the stream.
@@ -171,7 +185,7 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
     switch (state) {
       case kLoad:
         for (size_t a = 0; a < images[g + 1].words.size(); ++a)
-          d.post(true, sh::kWindow + 4 * static_cast<uint32_t>(a),
+          d.post(true, sh::kCoef + 4 * static_cast<uint32_t>(a),
                  static_cast<uint32_t>(images[g + 1].words[a]));
         d.post(true, sh::kCrcExpected, image_crc32(images[g + 1]));
         state = kWaitCount;
@@ -192,14 +206,14 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
         break;
       case kPoll:
         if (last->done) {
-          if (last->rdata & sh::kStBusy) {
+          if (last->rdata & sh::kStatusBusy) {
             last = d.post(false, sh::kStatus);
           } else {
-            EXPECT_EQ(last->rdata & (sh::kStCrcShadow | sh::kStCrcActive), 0u)
+            EXPECT_EQ(last->rdata & (sh::kStatusCrcShadow | sh::kStatusCrcActive), 0u)
                 << "commit " << g + 1;
-            EXPECT_NE(last->rdata & sh::kStDone, 0u);
-            EXPECT_EQ((last->rdata & sh::kStBank) != 0, (g + 2) % 2 == 1);
-            d.post(true, sh::kStatus, sh::kStDone);
+            EXPECT_NE(last->rdata & sh::kStatusDone, 0u);
+            EXPECT_EQ((last->rdata & sh::kStatusBank) != 0, (g + 2) % 2 == 1);
+            d.post(true, sh::kStatus, sh::kStatusDone);
             ++g;
             state = g + 1 < n_images ? kLoad : kDone;
           }
@@ -244,7 +258,7 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
   EXPECT_EQ(mismatches, 0u) << first;
   EXPECT_EQ(tag_errors, 0u);
   // The scrubber ran beside the stream and never mistook a read: no CRC_ACTIVE.
-  EXPECT_EQ(st & sh::kStCrcActive, 0u);
+  EXPECT_EQ(st & sh::kStatusCrcActive, 0u);
   EXPECT_GT(d.read(sh::kScrubPasses), 0u);
   EXPECT_EQ(d.apb_stats().wait_states + d.apb_stats().stray_slverr + d.apb_stats().stray_prdata,
             0u);
@@ -261,8 +275,8 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
   ShellDriver d(*GetParam());
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
-  ASSERT_EQ(d.load_and_commit(paper_image()) & sh::kStCrcShadow, 0u);
-  const uint32_t latency = d.read(sh::kConfig2) & 0xffff;
+  ASSERT_EQ(d.load_and_commit(paper_image()) & sh::kStatusCrcShadow, 0u);
+  const uint32_t latency = d.read(sh::kConfig2) & sh::kConfig2LatencyMask;
   // Idle: nothing in flight.
   {
     const auto t = d.post(true, sh::kCtrl, d.ctrl() | sh::kCtrlCommit);
@@ -311,13 +325,67 @@ TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
       static_cast<unsigned long long>(drain), static_cast<unsigned long long>(expect), words,
       latency, crc_w());
   EXPECT_EQ(lost, expect);
-  if (!serial()) EXPECT_EQ(drain, latency + 1);
+  // Around acore_top the last sample leaves LATENCY clocks after it was taken (out_ready high, the
+  // folded top's FIFO empty); the drain ends the clock after. A folded top takes a sample every
+  // FOLD clocks, so the last one may precede the commit by up to FOLD - 1 clocks.
+  if (!serial()) {
+    EXPECT_EQ(drain, acc[last] + latency + 1 - commit_at);
+    EXPECT_LT(commit_at - acc[last], static_cast<uint64_t>(cfg().fold));
+  }
   // Every output still matches the (unchanged) image.
   const FixedModel m(paper_image());
   const auto in = cosim::paper_codes(paper_image(), 3000);
   size_t bad = 0;
   for (size_t j = 0; j < in.size(); ++j) bad += !(d.outputs()[j].sample == m.step(in[j]));
   EXPECT_EQ(bad, 0u);
+}
+
+TEST_P(Shell, CommitWaitsForEverySampleTheTopHolds) {
+  // The output held (out_ready low), the top takes as many samples as it can hold: one per
+  // pipeline stage (LATENCY), the folded top's output FIFO (256, one block RAM deep), the serial
+  // core's one in work and one result waiting. A commit then waits for all of them to leave: they
+  // come out computed with the old image and with its tag, the samples after the commit with the
+  // new one. A drain counter too narrow for the top would let the commit through early (the
+  // folded top's 256 samples would leave with the new tag).
+  const RegImage a = paper_image();
+  std::mt19937_64 rng(41);
+  const RegImage b = random_image(rng);
+  ShellDriver d(*GetParam(), "", 2, 31);
+  d.reset();
+  d.set_window(StatusWindow::defaults(cfg()));
+  ASSERT_EQ(d.load_and_commit(a) & sh::kStatusCrcShadow, 0u);  // tag 1
+  const uint32_t c2 = d.read(sh::kConfig2);
+  const uint32_t latency = c2 & sh::kConfig2LatencyMask,
+                 cycles = (c2 & sh::kConfig2CyclesMask) >> sh::kConfig2CyclesShift;
+  const size_t capacity = serial() ? 2 : cfg().fold == 1 ? latency : 256;
+  const auto in = cosim::paper_codes(a, capacity + 100);
+  d.stream(in, 0.0, 1.0, 5);
+  // Enough clocks to take every sample the top can hold, and more.
+  d.ticks(static_cast<int>((capacity + 4) * cycles + 2 * latency + 100));
+  EXPECT_EQ(d.accepted(), capacity);
+  EXPECT_EQ(d.outputs().size(), 0u);
+  d.write_shadow(b);
+  ASSERT_FALSE(d.write(sh::kCrcExpected, image_crc32(b)));
+  ASSERT_FALSE(d.write(sh::kCtrl, d.ctrl() | sh::kCtrlCrcCheck | sh::kCtrlCommit));
+  d.ticks(2000);
+  EXPECT_NE(d.read(sh::kStatus) & sh::kStatusBusy, 0u) << "the commit did not wait";
+  EXPECT_EQ(d.accepted(), capacity);
+  // Release the output: the held samples leave, the commit completes, the rest follows.
+  d.stream({}, 0.0, 0.0, 6);
+  d.drain();
+  const uint32_t st = d.read(sh::kStatus);
+  EXPECT_EQ(st & (sh::kStatusBusy | sh::kStatusCrcShadow | sh::kStatusBank), 0u);
+  const FixedModel ma(a), mb(b);
+  size_t bad = 0, tag_errors = 0;
+  for (size_t j = 0; j < in.size(); ++j) {
+    const bool old = j < capacity;
+    bad += !(d.outputs()[j].sample == (old ? ma : mb).step(in[j]));
+    tag_errors += d.outputs()[j].tag != old;
+  }
+  std::printf("%s: %zu samples held through a commit (capacity), %zu mismatches, %zu tag errors\n",
+              GetParam()->name.c_str(), capacity, bad, tag_errors);
+  EXPECT_EQ(bad, 0u);
+  EXPECT_EQ(tag_errors, 0u);
 }
 
 TEST_P(Shell, InReadyIsLowInResetAndNothingIsTaken) {
@@ -373,8 +441,8 @@ TEST_P(Shell, EverySingleBitFlipOfTheShadowIsRefusedByTheCrc) {
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
   uint32_t st = d.load_and_commit(img);
-  ASSERT_EQ(st & (sh::kStCrcShadow | sh::kStBusy), 0u);
-  ASSERT_NE(st & sh::kStBank, 0u);
+  ASSERT_EQ(st & (sh::kStatusCrcShadow | sh::kStatusBusy), 0u);
+  ASSERT_NE(st & sh::kStatusBank, 0u);
   EXPECT_EQ(d.read(sh::kCrcShadow), crc);
   EXPECT_EQ(d.read(sh::kCrcRef), crc);
   size_t refused = 0, crc_wrong = 0, applied = 0;
@@ -382,15 +450,15 @@ TEST_P(Shell, EverySingleBitFlipOfTheShadowIsRefusedByTheCrc) {
     for (int b = 0; b < cfg().reg_w; ++b) {
       RegImage bad = img;
       bad.words[a] ^= uint64_t{1} << b;
-      ASSERT_FALSE(d.write(sh::kWindow + 4 * a, static_cast<uint32_t>(bad.words[a])));
+      ASSERT_FALSE(d.write(sh::kCoef + 4 * a, static_cast<uint32_t>(bad.words[a])));
       st = d.commit(true, crc);
-      refused += (st & sh::kStCrcShadow) && (st & sh::kStDone);
-      applied += !(st & sh::kStBank);
+      refused += (st & sh::kStatusCrcShadow) && (st & sh::kStatusDone);
+      applied += !(st & sh::kStatusBank);
       // The shell's CRC of the flipped shadow is zlib's.
       crc_wrong += d.read(sh::kCrcShadow) != image_crc32(bad);
-      d.write(sh::kStatus, sh::kStSticky);
+      d.write(sh::kStatus, sh::kStatusW1cMask);
     }
-    d.write(sh::kWindow + 4 * a, static_cast<uint32_t>(img.words[a]));
+    d.write(sh::kCoef + 4 * a, static_cast<uint32_t>(img.words[a]));
   }
   const size_t flips = static_cast<size_t>(cfg().words()) * cfg().reg_w;
   std::printf("%s: %zu single-bit flips of the shadow, %zu refused\n", GetParam()->name.c_str(),
@@ -410,12 +478,12 @@ TEST_P(Shell, EverySingleBitFlipOfTheShadowIsRefusedByTheCrc) {
   EXPECT_EQ(bad, 0u);
   // A wrong CRC_EXPECTED refuses the right image too, and without the check the commit applies.
   st = d.commit(true, crc ^ 1);
-  EXPECT_NE(st & sh::kStCrcShadow, 0u);
-  EXPECT_NE(st & sh::kStBank, 0u);
-  d.write(sh::kStatus, sh::kStSticky);
+  EXPECT_NE(st & sh::kStatusCrcShadow, 0u);
+  EXPECT_NE(st & sh::kStatusBank, 0u);
+  d.write(sh::kStatus, sh::kStatusW1cMask);
   st = d.commit(false, 0);
-  EXPECT_EQ(st & sh::kStCrcShadow, 0u);
-  EXPECT_EQ(st & sh::kStBank, 0u);
+  EXPECT_EQ(st & sh::kStatusCrcShadow, 0u);
+  EXPECT_EQ(st & sh::kStatusBank, 0u);
 }
 
 TEST_P(Shell, EverySingleBitFlipOfTheActiveWordsIsFoundByTheScrubber) {
@@ -424,26 +492,26 @@ TEST_P(Shell, EverySingleBitFlipOfTheActiveWordsIsFoundByTheScrubber) {
   ShellDriver d(*GetParam());
   d.reset();
   // Before any commit the scrubber reads but has nothing to compare with.
-  EXPECT_EQ(d.read(sh::kStatus) & sh::kStRefValid, 0u);
-  ASSERT_EQ(d.load_and_commit(img) & sh::kStCrcShadow, 0u);
-  EXPECT_NE(d.read(sh::kStatus) & sh::kStRefValid, 0u);
+  EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusRefValid, 0u);
+  ASSERT_EQ(d.load_and_commit(img) & sh::kStatusCrcShadow, 0u);
+  EXPECT_NE(d.read(sh::kStatus) & sh::kStatusRefValid, 0u);
   uint32_t p = wait_passes(d, d.read(sh::kScrubPasses), 2);
   EXPECT_EQ(d.read(sh::kCrcScrub), crc);
-  EXPECT_EQ(d.read(sh::kStatus) & sh::kStCrcActive, 0u);
+  EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusCrcActive, 0u);
   size_t found = 0, crc_wrong = 0, false_alarms = 0;
   for (int a = 0; a < cfg().words(); ++a) {
     for (int b = 0; b < cfg().reg_w; ++b) {
       d.flip_active_bit(a, b);
       // A pass under way may have read the word before the upset: two passes see it for sure.
       p = wait_passes(d, d.read(sh::kScrubPasses), 2);
-      found += (d.read(sh::kStatus) & sh::kStCrcActive) != 0;
+      found += (d.read(sh::kStatus) & sh::kStatusCrcActive) != 0;
       RegImage bad = img;
       bad.words[a] ^= uint64_t{1} << b;
       crc_wrong += d.read(sh::kCrcScrub) != image_crc32(bad);
       d.flip_active_bit(a, b);
       p = wait_passes(d, d.read(sh::kScrubPasses), 2);
-      d.write(sh::kStatus, sh::kStCrcActive);
-      false_alarms += (d.read(sh::kStatus) & sh::kStCrcActive) != 0;
+      d.write(sh::kStatus, sh::kStatusCrcActive);
+      false_alarms += (d.read(sh::kStatus) & sh::kStatusCrcActive) != 0;
     }
   }
   const size_t flips = static_cast<size_t>(cfg().words()) * cfg().reg_w;
@@ -460,11 +528,11 @@ TEST_P(Shell, EverySingleBitFlipOfTheActiveWordsIsFoundByTheScrubber) {
     const int a = (17 * k + 5) % cfg().words(), b = (5 * k + 3) % cfg().reg_w;
     d.flip_active_bit(a, b);
     p = wait_passes(d, d.read(sh::kScrubPasses), 2);
-    EXPECT_NE(d.read(sh::kStatus) & sh::kStCrcActive, 0u) << "word " << a << " bit " << b;
+    EXPECT_NE(d.read(sh::kStatus) & sh::kStatusCrcActive, 0u) << "word " << a << " bit " << b;
     d.flip_active_bit(a, b);
     p = wait_passes(d, d.read(sh::kScrubPasses), 2);
-    d.write(sh::kStatus, sh::kStCrcActive);
-    EXPECT_EQ(d.read(sh::kStatus) & sh::kStCrcActive, 0u);
+    d.write(sh::kStatus, sh::kStatusCrcActive);
+    EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusCrcActive, 0u);
   }
   EXPECT_GT(d.accepted(), 0u);
   EXPECT_LT(d.accepted(), in.size());  // the checks above ran while samples were still flowing
@@ -502,17 +570,17 @@ TEST_P(Shell, ResetValuesAndReadWriteOfEveryRegister) {
     // CTRL: COMMIT (bit 0) left out, CLEAR reads 0; CRC_CHECK, SCRUB and IRQ_EN read back.
     const uint32_t c = v & ~sh::kCtrlCommit;
     EXPECT_FALSE(d.write(sh::kCtrl, c));
-    EXPECT_EQ(d.read(sh::kCtrl), c & 0x3f0c);
+    EXPECT_EQ(d.read(sh::kCtrl), c & sh::kCtrlReadMask);
   }
   d.write(sh::kCtrl, sh::kCtrlScrub);
   // The shadow window: every word, upper bits ignored.
   std::vector<uint32_t> w(cfg().words());
   for (int a = 0; a < cfg().words(); ++a) {
     w[a] = static_cast<uint32_t>(rng());
-    EXPECT_FALSE(d.write(sh::kWindow + 4 * a, w[a]));
+    EXPECT_FALSE(d.write(sh::kCoef + 4 * a, w[a]));
   }
   for (int a = 0; a < cfg().words(); ++a)
-    EXPECT_EQ(d.read(sh::kWindow + 4 * a), w[a] & reg_mask) << a;
+    EXPECT_EQ(d.read(sh::kCoef + 4 * a), w[a] & reg_mask) << a;
   // Read-only registers: a write is an error and changes nothing.
   for (const uint32_t r :
        {sh::kId, sh::kConfig0, sh::kConfig1, sh::kConfig2, sh::kConfig3, sh::kIrq, sh::kCrcShadow,
@@ -538,7 +606,7 @@ TEST_P(Shell, StickyStatusW1CAndIrq) {
     d.set_window(win);
     d.load_and_commit(img);
     d.write(sh::kCtrl, d.ctrl() | sh::kCtrlClear);
-    EXPECT_EQ(d.read(sh::kStatus) & sh::kStSticky, 0u);
+    EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusW1cMask, 0u);
     const auto in =
         k % 2 ? cosim::random_codes(rng, 300, cfg().in_w) : cosim::paper_codes(img, 300);
     const size_t first = d.outputs().size();
@@ -550,10 +618,11 @@ TEST_P(Shell, StickyStatusW1CAndIrq) {
     for (size_t j = 0; j < in.size(); ++j) {
       const FixedSample s = m.step(in[j]);
       bad += !(d.outputs()[first + j].sample == s);
-      flags |= (s.ovf ? sh::kStOvf : 0) | (s.los ? sh::kStLos : 0) | (s.dos ? sh::kStDos : 0);
+      flags |= (s.ovf ? sh::kStatusOvf : 0) | (s.los ? sh::kStatusLos : 0) |
+               (s.dos ? sh::kStatusDos : 0);
     }
     EXPECT_EQ(bad, 0u);
-    EXPECT_EQ(d.read(sh::kStatus) & sh::kStSticky, flags) << k;
+    EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusW1cMask, flags) << k;
   }
   // W1C: one bit at a time; zeros and the live bits change nothing.
   d.set_window(StatusWindow{int64_t{1} << cfg().s_w, 0});  // every sample both LOS and DOS
@@ -561,36 +630,36 @@ TEST_P(Shell, StickyStatusW1CAndIrq) {
   d.load_and_commit(paper_image());  // DONE
   d.stream(cosim::paper_codes(paper_image(), 20), 0.0, 0.0, 1);
   d.drain();
-  const uint32_t set = sh::kStLos | sh::kStDos | sh::kStDone;
-  const uint32_t live = d.read(sh::kStatus) & ~sh::kStSticky;
-  EXPECT_EQ(live & sh::kStRefValid, sh::kStRefValid);
-  EXPECT_EQ(d.read(sh::kStatus) & sh::kStSticky, set);
+  const uint32_t set = sh::kStatusLos | sh::kStatusDos | sh::kStatusDone;
+  const uint32_t live = d.read(sh::kStatus) & ~sh::kStatusW1cMask;
+  EXPECT_EQ(live & sh::kStatusRefValid, sh::kStatusRefValid);
+  EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusW1cMask, set);
   d.write(sh::kStatus, 0);
   EXPECT_EQ(d.read(sh::kStatus), set | live);
-  d.write(sh::kStatus, sh::kStBusy | sh::kStBank | sh::kStRefValid);
+  d.write(sh::kStatus, sh::kStatusBusy | sh::kStatusBank | sh::kStatusRefValid);
   EXPECT_EQ(d.read(sh::kStatus), set | live);
   // IRQ = STATUS & IRQ_EN; irq_o = |IRQ (pins after the last clock).
-  for (const uint32_t en :
-       {0u, sh::kStDone, sh::kStLos | sh::kStOvf, sh::kStOvf | sh::kStCrcShadow, sh::kStSticky}) {
+  for (const uint32_t en : {0u, sh::kStatusDone, sh::kStatusLos | sh::kStatusOvf,
+                            sh::kStatusOvf | sh::kStatusCrcShadow, sh::kStatusW1cMask}) {
     d.set_ctrl(sh::kCtrlScrub | (en << sh::kCtrlIrqEnShift));
     EXPECT_EQ(d.read(sh::kIrq), en & set) << en;
     EXPECT_EQ(d.pins().irq(), (en & set) != 0) << en;
   }
-  d.write(sh::kStatus, sh::kStLos);
-  EXPECT_EQ(d.read(sh::kStatus) & sh::kStSticky, sh::kStDos | sh::kStDone);
-  EXPECT_EQ(d.read(sh::kIrq), sh::kStDos | sh::kStDone);
-  d.write(sh::kStatus, sh::kStDone);
-  EXPECT_EQ(d.read(sh::kIrq), sh::kStDos);
+  d.write(sh::kStatus, sh::kStatusLos);
+  EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusW1cMask, sh::kStatusDos | sh::kStatusDone);
+  EXPECT_EQ(d.read(sh::kIrq), sh::kStatusDos | sh::kStatusDone);
+  d.write(sh::kStatus, sh::kStatusDone);
+  EXPECT_EQ(d.read(sh::kIrq), sh::kStatusDos);
   EXPECT_TRUE(d.pins().irq());
   d.write(sh::kCtrl, d.ctrl() | sh::kCtrlClear);
-  EXPECT_EQ(d.read(sh::kStatus) & sh::kStSticky, 0u);
+  EXPECT_EQ(d.read(sh::kStatus) & sh::kStatusW1cMask, 0u);
   EXPECT_EQ(d.read(sh::kIrq), 0u);
   EXPECT_FALSE(d.pins().irq());
   // A commit's DONE raises the interrupt when enabled.
-  d.set_ctrl(sh::kCtrlScrub | (sh::kStDone << sh::kCtrlIrqEnShift));
+  d.set_ctrl(sh::kCtrlScrub | (sh::kStatusDone << sh::kCtrlIrqEnShift));
   d.commit(false, 0);
   EXPECT_TRUE(d.pins().irq());
-  EXPECT_EQ(d.read(sh::kIrq), sh::kStDone);
+  EXPECT_EQ(d.read(sh::kIrq), sh::kStatusDone);
 }
 
 TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
@@ -605,7 +674,7 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   for (uint32_t addr = 0; addr < sh::kAddrSpace; addr += 4) {
     const bool mapped =
         std::count(regs.begin(), regs.end(), addr) ||
-        (addr >= sh::kWindow && addr < sh::kWindow + 4 * static_cast<uint32_t>(cfg().words()));
+        (addr >= sh::kCoef && addr < sh::kCoef + 4 * static_cast<uint32_t>(cfg().words()));
     bool err = false;
     const uint32_t v = d.read(addr, &err);
     wrong += err == mapped;
@@ -623,14 +692,14 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   }
   for (uint32_t strb = 0; strb < 15; ++strb)
     EXPECT_TRUE(d.write(sh::kCrcExpected, 0xffffffff, strb)) << strb;
-  EXPECT_TRUE(d.write(sh::kWindow, 1, 0x3));
+  EXPECT_TRUE(d.write(sh::kCoef, 1, 0x3));
   EXPECT_EQ(d.read(sh::kCrcExpected), 0x12345678u);
   // Back to back: n transfers take 2n clocks (setup, access; zero wait states).
   const uint64_t t0 = d.cycles();
   std::vector<std::shared_ptr<const ApbTransfer>> ts;
   for (int k = 0; k < 16; ++k)
-    ts.push_back(k % 2 ? d.post(false, sh::kWindow + 4 * k)
-                       : d.post(true, sh::kWindow + 4 * (k + 1), 1000 + k));
+    ts.push_back(k % 2 ? d.post(false, sh::kCoef + 4 * k)
+                       : d.post(true, sh::kCoef + 4 * (k + 1), 1000 + k));
   while (!d.apb_idle()) d.tick();
   EXPECT_EQ(d.cycles() - t0, 32u);
   for (int k = 1; k < 16; k += 2) EXPECT_EQ(ts[k]->rdata, 1000u + k - 1) << k;
@@ -644,10 +713,10 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   EXPECT_FALSE(c->slverr);
   d.ticks(300);
   bool err = false;
-  EXPECT_NE(d.read(sh::kStatus) & sh::kStBusy, 0u);
-  EXPECT_EQ(d.read(sh::kWindow, &err), 0u);
+  EXPECT_NE(d.read(sh::kStatus) & sh::kStatusBusy, 0u);
+  EXPECT_EQ(d.read(sh::kCoef, &err), 0u);
   EXPECT_TRUE(err);
-  EXPECT_TRUE(d.write(sh::kWindow, 5));
+  EXPECT_TRUE(d.write(sh::kCoef, 5));
   EXPECT_TRUE(d.write(sh::kCtrl, d.ctrl() | sh::kCtrlCommit));
   EXPECT_TRUE(d.write(sh::kCrcExpected, 1));
   EXPECT_FALSE(d.write(sh::kMagLo, 3));
@@ -656,11 +725,11 @@ TEST_P(Shell, ApbProtocolErrorsAndBackToBackTransfers) {
   // Let the output go: the commit completes and the shadow is reachable again, unchanged.
   d.stream({}, 0.0, 0.0, 4);
   uint32_t st = 0;
-  for (int n = 0; n < 10000 && ((st = d.read(sh::kStatus)) & sh::kStBusy); ++n) {
+  for (int n = 0; n < 10000 && ((st = d.read(sh::kStatus)) & sh::kStatusBusy); ++n) {
   }
-  EXPECT_EQ(st & sh::kStBusy, 0u);
-  EXPECT_NE(st & sh::kStDone, 0u);
-  EXPECT_EQ(d.read(sh::kWindow, &err), paper_image().words[0]);
+  EXPECT_EQ(st & sh::kStatusBusy, 0u);
+  EXPECT_NE(st & sh::kStatusDone, 0u);
+  EXPECT_EQ(d.read(sh::kCoef, &err), paper_image().words[0]);
   EXPECT_FALSE(err);
   EXPECT_EQ(d.read(sh::kCrcExpected), image_crc32(paper_image()));
   d.drain();
