@@ -9,7 +9,7 @@
 // FOURIER_K = 0 (the default) the top is the chain without it, word for word and clock for clock.
 // ZERO = 1 adds one register word after all others, the zero position z (its low ANGLE_W bits),
 // and one subtractor in the output register: angle_o = (angle - z) mod 2^ANGLE_W, the angle in the
-// reference frame of the calibration (README "Zero offset"); no extra clock.
+// reference frame of the calibration (docs/datapath.md "Zero offset"); no extra clock.
 //
 // The correction stage is chosen by CORRECTION: 0 = acore_poly_correct (1-D in x, the paper's),
 // 1 = acore_poly2d_correct (2-D in x and the other curve), 2 = none (the scaled curves go straight

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The Fourier-correction table of the README: noise-free paper scenario, calibrated on one
+# The Fourier-correction table of docs/accuracy.md (docs/reports/fourier_table.md): noise-free paper scenario, calibrated on one
 # recording (4096 samples) and measured on a separate validation recording (5003 samples, so every
 # validation angle lies between calibration angles), float and bit-accurate engines, for polynomial
 # degree 0 (no polynomial: --correction none) and 1..3 (4 regions) against the harmonics K. Prints a

@@ -5,7 +5,8 @@
 //   - coefficient reloads every 1000 samples at full input rate under random output backpressure:
 //     every output equals the bit-accurate model under the image the test committed before the
 //     sample was taken, and carries that image's generation tag;
-//   - the busy time of a commit against its closed form (the README's throughput cost), and a
+//   - the busy time of a commit against its closed form (docs/register-shell-guide.md, "Commit"),
+//   and a
 //     commit waiting for every sample the top can hold;
 //   - in_ready low in reset; every single-bit flip of every shadow word refused by the CRC check,
 //     and every single-bit flip of every active word found by the scrubber;

@@ -56,7 +56,7 @@ assert z["deg"] == 0 and z["code"] == 0, z
 PY
 expect_text angles-header "$tmp/angles.csv" "index,angle_rad,uncorrected_rad,region,flags,theta_ref,error_deg"
 check higher-degree 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs5.hex" --degree 5 --regions 8
-# Correction modes and widths (README "Correction modes and CORDIC widths"): the header records the
+# Correction modes and widths (docs/datapath.md "Correction modes", "CORDIC widths"): the header records the
 # mode, the word count follows the map, and estimate runs the image.
 check poly2d 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/p2d.hex" --correction poly2d --degree 3 --json "$tmp/p2d.json"
 expect_text poly2d-header "$tmp/p2d.hex" "// acore: correction=poly2d"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The zero offset through the CLI (README "Zero offset"): a reference encoder whose zero is 160 deg
+# The zero offset through the CLI (docs/calibration.md "Zero offset"): a reference encoder whose zero is 160 deg
 # from the sensor's, calibrated and estimated with `anglecore simulate/calibrate/estimate`; the ZERO
 # word (`calibrate --zero-word`) on every engine; the corrected error after a common amplitude change
 # of +-30 %; bad input.

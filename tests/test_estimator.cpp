@@ -58,9 +58,10 @@ TEST(Calibration, PaperScenarioReproducesAndBeatsTable3) {
   for (unsigned f : fx.flags) EXPECT_EQ(f, 0u);
 }
 
-// The default calibration takes the uncorrected error's mean direction as the zero offset (README
-// "Zero offset"): on the paper scenario that is the -6.94 deg mean of docs/contracts.md, paper
-// scenario, so the uncorrected error in the reference frame has mean 0 and RMS sqrt(8.54^2
+// The default calibration takes the uncorrected error's mean direction as the zero offset
+// (docs/calibration.md "Zero offset"): on the paper scenario that is the -6.94 deg mean of
+// docs/contracts.md, paper scenario, so the uncorrected error in the reference frame has mean 0 and
+// RMS sqrt(8.54^2
 // - 6.94^2) = 4.97 deg; the 1-D cubic fitted against the aligned reference pays 0.04 deg RMS for it
 // (0.557 against 0.520).
 TEST(Calibration, DefaultTakesTheMeanDirectionAsZeroOffset) {

@@ -29,7 +29,7 @@ SignalSpec eq33() {
 
 const HarmonicRow& row(const HarmonicAnalysis& a, int order) { return a.harmonics.at(order); }
 
-// The Eq. 33 numbers that the issue and the README quote.
+// The Eq. 33 numbers that docs/harmonics.md quotes.
 TEST(HarmonicsEq33, MaxErrorAndResiduals) {
   const auto a = analyze(eq33());
   std::printf(

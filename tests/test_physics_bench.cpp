@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The physics benchmark (model/physics_bench.hpp): its draws perturb exactly what each scenario
 // says, within the documented ranges, blind; and a fixed-seed run of the diagnosis over every
-// scenario meets the physics benchmark's targets (README "Physics benchmark" lists what fails and
-// why). The truth is decided by the physics (and tested in test_physics_rig.cpp), never by what the
-// diagnosis computes.
+// scenario meets the physics benchmark's targets (docs/diagnosis.md "Physics benchmark" lists what
+// fails and why). The truth is decided by the physics (and tested in test_physics_rig.cpp), never
+// by what the diagnosis computes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -100,8 +100,8 @@ TEST(PhysicsBench, FixedSeedSmallRunMeetsTheIssueTargets) {
   // with median holdout shrink >= 70 %; a constant angle shift (run-out of a magnet over a sensor
   // whose shift carries the error, a reference encoder's zero) named zero_offset; channels sampled
   // in a random slot order or through mismatched RC filters named channel_skew. Measured on this
-  // run: 35 of 35, median shrink 100 %, lowest 71 % (README "Physics benchmark"; 350 recordings:
-  // 99.7 %, 99.9 %). The margins: one wrong case, a median of 90 %, no case under 50 %.
+  // run: 35 of 35, median shrink 100 %, lowest 71 % (docs/diagnosis.md "Physics benchmark"; 350
+  // recordings: 99.7 %, 99.9 %). The margins: one wrong case, a median of 90 %, no case under 50 %.
   BenchOptions opt;
   opt.per_effect = 1;
   opt.seed = 7;

@@ -24,7 +24,8 @@ namespace acore {
 namespace {
 
 // Noise-free paper scenario: calibration on the uniform 4096-point grid, validation on a 4099-point
-// grid (no validation angle but 0 was seen by the fit); the README's commands use the same pair.
+// grid (no validation angle but 0 was seen by the fit); docs/reports/modes_cli.md uses the same
+// pair.
 struct PaperPair {
   Recording cal, val;
 };
@@ -244,7 +245,7 @@ TEST(PolyXcenter, Degree7In8RegionsKeepsTheFloatAccuracy) {
 // tracks the float one within the quantization budget (input codes, COEF_F, floors) wherever the
 // coefficients fit Q3.15. Where the calibration had to trade fraction bits for range (raw x,
 // degree 7, 8 regions: the case XCENTER fixes; 2-D cubics in 8 regions, whose half regions are too
-// narrow in v) it only prints. Prints the README's table.
+// narrow in v) it only prints. Prints the table of docs/accuracy.md, "Correction modes".
 TEST(Modes, BitAccurateTracksFloatInEveryMode) {
   struct Row {
     int correction, degree, regions, xcenter;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Zero offset (README "Zero offset"): the constant electrical angle between the sensor and the
-// reference that the calibration estimates (circular mean of the uncorrected angle error) and fits
-// the correction against; the ZERO word that subtracts it in hardware; and what it does, and does
-// not do, for the corrected error after a common amplitude change. Recordings: the paper scenario
-// (four channels, large distortion), the two-channel TMR-like simulation (a Hall-like sin/cos
-// pair), and the real TDK TAS2141 rings of tests/data.
+// Zero offset (docs/calibration.md "Zero offset"): the constant electrical angle between the sensor
+// and the reference that the calibration estimates (circular mean of the uncorrected angle error)
+// and fits the correction against; the ZERO word that subtracts it in hardware; and what it does,
+// and does not do, for the corrected error after a common amplitude change. Recordings: the paper
+// scenario (four channels, large distortion), the two-channel TMR-like simulation (a Hall-like
+// sin/cos pair), and the real TDK TAS2141 rings of tests/data.
 #include <gtest/gtest.h>
 
 #include <cmath>

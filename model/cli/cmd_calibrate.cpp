@@ -156,7 +156,7 @@ void add_calibrate(CLI::App& app) {
   c->add_option(
        "--angle-w", args->angle_w,
        "Output angle width: 8..16 (K=16, Z_W=20, REG_W=18), 18 (K=18, Z_W=22, REG_W=20) or 20 "
-       "(K=20, Z_W=24, REG_W=22); see README 'CORDIC width options'")
+       "(K=20, Z_W=24, REG_W=22); see docs/datapath.md, CORDIC widths")
       ->check(CLI::Range(8, 20));
   c->add_option("--in-w", args->in_w,
                 "Input code width IN_W (default 16; REG_W grows to IN_W + 2 if needed)")

@@ -102,13 +102,14 @@ void run_demo(const DemoArgs& a) {
   write_regimage(run.img, (fs::path(a.out) / "regs.hex").string());
 
   // "uncorrected" as the paper reports it: atan2 of the scaled curves against the reference; then
-  // with the calibration's zero offset removed (README "Zero offset").
+  // with the calibration's zero offset removed (docs/calibration.md "Zero offset").
   std::vector<Row> rows = {{"ours, uncorrected", error_stats(run.e_raw)},
                            {"ours, zero offset removed only", error_stats(run.e_unc)},
                            {"ours, corrected, float", error_stats(run.e_fl)},
                            {"ours, corrected, bit-accurate", error_stats(run.e_fx)}};
   // The paper's Eq. 6 as printed: fitted against theta_ref itself (zero offset taken as 0), so the
-  // polynomials absorb the constant shift (README "Zero offset" says why the default aligns first).
+  // polynomials absorb the constant shift (docs/calibration.md "Zero offset" says why the default
+  // aligns first).
   CalOptions as_printed;
   as_printed.estimate_zero = false;
   const ChainRun printed = run_chain(cal, val, as_printed, DatapathConfig{});
@@ -171,7 +172,8 @@ void run_demo(const DemoArgs& a) {
       fx_vs_fl, run.img.cfg.words(), run.img.cfg.poly_words(), run.img.cfg.iterations);
   md << fmt::format(
       "Zero offset estimated by the calibration (circular mean of the uncorrected angle error, "
-      "README \"Zero offset\"): {:+.3f}°; the corrected rows are in the reference frame (the "
+      "docs/calibration.md \"Zero offset\"): {:+.3f}°; the corrected rows are in the reference "
+      "frame (the "
       "offset subtracted), \"uncorrected\" is the paper's (atan2 against the reference).\n\n",
       run.img.zero_offset * 180 / M_PI);
   md << "![error vs "

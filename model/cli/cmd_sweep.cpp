@@ -107,7 +107,7 @@ void add_sweep(CLI::App& app) {
   c->add_option("--grid", args->grid,
                 "Grid JSON: an array of sub-grids {\"RTL_PARAM\": [values], ...}; the points are "
                 "the union of "
-                "their Cartesian products (default: the built-in grid, see README)");
+                "their Cartesian products (default: the built-in grid, see docs/synthesis.md)");
   c->add_flag("--quick", args->quick, "A small built-in grid (smoke test)");
   c->add_option("--out", args->out, "Output directory (accuracy-<i>-of-<N>.jsonl, grid.json)")
       ->capture_default_str();

@@ -114,8 +114,8 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
     ys[i] = x_is_sine(r, opt.regions) ? s24[i] : s13[i];
     members[r].push_back(i);
   }
-  // Zero offset, from the uncorrected scaled curves (README "Zero offset": iterating it once more
-  // after the fit moves it by 0.01 deg on the paper scenario and changes no figure).
+  // Zero offset, from the uncorrected scaled curves (docs/calibration.md "Zero offset": iterating
+  // it once more after the fit moves it by 0.01 deg on the paper scenario and changes no figure).
   fc.zero_offset = opt.estimate_zero
                        ? zero_offset_estimate(s13, s24, rec.theta_ref, opt.periodicity)
                        : wrap_pi(opt.zero_offset);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The fixed-point contract of the estimator datapath: every width, Q-format and register address.
 // The RTL parameters of rtl/acore_top.v have the same names in upper case (IN_W, S_W, ...), and the
-// README's "Fixed-point contract" section documents the same numbers.
+// docs/datapath.md, "Fixed-point contract", documents the same numbers.
 #pragma once
 #include <string>
 #include <utility>
@@ -52,7 +52,7 @@ struct DatapathConfig {
   int fourier_word_w = 16;  // FOURIER_W: significant bits of a harmonic's word (signed; the
                             // register word's upper bits must repeat its sign); a_0 uses REG_W
   int fourier_guard = 2;    // FOURIER_G: guard fraction bits of the rotation x/y registers
-  // --- zero position (README "Zero offset") ---
+  // --- zero position (docs/datapath.md "Zero offset") ---
   // ZERO: 1 = one more register word, after every other, holding the zero position z (the low
   // ANGLE_W bits, an angle code); the output is angle_out = (angle - z) mod 2^ANGLE_W, one adder
   // after the CORDIC (after the Fourier correction). 0 = no word, no adder (no header key).
@@ -152,9 +152,9 @@ std::string field_text(const ConfigField& f, const DatapathConfig& c);
 // std::invalid_argument (not a whole integer).
 void set_field_text(const ConfigField& f, DatapathConfig* c, const std::string& text);
 
-// The default configuration with the CORDIC sized for an ANGLE_W-bit output (README "CORDIC width
-// options"): 8..16 -> K=16, CORDIC_G=3, Z_W=20, REG_W=18 (the paper's point); 18 -> K=18, G=4,
-// Z_W=22, REG_W=20; 20 -> K=20, G=5, Z_W=24, REG_W=22. atan(2^0) = 2^(Z_W-3) needs a Z_W-2-bit
+// The default configuration with the CORDIC sized for an ANGLE_W-bit output (docs/datapath.md
+// "CORDIC widths"): 8..16 -> K=16, CORDIC_G=3, Z_W=20, REG_W=18 (the paper's point); 18 -> K=18,
+// G=4, Z_W=22, REG_W=20; 20 -> K=20, G=5, Z_W=24, REG_W=22. atan(2^0) = 2^(Z_W-3) needs a Z_W-2-bit
 // word, so the wider angles widen every register word; COEF_F grows with REG_W (the coefficients
 // stay Q3.x). Throws InputError for other widths.
 DatapathConfig cordic_width_preset(int angle_w);

@@ -16,8 +16,8 @@ enum class Engine { Float, Fixed, Rtl, RtlSerial };
 Engine parse_engine(const std::string& name);  // throws InputError
 const char* engine_name(Engine e);
 
-// Angles in the reference frame (README "Zero offset"): the chain's output minus the zero offset,
-// which the ZERO word subtracts in the chain or, without it, these functions in software.
+// Angles in the reference frame (docs/datapath.md "Zero offset"): the chain's output minus the zero
+// offset, which the ZERO word subtracts in the chain or, without it, these functions in software.
 struct AngleSeries {
   std::vector<double> angle;        // corrected electrical angle - zero offset, rad [0, 2 pi)
   std::vector<double> uncorrected;  // without the polynomial correction - zero offset, rad

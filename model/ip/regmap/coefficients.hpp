@@ -2,7 +2,7 @@
 // The register map's content in real numbers: offsets and amplitudes in recording units,
 // polynomial coefficients, Fourier coefficients in radians, the zero offset. What the calibration
 // fits, what quantize() turns into register words and dequantize() recovers, and what the float
-// model runs (README "Register map" for the words).
+// model runs (docs/register-map.md for the words).
 #pragma once
 #include <vector>
 

@@ -19,8 +19,9 @@ struct RegImage {
   std::vector<uint64_t> words;  // REG_W-bit words, unsigned, in address order
   std::vector<std::string> provenance;  // free text lines for the header (command, date, ...)
   // The calibration's constant electrical angle offset, sensor angle - p theta_ref, in rad, wrapped
-  // to [-pi, pi) (README "Zero offset"); header keys zero_offset_rad and zero_offset_code, absent
-  // (images made before) = 0. The estimate subtracts it in software unless the ZERO word does.
+  // to [-pi, pi) (docs/datapath.md "Zero offset"); header keys zero_offset_rad and
+  // zero_offset_code, absent (images made before) = 0. The estimate subtracts it in software unless
+  // the ZERO word does.
   double zero_offset = 0.0;
 
   // Field accessors: the field integer of a word as the codec table reads it (regmap/codec.hpp:

@@ -25,7 +25,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kDuration = 2.0;  // seconds per recording: the sample rate is samples / kDuration
 constexpr double kDriftSpanC = 40.0;  // drift coefficients are drawn as a change over this span
-// amplitude: |scale - 1| drawn in this range (enough to move the calibrated correction, README).
+// amplitude: |scale - 1| drawn in this range (enough to move the calibrated correction,
+// docs/diagnosis.md).
 constexpr double kAmplitudeMin = 0.05, kAmplitudeMax = 0.30;
 constexpr double kVisible =
     0.01;  // a four-channel draw must move c1 - c3 or c2 - c4 this much (x A)

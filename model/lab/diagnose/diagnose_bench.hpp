@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Blind self-benchmark of the gap diagnosis (`anglecore diagnose-bench`, README "Gap diagnosis").
+// Blind self-benchmark of the gap diagnosis (`anglecore diagnose-bench`, docs/diagnosis.md).
 //
 // Each case draws a random "designer's model" of a sensor (simulator.hpp scenario: amplitudes,
 // offsets, harmonic errors orders 1..5, noise), and three recordings of it with simulate():

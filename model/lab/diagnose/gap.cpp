@@ -27,7 +27,7 @@ GapModel build_gap_model(const Recording& sim, int periodicity, int fourier_orde
   opt.periodicity = periodicity;
   // The probe estimator fits against theta_ref itself (zero offset 0, as before the zero offset
   // existed): the diagnosis measures its errors against the reference directly, and its effect
-  // fits are tuned to this estimator's sensitivity (README "Zero offset").
+  // fits are tuned to this estimator's sensitivity (docs/datapath.md "Zero offset").
   opt.estimate_zero = false;
   m.est = calibrate(grid, opt);
   return m;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The sim-to-real gap (README "Gap diagnosis"): the simulation is turned into a static sensor model
-// (sensor_fit.hpp), the estimator is calibrated on that model, and real and model are compared
-// sample by sample at the real recording's angles, stage by stage.
+// The sim-to-real gap (docs/diagnosis.md "How it works"): the simulation is turned into a static
+// sensor model (sensor_fit.hpp), the estimator is calibrated on that model, and real and model are
+// compared sample by sample at the real recording's angles, stage by stage.
 //
 //   g_i   = wrap(e_real,i - e_model,i)       angle-error difference, degrees
 //   g     = X beta + r                       least squares on the gap basis X: angle harmonics

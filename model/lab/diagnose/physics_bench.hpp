@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The physics benchmark of the gap diagnosis (`anglecore diagnose-bench --physics`, README
-// "Physics benchmark"): recordings made by a magnet, sensing elements and an ADC chain
-// (physics_rig.hpp), not by the transforms the diagnosis fits (effects.hpp).
+// The physics benchmark of the gap diagnosis (`anglecore diagnose-bench --physics`,
+// docs/diagnosis.md "Physics benchmark"): recordings made by a magnet, sensing elements and an ADC
+// chain (physics_rig.hpp), not by the transforms the diagnosis fits (effects.hpp).
 //
 // Each case is a rig of one sensor kind, hall4 (four Hall plates on a ring, c1..c4) or tmr2 (an
 // in-plane sin/cos pair at the axis), with drawn nominal geometry (air gap, ring radius) and noise:
@@ -9,9 +9,9 @@
 //   real     the rig with ONE physical perturbation (the scenario), a speed ramp through a
 //            reversal, a temperature ramp (the magnet's remanence follows it), another noise seed
 //   holdout  the same perturbation, another ramp, temperature ramp and seed
-// The truth of a scenario is decided by the physics (physics_truth(); README table): what reaches
-// the two differential pairs the estimator sees, named in the vocabulary of docs/contracts.md,
-// effect vocabulary.
+// The truth of a scenario is decided by the physics (physics_truth(); docs/diagnosis.md, the
+// scenario table): what reaches the two differential pairs the estimator sees, named in the
+// vocabulary of docs/contracts.md, effect vocabulary.
 #pragma once
 #include <cstdint>
 #include <string>

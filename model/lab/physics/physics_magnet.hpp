@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The field of a diametrically magnetized cylinder magnet (physics scenarios, README "Physics
-// benchmark"): the equivalent surface-charge model.
+// The field of a diametrically magnetized cylinder magnet (physics scenarios, docs/diagnosis.md
+// "Physics benchmark"): the equivalent surface-charge model.
 //
 // A uniformly magnetized body with no free currents has H = -grad(phi), phi the potential of the
 // magnetic "charges" rho = -div M (0 inside a uniform magnet) and sigma = M . n on its surface. For

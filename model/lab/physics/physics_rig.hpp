@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A magnet on a shaft end over an angle sensor, and the recording it makes (physics scenarios,
-// README "Physics benchmark"): the field of physics_magnet.hpp seen by the elements of
+// docs/diagnosis.md "Physics benchmark"): the field of physics_magnet.hpp seen by the elements of
 // physics_sensor.hpp through the chain of physics_signal_chain.hpp, on a TrajectoryModel
 // (simulator.hpp) with a temperature ramp, written as a docs/contracts.md, recording file
 // recording.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Magnetic sensing elements and the two layouts of the physics scenarios (README "Physics
-// benchmark"): four Hall plates on a ring measuring the axial field (the paper's c1..c4), and a
-// two-channel in-plane sensor (TMR/AMR-like) at the axis measuring (Bx, By) as sin, cos.
+// Magnetic sensing elements and the two layouts of the physics scenarios (docs/diagnosis.md
+// "Physics benchmark"): four Hall plates on a ring measuring the axial field (the paper's c1..c4),
+// and a two-channel in-plane sensor (TMR/AMR-like) at the axis measuring (Bx, By) as sin, cos.
 //
 // The lab frame: z is the rotation axis, pointing from the sensor to the magnet; the sensing plane
 // is z = 0. Each element measures the field along its own unit direction n at its own position:

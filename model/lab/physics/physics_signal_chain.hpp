@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The analog-to-digital chain after each sensing element (physics scenarios, README "Physics
-// benchmark"): a first-order RC anti-alias filter per channel, an ADC of B bits, and a multiplexed
-// ADC that converts the channels one after another.
+// The analog-to-digital chain after each sensing element (physics scenarios, docs/diagnosis.md
+// "Physics benchmark"): a first-order RC anti-alias filter per channel, an ADC of B bits, and a
+// multiplexed ADC that converts the channels one after another.
 //
 // RC filter: tau dy/dt = x - y, integrated exactly for an input that is linear between samples
 // (first-order hold): with a = exp(-h / tau),

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The effect library (docs/contracts.md, effect vocabulary, meanings widened in the README "Effect
-// vocabulary"): parametric transforms of a sensor recording, each named exactly as in the
+// The effect library (docs/contracts.md, effect vocabulary, meanings widened in docs/diagnosis.md
+// "Effect vocabulary"): parametric transforms of a sensor recording, each named exactly as in the
 // vocabulary, with named parameters (the same names the gap diagnosis fits and reports,
 // effect_fit.hpp).
 //
@@ -48,7 +48,7 @@
 //                                gives m = eps, phi_m = phi0; an isotropic part of J (in-plane
 //                                divergence) a fixed vector in the lab, m = eps, phi_m = phi0 + pi,
 //                                i.e. an offset to a two-channel sensor. Geometry decides the mix,
-//                                so all four are free (README "Effect vocabulary").
+//                                so all four are free (docs/diagnosis.md "Effect vocabulary").
 // zero_offset    zero_rad        every channel sees the mechanical angle theta + zero: a constant
 //                                angle shift (reference zero, magnet mounted turned), independent
 //                                of speed and direction; default 0

@@ -40,7 +40,7 @@ std::vector<SweepScenario> sweep_scenarios(size_t cal_samples, size_t val_sample
 // duplicates. Throws InputError naming the sub-grid and field that is not of that form, or a point
 // whose configuration is invalid.
 std::vector<std::string> expand_grid(const nlohmann::json& grid);
-// The grid `anglecore sweep` runs by default (the README's design-space table).
+// The grid `anglecore sweep` runs by default (docs/synthesis.md, "Design space").
 nlohmann::json default_sweep_grid();
 // A short grid for the test and a smoke run (--quick).
 nlohmann::json quick_sweep_grid();
