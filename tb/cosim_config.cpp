@@ -47,28 +47,6 @@ RegImage paper_image(const DatapathConfig& cfg) {
   return img;
 }
 
-// Every word random below the CORDIC constants (half the time tamed to sane offsets and gains), and
-// every Fourier word and the ZERO word; with the Fourier stage, every other image also gets random
-// CORDIC constants (its rotations' trimmed angle registers then wrap, in the model as in the RTL).
-RegImage random_image(const RegImage& base, std::mt19937_64& rng) {
-  RegImage img = base;
-  const DatapathConfig& cfg = img.cfg;
-  const uint64_t mask = (uint64_t{1} << cfg.reg_w) - 1;
-  for (int a = 0; a < cfg.addr_atan(0); ++a) img.words[a] = rng() & mask;
-  for (int j = 0; j < cfg.fourier_words(); ++j) img.words[cfg.addr_fourier(j)] = rng() & mask;
-  if (cfg.zero_word)
-    img.words[cfg.addr_zero()] = rng() & mask;  // any bits: only the low ANGLE_W count
-  if (cfg.fourier_k > 0 && (rng() & 1))
-    for (int i = 0; i < cfg.iterations; ++i) img.words[cfg.addr_atan(i)] = rng() & mask;
-  if (rng() & 1)
-    for (int c = 0; c < 2; ++c) {
-      img.set_signed(cfg.addr_offset(c), static_cast<int64_t>(rng() % 2001) - 1000);
-      img.set_unsigned(cfg.addr_recip(c),
-                       static_cast<int64_t>(img.words[cfg.addr_recip(c)] % 60000) + 40000);
-    }
-  return img;
-}
-
 // A fine sweep through every 45-degree boundary plus the zero vector and full scale.
 std::vector<ChannelCodes> corner_codes(int in_w) {
   const int32_t F = (1 << (in_w - 1)) - 1, N = -(1 << (in_w - 1)), q = 1 << (in_w - 3);
@@ -203,7 +181,7 @@ int run(const std::string& name, size_t samples) {
 
   std::mt19937_64 rng(std::hash<std::string>{}(name));
   for (int k = 0; k < 8; ++k) {
-    const RegImage img = random_image(paper, rng);
+    const RegImage img = cosim::random_image(paper, rng, cfg.fourier_k > 0 && (rng() & 1));
     const auto rin = cosim::random_codes(rng, 2000, cfg.in_w);
     RtlRunOptions ro;
     ro.top = build.top;

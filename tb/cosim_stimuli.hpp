@@ -82,4 +82,29 @@ inline RegImage identity_image(const DatapathConfig& cfg) {
   return img;
 }
 
+// Random register words over a base image (the saturating paths as well as the normal ones): every
+// word below the CORDIC constants random (REG_W bits), half of the time tamed to small offsets,
+// sane gains and small coefficients; every Fourier word and the ZERO word random (only the ZERO
+// word's low ANGLE_W bits count); the CORDIC constants random too when random_atan (the Fourier
+// rotations' trimmed angle registers then wrap, in the model as in the RTL).
+inline RegImage random_image(const RegImage& base, std::mt19937_64& rng, bool random_atan) {
+  RegImage img = base;
+  const DatapathConfig& c = img.cfg;
+  const uint64_t mask = (uint64_t{1} << c.reg_w) - 1;
+  for (int a = 0; a < c.addr_atan(0); ++a) img.words[a] = rng() & mask;
+  if (rng() & 1) {
+    for (int ch = 0; ch < 2; ++ch) {
+      img.set_signed(c.addr_offset(ch), static_cast<int64_t>(rng() % 2001) - 1000);
+      img.set_unsigned(c.addr_recip(ch), static_cast<int64_t>(40000 + rng() % 60000));
+    }
+    for (int a = 4; a < c.addr_atan(0); ++a)
+      img.set_signed(a, static_cast<int64_t>(rng() % 8001) - 4000);
+  }
+  if (random_atan)
+    for (int i = 0; i < c.iterations; ++i) img.words[c.addr_atan(i)] = rng() & mask;
+  for (int j = 0; j < c.fourier_words(); ++j) img.words[c.addr_fourier(j)] = rng() & mask;
+  if (c.zero_word) img.words[c.addr_zero()] = rng() & mask;
+  return img;
+}
+
 }  // namespace acore::cosim

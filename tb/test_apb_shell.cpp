@@ -43,24 +43,6 @@ RegImage paper_image_for(const DatapathConfig& c) {
   return calibrate_image(cal, c, 1);  // the Fourier words fitted too
 }
 
-// Every word random (REG_W bits), atan words the real table; sane offsets and gains half the time;
-// the ZERO word (when present) a random ANGLE_W-bit zero position.
-RegImage random_image_for(const DatapathConfig& c, std::mt19937_64& rng) {
-  RegImage img = cosim::identity_image(c);
-  const uint64_t mask = (uint64_t{1} << img.cfg.reg_w) - 1;
-  for (int a = 0; a < img.cfg.addr_atan(0); ++a) img.words[a] = rng() & mask;
-  if (rng() & 1) {
-    for (int ch = 0; ch < 2; ++ch) {
-      img.set_signed(img.cfg.addr_offset(ch), static_cast<int64_t>(rng() % 2001) - 1000);
-      img.set_unsigned(img.cfg.addr_recip(ch), 40000 + rng() % 60000);
-    }
-    for (int a = img.cfg.addr_poly(0, 0, 0); a < img.cfg.addr_atan(0); ++a)
-      img.set_signed(a, static_cast<int64_t>(rng() % 8001) - 4000);
-  }
-  if (c.zero_word) img.words[c.addr_zero()] = rng() & ((uint64_t{1} << c.angle_w) - 1);
-  return img;
-}
-
 std::string show(const FixedSample& s) { return cosim::show(s); }
 
 class Shell : public ::testing::TestWithParam<const RtlBuild*> {
@@ -74,7 +56,9 @@ class Shell : public ::testing::TestWithParam<const RtlBuild*> {
     if (it == cache.end()) it = cache.emplace(GetParam(), paper_image_for(cfg())).first;
     return it->second;
   }
-  RegImage random_image(std::mt19937_64& rng) const { return random_image_for(cfg(), rng); }
+  RegImage random_image(std::mt19937_64& rng) const {
+    return cosim::random_image(cosim::identity_image(cfg()), rng, false);
+  }
   // CRC bits per clock of the build (the shell's default for each top).
   int crc_w() const { return serial() ? 8 : 16; }
 };

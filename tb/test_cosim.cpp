@@ -57,25 +57,8 @@ class Cosim : public ::testing::TestWithParam<const RtlBuild*> {
   }
   RegImage identity_image() const { return cosim::identity_image(cfg()); }
 
-  // Every word random (REG_W bits); atan words either the real table or random.
   RegImage random_image(std::mt19937_64& rng, bool random_atan) const {
-    RegImage img = identity_image();
-    const uint64_t mask = (uint64_t{1} << img.cfg.reg_w) - 1;
-    for (int a = 0; a < img.cfg.addr_atan(0); ++a) img.words[a] = rng() & mask;
-    // Small offsets and sane gains half of the time, so both saturating and normal paths occur.
-    if (rng() & 1) {
-      for (int c = 0; c < 2; ++c) {
-        img.set_signed(img.cfg.addr_offset(c), static_cast<int64_t>(rng() % 2001) - 1000);
-        img.set_unsigned(img.cfg.addr_recip(c), 40000 + rng() % 60000);
-      }
-      for (int a = img.cfg.addr_poly(0, 0, 0); a < img.cfg.addr_atan(0); ++a)
-        img.set_signed(a, static_cast<int64_t>(rng() % 8001) - 4000);
-    }
-    if (random_atan)
-      for (int i = 0; i < img.cfg.iterations; ++i) img.words[img.cfg.addr_atan(i)] = rng() & mask;
-    // The ZERO word: any REG_W bits (only the low ANGLE_W count).
-    if (img.cfg.zero_word) img.words[img.cfg.addr_zero()] = rng() & mask;
-    return img;
+    return cosim::random_image(identity_image(), rng, random_atan);
   }
 };
 
