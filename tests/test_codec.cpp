@@ -14,24 +14,12 @@
 #include "core/datapath_config.hpp"
 #include "core/errors.hpp"
 #include "regmap/codec.hpp"
+#include "support/map_shapes.hpp"
 
 namespace acore {
 namespace {
 
-// Configurations of every map shape: the modes, 8 (centred) regions, the Fourier stage with and
-// without polynomials, the ZERO word, the wide CORDIC.
-const char* kShapes[] = {
-    "",
-    "DEGREE=5 REGIONS=8 COEF_F=12 ACC_G=7 ACC_I=7",
-    "CORRECTION=1",
-    "CORRECTION=1 DEGREE=1 REGIONS=8 XCENTER=1",
-    "CORRECTION=2",
-    "DEGREE=7 REGIONS=8 XCENTER=1",
-    "FOURIER_K=5",
-    "CORRECTION=2 FOURIER_K=21 ZERO=1",
-    "ZERO=1",
-    "CORRECTION=1 IN_W=18 REG_W=20 COEF_F=17 K=18 CORDIC_G=4 Z_W=22 ANGLE_W=18",
-    "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20 ZERO=1 FOURIER_K=3"};
+using test::kMapShapes;
 
 DatapathConfig shape(const char* p) { return DatapathConfig{}.with_rtl_params(p); }
 
@@ -66,7 +54,7 @@ FloatCoefficients random_coefficients(const DatapathConfig& cfg, std::mt19937_64
 }
 
 TEST(Codec, TableIsTheMapInAddressOrder) {
-  for (const char* p : kShapes) {
+  for (const char* p : kMapShapes) {
     const DatapathConfig c = shape(p);
     ASSERT_NO_THROW(c.validate()) << p;
     const auto t = codec_table(c);
@@ -203,7 +191,7 @@ TEST(Codec, EachKindEncodesAndDecodesItsClosedForm) {
 
 TEST(Codec, QuantizeThenDequantizeIsWithinHalfAnLsbOfEveryField) {
   std::mt19937_64 rng(22);
-  for (const char* p : kShapes) {
+  for (const char* p : kMapShapes) {
     const DatapathConfig c = shape(p);
     for (int n = 0; n < 30; ++n) {
       const FloatCoefficients fc = random_coefficients(c, rng, 0.3, 0.01);

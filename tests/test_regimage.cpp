@@ -20,6 +20,7 @@
 #include "regmap/regimage.hpp"
 #include "stages/cordic.hpp"
 #include "stages/fourier_correct.hpp"
+#include "support/map_shapes.hpp"
 #include "support/paper_signals.hpp"
 
 namespace acore {
@@ -191,20 +192,7 @@ std::string legacy_format(const RegImage& img) {
   return out;
 }
 
-// Configurations of every map shape: the modes, 8 centred regions, the Fourier stage with and
-// without polynomials, the ZERO word, the wide CORDIC.
-const char* kShapes[] = {
-    "",
-    "DEGREE=5 REGIONS=8 COEF_F=12 ACC_G=7 ACC_I=7",
-    "CORRECTION=1",
-    "CORRECTION=1 DEGREE=1 REGIONS=8 XCENTER=1",
-    "CORRECTION=2",
-    "DEGREE=7 REGIONS=8 XCENTER=1",
-    "FOURIER_K=5",
-    "CORRECTION=2 FOURIER_K=21 ZERO=1",
-    "ZERO=1",
-    "CORRECTION=1 IN_W=18 REG_W=20 COEF_F=17 K=18 CORDIC_G=4 Z_W=22 ANGLE_W=18",
-    "REG_W=22 COEF_F=19 K=20 CORDIC_G=5 Z_W=24 ANGLE_W=20 ZERO=1 FOURIER_K=3"};
+using test::kMapShapes;
 
 // An image of configuration cfg with random words (signed fields sign-extended, as quantize()
 // writes them), random zero offset and in_scale, and provenance lines.
@@ -226,7 +214,7 @@ RegImage random_image(const DatapathConfig& cfg, std::mt19937_64& rng) {
 
 TEST(RegImage, TextIsByteIdenticalToTheHandWrittenFormat) {
   std::mt19937_64 rng(5);
-  for (const char* p : kShapes) {
+  for (const char* p : kMapShapes) {
     const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
     ASSERT_NO_THROW(cfg.validate()) << p;
     for (int n = 0; n < 40; ++n) {
@@ -246,7 +234,7 @@ TEST(RegImage, TextIsByteIdenticalToTheHandWrittenFormat) {
 // The header's configuration keys are the field table's image keys that shows() writes, and each
 // one read back sets its own field.
 TEST(RegImage, HeaderKeysAreTheFieldTablesImageKeys) {
-  for (const char* p : kShapes) {
+  for (const char* p : kMapShapes) {
     const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
     std::mt19937_64 rng(6);
     const std::string text = format_regimage(random_image(cfg, rng));
