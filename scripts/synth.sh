@@ -99,7 +99,8 @@ run_pnr() {  # run_pnr DESIGN
   if ! nextpnr-ice40 --hx8k --package ct256 --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
     "${pins[@]}" --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1; then
     # A design larger than the device is a measurement (the summary says "does not fit"), not a failure.
-    if grep -q "no BELs remaining" "$rep/nextpnr_$d.log"; then
+    if awk '/Info:[ \t]+[A-Z_0-9]+:[ \t]+[0-9]+\/[ \t]*[0-9]+/ { split($3, u, "/"); if (u[1] + 0 > $4 + 0) over = 1 }
+            END { exit !over }' "$rep/nextpnr_$d.log"; then
       echo "nextpnr $d: does not fit the HX8K (utilisation in synth/reports/nextpnr_$d.log)"; return 0
     fi
     echo "nextpnr $d: failed (see synth/reports/nextpnr_$d.log)"; touch "$build/failed"; return 1
