@@ -9,33 +9,28 @@
 
 namespace acore::test {
 
-// The paper's four channels (Eq. 2 and 7, the paper scenario's table) at electrical angle th.
+// The paper scenario's table (docs/contracts.md): AF = cosine, BF = sine coefficients of orders
+// 1..5 per channel, written here again on purpose: the tests compare the simulator against it.
+inline constexpr double kPaperAF[4][5] = {{.11, .20, .13, 0, .03},
+                                          {.10, .19, .07, .09, .03},
+                                          {.50, .10, .17, .04, 0},
+                                          {.13, 0, .10, .01, .01}};
+inline constexpr double kPaperBF[4][5] = {{.10, .11, .13, .06, .03},
+                                          {.10, .19, .13, .04, .04},
+                                          {.13, .17, 0, .07, .01},
+                                          {0, .13, .10, .03, .01}};
+
+// The paper's four channels (Eq. 2 and 7) at electrical angle th.
 inline void paper_channels(double th, double out[4]) {
-  static const double AF[4][5] = {{.11, .20, .13, 0, .03},
-                                  {.10, .19, .07, .09, .03},
-                                  {.50, .10, .17, .04, 0},
-                                  {.13, 0, .10, .01, .01}};
-  static const double BF[4][5] = {{.10, .11, .13, .06, .03},
-                                  {.10, .19, .13, .04, .04},
-                                  {.13, .17, 0, .07, .01},
-                                  {0, .13, .10, .03, .01}};
   const double ideal[4] = {std::sin(th), std::cos(th), -std::sin(th), -std::cos(th)};
   for (int c = 0; c < 4; ++c) {
     out[c] = ideal[c];
     for (int h = 1; h <= 5; ++h)
-      out[c] += AF[c][h - 1] * std::cos(h * th) + BF[c][h - 1] * std::sin(h * th);
+      out[c] += kPaperAF[c][h - 1] * std::cos(h * th) + kPaperBF[c][h - 1] * std::sin(h * th);
   }
 }
 
 inline Recording paper_recording(size_t n, bool four_channel = true) {
-  static const double AF[4][5] = {{.11, .20, .13, 0, .03},
-                                  {.10, .19, .07, .09, .03},
-                                  {.50, .10, .17, .04, 0},
-                                  {.13, 0, .10, .01, .01}};
-  static const double BF[4][5] = {{.10, .11, .13, .06, .03},
-                                  {.10, .19, .13, .04, .04},
-                                  {.13, .17, 0, .07, .01},
-                                  {0, .13, .10, .03, .01}};
   Recording r;
   r.channels = four_channel ? 4 : 2;
   for (size_t k = 0; k < n; ++k) {
@@ -43,7 +38,7 @@ inline Recording paper_recording(size_t n, bool four_channel = true) {
     double e[4] = {0, 0, 0, 0};
     for (int c = 0; c < 4; ++c)
       for (int h = 1; h <= 5; ++h)
-        e[c] += AF[c][h - 1] * std::cos(h * th) + BF[c][h - 1] * std::sin(h * th);
+        e[c] += kPaperAF[c][h - 1] * std::cos(h * th) + kPaperBF[c][h - 1] * std::sin(h * th);
     const double ideal[4] = {std::sin(th), std::cos(th), -std::sin(th), -std::cos(th)};
     r.theta_ref.push_back(th);
     if (four_channel) {

@@ -558,20 +558,15 @@ BenchSummary summarize_bench(std::vector<BenchCaseResult> cases, std::vector<std
   return s;
 }
 
+InputError only_out_of_range(size_t index, size_t cases) {
+  return InputError(
+      fmt::format("diagnose-bench: --only {}: the run has cases 0..{}", index, cases - 1));
+}
+
 BenchSummary run_diagnose_bench(const BenchOptions& opt, const BenchTargets& targets) {
   if (opt.jobs < 1) throw InputError("diagnose-bench: --jobs must be >= 1");
   if (opt.samples < 2000) throw InputError("diagnose-bench: --samples must be >= 2000");
-  std::vector<BenchCase> cases = draw_bench_cases(opt);
-  if (!opt.only.empty()) {
-    std::vector<BenchCase> some;
-    for (size_t i : opt.only) {
-      if (i >= cases.size())
-        throw InputError(
-            fmt::format("diagnose-bench: --only {}: the run has cases 0..{}", i, cases.size() - 1));
-      some.push_back(cases[i]);
-    }
-    cases = some;
-  }
+  const std::vector<BenchCase> cases = select_cases(draw_bench_cases(opt), opt.only);
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<BenchCaseResult> results = run_bench_cases(
       cases.size(), opt.jobs, [&](size_t i) { return run_bench_case(cases[i], opt.samples); },

@@ -57,6 +57,7 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "core/recording.hpp"
 #include "diagnose/diagnose.hpp"
 #include "sim/effects.hpp"
@@ -188,6 +189,20 @@ void draw_bench_temperature(BenchDraw& d, double out[2]);
 // (an effect named where no_gap or unexplained is right, or no_gap where unexplained is), gaps,
 // holdout shrink, the best share any acceptable effect or pair explained. `d` needs a holdout.
 BenchCaseResult judge_diagnosis(const Diagnosis& d, const std::string& expected, double seconds);
+
+// The cases of `only` (indices into `cases`, in that order), or every case when `only` is empty;
+// an index past the end is an InputError naming the option.
+InputError only_out_of_range(size_t index, size_t cases);
+template <class Case>
+std::vector<Case> select_cases(const std::vector<Case>& cases, const std::vector<size_t>& only) {
+  if (only.empty()) return cases;
+  std::vector<Case> some;
+  for (size_t i : only) {
+    if (i >= cases.size()) throw only_out_of_range(i, cases.size());
+    some.push_back(cases[i]);
+  }
+  return some;
+}
 
 // Runs `run(i)` for i = 0..n-1 on `jobs` threads (results in index order; the first exception is
 // rethrown after the workers stop); `progress` is called serialized after each case.

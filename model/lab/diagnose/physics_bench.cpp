@@ -359,17 +359,7 @@ BenchCaseResult run_physics_case(const PhysicsCase& c, size_t samples) {
 
 BenchSummary run_physics_bench(const BenchOptions& opt, const BenchTargets& targets) {
   if (opt.samples < 2000) throw InputError("diagnose-bench: --samples must be >= 2000");
-  std::vector<PhysicsCase> cases = draw_physics_cases(opt);
-  if (!opt.only.empty()) {
-    std::vector<PhysicsCase> some;
-    for (size_t i : opt.only) {
-      if (i >= cases.size())
-        throw InputError(
-            fmt::format("diagnose-bench: --only {}: the run has cases 0..{}", i, cases.size() - 1));
-      some.push_back(cases[i]);
-    }
-    cases = some;
-  }
+  const std::vector<PhysicsCase> cases = select_cases(draw_physics_cases(opt), opt.only);
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<BenchCaseResult> results = run_bench_cases(
       cases.size(), opt.jobs, [&](size_t i) { return run_physics_case(cases[i], opt.samples); },
