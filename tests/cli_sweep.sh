@@ -56,6 +56,6 @@ check bad-grid-name 2 "$bin" sweep --grid "$tmp/g3.json" --out "$tmp/x"
 expect_text bad-grid-name-msg "$tmp/err" "RTL parameter 'NOPE' is unknown"
 echo '[{"DEGREE": [3]' >"$tmp/g4.json"
 check bad-grid-json 2 "$bin" sweep --grid "$tmp/g4.json" --out "$tmp/x"
-expect_text bad-grid-json-msg "$tmp/err" "g4.json: not JSON"
+expect_text bad-grid-json-msg "$tmp/err" "g4.json:1: not valid JSON"
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -103,6 +105,18 @@ int recording_periodicity(const Recording& rec, const std::string& path) {
   } catch (const std::exception&) {
   }
   throw InputError(path + ": metadata 'p': '" + it->second + "' is not a periodicity 1..64");
+}
+
+const CLI::Validator& finite_number() {
+  static const CLI::Validator v(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
+        return std::isfinite(x) ? "" : "'" + text + "' is not a finite number";
+      },
+      "FINITE");
+  return v;
 }
 
 }  // namespace acore::cli

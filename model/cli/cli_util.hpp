@@ -2,6 +2,7 @@
 // Small helpers shared by the subcommands: JSON output (`--json FILE`, `-` for stdout) and the
 // periodicity a recording declares in its metadata.
 #pragma once
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -27,6 +28,8 @@ std::ostream& json_stdout();
 // True when argv asks for JSON on standard output (`--json -` or `--json=-`).
 bool json_to_stdout(int argc, char** argv);
 nlohmann::json stats_json(const ErrorStats& s);
+// A numeric flag must be finite: CLI11's range checks compare, and NaN fails no comparison.
+const CLI::Validator& finite_number();
 // `# p=N` in the recording's metadata, else 1; throws InputError on a malformed value.
 int recording_periodicity(const Recording& rec, const std::string& path);
 

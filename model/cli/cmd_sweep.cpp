@@ -16,6 +16,7 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
+#include "core/json_input.hpp"
 #include "sweep/design_space.hpp"
 
 namespace acore::cli {
@@ -28,15 +29,7 @@ struct SweepArgs {
   bool quick = false, list = false;
 };
 
-nlohmann::json read_grid(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot open the sweep grid");
-  try {
-    return nlohmann::json::parse(f);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(fmt::format("{}: not JSON ({})", path, e.what()));
-  }
-}
+nlohmann::json read_grid(const std::string& path) { return read_json_file(path, "sweep grid"); }
 
 void run_sweep(const SweepArgs& a) {
   const nlohmann::json grid = !a.grid.empty() ? read_grid(a.grid)

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/errors.hpp"
+#include "core/json_input.hpp"
 
 namespace acore {
 
@@ -94,19 +95,13 @@ SignalSpec parse_signal_spec(const nlohmann::json& j) {
 }
 
 SignalSpec load_signal_spec(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(fmt::format("harmonics spec: cannot open '{}'", path));
-  nlohmann::json j;
-  try {
-    f >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("harmonics spec: '{}' is not valid JSON: {}", path, e.what()));
-  }
-  return parse_signal_spec(j);
+  return parse_signal_spec(read_json_file(path, "harmonics spec"));
 }
 
 void validate(const SignalSpec& s) {
-  if (s.p < 1) throw InputError(fmt::format("harmonics spec: field 'p' = {} must be >= 1", s.p));
+  if (s.p < 1 || s.p > kMaxOrder)
+    throw InputError(
+        fmt::format("harmonics spec: field 'p' = {} must lie in 1..{}", s.p, kMaxOrder));
   for (const auto& [name, v] : {std::pair<const char*, double>{"A0", s.A0},
                                 {"B0", s.B0},
                                 {"Ap", s.Ap},
@@ -126,9 +121,10 @@ void validate(const SignalSpec& s) {
     for (const auto& [name, v] :
          {std::pair<const char*, double>{"A", t.A}, {"theta", t.theta}, {"B", t.B}, {"psi", t.psi}})
       require_finite(v, w + name);
-    if (t.n < 1)
-      throw InputError(fmt::format(
-          "harmonics spec: field '{}n' = {} must be >= 1 (offsets are A0, B0)", w, t.n));
+    if (t.n < 1 || t.n > kMaxOrder)
+      throw InputError(
+          fmt::format("harmonics spec: field '{}n' = {} must lie in 1..{} (offsets are A0, B0)", w,
+                      t.n, kMaxOrder));
     if (t.n == s.p)
       throw InputError(fmt::format(
           "harmonics spec: field '{}n' = {} equals p: a main-harmonic mismatch must be given "

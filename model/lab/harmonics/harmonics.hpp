@@ -45,9 +45,13 @@ struct SignalSpec {
 // Parses and validates a spec; throws InputError naming the offending field ("terms[1].A ...").
 SignalSpec parse_signal_spec(const nlohmann::json& j);
 SignalSpec load_signal_spec(const std::string& path);
-// Throws InputError for: p < 1, non-finite values, Ap or Bp <= 0, |delta_p| >= pi/2, a term with
-// n < 1 or n = p (a main-harmonic mismatch must be given as Ap, Bp, delta_p), negative term
-// amplitudes, and a normalised spectrum outside the convergence domain (sum_amplitude >= 1).
+// The highest periodicity and term order a spec may name: the analysis grid grows with 32 x the
+// highest predicted order (2 p + 2 n), so 1000 keeps it at 2^17 points.
+constexpr int kMaxOrder = 1000;
+// Throws InputError for: p or a term's n outside 1..kMaxOrder, non-finite values, Ap or Bp <= 0,
+// |delta_p| >= pi/2, a term with n = p (a main-harmonic mismatch must be given as Ap, Bp, delta_p),
+// negative term amplitudes, and a normalised spectrum outside the convergence domain (sum_amplitude
+// >= 1).
 void validate(const SignalSpec& spec);
 
 // Normalisation (section 4.1): all disturbances of the spec divided by g = (Ap + Bp) / 2, with the

@@ -143,7 +143,9 @@ ParamList effect_defaults(const std::string& e, int channels) {
 
 Effect make_effect(const std::string& e, const ParamList& given, int channels) {
   Effect out{e, effect_defaults(e, channels)};
-  for (const auto& [k, v] : given) {
+  for (const auto& kv_given : given) {
+    const std::string& k = kv_given.first;
+    const double v = kv_given.second;
     auto it = std::find_if(out.params.begin(), out.params.end(),
                            [&](const auto& kv) { return kv.first == k; });
     if (it == out.params.end()) {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/json_input.hpp"
 
 namespace acore {
 
@@ -384,17 +385,7 @@ Scenario builtin_scenario(const std::string& name) {
 }
 
 Scenario load_scenario(const std::string& json_path) {
-  std::ifstream f(json_path, std::ios::binary);
-  if (!f) throw InputError(fmt::format("{}: cannot open scenario file", json_path));
-  std::stringstream ss;
-  ss << f.rdbuf();
-  json j;
-  try {
-    j = json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    throw InputError(fmt::format("{}: not valid JSON: {}", json_path, e.what()));
-  }
-  return Scenario::from_json(j, json_path);
+  return Scenario::from_json(read_json_file(json_path, "scenario file"), json_path);
 }
 
 Scenario with_channels(const Scenario& s, int channels) {

@@ -61,6 +61,17 @@ std::vector<std::string> expand_grid(const nlohmann::json& grid) {
     const nlohmann::json& sub = grid[g];
     if (!sub.is_object())
       throw InputError(fmt::format("sweep grid: sub-grid {} is not an object", g));
+    // The product's size first: a few kilobytes of JSON can describe more points than memory
+    // holds, and a sweep of that many points would never end anyway.
+    size_t product = 1;
+    for (const auto& [name, val] : sub.items()) {
+      const size_t n = values_of(val).size();
+      if (n != 0 && product > kMaxGridPoints / n)
+        throw InputError(
+            fmt::format("sweep grid: sub-grid {} field {}: the sub-grid has more than {} points", g,
+                        name, kMaxGridPoints));
+      product *= std::max<size_t>(n, 1);
+    }
     // Cartesian product, the last field varying fastest.
     std::vector<std::string> partial = {""};
     for (const auto& [name, val] : sub.items()) {

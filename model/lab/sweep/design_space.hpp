@@ -39,6 +39,8 @@ std::vector<SweepScenario> sweep_scenarios(size_t cal_samples, size_t val_sample
 // of values; the points are the union of the sub-grids' Cartesian products, in order, without
 // duplicates. Throws InputError naming the sub-grid and field that is not of that form, or a point
 // whose configuration is invalid.
+// A sub-grid of more than kMaxGridPoints points is refused before it is expanded.
+constexpr size_t kMaxGridPoints = 100000;
 std::vector<std::string> expand_grid(const nlohmann::json& grid);
 // The grid `anglecore sweep` runs by default (docs/synthesis.md, "Design space").
 nlohmann::json default_sweep_grid();
