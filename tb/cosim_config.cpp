@@ -36,34 +36,6 @@ size_t compare(const std::vector<FixedSample>& rtl, const FixedModel& model,
   return c.mismatches;
 }
 
-// The paper scenario calibrated for cfg: the calibration may only lower COEF_F
-// (quantize_auto_range); the result must be exactly the build's configuration.
-RegImage paper_image(const DatapathConfig& cfg) {
-  const Recording cal = test::paper_recording(8000, true);
-  const RegImage img = calibrate_image(cal, cfg, 1);
-  if (img.cfg != cfg)
-    throw InputError("the paper calibration for this configuration needs " + img.cfg.describe() +
-                     "; set those parameters in rtl/configs.txt");
-  return img;
-}
-
-// A fine sweep through every 45-degree boundary plus the zero vector and full scale.
-std::vector<ChannelCodes> corner_codes(int in_w) {
-  const int32_t F = (1 << (in_w - 1)) - 1, N = -(1 << (in_w - 1)), q = 1 << (in_w - 3);
-  std::vector<ChannelCodes> in;
-  for (int32_t a : {0, 1, -1, F, N, q, -q})
-    for (int32_t b : {0, 1, -1, F, N, q, -q})
-      for (int32_t c : {0, F, N})
-        for (int32_t d : {0, F, N}) in.push_back({a, b, c, d});
-  for (int k = 0; k < 8; ++k)
-    for (int j = -50; j <= 50; ++j) {
-      const double th = k * M_PI / 4 + j * 1e-5;
-      in.push_back({static_cast<int32_t>(std::lround(q * std::sin(th))),
-                    static_cast<int32_t>(std::lround(q * std::cos(th))), 0, 0});
-    }
-  return in;
-}
-
 // Clocks from the accepting edge to out_valid (a folded top may take a sample only some clocks
 // after the last one: the input is held until accepted).
 int measured_latency(const RtlBuild& build, const RegImage& img) {
@@ -159,37 +131,26 @@ int run(const std::string& name, size_t samples) {
   std::printf("configuration %s (%s): %s (%d words, LATENCY %d, CYCLES %d)\n", name.c_str(),
               build.module.c_str(), cfg.describe().c_str(), cfg.words(), latency, cycles);
   size_t bad = 0;
-  const RegImage paper = paper_image(cfg);
+  const std::vector<cosim::Case> cases = cosim::config_cases(cfg, name, samples);
+  const RegImage& paper = cases.front().img;
   const int lat = measured_latency(build, paper);
   std::printf("%-28s %8d clocks (LATENCY %d)\n", "latency", lat, latency);
   bad += lat != latency;
-
-  RtlRunOptions opt;
-  opt.top = build.top;
-  opt.gaps = 0.3;
-  opt.backpressure = 0.3;
-  const auto in = to_codes(test::paper_recording(samples, true), paper.in_scale, cfg.in_w);
-  bad += compare(run_rtl(paper, in, opt), FixedModel(paper), in, "paper scenario");
-  const auto corners = corner_codes(cfg.in_w);
-  bad += compare(run_rtl(paper, corners, opt), FixedModel(paper), corners, "corner inputs");
+  for (const cosim::Case& c : cases) {
+    RtlRunOptions ro;
+    ro.top = build.top;
+    ro.seed = c.seed;
+    ro.gaps = c.gaps;
+    ro.backpressure = c.backpressure;
+    bad += compare(run_rtl(c.img, c.in, ro), FixedModel(c.img), c.in, c.what.c_str());
+  }
   // The serial core computes a sample in CYCLES clocks and has no output FIFO: fewer samples.
+  const std::vector<ChannelCodes>& in = cases.front().in;
   const size_t n_head = cycles > 8 ? 300 : 2000, n_stall = cycles > 8 ? 60 : 2000;
   const std::vector<ChannelCodes> head(in.begin(), in.begin() + std::min(in.size(), n_head));
   const std::vector<ChannelCodes> stall(in.begin(), in.begin() + std::min(in.size(), n_stall));
   bad += full_rate(build, paper, head);
   bad += long_stall(build, paper, stall);
-
-  std::mt19937_64 rng(std::hash<std::string>{}(name));
-  for (int k = 0; k < 8; ++k) {
-    const RegImage img = cosim::random_image(paper, rng, cfg.fourier_k > 0 && (rng() & 1));
-    const auto rin = cosim::random_codes(rng, 2000, cfg.in_w);
-    RtlRunOptions ro;
-    ro.top = build.top;
-    ro.seed = k + 1;
-    ro.gaps = 0.2;
-    ro.backpressure = 0.2;
-    bad += compare(run_rtl(img, rin, ro), FixedModel(img), rin, "random image");
-  }
   std::printf("%s: %s\n", name.c_str(), bad ? "MISMATCH" : "0 mismatches");
   return bad ? 1 : 0;
 }

@@ -5,10 +5,13 @@
 #pragma once
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "calibration/calibration.hpp"
+#include "core/errors.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "regmap/regimage.hpp"
@@ -105,6 +108,65 @@ inline RegImage random_image(const RegImage& base, std::mt19937_64& rng, bool ra
   for (int j = 0; j < c.fourier_words(); ++j) img.words[c.addr_fourier(j)] = rng() & mask;
   if (c.zero_word) img.words[c.addr_zero()] = rng() & mask;
   return img;
+}
+
+// The paper scenario calibrated for cfg: the calibration may only lower COEF_F
+// (quantize_auto_range); the result must be exactly the build's configuration.
+inline RegImage config_paper_image(const DatapathConfig& cfg) {
+  const Recording cal = test::paper_recording(8000, true);
+  const RegImage img = calibrate_image(cal, cfg, 1);
+  if (img.cfg != cfg)
+    throw InputError("the paper calibration for this configuration needs " + img.cfg.describe() +
+                     "; set those parameters in rtl/configs.txt");
+  return img;
+}
+
+// A fine sweep through every 45-degree boundary plus the zero vector and full scale.
+inline std::vector<ChannelCodes> corner_codes(int in_w) {
+  const int32_t F = (1 << (in_w - 1)) - 1, N = -(1 << (in_w - 1)), q = 1 << (in_w - 3);
+  std::vector<ChannelCodes> in;
+  for (int32_t a : {0, 1, -1, F, N, q, -q})
+    for (int32_t b : {0, 1, -1, F, N, q, -q})
+      for (int32_t c : {0, F, N})
+        for (int32_t d : {0, F, N}) in.push_back({a, b, c, d});
+  for (int k = 0; k < 8; ++k)
+    for (int j = -50; j <= 50; ++j) {
+      const double th = k * M_PI / 4 + j * 1e-5;
+      in.push_back({static_cast<int32_t>(std::lround(q * std::sin(th))),
+                    static_cast<int32_t>(std::lround(q * std::cos(th))), 0, 0});
+    }
+  return in;
+}
+
+// One run of a configuration's co-sim (cosim_config NAME): an image, its inputs, and the random
+// input gaps and output backpressure of the harness.
+struct Case {
+  std::string what;
+  RegImage img;
+  std::vector<ChannelCodes> in;
+  double gaps = 0, backpressure = 0;
+  uint64_t seed = 1;
+};
+
+// Every run cosim_config makes for a configuration, in order: the paper scenario calibrated for it
+// (`samples` inputs), corner inputs on that image, then 8 random images with 2000 random inputs
+// each (the saturation paths). tb/sat_coverage.cpp replays the same runs through the model.
+inline std::vector<Case> config_cases(const DatapathConfig& cfg, const std::string& name,
+                                      size_t samples) {
+  std::vector<Case> v;
+  const RegImage paper = config_paper_image(cfg);
+  v.push_back({"paper scenario", paper,
+               to_codes(test::paper_recording(samples, true), paper.in_scale, cfg.in_w), 0.3, 0.3,
+               1});
+  v.push_back({"corner inputs", paper, corner_codes(cfg.in_w), 0.3, 0.3, 1});
+  std::mt19937_64 rng(std::hash<std::string>{}(name));
+  for (int k = 0; k < 8; ++k) {
+    RegImage img = random_image(paper, rng, cfg.fourier_k > 0 && (rng() & 1));
+    auto in = random_codes(rng, 2000, cfg.in_w);
+    v.push_back(
+        {"random image", std::move(img), std::move(in), 0.2, 0.2, static_cast<uint64_t>(k + 1)});
+  }
+  return v;
 }
 
 }  // namespace acore::cosim

@@ -107,4 +107,29 @@ uint64_t read_after_write(H& h, int a, uint64_t v, int gap) {
   return h.read_reg(a);
 }
 
+struct PastLastWord {
+  int addresses = 0;      // addresses past the last word written (up to the port's all-ones)
+  int read_nonzero = 0;   // of them, reading back other than zero (must be 0)
+  int words_changed = 0;  // words of the map whose read-back differs from the image (must be 0)
+};
+
+// Loads img, writes every address past the last word (WORDS .. 2^ADDR_W - 1) with a value that
+// differs in every bit from each word's, then reads back those addresses and every word. A
+// register file that let such a write through (into the last word, or any word the address
+// aliases) changes a word; the datapath's view is checked by the caller on a stream.
+template <class H>
+PastLastWord writes_past_last_word(H& h, const RegImage& img) {
+  PastLastWord r;
+  const int words = static_cast<int>(img.words.size());
+  int top = 1;
+  while (top < words) top <<= 1;
+  const uint64_t mask = (uint64_t{1} << img.cfg.reg_w) - 1;
+  h.load(img);
+  for (int a = words; a < top; ++a, ++r.addresses) h.write_reg(a, ~img.words[words - 1] & mask);
+  for (int i = 0; i < 4; ++i) h.tick();
+  for (int a = words; a < top; ++a) r.read_nonzero += h.read_reg(a) != 0;
+  for (int a = 0; a < words; ++a) r.words_changed += h.read_reg(a) != img.words[a];
+  return r;
+}
+
 }  // namespace acore::host_port

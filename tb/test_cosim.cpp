@@ -193,13 +193,16 @@ TEST_P(Cosim, RegisterReprogrammingBetweenFrames) {
     const auto out = h.stream(in, 0.2, 0.2, rng);
     EXPECT_EQ(mismatches(out, FixedModel(img), in, "reprogrammed frame"), 0u) << frame;
   }
-  // Addresses past the last word read as zero and ignore writes: every word keeps its value.
+  // Addresses past the last word read as zero and ignore writes: every word keeps its value,
+  // and the datapath still computes with the image (every configuration of the registry).
   const RegImage& last = imgs[5 % 3];
-  const int words = cfg().words();
-  const int top_addr = (1 << static_cast<int>(std::ceil(std::log2(words)))) - 1;
-  for (int a = words; a <= top_addr; ++a) h.write_reg(a, 0x1234 + a);
-  for (int a = words; a <= top_addr; ++a) EXPECT_EQ(h.read_reg(a), 0u) << "address " << a;
-  for (int a = 0; a < words; ++a) EXPECT_EQ(h.read_reg(a), last.words[a]) << "word " << a;
+  const host_port::PastLastWord p = host_port::writes_past_last_word(h, last);
+  EXPECT_EQ(p.read_nonzero, 0);
+  EXPECT_EQ(p.words_changed, 0);
+  const auto in = random_codes(rng, n, last.cfg.in_w);
+  EXPECT_EQ(
+      mismatches(h.stream(in, 0.2, 0.2, rng), FixedModel(last), in, "after writes past the end"),
+      0u);
 }
 
 TEST_P(Cosim, CornerInputs) {
@@ -334,6 +337,24 @@ TEST_P(CosimHostPort, HostPortTimingIsTheTopsShared) {
   EXPECT_EQ(host_port::read_after_write(h, 5, img.words[5] ^ 1, 1), img.words[5]);
   EXPECT_EQ(h.read_reg(5), img.words[5] ^ 1);
   EXPECT_EQ(host_port::read_after_write(h, 6, img.words[6] ^ 1, 2), img.words[6] ^ 1);
+}
+
+TEST_P(CosimHostPort, WritesPastTheLastWordChangeNoWord) {
+  // Every address from WORDS to the port's all-ones, written with the complement of the last word
+  // (the word a missing range check would most likely hit): every word reads back unchanged,
+  // those addresses read zero, and the outputs are the model's with the image as loaded.
+  std::mt19937_64 rng(44);
+  RtlHarness h(build(), "", 2, 44);
+  h.reset();
+  for (const RegImage& base : {paper_image(), random_image(rng, false)}) {
+    const host_port::PastLastWord p = host_port::writes_past_last_word(h, base);
+    EXPECT_GT(p.addresses, 0);
+    EXPECT_EQ(p.read_nonzero, 0);
+    EXPECT_EQ(p.words_changed, 0);
+    const auto in = random_codes(rng, pick(2000, 400), base.cfg.in_w);
+    EXPECT_EQ(mismatches(h.stream(in, 0.1, 0.1, rng), FixedModel(base), in, "past the last word"),
+              0u);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cosim, CosimHostPort, ::testing::ValuesIn(host_port_builds()), build_name);

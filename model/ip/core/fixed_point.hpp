@@ -5,10 +5,43 @@
 //   saturate()       clamp to a signed width, sets the stage's overflow flag
 //   shift_add_mul()  the adder/shifter multiplier: one conditional add of a shifted operand per
 //                    bit of the other operand, every partial product truncated (floor) on its own
+//
+// A coverage build (-DACORE_SAT_COVERAGE: tb/sat_coverage.cpp compiles its own copy of the model)
+// counts, for every call site of saturate(), the values below, inside and above its range.
 #pragma once
 #include <cstdint>
+#ifdef ACORE_SAT_COVERAGE
+#include <map>
+#include <string>
+#include <tuple>
+#endif
 
 namespace acore::fx {
+
+#ifdef ACORE_SAT_COVERAGE
+struct SatCount {
+  uint64_t below = 0, inside = 0, above = 0;
+};
+// Keyed by (function, file, line) of the call and the width it saturates to.
+using SatSite = std::tuple<std::string, std::string, int, int>;
+inline std::map<SatSite, SatCount>& sat_counts() {
+  static std::map<SatSite, SatCount> m;
+  return m;
+}
+#define ACORE_SAT_SITE                                                                  \
+  , const char *sat_fn = __builtin_FUNCTION(), const char *sat_file = __builtin_FILE(), \
+               int sat_line = __builtin_LINE()
+#define ACORE_SAT_COUNT(v, w)                                             \
+  do {                                                                    \
+    SatCount& c = sat_counts()[SatSite{sat_fn, sat_file, sat_line, (w)}]; \
+    ++((v) > smax(w) ? c.above : (v) < smin(w) ? c.below : c.inside);     \
+  } while (0)
+#else
+#define ACORE_SAT_SITE
+#define ACORE_SAT_COUNT(v, w) \
+  do {                        \
+  } while (0)
+#endif
 
 // v * 2^-n with floor for n >= 0, v * 2^-n exactly (left shift) for n < 0.
 inline int64_t shr(int64_t v, int n) {
@@ -24,7 +57,8 @@ inline int64_t smax(int w) { return (int64_t{1} << (w - 1)) - 1; }
 inline int64_t smin(int w) { return -(int64_t{1} << (w - 1)); }
 
 // Clamps v to a signed w-bit word; sets *ovf (if given) when it had to.
-inline int64_t saturate(int64_t v, int w, bool* ovf) {
+inline int64_t saturate(int64_t v, int w, bool* ovf ACORE_SAT_SITE) {
+  ACORE_SAT_COUNT(v, w);
   if (v > smax(w)) {
     if (ovf) *ovf = true;
     return smax(w);
