@@ -41,7 +41,7 @@ DESCRIPTIONS = {
     "stage_cordic_pnr": "stage: the top's CORDIC (18-bit, K=16), pin wrapper (P&R)",
     "serial": "acore_serial_top, serial core, default configuration",
     "serial_pnr": "acore_serial_top, default, in the pin wrapper (P&R)",
-    "cordic16_rom": "CORDIC alone, 16-bit (registry line cordic16), atan table as constants, inputs registered",
+    "cordic16_rom": "CORDIC alone, 16-bit (registry line cordic16), atan table as constants (ZTAB=1), inputs registered",
     "cordic16": "CORDIC alone, 16-bit, atan words on an input bus",
     "cordic16_rom_pnr": "CORDIC alone, 16-bit, angle only, x/y loaded serially (pin wrapper, P&R)",
     "cordic16_serial": "word-serial CORDIC, 16-bit (cordic16 configuration), atan words on an input bus",

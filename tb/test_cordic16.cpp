@@ -9,9 +9,12 @@
 //  3. no register of the RTL's widths overflows: |X| < 2^(XY_W-1) and |Y_i| < 2^(YW(i)-1).
 // ACORE_C16_FULL=1 in the environment sweeps all 2^32 inputs instead (about 15 minutes).
 //  4. the word-serial CORDIC (rtl/acore_cordic_serial.v, registry line cordic16_serial, the same
-//     parameters) equals the same model bit for bit on the same inputs, with random stalls on both
+//     parameters) equals the same model bit for bit (a sweep with stride 211, every vector with
+//     |x|,|y| <= 24, the edges: over 10^6 vectors), with random stalls on both
 //     handshakes: every accepted vector leaves once, in order, its angle held while out_ready is
 //     low; unstalled it takes a vector every K clocks with LATENCY = K + 3. So 2. holds for it too.
+//  5. the same CORDIC with ZTAB=1 (registry line cordic16_ztab, as synth/acore_cordic16.v builds
+//     it) equals the model bit for bit on the same inputs as 1.
 #include <gtest/gtest.h>
 #include <verilated.h>
 
@@ -24,6 +27,7 @@
 
 #include "Vcordic16.h"
 #include "Vcordic16_serial.h"
+#include "Vcordic16_ztab.h"
 #include "cordic16_inputs.hpp"
 #include "stages/cordic.hpp"
 
@@ -59,12 +63,15 @@ void load_atan(Bus& bus, const std::vector<int64_t>& table, int at_w) {
     }
 }
 
-TEST(Cordic16, RtlEqualsModel) {
+// Streams the test set through a Verilated build of the cordic16 configuration (a vector every
+// clock) and compares angle and magnitude with the model; returns (inputs compared, mismatches).
+template <typename V>
+std::pair<size_t, size_t> pipelined_vs_model(const char* name) {
   const CordicConfig cfg = c16();
   const auto table = cordic_atan_table(cfg.z_w, cfg.iterations);
   auto ctx = std::make_unique<VerilatedContext>();
   ctx->randReset(2);
-  auto top = std::make_unique<Vcordic16>(ctx.get());
+  auto top = std::make_unique<V>(ctx.get());
   load_atan(top->atan_i, table, ACORE_CORDIC16_AT_W);
   top->en_i = 1;
   top->clk_i = 0;
@@ -99,7 +106,24 @@ TEST(Cordic16, RtlEqualsModel) {
     }
   }
   top->final();
-  std::printf("cordic16 RTL vs model: %zu inputs, %zu mismatches\n", n, bad);
+  std::printf("%s RTL vs model: %zu inputs, %zu mismatches\n", name, n, bad);
+  return {n, bad};
+}
+
+TEST(Cordic16, RtlEqualsModel) {
+  const auto [n, bad] = pipelined_vs_model<Vcordic16>("cordic16");
+  EXPECT_EQ(bad, 0u);
+  EXPECT_GT(n, 2000000u);
+}
+
+// ZTAB=1 (the table of 4-stage angle sums that cordic16_rom uses) computes the same angle.
+static_assert(ACORE_CORDIC16_ZTAB_ZTAB == 1 && ACORE_CORDIC16_ZTAB_K == ACORE_CORDIC16_K &&
+                  ACORE_CORDIC16_ZTAB_Z_W == ACORE_CORDIC16_Z_W &&
+                  ACORE_CORDIC16_ZTAB_AT_W == ACORE_CORDIC16_AT_W &&
+                  ACORE_CORDIC16_ZTAB_SPLIT == ACORE_CORDIC16_SPLIT,
+              "rtl/configs.txt: cordic16_ztab must be the cordic16 line with ZTAB=1");
+TEST(Cordic16, AngleTableEqualsModel) {
+  const auto [n, bad] = pipelined_vs_model<Vcordic16_ztab>("cordic16_ztab");
   EXPECT_EQ(bad, 0u);
   EXPECT_GT(n, 2000000u);
 }
