@@ -14,6 +14,7 @@
 // Each stage register is fed by exactly one adder per word: the conditional negation is the XOR
 // and the carry-in of the same adder, written as one (W+1)-bit add whose bit 0 makes the carry.
 // atan_i = round(atan(2^-i) / 2pi 2^Z_W) comes in on a bus (the register file's last K words).
+// ZTAB=1 (constant atan_i): Z += sum over each group of 4 stages, from a 16-entry table (see ZTAB).
 // X never goes negative and |(X, Y)| grows by the CORDIC gain (< 1.65), so XY_W cannot overflow;
 // Y shrinks stage by stage and is computed on fewer bits in the later stages (see below).
 `resetall
@@ -37,6 +38,13 @@ module acore_cordic #(
   // 1: two clocks per stage, the operand XOR (conditional negation) registered before the adder,
   // so the clock period is one carry chain (for Fmax on iCE40); 0: one clock per stage.
   parameter integer SPLIT = 0,
+  // 1: atan_i is a constant (a core with a ROM table, synth/acore_cordic16.v): the angle updates
+  // of each group of 4 stages are one table lookup on the group's 4 directions and one adder, the
+  // output rounding's half LSB folded into the last table (Z adds modulo 2^Z_W, so the order of the
+  // additions does not change Z: bit for bit the same angle). The table is 16 sums of the group's
+  // words: constants at synthesis when atan_i is; on a register-fed atan_i (the top) it would be
+  // 16 adder trees, so the top keeps 0.
+  parameter integer ZTAB = 0,
   // Derived, do not override.
   parameter integer XY_W = acore_xy_w(IN_W, G),
   parameter integer MAG_W = acore_mag_w(IN_W)
@@ -84,6 +92,23 @@ module acore_cordic #(
   reg [XY_W-2:0] x_q [0:K];
   reg [XY_W-1:0] y_q [0:K-1];
   reg [Z_W-1:0]  z_q [0:K];
+  // ZTAB=1: the directions of the current group's earlier stages, travelling with the vector.
+  reg [3:0]      gd_q [0:K];
+  always @(posedge clk_i) if (en_i) gd_q[0] <= 4'b0000;
+
+  // ZTAB=1: the sum of the group's words w (word p at bits [p Z_W +: Z_W], n of them) with the
+  // directions of pt (bit p set: -w_p), modulo a turn, plus the output rounding's half LSB when rnd.
+  // Called with constant pt: on constant words it is a constant.
+  function automatic [Z_W-1:0] ztab_sum(input [3:0] pt, input [4*Z_W-1:0] w, input integer n,
+                                        input integer rnd);
+    integer p;
+    begin
+      ztab_sum = {Z_W{1'b0}};
+      for (p = 0; p < n; p = p + 1)
+        ztab_sum = pt[p] ? ztab_sum - w[p*Z_W +: Z_W] : ztab_sum + w[p*Z_W +: Z_W];
+      if (rnd != 0 && DROP > 0) ztab_sum = ztab_sum + ({{(Z_W-1){1'b0}}, 1'b1} << (DROP - 1));
+    end
+  endfunction
 
   generate
     if (NORM != 0) begin : g_norm
@@ -213,6 +238,7 @@ module acore_cordic #(
       // Adder inputs a + b + c: X += s ? -(Y>>>i) : (Y>>>i) is X + ((Y>>>i) ^ {s}) + s.
       wire [XY_W-2:0] x_a, x_b;
       wire [Z_W-1:0]  z_a, z_b;
+      wire [3:0]      gd_a;  // ZTAB=1: the group's earlier directions, beside z_a
       wire            sc_x, sc_z, nsc_y;  // s (and ~s) as seen by the adders' carry-ins
       if (SPLIT != 0) begin : g_split
         reg [XY_W-2:0] x_a_q, x_b_q;
@@ -232,8 +258,11 @@ module acore_cordic #(
         end
         assign x_a  = x_a_q;
         assign x_b  = x_b_q;
+        reg [3:0] gd_a_q;
+        always @(posedge clk_i) if (en_i) gd_a_q <= gd_q[i];
         assign z_a  = z_a_q;
         assign z_b  = z_b_q;
+        assign gd_a = gd_a_q;
         assign sc_x = s_x_q;
         assign sc_z = s_z_q;
         assign nsc_y = ns_y_q;
@@ -242,17 +271,62 @@ module acore_cordic #(
         assign x_b  = ys ^ {(XY_W-1){s}};
         assign z_a  = z_q[i];
         assign z_b  = at ^ {Z_W{s}};
+        assign gd_a = gd_q[i];
         assign sc_x = s;
         assign sc_z = s;
         assign nsc_y = ~s;
       end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
       wire [XY_W-1:0] x_sum = {x_a, 1'b1} + {x_b, sc_x};
-      wire [Z_W:0]    z_sum = {z_a, 1'b1} + {z_b, sc_z};
-      always @(posedge clk_i) begin
-        if (en_i) begin
-          x_q[i+1] <= x_sum[XY_W-1:1];
-          z_q[i+1] <= z_sum[Z_W:1];
+      always @(posedge clk_i) if (en_i) x_q[i+1] <= x_sum[XY_W-1:1];
+      if (ZTAB == 0) begin : g_zadd
+        wire [Z_W:0] z_sum = {z_a, 1'b1} + {z_b, sc_z};
+        always @(posedge clk_i) begin
+          if (en_i) begin
+            z_q[i+1]  <= z_sum[Z_W:1];
+            gd_q[i+1] <= 4'b0000;  // no table: never read
+          end
+        end
+      end else begin : g_ztab
+        // Directions of this group's stages so far (bit p: stage 4g + p), this stage's added.
+        localparam integer P = i % 4;
+        localparam integer LAST = (P == 3 || i == K - 1) ? 1 : 0;
+        wire [3:0] dirs = gd_a | ({3'b000, sc_z} << P);
+        if (LAST != 0) begin : g_add
+          // Table of the group's sums, by its directions (d = 1: -atan, as Z += atan ^ {s} + s).
+          localparam integer G0 = i - P;
+          // The group's words as Z_W-bit values (zero-extended, or modulo a turn), unused ones 0.
+          wire [4*Z_W-1:0] gw;
+          genvar q;
+          for (q = 0; q < 4; q = q + 1) begin : g_w
+            if (q > P) begin : g_none
+              assign gw[q*Z_W +: Z_W] = {Z_W{1'b0}};
+            end else if (AT_W >= Z_W) begin : g_low
+              assign gw[q*Z_W +: Z_W] = atan_i[(G0 + q) * AT_W +: Z_W];
+            end else begin : g_ext
+              assign gw[q*Z_W +: Z_W] = {{(Z_W-AT_W){1'b0}}, atan_i[(G0 + q) * AT_W +: AT_W]};
+            end
+          end
+          wire [Z_W-1:0] tab [0:15];
+          genvar pt;
+          for (pt = 0; pt < 16; pt = pt + 1) begin : g_pt
+            localparam [3:0] PT = pt;
+            assign tab[pt] = ztab_sum(PT, gw, P + 1, (i == K - 1) ? 1 : 0);
+          end
+          wire [Z_W-1:0] z_sum = z_a + tab[dirs];
+          always @(posedge clk_i) begin
+            if (en_i) begin
+              z_q[i+1]  <= z_sum;
+              gd_q[i+1] <= 4'b0000;
+            end
+          end
+        end else begin : g_pass
+          always @(posedge clk_i) begin
+            if (en_i) begin
+              z_q[i+1]  <= z_a;
+              gd_q[i+1] <= dirs;
+            end
+          end
         end
       end
       // Y -= s ? -(X>>i) : (X>>i), i.e. Y + ((X>>i) ^ {~s}) + ~s, on YWN bits. The last stage's Y
@@ -286,7 +360,7 @@ module acore_cordic #(
   wire [Z_W-1:0] z_k = z_q[K];
   wire [Z_W-1:0] z_rnd;
   generate
-    if (DROP > 0) begin : g_rnd
+    if (DROP > 0 && ZTAB == 0) begin : g_rnd
       assign z_rnd = z_k + ({{(Z_W-1){1'b0}}, 1'b1} << (DROP - 1));
     end else begin : g_nornd
       assign z_rnd = z_k;

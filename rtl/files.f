@@ -13,6 +13,7 @@ acore_region_select.v
 acore_poly_correct.v
 acore_poly2d_correct.v
 acore_cordic.v
+acore_cordic_serial.v
 acore_cordic_rotate.v
 acore_adder_tree.v
 acore_fourier_correct.v

@@ -24,6 +24,11 @@ Synthesis rules (scripts/synth.sh; the registry's header states them for its rea
                           package): its ice40 netlist is placed, log nextpnr_<name>.log.
                           Pins: synth/acore_hx8k_ct256.pcf when it places every port of the placed
                           design (the whole tops), unconstrained otherwise.
+  pnr_up5k                the module in its SG48 wrapper <module>_sg48wrap (a module of synth/*.v with
+                          few enough pins for the UP5K's 48-pin package, given the line's parameters),
+                          synthesized for iCE40 and placed and routed on an iCE40 UP5K (sg48, pins
+                          unconstrained): design <name>_up5k, reports ice40_<name>_up5k.txt,
+                          nextpnr_<name>_up5k.log.
 """
 import functools
 import json
@@ -34,8 +39,9 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr")
-SYNTH_FLOWS = ("generic", "xilinx", "ice40", "pnr")
+FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr", "pnr_up5k")
+SYNTH_FLOWS = ("generic", "xilinx", "ice40", "pnr", "pnr_up5k")
+PLACE_FLOWS = ("pnr", "pnr_up5k")
 AREA_FLOWS = ("generic", "xilinx", "ice40")
 
 
@@ -79,8 +85,9 @@ def _load(root):
         name, module, flows = f[0], f[1], f[2]
         if not re.fullmatch(r"[a-z][a-z0-9_]*", name):
             raise RegistryError(f"{where}: name '{name}': lower case letters, digits and '_', starting with a letter")
-        if name.endswith("_pnr"):
-            raise RegistryError(f"{where}: name '{name}': '_pnr' is the suffix of the placed designs' reports")
+        if name.endswith("_pnr") or name.endswith("_up5k"):
+            raise RegistryError(f"{where}: name '{name}': '_pnr' and '_up5k' are the suffixes of the placed "
+                                "designs' reports")
         if name in seen:
             raise RegistryError(f"{where}: name '{name}': already on line {seen[name]}")
         seen[name] = n
@@ -257,6 +264,14 @@ def synth_designs(root, names=None, flows=None):
         if wrapper:
             check_params(root, l, wrapper, wsrc, "its pin wrapper for the pnr flow")
             out.append(Design(l.name + "_pnr", wrapper, wsrc, ["pnr"], l.params))
+        if "pnr_up5k" in l.flows and "pnr_up5k" in flows:
+            w5 = l.module + "_sg48wrap"
+            w5src = synth_source(root, w5)
+            if not w5src:
+                raise RegistryError(f"{l.where}: flow pnr_up5k: no module {w5} in synth/*.v (the UP5K's SG48 "
+                                    "package has 39 user pins: the design is placed in that wrapper)")
+            check_params(root, l, w5, w5src, "its SG48 wrapper for the pnr_up5k flow")
+            out.append(Design(l.name + "_up5k", w5, w5src, ["pnr_up5k"], l.params))
     return out
 
 
@@ -290,8 +305,9 @@ def pcf_covers(netlist, pcf):
 # --- Reports (synth/reports/, written by scripts/synth.sh) -------------------------------------
 
 def report(root, flow, design):
-    """synth/reports/<flow>_<design>.txt (generic, xilinx, ice40) or nextpnr_<design>.log (pnr)."""
-    name = f"nextpnr_{design}.log" if flow == "pnr" else f"{flow}_{design}.txt"
+    """synth/reports/<flow>_<design>.txt (generic, xilinx, ice40) or nextpnr_<design>.log (pnr,
+    pnr_up5k)."""
+    name = f"nextpnr_{design}.log" if flow in PLACE_FLOWS else f"{flow}_{design}.txt"
     return os.path.join(root, "synth", "reports", name)
 
 

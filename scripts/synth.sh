@@ -7,11 +7,14 @@
 #                           parameters: reports <flow>_<name>.txt
 #   pnr                     the module in its pin wrapper <module>_pinwrap (synth/*.v), synth_ice40 and
 #                           nextpnr-ice40 on an HX8K (ct256): ice40_<name>_pnr.txt, nextpnr_<name>_pnr.log
+#   pnr_up5k                the module in its SG48 wrapper <module>_sg48wrap (synth/*.v), synth_ice40 and
+#                           nextpnr-ice40 on an iCE40 UP5K (sg48, pins unconstrained):
+#                           ice40_<name>_up5k.txt, nextpnr_<name>_up5k.log
 # and the summary table synth/reports/summary.md (scripts/synth_summary.py).
 # usage: scripts/synth.sh [-j N] [-d NAME[,NAME...]] [-f FLOW[,FLOW...]]
 #   -j N  runs N Yosys/nextpnr jobs in parallel (default 1)
 #   -d    only these registry lines (default: every line with a synthesis flow)
-#   -f    only these of their flows (generic, xilinx, ice40, pnr; default all of each line's)
+#   -f    only these of their flows (generic, xilinx, ice40, pnr, pnr_up5k; default all of each line's)
 #   The reports of what runs are replaced, the others kept, and the summary is rebuilt from every
 #   report present. Example: -d serial (the serial core: area on three targets and placed, ~1 minute).
 set -euo pipefail
@@ -68,7 +71,7 @@ rm -f "$build/failed"
 for d in "${designs[@]}"; do
   for f in ${FLOWS[$d]}; do
     case $f in
-      pnr) rm -f "$rep/ice40_$d.txt" "$rep/nextpnr_$d.log" "$build/$d.json" ;;
+      pnr | pnr_up5k) rm -f "$rep/ice40_$d.txt" "$rep/nextpnr_$d.log" "$build/$d.json" ;;
       *) rm -f "$rep/${f}_$d.txt" ;;
     esac
   done
@@ -89,19 +92,24 @@ run_yosys() {  # run_yosys FLOW DESIGN
   fi
   echo "yosys $flow $d: done"
 }
-run_pnr() {  # run_pnr DESIGN
-  local d=$1 pcf=$syn/acore_hx8k_ct256.pcf
+run_pnr() {  # run_pnr DESIGN [DEVICE]: DEVICE hx8k (default, ct256) or up5k (sg48)
+  local d=$1 dev=${2:-hx8k} pcf=$syn/acore_hx8k_ct256.pcf
   [ -e "$build/$d.json" ] || { echo "nextpnr $d: skipped (no iCE40 netlist)"; return 1; }
   # Pin constraints where the PCF places every port (the whole tops in their wrappers); the stage and
-  # shell wrappers and the 16-bit CORDIC are placed with their pins unconstrained.
-  local pins=(--pcf-allow-unconstrained)
-  if registry pcf-covers "$build/$d.json" "$pcf"; then pins=(--pcf "$pcf"); fi
-  if ! nextpnr-ice40 --hx8k --package ct256 --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
+  # shell wrappers and the 16-bit CORDIC are placed with their pins unconstrained, as is everything on
+  # the UP5K (the PCF is the HX8K board's).
+  local pins=(--pcf-allow-unconstrained) device=(--hx8k --package ct256)
+  if [ "$dev" = up5k ]; then
+    device=(--up5k --package sg48)
+  elif registry pcf-covers "$build/$d.json" "$pcf"; then
+    pins=(--pcf "$pcf")
+  fi
+  if ! nextpnr-ice40 "${device[@]}" --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
     "${pins[@]}" --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1; then
     # A design larger than the device is a measurement (the summary says "does not fit"), not a failure.
     if awk '/Info:[ \t]+[A-Z_0-9]+:[ \t]+[0-9]+\/[ \t]*[0-9]+/ { split($3, u, "/"); if (u[1] + 0 > $4 + 0) over = 1 }
             END { exit !over }' "$rep/nextpnr_$d.log"; then
-      echo "nextpnr $d: does not fit the HX8K (utilisation in synth/reports/nextpnr_$d.log)"; return 0
+      echo "nextpnr $d: does not fit the ${dev^^} (utilisation in synth/reports/nextpnr_$d.log)"; return 0
     fi
     echo "nextpnr $d: failed (see synth/reports/nextpnr_$d.log)"; touch "$build/failed"; return 1
   fi
@@ -125,6 +133,7 @@ for d in "${designs[@]}"; do
   for f in ${FLOWS[$d]}; do
     case $f in
       pnr) netlists+=("run_yosys ice40 $d"); places+=("run_pnr $d") ;;
+      pnr_up5k) netlists+=("run_yosys ice40 $d"); places+=("run_pnr $d up5k") ;;
       ice40) [[ " ${FLOWS[$d]} " == *" pnr "* ]] || tasks+=("run_yosys ice40 $d") ;;
       *) tasks+=("run_yosys $f $d") ;;
     esac

@@ -41,8 +41,12 @@ DESCRIPTIONS = {
     "stage_cordic_pnr": "stage: the top's CORDIC (18-bit, K=16), pin wrapper (P&R)",
     "serial": "acore_serial_top, serial core, default configuration",
     "serial_pnr": "acore_serial_top, default, in the pin wrapper (P&R)",
-    "cordic16_rom": "CORDIC alone, 16-bit (registry line cordic16), atan table as constants, inputs registered",
+    "cordic16_rom": "CORDIC alone, 16-bit (registry line cordic16), atan table as constants (ZTAB=1), inputs registered",
     "cordic16": "CORDIC alone, 16-bit, atan words on an input bus",
+    "cordic16_rom_pnr": "CORDIC alone, 16-bit, angle only, x/y loaded serially (pin wrapper, P&R)",
+    "cordic16_serial": "word-serial CORDIC, 16-bit (cordic16 configuration), atan words on an input bus",
+    "cordic16_serial_rom": "word-serial CORDIC, 16-bit, atan table as constants",
+    "cordic16_serial_rom_pnr": "word-serial CORDIC, 16-bit, atan constants, x/y loaded serially (pin wrapper, P&R)",
     "stage_fourier": "stage: acore_fourier_correct, K=21 harmonics, M=12 (area)",
     "stage_fourier_k4_pnr": "stage: acore_fourier_correct, K=4 harmonics, M=12, pin wrapper (P&R)",
     "apb_serial": "acore_apb, APB register shell around the serial core (default)",
@@ -60,7 +64,10 @@ FMAX_NOTES = {"default": "see P&R rows", "apb": "does not fit (as acore_top)"}
 
 
 def line_of(design):
-    return lines[design[:-len("_pnr")] if design.endswith("_pnr") else design]
+    for suffix in ("_pnr", "_up5k"):
+        if design.endswith(suffix):
+            return lines[design[:-len(suffix)]]
+    return lines[design]
 
 
 def timing(line):
@@ -70,15 +77,24 @@ def timing(line):
     if line.module == "acore_cordic16":
         k = registry.rtl_constants(root, "acore_cordic", lines["cordic16"].params)
         return k["LATENCY"] + 1, 1
+    if line.module == "acore_cordic16_serial":  # acore_cordic_serial at the cordic16_serial line's
+        k = registry.rtl_constants(root, "acore_cordic_serial", lines["cordic16_serial"].params)
+        return k["LATENCY"], k["CYCLES"]
     k = registry.rtl_constants(root, line.module, line.params)
     return k.get("LATENCY", "-"), k.get("CYCLES", 1)
 
 
-order = [d for d in DESCRIPTIONS if any(x.name == d for x in designs)]
-order += [x.name for x in designs if x.name not in DESCRIPTIONS]
+# The HX8K table: every design but the UP5K placements (their own section below).
+hx_designs = [x for x in designs if "pnr_up5k" not in x.flows]
+up5k_designs = [x for x in designs if "pnr_up5k" in x.flows]
+order = [d for d in DESCRIPTIONS if any(x.name == d for x in hx_designs)]
+order += [x.name for x in hx_designs if x.name not in DESCRIPTIONS]
 by_name = {x.name: x for x in designs}
 with concurrent.futures.ThreadPoolExecutor(2) as ex:
     times = dict(zip(order, ex.map(lambda d: timing(line_of(d)), order)))
+    # The shell's clocks per sample are its core's (the serial core's CYCLES, FOLD for acore_top).
+    up5k_times = dict(zip([x.name for x in up5k_designs],
+                          ex.map(lambda x: timing(line_of(x.name)), up5k_designs)))
 SERIAL_CYCLES = times["serial"][1] if "serial" in times else None
 
 print("# AngleCore synthesis summary\n")
@@ -186,16 +202,59 @@ if any(c and sh for _, c, sh in shell_rows):
               f"(see the critical path in synth/reports/nextpnr_apb_none_pnr.log).")
 
 c16 = cells(registry.report(root, "ice40", "cordic16_rom"))
-f16, _, _ = pnr(registry.placed_design(root, lines["cordic16_rom"]))
+c16w = cells(registry.report(root, "ice40", "cordic16_rom_pnr"))
+f16, lc16, _ = pnr(registry.placed_design(root, lines["cordic16_rom"]))
+c16s = cells(registry.report(root, "ice40", "cordic16_serial_rom_pnr"))
+f16s, lc16s, _ = pnr("cordic16_serial_rom_pnr")
+k16s = times.get("cordic16_serial_rom", (None, None))[1]
+acc = os.path.join(root, "synth", "reports", "cordic16_accuracy.txt")
+measured = open(acc).read().strip() if os.path.exists(acc) else "not measured (see synth/README.md)"
+m = re.search(r"RMS ([\d.]+) LSB, max ([\d.]+) LSB", measured)
+err = f"{m.group(2)} / {m.group(1)}" if m else "-"
 print("\n## 16-bit CORDIC targets\n")
 print("| target | required | measured |")
 print("|---|---|---|")
-print(f"| iCE40 LUT4 | <= 1600 | {s(c16, 'SB_LUT4')} |")
+print(f"| iCE40 LUT4 (pipelined, x/y loaded serially, angle only; module with magnitude output) | <= 1600 | "
+      f"{s(c16w, 'SB_LUT4')} ({lc16[0] if lc16 else '-'} LCs); {s(c16, 'SB_LUT4')} |")
 print(f"| Fmax on HX8K (nextpnr-ice40) | >= 150 MHz | {f'{f16:.1f} MHz' if f16 else '-'} |")
-acc = os.path.join(root, "synth", "reports", "cordic16_accuracy.txt")
-measured = open(acc).read().strip() if os.path.exists(acc) else "not measured (see synth/README.md)"
 print(f"| angle error vs double atan2, RMS / max; no overflow | <= 0.5 / 1 LSB | {measured} |")
-print("\nAccuracy: the C++ model (bit-exact to the RTL, tb/test_cordic16.cpp checks both) over every "
-      "input of the 16-bit square: `ACORE_CORDIC16_FULL=1 ACORE_CORDIC16_REPORT=synth/reports/"
+if c16s:
+    print(f"| word-serial CORDIC: iCE40 LUT4 (x/y loaded serially) | <= 700 | {s(c16s, 'SB_LUT4')} "
+          f"({lc16s[0] if lc16s else '-'} LCs) |")
+    print(f"| word-serial CORDIC: samples/s on HX8K | >= 3e6 | "
+          f"{f'{f16s:.1f} MHz / {k16s} clk = {f16s * 1e6 / k16s:.3g}' if f16s and k16s else '-'} |")
+print("\nAccuracy: the C++ model (bit-exact to both RTL CORDICs, tb/test_cordic16.cpp checks them) over every "
+      "input of the 16-bit square: `ACORE_C16_FULL=1 ACORE_CORDIC16_REPORT=synth/reports/"
       "cordic16_accuracy.txt build/tb/test_cordic16 --gtest_filter=*Accuracy*`; "
       "X/Y \"uses\" is the peak fraction of the RTL register range reached (no overflow: < 1).")
+print("\nBeside the 16-bit CORDICs measured the same way elsewhere (inputs loaded serially, iCE40 HX8K, "
+      "nextpnr; figures quoted, not re-measured here):\n")
+print("| CORDIC | LUT4 | Fmax | clk/sample | max error |")
+print("|---|---|---|---|---|")
+if c16w and f16:
+    print(f"| this project, pipelined (acore_cordic, cordic16) | {s(c16w, 'SB_LUT4')} | {f16:.1f} MHz | 1 | "
+          f"{m.group(2) if m else '-'} LSB |")
+if c16s and f16s:
+    print(f"| this project, word-serial (acore_cordic_serial) | {s(c16s, 'SB_LUT4')} | {f16s:.1f} MHz | {k16s} | "
+          f"{m.group(2) if m else '-'} LSB |")
+for row in (("ZipCPU topolar", "2792", "118 MHz", "1", "5.8 LSB"),
+            ("ZipCPU topolar, <= 1 LSB setting", "4800", "105 MHz", "1", "<= 1 LSB"),
+            ("pipelined angle-only prototype", "1625", "132-136 MHz", "1", "0.98 LSB"),
+            ("word-serial angle-only prototype", "649", "71 MHz", "19", "0.9 LSB"),
+            ("ZipCPU seqpolar", "900", "65 MHz", "-", "-")):
+    print("| " + " | ".join(row) + " |")
+
+if up5k_designs:
+    print("\n## The estimator with the register shell on an iCE40 UP5K (sg48)\n")
+    print("Placed and routed by nextpnr-ice40 `--up5k --package sg48` (5280 logic cells, 30 block RAMs), "
+          "in the SG48 wrapper synth/acore_apb_sg48wrap.v (wide ports through shift registers).\n")
+    print("| design | iCE40 LUT4 / DFF / BRAM | UP5K LCs | Fmax UP5K | clk/sample | samples/s |")
+    print("|---|---|---|---|---|---|")
+    for x in up5k_designs:
+        line = line_of(x.name)
+        c = cells(registry.report(root, "ice40", x.name))
+        fm, lc, why = pnr(x.name)
+        cps = up5k_times[x.name][1]
+        lcs = f"{lc[0]}/{lc[1]} ({100.0 * lc[0] / lc[1]:.1f} %)" if lc else "-"
+        print(f"| {line.module} {line.param_text()} | {s(c, 'SB_LUT4')} / {s(c, 'SB_DFF.*')} / {s(c, 'SB_RAM40_4K')} | "
+              f"{lcs} | {f'{fm:.1f} MHz' if fm else why} | {cps} | {f'{fm * 1e6 / cps:.3g}' if fm else '-'} |")
