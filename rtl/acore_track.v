@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: MIT
+// acore_track: a type-II tracking observer on the estimator's angle stream (model/ip/stages/
+// tracker.cpp, bit for bit): tracked angle, velocity, signed turn count, loss of tracking, and the
+// angle extrapolated over the datapath's latency plus a LEAD register (dynamic angle-error
+// compensation). Shift gains only: no multiplier.
+//
+// Scales. The loop state holds the angle with FRAC_W fraction bits below the input LSB, as an
+// unsigned P_W = ANGLE_W + FRAC_W bit turn fraction, extended above by a TURN_W-bit signed turn
+// count (one (TURN_W + P_W)-bit accumulator, so the turn count and the angle cannot disagree).
+// The velocity v is a P_W-bit signed word in the same LSB: 2^-P_W turns per sample (the default
+// P_W = 41: 4.5e-13 turn/sample; at 1 MS/s one LSB is 2.7e-5 rpm).
+//
+// Loop (one accepted sample theta, bandwidth code k = bw_i clamped to K_MIN..K_MAX):
+//   pred = phi + v                                 (the prediction for this sample)
+//   e    = wrap(theta * 2^FRAC_W - pred)           (signed P_W bits, half a turn either way)
+//   phi  = pred + (e >>> k)                        (gain kp = 2^-k)
+//   v    = v + (e >>> (2k + 1))                    (gain ki = 2^-(2k+1) = kp^2 / 2)
+// ki = kp^2 / 2 makes the equivalent continuous loop's damping 1/sqrt(2) at every code, with
+// natural frequency wn = 2^-(k + 1/2) rad/sample (the velocity output's -3 dB frequency; the
+// angle's is 2.058 wn). The first sample after reset loads phi = theta, v = 0, turns = 0.
+// Zero steady-state error at constant speed (the double integrator of a type-II loop).
+//
+// Outputs (registered, one output stage):
+//   out_angle_o       round(phi) to ANGLE_W bits (the tracked angle, unsigned turn fraction)
+//   out_turns_o       the turn count of that rounded angle (signed, wraps at TURN_W bits)
+//   out_velocity_o    v (signed, P_W bits, 2^-P_W turns per sample)
+//   out_angle_comp_o  round(phi + v * D) to ANGLE_W bits, D = LATENCY + lead_i / 2^LEAD_F samples
+//                     (v * D on shifts and adders over D's bits; floor at 2^-P_W turn)
+//   out_lot_o         |e| > lot_thr_i (input LSBs) for this sample: loss of tracking
+//
+// Register inputs (static while samples flow; the model refuses values out of range, the RTL
+// clamps bw_i into K_MIN..K_MAX so that no register value makes the loop unstable):
+//   bw_i       [3:0]          the bandwidth code k (K_MIN = 2 .. K_MAX = (FRAC_W - 1) / 2)
+//   lead_i     [LEAD_W-1:0]   LEAD, unsigned, LEAD_F fraction bits (samples)
+//   lot_thr_i  [ANGLE_W-2:0]  the loss-of-tracking threshold in input angle LSBs
+//
+// Streaming: in_valid_i/in_ready_o take a sample; out_valid_o/out_ready_i give its result two
+// clocks later (loop register, output register). The pipeline stalls as a whole when the output is
+// held: in_ready_o = !rst_i && !(out_valid_o && !out_ready_i). rst_i is synchronous, active high.
+`resetall
+`default_nettype none
+
+module acore_track #(
+  // Input and output angle width (unsigned turn fraction).
+  parameter integer ANGLE_W = 16,
+  // Fraction bits of the loop state below the input LSB (bounds K_MAX = (FRAC_W - 1) / 2).
+  parameter integer FRAC_W = 25,
+  // Turn counter width (signed).
+  parameter integer TURN_W = 16,
+  // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock).
+  parameter integer LATENCY = 0,
+  // LEAD register width and its fraction bits.
+  parameter integer LEAD_W = 8,
+  parameter integer LEAD_F = 4
+) (
+  input  wire                      clk_i,
+  input  wire                      rst_i,
+  // The angle stream in (the estimator's angle_o).
+  input  wire                      in_valid_i,
+  output wire                      in_ready_o,
+  input  wire [ANGLE_W-1:0]        in_angle_i,
+  // Registers.
+  input  wire [3:0]                bw_i,
+  input  wire [LEAD_W-1:0]         lead_i,
+  input  wire [ANGLE_W-2:0]        lot_thr_i,
+  // The tracked stream out.
+  output reg                       out_valid_o,
+  input  wire                      out_ready_i,
+  output reg  [ANGLE_W-1:0]        out_angle_o,
+  output reg  [ANGLE_W-1:0]        out_angle_comp_o,
+  output reg  [ANGLE_W+FRAC_W-1:0] out_velocity_o,
+  output reg  [TURN_W-1:0]         out_turns_o,
+  output reg                       out_lot_o
+);
+
+  localparam integer P_W = ANGLE_W + FRAC_W;
+  localparam integer X_W = TURN_W + P_W;
+  localparam integer K_MIN = 2;
+  localparam integer K_MAX = (FRAC_W - 1) / 2;
+  // D = LATENCY + lead / 2^LEAD_F in LEAD_F fraction bits: D_W bits hold its largest value.
+  localparam integer D_W = LEAD_W + 10;
+  localparam integer M_W = P_W + LEAD_F;
+
+  acore_check #(.OK(ANGLE_W >= 8 && ANGLE_W <= 24), .VALUE(ANGLE_W),
+    .MSG("illegal parameter: ANGLE_W must be 8..24"))
+    ANGLE_W_must_be_8_to_24 ();
+  acore_check #(.OK(FRAC_W >= 5 && FRAC_W <= 31), .VALUE(FRAC_W),
+    .MSG("illegal parameter: FRAC_W must be 5..31"))
+    FRAC_W_must_be_5_to_31 ();
+  acore_check #(.OK(ANGLE_W + FRAC_W <= 48), .VALUE(ANGLE_W + FRAC_W),
+    .MSG("illegal parameter: ANGLE_W+FRAC_W must be <= 48"))
+    ANGLE_W_plus_FRAC_W_must_be_at_most_48 ();
+  acore_check #(.OK(TURN_W >= 2 && TURN_W <= 32), .VALUE(TURN_W),
+    .MSG("illegal parameter: TURN_W must be 2..32"))
+    TURN_W_must_be_2_to_32 ();
+  acore_check #(.OK(LATENCY >= 0 && LATENCY <= 255), .VALUE(LATENCY),
+    .MSG("illegal parameter: LATENCY must be 0..255"))
+    LATENCY_must_be_0_to_255 ();
+  acore_check #(.OK(LEAD_W >= 1 && LEAD_W <= 12), .VALUE(LEAD_W),
+    .MSG("illegal parameter: LEAD_W must be 1..12"))
+    LEAD_W_must_be_1_to_12 ();
+  acore_check #(.OK(LEAD_F >= 0 && LEAD_F <= LEAD_W), .VALUE(LEAD_F),
+    .MSG("illegal parameter: LEAD_F must be 0..LEAD_W"))
+    LEAD_F_must_be_0_to_LEAD_W ();
+
+  // ---- loop ----
+  wire advance = !out_valid_o || out_ready_i;
+  assign in_ready_o = !rst_i && advance;
+  wire take = in_valid_i && in_ready_o;
+
+  reg [X_W-1:0] x_q;      // {turns, phi}
+  reg [P_W-1:0] v_q;      // velocity, signed
+  reg           started_q;
+  reg           a_valid_q;
+  reg           lot_q;
+
+  localparam [3:0] K_MIN4 = K_MIN[3:0];
+  localparam [3:0] K_MAX4 = K_MAX[3:0];
+  wire [3:0] k = (bw_i < K_MIN4) ? K_MIN4 : (bw_i > K_MAX4) ? K_MAX4 : bw_i;
+  wire [4:0] k2 = {k, 1'b1};  // 2k + 1
+
+  wire [X_W-1:0] pred = x_q + {{TURN_W{v_q[P_W-1]}}, v_q};
+  wire [P_W-1:0] theta_s = {in_angle_i, {FRAC_W{1'b0}}};
+  wire signed [P_W-1:0] e = $signed(theta_s - pred[P_W-1:0]);
+  wire signed [P_W-1:0] e_p = e >>> k;
+  wire signed [P_W-1:0] e_i = e >>> k2;
+  wire [X_W-1:0] x_next = pred + {{TURN_W{e_p[P_W-1]}}, e_p};
+  wire [P_W-1:0] v_next = v_q + e_i;
+  wire [P_W-1:0] thr_s = {1'b0, lot_thr_i, {FRAC_W{1'b0}}};
+  wire lot_next = (e > $signed(thr_s)) || (e < -$signed(thr_s));
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      x_q <= {X_W{1'b0}};
+      v_q <= {P_W{1'b0}};
+      started_q <= 1'b0;
+      a_valid_q <= 1'b0;
+      lot_q <= 1'b0;
+    end else if (advance) begin
+      a_valid_q <= take;
+      if (take) begin
+        started_q <= 1'b1;
+        if (!started_q) begin
+          x_q <= {{TURN_W{1'b0}}, theta_s};
+          v_q <= {P_W{1'b0}};
+          lot_q <= 1'b0;
+        end else begin
+          x_q <= x_next;
+          v_q <= v_next;
+          lot_q <= lot_next;
+        end
+      end
+    end
+  end
+
+  // ---- outputs: rounding and compensation from the loop registers ----
+  localparam integer LAT_D = LATENCY * (2 ** LEAD_F);
+  wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};
+  // v * d modulo 2^M_W on shifts and adders (one term per bit of d).
+  wire [M_W-1:0] v_ext = {{LEAD_F{v_q[P_W-1]}}, v_q};
+  reg  [M_W-1:0] prod;
+  integer j;
+  always @* begin
+    prod = {M_W{1'b0}};
+    for (j = 0; j < D_W; j = j + 1)
+      if (d[j]) prod = prod + (v_ext << j);
+  end
+  wire [P_W-1:0] shift_d = prod[M_W-1:LEAD_F];
+  wire [P_W-1:0] half = {{ANGLE_W{1'b0}}, 1'b1, {(FRAC_W - 1){1'b0}}};
+  // Their low FRAC_W bits are rounded away.
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [X_W-1:0] x_round = x_q + {{TURN_W{1'b0}}, half};
+  wire [P_W-1:0] comp_round = x_q[P_W-1:0] + shift_d + half;
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      out_valid_o <= 1'b0;
+      out_angle_o <= {ANGLE_W{1'b0}};
+      out_angle_comp_o <= {ANGLE_W{1'b0}};
+      out_velocity_o <= {P_W{1'b0}};
+      out_turns_o <= {TURN_W{1'b0}};
+      out_lot_o <= 1'b0;
+    end else if (advance) begin
+      out_valid_o <= a_valid_q;
+      if (a_valid_q) begin
+        out_angle_o <= x_round[P_W-1:FRAC_W];
+        out_turns_o <= x_round[X_W-1:P_W];
+        out_angle_comp_o <= comp_round[P_W-1:FRAC_W];
+        out_velocity_o <= v_q;
+        out_lot_o <= lot_q;
+      end
+    end
+  end
+
+endmodule
+
+`resetall
