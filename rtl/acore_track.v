@@ -93,6 +93,9 @@ module acore_track #(
   acore_check #(.OK(TURN_W >= 2 && TURN_W <= 32), .VALUE(TURN_W),
     .MSG("illegal parameter: TURN_W must be 2..32"))
     TURN_W_must_be_2_to_32 ();
+  acore_check #(.OK(TURN_W + ANGLE_W + FRAC_W <= 64), .VALUE(TURN_W + ANGLE_W + FRAC_W),
+    .MSG("illegal parameter: TURN_W+ANGLE_W+FRAC_W must be <= 64"))
+    TURN_W_plus_ANGLE_W_plus_FRAC_W_must_be_at_most_64 ();
   acore_check #(.OK(LATENCY >= 0 && LATENCY <= 255), .VALUE(LATENCY),
     .MSG("illegal parameter: LATENCY must be 0..255"))
     LATENCY_must_be_0_to_255 ();

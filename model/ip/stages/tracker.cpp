@@ -35,6 +35,8 @@ void TrackConfig::validate() const {
   require(angle_w + frac_w <= 48,
           "ANGLE_W+FRAC_W must be <= 48 (is " + std::to_string(angle_w + frac_w) + ")");
   require(turn_w >= 2 && turn_w <= 32, "TURN_W must be 2..32 (is " + std::to_string(turn_w) + ")");
+  require(turn_w + angle_w + frac_w <= 64, "TURN_W+ANGLE_W+FRAC_W must be <= 64 (is " +
+                                               std::to_string(turn_w + angle_w + frac_w) + ")");
   require(latency >= 0 && latency <= 255,
           "LATENCY must be 0..255 (is " + std::to_string(latency) + ")");
   require(lead_w >= 1 && lead_w <= 12, "LEAD_W must be 1..12 (is " + std::to_string(lead_w) + ")");

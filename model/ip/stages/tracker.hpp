@@ -20,7 +20,7 @@ namespace acore {
 struct TrackConfig {
   int angle_w = 16;  // input/output angle width
   int frac_w = 25;   // fraction bits below the input LSB
-  int turn_w = 16;   // turn counter width (signed)
+  int turn_w = 16;   // turn counter width (signed); turn_w + angle_w + frac_w <= 64
   int latency = 0;   // whole samples compensated
   int lead_w = 8;    // LEAD register width
   int lead_f = 4;    // LEAD fraction bits
