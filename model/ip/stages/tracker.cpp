@@ -114,6 +114,15 @@ int track_code_for_bandwidth(double hz, double sample_rate, const TrackConfig& c
   return best;
 }
 
+std::vector<TrackOutput> track_codes(const std::vector<uint32_t>& codes, const TrackConfig& c,
+                                     const TrackRegs& r) {
+  Tracker t(c, r);
+  std::vector<TrackOutput> out;
+  out.reserve(codes.size());
+  for (uint32_t code : codes) out.push_back(t.step(code));
+  return out;
+}
+
 double track_velocity_turns(int64_t v, const TrackConfig& c) {
   return std::ldexp(static_cast<double>(v), -c.p_w());
 }

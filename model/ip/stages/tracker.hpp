@@ -13,6 +13,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace acore {
 
@@ -72,6 +73,10 @@ double track_bandwidth_hz(int k, double sample_rate);  // the angle's -3 dB freq
 // The code whose bandwidth is nearest to hz (in log frequency); throws InputError when hz is not
 // positive or lies outside the codes' range by more than a factor of sqrt(2).
 int track_code_for_bandwidth(double hz, double sample_rate, const TrackConfig& c);
+
+// The observer over a whole stream of ANGLE_W-bit codes (one Tracker, from its first sample).
+std::vector<TrackOutput> track_codes(const std::vector<uint32_t>& codes, const TrackConfig& c,
+                                     const TrackRegs& r);
 
 // Velocity in turns per sample of a velocity word.
 double track_velocity_turns(int64_t v, const TrackConfig& c);
