@@ -20,7 +20,7 @@
 // angle's is 2.058 wn). The first sample after reset loads phi = theta, v = 0, turns = 0.
 // Zero steady-state error at constant speed (the double integrator of a type-II loop).
 //
-// Outputs (registered, one output stage):
+// Outputs (registered):
 //   out_angle_o       round(phi) to ANGLE_W bits (the tracked angle, unsigned turn fraction)
 //   out_turns_o       the turn count of that rounded angle (signed, wraps at TURN_W bits)
 //   out_velocity_o    v (signed, P_W bits, 2^-P_W turns per sample)
@@ -34,8 +34,8 @@
 //   lead_i     [LEAD_W-1:0]   LEAD, unsigned, LEAD_F fraction bits (samples)
 //   lot_thr_i  [ANGLE_W-2:0]  the loss-of-tracking threshold in input angle LSBs
 //
-// Streaming: in_valid_i/in_ready_o take a sample; out_valid_o/out_ready_i give its result two
-// clocks later (loop register, output register). The pipeline stalls as a whole when the output is
+// Streaming: in_valid_i/in_ready_o take a sample; out_valid_o/out_ready_i give its result three
+// clocks later (loop register; rounding and v * D in partial sums; output register). The pipeline stalls as a whole when the output is
 // held: in_ready_o = !rst_i && !(out_valid_o && !out_ready_i). rst_i is synchronous, active high.
 `resetall
 `default_nettype none
@@ -156,24 +156,58 @@ module acore_track #(
     end
   end
 
-  // ---- outputs: rounding and compensation from the loop registers ----
+  // ---- product stage: v * D in G partial sums of GS terms each, registered ----
+  // v * d modulo 2^M_W on shifts and adders, one term per bit of d, summed in groups of GS terms
+  // (a chain of GS adders per group) so that no clock period holds the whole D_W-term sum.
   localparam integer LAT_D = LATENCY * (2 ** LEAD_F);
+  localparam integer GS = 5;
+  localparam integer G = (D_W + GS - 1) / GS;
   wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};
-  // v * d modulo 2^M_W on shifts and adders (one term per bit of d).
   wire [M_W-1:0] v_ext = {{LEAD_F{v_q[P_W-1]}}, v_q};
-  reg  [M_W-1:0] prod;
+  reg  [M_W-1:0] group_sum [0:G-1];
   integer j;
   always @* begin
-    prod = {M_W{1'b0}};
+    for (j = 0; j < G; j = j + 1) group_sum[j] = {M_W{1'b0}};
     for (j = 0; j < D_W; j = j + 1)
-      if (d[j]) prod = prod + (v_ext << j);
+      if (d[j]) group_sum[j / GS] = group_sum[j / GS] + (v_ext << j);
   end
-  wire [P_W-1:0] shift_d = prod[M_W-1:LEAD_F];
   wire [P_W-1:0] half = {{ANGLE_W{1'b0}}, 1'b1, {(FRAC_W - 1){1'b0}}};
-  // Their low FRAC_W bits are rounded away.
+
+  reg           b_valid_q;
+  // {turns, phi} + half: the rounded angle and its turn count (the low FRAC_W bits rounded away).
   /* verilator lint_off UNUSEDSIGNAL */
   wire [X_W-1:0] x_round = x_q + {{TURN_W{1'b0}}, half};
-  wire [P_W-1:0] comp_round = x_q[P_W-1:0] + shift_d + half;
+  /* verilator lint_on UNUSEDSIGNAL */
+  reg [TURN_W+ANGLE_W-1:0] b_round_q;
+  reg [P_W-1:0] b_comp_q;    // phi + half, to which v * D is added
+  reg [P_W-1:0] b_v_q;
+  reg           b_lot_q;
+  reg [M_W-1:0] b_group_q [0:G-1];
+  integer g;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      b_valid_q <= 1'b0;
+    end else if (advance) begin
+      b_valid_q <= a_valid_q;
+      if (a_valid_q) begin
+        b_round_q <= x_round[X_W-1:FRAC_W];
+        b_comp_q <= x_q[P_W-1:0] + half;
+        b_v_q <= v_q;
+        b_lot_q <= lot_q;
+        for (g = 0; g < G; g = g + 1) b_group_q[g] <= group_sum[g];
+      end
+    end
+  end
+
+  // ---- output stage ----
+  reg [M_W-1:0] prod;
+  always @* begin
+    prod = {M_W{1'b0}};
+    for (j = 0; j < G; j = j + 1) prod = prod + b_group_q[j];
+  end
+  // Its low FRAC_W bits are rounded away.
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [P_W-1:0] comp_round = b_comp_q + prod[M_W-1:LEAD_F];
   /* verilator lint_on UNUSEDSIGNAL */
 
   always @(posedge clk_i) begin
@@ -185,13 +219,13 @@ module acore_track #(
       out_turns_o <= {TURN_W{1'b0}};
       out_lot_o <= 1'b0;
     end else if (advance) begin
-      out_valid_o <= a_valid_q;
-      if (a_valid_q) begin
-        out_angle_o <= x_round[P_W-1:FRAC_W];
-        out_turns_o <= x_round[X_W-1:P_W];
+      out_valid_o <= b_valid_q;
+      if (b_valid_q) begin
+        out_angle_o <= b_round_q[ANGLE_W-1:0];
+        out_turns_o <= b_round_q[TURN_W+ANGLE_W-1:ANGLE_W];
         out_angle_comp_o <= comp_round[P_W-1:FRAC_W];
-        out_velocity_o <= v_q;
-        out_lot_o <= lot_q;
+        out_velocity_o <= b_v_q;
+        out_lot_o <= b_lot_q;
       end
     end
   end
