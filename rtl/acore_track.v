@@ -35,8 +35,10 @@
 //   lot_thr_i  [ANGLE_W-2:0]  the loss-of-tracking threshold in input angle LSBs
 //
 // Streaming: in_valid_i/in_ready_o take a sample; out_valid_o/out_ready_i give its result three
-// clocks later (loop register; rounding and v * D in partial sums; output register). The pipeline stalls as a whole when the output is
-// held: in_ready_o = !rst_i && !(out_valid_o && !out_ready_i). rst_i is synchronous, active high.
+// clocks later (loop register; rounding and v * D in partial sums; output register), four with
+// LOOP_CLOCKS = 2, which also keeps in_ready_o low for the clock after a sample is taken. The pipeline stalls as a whole when the output is
+// held: in_ready_o = !rst_i && !(out_valid_o && !out_ready_i) (&& not the update clock with
+// LOOP_CLOCKS = 2). rst_i is synchronous, active high.
 `resetall
 `default_nettype none
 
@@ -51,7 +53,10 @@ module acore_track #(
   parameter integer LATENCY = 0,
   // LEAD register width and its fraction bits.
   parameter integer LEAD_W = 8,
-  parameter integer LEAD_F = 4
+  parameter integer LEAD_F = 4,
+  // Clocks of the loop update: 1 (a sample every clock) or 2 (a sample every other clock at most,
+  // a shorter clock period).
+  parameter integer LOOP_CLOCKS = 1
 ) (
   input  wire                      clk_i,
   input  wire                      rst_i,
@@ -96,6 +101,9 @@ module acore_track #(
   acore_check #(.OK(TURN_W + ANGLE_W + FRAC_W <= 64), .VALUE(TURN_W + ANGLE_W + FRAC_W),
     .MSG("illegal parameter: TURN_W+ANGLE_W+FRAC_W must be <= 64"))
     TURN_W_plus_ANGLE_W_plus_FRAC_W_must_be_at_most_64 ();
+  acore_check #(.OK(LOOP_CLOCKS == 1 || LOOP_CLOCKS == 2), .VALUE(LOOP_CLOCKS),
+    .MSG("illegal parameter: LOOP_CLOCKS must be 1 or 2"))
+    LOOP_CLOCKS_must_be_1_or_2 ();
   acore_check #(.OK(LATENCY >= 0 && LATENCY <= 255), .VALUE(LATENCY),
     .MSG("illegal parameter: LATENCY must be 0..255"))
     LATENCY_must_be_0_to_255 ();
@@ -107,8 +115,14 @@ module acore_track #(
     LEAD_F_must_be_0_to_LEAD_W ();
 
   // ---- loop ----
+  // LOOP_CLOCKS = 1: the whole update in the clock that takes the sample. LOOP_CLOCKS = 2: the
+  // error in that clock (registered with the prediction), the update in the next; the observer then
+  // takes a sample every other clock at most (in_ready_o low in the update clock), which a folded
+  // estimator (FOLD >= 2 clocks a sample) never notices, and its clock is not bounded by the
+  // prediction-error-update chain of one clock.
   wire advance = !out_valid_o || out_ready_i;
-  assign in_ready_o = !rst_i && advance;
+  reg  busy_q;  // LOOP_CLOCKS = 2: the update clock of the sample taken last
+  assign in_ready_o = !rst_i && advance && !busy_q;
   wire take = in_valid_i && in_ready_o;
 
   reg [X_W-1:0] x_q;      // {turns, phi}
@@ -122,15 +136,24 @@ module acore_track #(
   wire [3:0] k = (bw_i < K_MIN4) ? K_MIN4 : (bw_i > K_MAX4) ? K_MAX4 : bw_i;
   wire [4:0] k2 = {k, 1'b1};  // 2k + 1
 
-  wire [X_W-1:0] pred = x_q + {{TURN_W{v_q[P_W-1]}}, v_q};
+  // The prediction and the error; the first sample after reset loads phi = theta (error 0; x_q
+  // and v_q are 0 then).
   wire [P_W-1:0] theta_s = {in_angle_i, {FRAC_W{1'b0}}};
+  wire [X_W-1:0] pred = started_q ? x_q + {{TURN_W{v_q[P_W-1]}}, v_q} : {{TURN_W{1'b0}}, theta_s};
   wire signed [P_W-1:0] e = $signed(theta_s - pred[P_W-1:0]);
-  wire signed [P_W-1:0] e_p = e >>> k;
-  wire signed [P_W-1:0] e_i = e >>> k2;
-  wire [X_W-1:0] x_next = pred + {{TURN_W{e_p[P_W-1]}}, e_p};
-  wire [P_W-1:0] v_next = v_q + e_i;
   wire [P_W-1:0] thr_s = {1'b0, lot_thr_i, {FRAC_W{1'b0}}};
   wire lot_next = (e > $signed(thr_s)) || (e < -$signed(thr_s));
+
+  // The update from a prediction and its error (this clock's, or the registered ones).
+  reg [X_W-1:0] pred_q;
+  reg [P_W-1:0] e_q;
+  wire [X_W-1:0] u_pred = (LOOP_CLOCKS == 2) ? pred_q : pred;
+  wire signed [P_W-1:0] u_e = (LOOP_CLOCKS == 2) ? $signed(e_q) : e;
+  wire signed [P_W-1:0] e_p = u_e >>> k;
+  wire signed [P_W-1:0] e_i = u_e >>> k2;
+  wire [X_W-1:0] x_next = u_pred + {{TURN_W{e_p[P_W-1]}}, e_p};
+  wire [P_W-1:0] v_next = v_q + e_i;
+  wire update = (LOOP_CLOCKS == 2) ? busy_q : take;
 
   always @(posedge clk_i) begin
     if (rst_i) begin
@@ -139,19 +162,19 @@ module acore_track #(
       started_q <= 1'b0;
       a_valid_q <= 1'b0;
       lot_q <= 1'b0;
+      busy_q <= 1'b0;
     end else if (advance) begin
-      a_valid_q <= take;
+      a_valid_q <= update;
+      busy_q <= (LOOP_CLOCKS == 2) && take;
       if (take) begin
         started_q <= 1'b1;
-        if (!started_q) begin
-          x_q <= {{TURN_W{1'b0}}, theta_s};
-          v_q <= {P_W{1'b0}};
-          lot_q <= 1'b0;
-        end else begin
-          x_q <= x_next;
-          v_q <= v_next;
-          lot_q <= lot_next;
-        end
+        lot_q <= started_q && lot_next;
+        pred_q <= pred;
+        e_q <= e;
+      end
+      if (update) begin
+        x_q <= x_next;
+        v_q <= v_next;
       end
     end
   end

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The tracking observer (rtl/acore_track.v) against the model (model/ip/stages/tracker.cpp) bit for
-// bit, in the registry's parameter sets Verilated by tb/CMakeLists.txt (lines track, track_a20):
+// bit, in the registry's parameter sets Verilated by tb/CMakeLists.txt (lines track, track_a20,
+// track_l2: the loop over two clocks, the same outputs):
 // every output word (angle, compensated angle, velocity, turns, LOT) of every sample, with random
 // input gaps and output stalls, on an angle stream that accelerates, reverses, carries noise and
 // jumps (LOT raised and cleared), at several bandwidth codes, LEAD and threshold values, with
@@ -16,6 +17,7 @@
 
 #include "Vtrack.h"
 #include "Vtrack_a20.h"
+#include "Vtrack_l2.h"
 #include "stages/tracker.hpp"
 
 namespace acore {
@@ -127,6 +129,7 @@ void run(const TrackConfig& c, uint64_t seed) {
 
 TEST(Track, RtlEqualsModel) { run<Vtrack>(ACORE_TRACK_CONFIG(TRACK), 1); }
 TEST(Track, RtlEqualsModelA20) { run<Vtrack_a20>(ACORE_TRACK_CONFIG(TRACK_A20), 2); }
+TEST(Track, RtlEqualsModelLoop2) { run<Vtrack_l2>(ACORE_TRACK_CONFIG(TRACK_L2), 3); }
 
 }  // namespace
 }  // namespace acore
