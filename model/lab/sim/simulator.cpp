@@ -336,7 +336,10 @@ TrajectoryModel::TrajectoryModel(const Trajectory& tr, size_t samples) : tr_(tr)
 }
 
 double trajectory_theta(const Trajectory& tr, double v0, double v1, double duration, double t) {
-  double turns = v0 * t;
+  // Constant speed ("turn" off its grid, "constant"), rounded as it always was.
+  if (tr.kind != "ramp" && tr.kind != "reversal" && tr.kind != "step" && tr.kind != "ripple")
+    return tr.theta0_rad + 2 * kPi * v0 * t;
+  double turns = 0;
   if (tr.kind == "ramp") {
     turns = v0 * t + (v1 - v0) * t * t / (2 * duration);
   } else if (tr.kind == "reversal") {
