@@ -24,7 +24,7 @@
 //   out_angle_o       round(phi) to ANGLE_W bits (the tracked angle, unsigned turn fraction)
 //   out_turns_o       the turn count of that rounded angle (signed, wraps at TURN_W bits)
 //   out_velocity_o    v (signed, P_W bits, 2^-P_W turns per sample)
-//   out_angle_comp_o  round(phi + v * D) to ANGLE_W bits, D = LATENCY + lead_i / 2^LEAD_F samples
+//   out_angle_comp_o  round(phi + v * D) to ANGLE_W bits, D = COMP_LATENCY + lead_i / 2^LEAD_F samples
 //                     (v * D on shifts and adders over D's bits; floor at 2^-P_W turn)
 //   out_lot_o         |e| > lot_thr_i (input LSBs) for this sample: loss of tracking
 //
@@ -50,7 +50,7 @@ module acore_track #(
   // Turn counter width (signed).
   parameter integer TURN_W = 16,
   // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock).
-  parameter integer LATENCY = 0,
+  parameter integer COMP_LATENCY = 0,
   // LEAD register width and its fraction bits.
   parameter integer LEAD_W = 8,
   parameter integer LEAD_F = 4,
@@ -78,11 +78,15 @@ module acore_track #(
   output reg                       out_lot_o
 );
 
+  // The block's own pipeline, as the other modules state it: LATENCY clocks from a sample taken to
+  // its result on the output (no stall), CYCLES clocks a sample at full rate.
+  localparam integer LATENCY = 2 + LOOP_CLOCKS;
+  localparam integer CYCLES = LOOP_CLOCKS;
   localparam integer P_W = ANGLE_W + FRAC_W;
   localparam integer X_W = TURN_W + P_W;
   localparam integer K_MIN = 2;
   localparam integer K_MAX = (FRAC_W - 1) / 2;
-  // D = LATENCY + lead / 2^LEAD_F in LEAD_F fraction bits: D_W bits hold its largest value.
+  // D = COMP_LATENCY + lead / 2^LEAD_F in LEAD_F fraction bits: D_W bits hold its largest value.
   localparam integer D_W = LEAD_W + 10;
   localparam integer M_W = P_W + LEAD_F;
 
@@ -104,9 +108,9 @@ module acore_track #(
   acore_check #(.OK(LOOP_CLOCKS == 1 || LOOP_CLOCKS == 2), .VALUE(LOOP_CLOCKS),
     .MSG("illegal parameter: LOOP_CLOCKS must be 1 or 2"))
     LOOP_CLOCKS_must_be_1_or_2 ();
-  acore_check #(.OK(LATENCY >= 0 && LATENCY <= 255), .VALUE(LATENCY),
-    .MSG("illegal parameter: LATENCY must be 0..255"))
-    LATENCY_must_be_0_to_255 ();
+  acore_check #(.OK(COMP_LATENCY >= 0 && COMP_LATENCY <= 255), .VALUE(COMP_LATENCY),
+    .MSG("illegal parameter: COMP_LATENCY must be 0..255"))
+    COMP_LATENCY_must_be_0_to_255 ();
   acore_check #(.OK(LEAD_W >= 1 && LEAD_W <= 12), .VALUE(LEAD_W),
     .MSG("illegal parameter: LEAD_W must be 1..12"))
     LEAD_W_must_be_1_to_12 ();
@@ -182,7 +186,7 @@ module acore_track #(
   // ---- product stage: v * D in G partial sums of GS terms each, registered ----
   // v * d modulo 2^M_W on shifts and adders, one term per bit of d, summed in groups of GS terms
   // (a chain of GS adders per group) so that no clock period holds the whole D_W-term sum.
-  localparam integer LAT_D = LATENCY * (2 ** LEAD_F);
+  localparam integer LAT_D = COMP_LATENCY * (2 ** LEAD_F);
   localparam integer GS = 5;
   localparam integer G = (D_W + GS - 1) / GS;
   wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};

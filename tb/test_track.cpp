@@ -23,10 +23,10 @@
 namespace acore {
 namespace {
 
-#define ACORE_TRACK_CONFIG(S)                                                         \
-  TrackConfig {                                                                       \
-    ACORE_##S##_ANGLE_W, ACORE_##S##_FRAC_W, ACORE_##S##_TURN_W, ACORE_##S##_LATENCY, \
-        ACORE_##S##_LEAD_W, ACORE_##S##_LEAD_F                                        \
+#define ACORE_TRACK_CONFIG(S)                                                              \
+  TrackConfig {                                                                            \
+    ACORE_##S##_ANGLE_W, ACORE_##S##_FRAC_W, ACORE_##S##_TURN_W, ACORE_##S##_COMP_LATENCY, \
+        ACORE_##S##_LEAD_W, ACORE_##S##_LEAD_F                                             \
   }
 
 uint64_t mask(int w) { return (uint64_t{1} << w) - 1; }

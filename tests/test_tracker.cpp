@@ -164,7 +164,7 @@ TEST(Tracker, TurnsFollowTheAngleBothWays) {
 // The compensated angle of an input delayed by L samples is the undelayed angle.
 TEST(Tracker, LatencyCompensationRemovesTheLag) {
   TrackConfig c = cfg();
-  c.latency = 7;
+  c.comp_latency = 7;
   TrackRegs r = regs(5);
   r.lead = 8;  // + 0.5 sample
   Tracker t(c, r);

@@ -64,7 +64,7 @@ void set_lead(double lead, TrackConfig& c, TrackRegs& r) {
   if (!(lead >= 0 && lead <= 255 + 15.9375))
     throw InputError("--track-lead must be 0..270.9375 samples (is " + std::to_string(lead) + ")");
   const long q = std::lround(lead * (1 << c.lead_f));
-  c.latency = static_cast<int>(q >> c.lead_f);
+  c.comp_latency = static_cast<int>(q >> c.lead_f);
   r.lead = static_cast<uint32_t>(q & ((1 << c.lead_f) - 1));
 }
 

@@ -37,8 +37,8 @@ void TrackConfig::validate() const {
   require(turn_w >= 2 && turn_w <= 32, "TURN_W must be 2..32 (is " + std::to_string(turn_w) + ")");
   require(turn_w + angle_w + frac_w <= 64, "TURN_W+ANGLE_W+FRAC_W must be <= 64 (is " +
                                                std::to_string(turn_w + angle_w + frac_w) + ")");
-  require(latency >= 0 && latency <= 255,
-          "LATENCY must be 0..255 (is " + std::to_string(latency) + ")");
+  require(comp_latency >= 0 && comp_latency <= 255,
+          "COMP_LATENCY must be 0..255 (is " + std::to_string(comp_latency) + ")");
   require(lead_w >= 1 && lead_w <= 12, "LEAD_W must be 1..12 (is " + std::to_string(lead_w) + ")");
   require(lead_f >= 0 && lead_f <= lead_w,
           "LEAD_F must be 0..LEAD_W (is " + std::to_string(lead_f) + ")");
@@ -85,7 +85,7 @@ TrackOutput Tracker::step(uint32_t theta) {
   o.turns = sext(xr >> pw, c_.turn_w);
   o.velocity = v_;
   // v * D modulo 2^(P_W + LEAD_F), then floor by 2^LEAD_F: the RTL's shift-add product.
-  const uint64_t d = (static_cast<uint64_t>(c_.latency) << c_.lead_f) + r_.lead;
+  const uint64_t d = (static_cast<uint64_t>(c_.comp_latency) << c_.lead_f) + r_.lead;
   const uint64_t prod = (static_cast<uint64_t>(v_) * d) & mask(pw + c_.lead_f);
   const uint64_t comp = ((x_ & mask(pw)) + (prod >> c_.lead_f) + half) & mask(pw);
   o.angle_comp = static_cast<uint32_t>(comp >> c_.frac_w);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The tracking observer after the estimator, bit for bit rtl/acore_track.v: a type-II loop on the
 // angle error with shift gains, giving the tracked angle, the velocity, a signed turn count, loss
-// of tracking and the angle extrapolated over LATENCY + LEAD samples.
+// of tracking and the angle extrapolated over COMP_LATENCY + LEAD samples.
 //
 // Scales: the loop state is the angle with FRAC_W fraction bits below the input LSB, P_W = ANGLE_W
 // + FRAC_W bits a turn, extended by a TURN_W-bit signed turn count; the velocity is P_W-bit signed
@@ -19,12 +19,12 @@ namespace acore {
 
 // The observer's build parameters (rtl/acore_track.v, same names).
 struct TrackConfig {
-  int angle_w = 16;  // input/output angle width
-  int frac_w = 25;   // fraction bits below the input LSB
-  int turn_w = 16;   // turn counter width (signed); turn_w + angle_w + frac_w <= 64
-  int latency = 0;   // whole samples compensated
-  int lead_w = 8;    // LEAD register width
-  int lead_f = 4;    // LEAD fraction bits
+  int angle_w = 16;      // input/output angle width
+  int frac_w = 25;       // fraction bits below the input LSB
+  int turn_w = 16;       // turn counter width (signed); turn_w + angle_w + frac_w <= 64
+  int comp_latency = 0;  // COMP_LATENCY: whole samples compensated
+  int lead_w = 8;        // LEAD register width
+  int lead_f = 4;        // LEAD fraction bits
 
   int p_w() const { return angle_w + frac_w; }
   static constexpr int kMin = 2;                  // smallest bandwidth code
@@ -44,7 +44,7 @@ struct TrackRegs {
 
 struct TrackOutput {
   uint32_t angle = 0;       // round(phi), ANGLE_W bits
-  uint32_t angle_comp = 0;  // round(phi + v (LATENCY + LEAD)), ANGLE_W bits
+  uint32_t angle_comp = 0;  // round(phi + v (COMP_LATENCY + LEAD)), ANGLE_W bits
   int64_t velocity = 0;     // 2^-P_W turns per sample
   int64_t turns = 0;        // signed turn count of `angle`
   bool lot = false;         // |e| > lot_thr for this sample
