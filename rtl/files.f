@@ -35,3 +35,4 @@ acore_crc32.v
 acore_coef_scrub.v
 acore_coef_bank.v
 acore_apb.v
+acore_track.v

@@ -79,6 +79,10 @@ check calibrate-in-scale-nan 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/
 check calibrate-in-scale-inf 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --in-scale inf
 check calibrate-zero-offset-nan 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --zero-offset nan
 check calibrate-zero-offset-inf 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --zero-offset inf
+check estimate-track-bandwidth-nan 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/cal.csv" --track-bandwidth nan
+check estimate-track-lead-inf 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/cal.csv" --track-lead inf
+check simulate-speed-nan 2 "$bin" simulate --scenario paper --profile ramp --speed-rpm nan --out "$tmp/s.csv"
+expect_text simulate-speed-nan-msg "$tmp/err" "not a finite number"
 [ "$have_cosim" = 1 ] && check cosim-backpressure-nan 2 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/cal.csv" --backpressure nan
 echo "$passes passed, $fails failed ($n recordings with a non-finite value)"
 [ "$fails" -eq 0 ]

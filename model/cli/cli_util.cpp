@@ -107,8 +107,8 @@ int recording_periodicity(const Recording& rec, const std::string& path) {
   throw InputError(path + ": metadata 'p': '" + it->second + "' is not a periodicity 1..64");
 }
 
-const CLI::Validator& finite_number() {
-  static const CLI::Validator v(
+void require_finite_numbers(CLI::App& app) {
+  static const CLI::Validator finite(
       [](std::string& text) -> std::string {
         char* end = nullptr;
         const double x = std::strtod(text.c_str(), &end);
@@ -116,7 +116,9 @@ const CLI::Validator& finite_number() {
         return std::isfinite(x) ? "" : "'" + text + "' is not a finite number";
       },
       "FINITE");
-  return v;
+  for (CLI::Option* o : app.get_options())
+    if (o->get_type_name().find("FLOAT") == 0) o->check(finite);
+  for (CLI::App* sub : app.get_subcommands({})) require_finite_numbers(*sub);
 }
 
 }  // namespace acore::cli

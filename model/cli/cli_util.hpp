@@ -28,8 +28,9 @@ std::ostream& json_stdout();
 // True when argv asks for JSON on standard output (`--json -` or `--json=-`).
 bool json_to_stdout(int argc, char** argv);
 nlohmann::json stats_json(const ErrorStats& s);
-// A numeric flag must be finite: CLI11's range checks compare, and NaN fails no comparison.
-const CLI::Validator& finite_number();
+// Every floating-point option of every subcommand must be finite: CLI11's range checks compare,
+// and NaN fails no comparison (it would pass them). Called once, after the subcommands are added.
+void require_finite_numbers(CLI::App& app);
 // `# p=N` in the recording's metadata, else 1; throws InputError on a malformed value.
 int recording_periodicity(const Recording& rec, const std::string& path);
 

@@ -163,7 +163,6 @@ void add_calibrate(CLI::App& app) {
       ->check(CLI::Range(8, 24));
   c->add_option("--in-scale", args->in_scale,
                 "Input codes per recording unit (default: automatic power of two)")
-      ->check(finite_number())
       ->check(CLI::PositiveNumber);
   c->add_option("--periodicity", args->p,
                 "Electrical periods per turn (default: the recording's # p=)")

@@ -96,7 +96,6 @@ void add_cosim(CLI::App& app) {
   c->add_option("--trace", args->trace, "Write an FST waveform of the RTL run");
   c->add_option("--backpressure", args->backpressure,
                 "Probability of a stalled output and of an input gap per clock (default 0)")
-      ->check(finite_number())
       ->check(CLI::Range(0.0, 0.95));
   c->add_option("--seed", args->seed, "Seed of the random stalls (default 1)");
   c->callback([args] { run_cosim(*args); });

@@ -27,7 +27,42 @@ struct SimulateArgs {
   uint64_t seed = 1;
   int channels = 0;  // 0: the scenario's own
   bool list = false;
+  // A speed profile replacing the scenario's trajectory (--profile; empty: the scenario's own).
+  std::string profile;
+  double speed_rpm = 0, speed_end_rpm = 0, sample_rate = 0, ripple = 0, ripple_hz = 0, step_at = 0,
+         sweep_turns = 1;
 };
+
+// The scenario's trajectory replaced by the speed profile of the command line (mechanical rpm).
+Trajectory profile_trajectory(const SimulateArgs& a, const Trajectory& base) {
+  Trajectory tr;
+  tr.kind = a.profile;
+  tr.theta0_rad = base.theta0_rad;
+  tr.sample_rate_hz = a.sample_rate > 0 ? a.sample_rate : base.sample_rate_hz;
+  tr.speed_rps = a.speed_rpm / 60;
+  tr.speed_end_rps = a.speed_end_rpm / 60;
+  tr.sweep_turns = a.sweep_turns;
+  tr.step_at_s = a.step_at;
+  tr.ripple = a.ripple;
+  tr.ripple_hz = a.ripple_hz;
+  const auto bad = [&](const std::string& what) {
+    throw InputError("simulate --profile " + a.profile + ": " + what);
+  };
+  if (a.profile == "constant" || a.profile == "ramp" || a.profile == "step") {
+    if (a.speed_rpm == 0 && a.speed_end_rpm == 0) bad("give --speed-rpm (and --speed-end-rpm)");
+  } else if (a.profile == "reversal") {
+    if (!(a.speed_rpm > 0)) bad("--speed-rpm must be > 0");
+    if (!(a.sweep_turns > 0)) bad("--sweep-turns must be > 0");
+  } else if (a.profile == "ripple") {
+    if (a.speed_rpm == 0) bad("give --speed-rpm");
+    if (!(a.ripple >= 0 && a.ripple < 1)) bad("--ripple must be in [0, 1) (0.02 = 2 %)");
+    if (!(a.ripple_hz > 0)) bad("--ripple-hz must be > 0");
+  } else {
+    throw InputError("simulate: --profile '" + a.profile +
+                     "' is not one of constant, ramp, step, reversal, ripple");
+  }
+  return tr;
+}
 
 // Uncorrected electrical angle error (deg): atan2 of the differential pair, each centred on its
 // mean and scaled by its RMS amplitude, minus p * theta_ref, wrapped to (-180, 180].
@@ -76,6 +111,7 @@ void run_simulate(const SimulateArgs& a) {
     throw InputError("simulate: --out FILE.csv is required");
   Scenario s = a.config.empty() ? builtin_scenario(a.scenario) : load_scenario(a.config);
   if (a.channels != 0) s = with_channels(s, a.channels);
+  if (!a.profile.empty()) s.trajectory = profile_trajectory(a, s.trajectory);
   if (!a.dump_config.empty()) write_json(a.dump_config, s.to_json());
   if (a.out.empty()) return;
 
@@ -131,6 +167,22 @@ void add_simulate(CLI::App& app) {
   c->add_option("--json", args->json, "Write a summary as JSON ('-' for stdout)");
   c->add_option("--dump-config", args->dump_config,
                 "Write the scenario as JSON (a starting point for --config)");
+  c->add_option("--profile", args->profile,
+                "Speed profile replacing the scenario's trajectory: constant, ramp (--speed-rpm to "
+                "--speed-end-rpm), step (--speed-rpm, then --speed-end-rpm at --step-at), "
+                "reversal (--speed-rpm, --sweep-turns), ripple (--speed-rpm, --ripple, "
+                "--ripple-hz)");
+  c->add_option("--speed-rpm", args->speed_rpm, "--profile: (start) speed, mechanical rpm");
+  c->add_option("--speed-end-rpm", args->speed_end_rpm, "--profile ramp, step: end speed, rpm");
+  c->add_option("--step-at", args->step_at, "--profile step: time of the step, s (0: T / 2)");
+  c->add_option("--sweep-turns", args->sweep_turns,
+                "--profile reversal: turns forward before turning back (default 1)");
+  c->add_option("--ripple", args->ripple,
+                "--profile ripple: relative speed ripple amplitude (0.02 = 2 %)");
+  c->add_option("--ripple-hz", args->ripple_hz, "--profile ripple: ripple frequency, Hz");
+  c->add_option("--sample-rate", args->sample_rate,
+                "--profile: samples per second (default: the scenario's; 0 = N per second)")
+      ->check(CLI::NonNegativeNumber);
   c->callback([args] { run_simulate(*args); });
 }
 

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
     std::cout.rdbuf(std::cerr.rdbuf());
   }
   try {
+    acore::cli::require_finite_numbers(app);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

@@ -18,6 +18,13 @@ namespace acore {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// The trajectory kinds (simulator.hpp, Trajectory), for the messages and the JSON check.
+constexpr const char* kTrajectoryKinds = "turn, constant, ramp, reversal, step, ripple";
+bool is_trajectory_kind(const std::string& k) {
+  return k == "turn" || k == "constant" || k == "ramp" || k == "reversal" || k == "step" ||
+         k == "ripple";
+}
 using nlohmann::json;
 
 // ---- JSON reading with field names in every error ----
@@ -177,6 +184,12 @@ nlohmann::json Scenario::to_json() const {
                      {"speed_end_rps", trajectory.speed_end_rps},
                      {"sweep_turns", trajectory.sweep_turns},
                      {"cycles", trajectory.cycles}};
+  // The step and ripple fields only with their kinds (older dumps stay as they were).
+  if (trajectory.kind == "step") j["trajectory"]["step_at_s"] = trajectory.step_at_s;
+  if (trajectory.kind == "ripple") {
+    j["trajectory"]["ripple"] = trajectory.ripple;
+    j["trajectory"]["ripple_hz"] = trajectory.ripple_hz;
+  }
   j["temperature"] = {{"enabled", temperature.enabled},
                       {"start_C", temperature.start_C},
                       {"end_C", temperature.end_C}};
@@ -226,13 +239,12 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
     const json& t = j.at("trajectory");
     check_keys(t,
                {"kind", "sample_rate_hz", "theta0_rad", "turns", "speed_rps", "speed_end_rps",
-                "sweep_turns", "cycles"},
+                "sweep_turns", "cycles", "step_at_s", "ripple", "ripple_hz"},
                where, "trajectory.");
     Trajectory& tr = s.trajectory;
     tr.kind = get_string(t, "kind", tr.kind, where, "trajectory.kind");
-    if (tr.kind != "turn" && tr.kind != "constant" && tr.kind != "ramp" && tr.kind != "reversal")
-      field_error(where, "trajectory.kind",
-                  "'" + tr.kind + "' is not one of turn, constant, ramp, reversal");
+    if (!is_trajectory_kind(tr.kind))
+      field_error(where, "trajectory.kind", "'" + tr.kind + "' is not one of " + kTrajectoryKinds);
     tr.sample_rate_hz =
         get_number(t, "sample_rate_hz", tr.sample_rate_hz, where, "trajectory.sample_rate_hz");
     tr.theta0_rad = get_number(t, "theta0_rad", tr.theta0_rad, where, "trajectory.theta0_rad");
@@ -242,6 +254,14 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
         get_number(t, "speed_end_rps", tr.speed_end_rps, where, "trajectory.speed_end_rps");
     tr.sweep_turns = get_number(t, "sweep_turns", tr.sweep_turns, where, "trajectory.sweep_turns");
     tr.cycles = get_number(t, "cycles", tr.cycles, where, "trajectory.cycles");
+    tr.step_at_s = get_number(t, "step_at_s", tr.step_at_s, where, "trajectory.step_at_s");
+    tr.ripple = get_number(t, "ripple", tr.ripple, where, "trajectory.ripple");
+    tr.ripple_hz = get_number(t, "ripple_hz", tr.ripple_hz, where, "trajectory.ripple_hz");
+    if (tr.step_at_s < 0) field_error(where, "trajectory.step_at_s", "must be >= 0 (0: T / 2)");
+    if (tr.kind == "ripple" && !(tr.ripple >= 0 && tr.ripple < 1))
+      field_error(where, "trajectory.ripple", "must be in [0, 1)");
+    if (tr.kind == "ripple" && !(tr.ripple_hz > 0))
+      field_error(where, "trajectory.ripple_hz", "must be > 0");
     if (tr.sample_rate_hz < 0)
       field_error(where, "trajectory.sample_rate_hz", "must be >= 0 (0: N per second)");
     if (tr.kind == "reversal" && tr.sweep_turns <= 0)
@@ -303,22 +323,55 @@ TrajectoryModel::TrajectoryModel(const Trajectory& tr, size_t samples) : tr_(tr)
   } else if (tr.kind == "reversal") {
     v0_ = v1_ = tr.speed_rps > 0 ? tr.speed_rps : 2.0 * tr.sweep_turns * tr.cycles / duration_;
     if (!(v0_ > 0)) throw InputError("simulate: a reversal trajectory needs a speed > 0");
+  } else if (tr.kind == "step") {
+    v0_ = tr.speed_rps;
+    v1_ = tr.speed_end_rps;
+  } else if (tr.kind == "ripple") {
+    v0_ = v1_ = tr.speed_rps != 0 ? tr.speed_rps : tr.turns / duration_;
+    if (!(tr.ripple >= 0 && tr.ripple < 1 && tr.ripple_hz > 0))
+      throw InputError("simulate: a ripple trajectory needs 0 <= ripple < 1 and ripple_hz > 0");
   } else {
     throw InputError("simulate: unknown trajectory kind '" + tr.kind +
-                     "' (valid: turn, constant, ramp, reversal)");
+                     "' (valid: " + kTrajectoryKinds + ")");
   }
 }
 
-double TrajectoryModel::theta_at(double t) const {
-  if (tr_.kind == "ramp")
-    return tr_.theta0_rad + 2 * kPi * (v0_ * t + (v1_ - v0_) * t * t / (2 * duration_));
-  if (tr_.kind == "reversal") {
-    const double period = 2 * tr_.sweep_turns / v0_;
+double trajectory_theta(const Trajectory& tr, double v0, double v1, double duration, double t) {
+  // Constant speed ("turn" off its grid, "constant"), rounded as it always was.
+  if (tr.kind != "ramp" && tr.kind != "reversal" && tr.kind != "step" && tr.kind != "ripple")
+    return tr.theta0_rad + 2 * kPi * v0 * t;
+  double turns = 0;
+  if (tr.kind == "ramp") {
+    turns = v0 * t + (v1 - v0) * t * t / (2 * duration);
+  } else if (tr.kind == "reversal") {
+    const double period = 2 * tr.sweep_turns / v0;
     const double u = t - period * std::floor(t / period);
-    const double turns = u < period / 2 ? v0_ * u : tr_.sweep_turns - v0_ * (u - period / 2);
-    return tr_.theta0_rad + 2 * kPi * turns;
+    turns = u < period / 2 ? v0 * u : tr.sweep_turns - v0 * (u - period / 2);
+  } else if (tr.kind == "step") {
+    const double ts = tr.step_at_s > 0 ? tr.step_at_s : duration / 2;
+    turns = t < ts ? v0 * t : v0 * ts + v1 * (t - ts);
+  } else if (tr.kind == "ripple") {
+    // The integral of v0 (1 + r sin(w t)): v0 (t + r (1 - cos(w t)) / w).
+    const double w = 2 * kPi * tr.ripple_hz;
+    turns = v0 * (t + tr.ripple * (1 - std::cos(w * t)) / w);
   }
-  return tr_.theta0_rad + 2 * kPi * v0_ * t;
+  return tr.theta0_rad + 2 * kPi * turns;
+}
+
+double trajectory_speed(const Trajectory& tr, double v0, double v1, double duration, double t) {
+  if (tr.kind == "ramp") return v0 + (v1 - v0) * t / duration;
+  if (tr.kind == "reversal") {
+    const double period = 2 * tr.sweep_turns / v0;
+    const double u = t - period * std::floor(t / period);
+    return u < period / 2 ? v0 : -v0;
+  }
+  if (tr.kind == "step") return t < (tr.step_at_s > 0 ? tr.step_at_s : duration / 2) ? v0 : v1;
+  if (tr.kind == "ripple") return v0 * (1 + tr.ripple * std::sin(2 * kPi * tr.ripple_hz * t));
+  return v0;
+}
+
+double TrajectoryModel::theta_at(double t) const {
+  return trajectory_theta(tr_, v0_, v1_, duration_, t);
 }
 
 double TrajectoryModel::theta_sample(size_t k) const {
@@ -328,15 +381,11 @@ double TrajectoryModel::theta_sample(size_t k) const {
   return theta_at(time(k));
 }
 
-double TrajectoryModel::direction_at(double t) const {
-  if (tr_.kind == "ramp") return v0_ + (v1_ - v0_) * t / duration_ >= 0 ? 1.0 : -1.0;
-  if (tr_.kind == "reversal") {
-    const double period = 2 * tr_.sweep_turns / v0_;
-    const double u = t - period * std::floor(t / period);
-    return u < period / 2 ? 1.0 : -1.0;
-  }
-  return v0_ >= 0 ? 1.0 : -1.0;
+double TrajectoryModel::speed_at(double t) const {
+  return trajectory_speed(tr_, v0_, v1_, duration_, t);
 }
+
+double TrajectoryModel::direction_at(double t) const { return speed_at(t) >= 0 ? 1.0 : -1.0; }
 
 // ---- Built-ins ----
 

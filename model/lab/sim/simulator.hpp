@@ -20,7 +20,8 @@
 //   "sensor": [{"amplitude": 1, "offset": 0, "AF": [..], "BF": [..]}, ... one per channel (2 or
 //   4)], "sigma_common": 0, "sigma_indep": 0, "trajectory": {"kind": "turn", "sample_rate_hz": 0,
 //   "theta0_rad": 0, "turns": 1, "speed_rps": 0,
-//                  "speed_end_rps": 0, "sweep_turns": 1, "cycles": 1},
+//                  "speed_end_rps": 0, "sweep_turns": 1, "cycles": 1, "step_at_s": 0,
+//                  "ripple": 0, "ripple_hz": 0},
 //   "temperature": {"enabled": false, "start_C": 25, "end_C": 25},
 //   "effects": [{"effect": "offset", "offset_c1": 0.01, ...}, ...]          (effects.hpp
 //   parameters)
@@ -52,6 +53,10 @@ struct ChannelModel {
 //               speed that covers `turns` turns over T)
 //   "reversal"  back and forth: `sweep_turns` forward, the same back, at speed_rps (0: `cycles`
 //               full back-and-forth cycles over T)
+//   "step"      speed_rps until step_at_s (0: T / 2), then speed_end_rps (a velocity step)
+//   "ripple"    speed_rps (1 + ripple sin(2 pi ripple_hz t)): a constant speed with a sinusoidal
+//               speed ripple of relative amplitude `ripple` (0.02 = 2 %)
+// theta(t) of every kind is trajectory_theta() below, a closed form (no integration).
 struct Trajectory {
   std::string kind = "turn";
   double sample_rate_hz = 0;  // samples per second; 0 means N per second (t_k = k / N)
@@ -61,7 +66,16 @@ struct Trajectory {
   double speed_end_rps = 0;   // ramp: end speed (rev/s)
   double sweep_turns = 1;     // reversal: excursion before turning back (turns)
   double cycles = 1;          // reversal: back-and-forth cycles over the recording
+  double step_at_s = 0;       // step: time of the speed step (s; 0 = half the recording)
+  double ripple = 0;          // ripple: relative speed ripple amplitude (>= 0, < 1)
+  double ripple_hz = 0;       // ripple: ripple frequency (Hz, > 0)
 };
+
+// The mechanical angle (rad, unwrapped) at time t of a trajectory whose resolved speeds are v0, v1
+// (rev/s; TrajectoryModel resolves them from the fields) over a recording of `duration` seconds.
+double trajectory_theta(const Trajectory& tr, double v0, double v1, double duration, double t);
+// Its speed (rev/s) at time t, the derivative of trajectory_theta.
+double trajectory_speed(const Trajectory& tr, double v0, double v1, double duration, double t);
 
 // Temperature column: linear from start_C (first sample) to end_C (last sample).
 struct Temperature {
@@ -99,6 +113,7 @@ class TrajectoryModel {
   double theta_sample(
       size_t k) const;  // the angle at sample k ("turn": exactly theta0 + 2 pi k / N)
   double direction_at(double t) const;  // +1 forward, -1 backward
+  double speed_at(double t) const;      // rev/s, signed
 
  private:
   Trajectory tr_;

@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: MIT
+// acore_track: a type-II tracking observer on the estimator's angle stream (model/ip/stages/
+// tracker.cpp, bit for bit): tracked angle, velocity, signed turn count, loss of tracking, and the
+// angle extrapolated over the datapath's latency plus a LEAD register (dynamic angle-error
+// compensation). Shift gains only: no multiplier.
+//
+// Scales. The loop state holds the angle with FRAC_W fraction bits below the input LSB, as an
+// unsigned P_W = ANGLE_W + FRAC_W bit turn fraction, extended above by a TURN_W-bit signed turn
+// count (one (TURN_W + P_W)-bit accumulator, so the turn count and the angle cannot disagree).
+// The velocity v is a P_W-bit signed word in the same LSB: 2^-P_W turns per sample (the default
+// P_W = 41: 4.5e-13 turn/sample; at 1 MS/s one LSB is 2.7e-5 rpm).
+//
+// Loop (one accepted sample theta, bandwidth code k = bw_i clamped to K_MIN..K_MAX):
+//   pred = phi + v                                 (the prediction for this sample)
+//   e    = wrap(theta * 2^FRAC_W - pred)           (signed P_W bits, half a turn either way)
+//   phi  = pred + (e >>> k)                        (gain kp = 2^-k)
+//   v    = v + (e >>> (2k + 1))                    (gain ki = 2^-(2k+1) = kp^2 / 2)
+// ki = kp^2 / 2 makes the equivalent continuous loop's damping 1/sqrt(2) at every code, with
+// natural frequency wn = 2^-(k + 1/2) rad/sample (the velocity output's -3 dB frequency; the
+// angle's is 2.058 wn). The first sample after reset loads phi = theta, v = 0, turns = 0.
+// Zero steady-state error at constant speed (the double integrator of a type-II loop).
+//
+// Outputs (registered):
+//   out_angle_o       round(phi) to ANGLE_W bits (the tracked angle, unsigned turn fraction)
+//   out_turns_o       the turn count of that rounded angle (signed, wraps at TURN_W bits)
+//   out_velocity_o    v (signed, P_W bits, 2^-P_W turns per sample)
+//   out_angle_comp_o  round(phi + v * D) to ANGLE_W bits, D = COMP_LATENCY + lead_i / 2^LEAD_F samples
+//                     (v * D on shifts and adders over D's bits; floor at 2^-P_W turn)
+//   out_lot_o         |e| > lot_thr_i (input LSBs) for this sample: loss of tracking
+//
+// Register inputs (static while samples flow; the model refuses values out of range, the RTL
+// clamps bw_i into K_MIN..K_MAX so that no register value makes the loop unstable):
+//   bw_i       [3:0]          the bandwidth code k (K_MIN = 2 .. K_MAX = (FRAC_W - 1) / 2)
+//   lead_i     [LEAD_W-1:0]   LEAD, unsigned, LEAD_F fraction bits (samples)
+//   lot_thr_i  [ANGLE_W-2:0]  the loss-of-tracking threshold in input angle LSBs
+//
+// Streaming: in_valid_i/in_ready_o take a sample; out_valid_o/out_ready_i give its result three
+// clocks later (loop register; rounding and v * D in partial sums; output register), four with
+// LOOP_CLOCKS = 2, which also keeps in_ready_o low for the clock after a sample is taken. The pipeline stalls as a whole when the output is
+// held: in_ready_o = !rst_i && !(out_valid_o && !out_ready_i) (&& not the update clock with
+// LOOP_CLOCKS = 2). rst_i is synchronous, active high.
+`resetall
+`default_nettype none
+
+module acore_track #(
+  // Input and output angle width (unsigned turn fraction).
+  parameter integer ANGLE_W = 16,
+  // Fraction bits of the loop state below the input LSB (bounds K_MAX = (FRAC_W - 1) / 2).
+  parameter integer FRAC_W = 25,
+  // Turn counter width (signed).
+  parameter integer TURN_W = 16,
+  // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock).
+  parameter integer COMP_LATENCY = 0,
+  // LEAD register width and its fraction bits.
+  parameter integer LEAD_W = 8,
+  parameter integer LEAD_F = 4,
+  // Clocks of the loop update: 1 (a sample every clock) or 2 (a sample every other clock at most,
+  // a shorter clock period).
+  parameter integer LOOP_CLOCKS = 1
+) (
+  input  wire                      clk_i,
+  input  wire                      rst_i,
+  // The angle stream in (the estimator's angle_o).
+  input  wire                      in_valid_i,
+  output wire                      in_ready_o,
+  input  wire [ANGLE_W-1:0]        in_angle_i,
+  // Registers.
+  input  wire [3:0]                bw_i,
+  input  wire [LEAD_W-1:0]         lead_i,
+  input  wire [ANGLE_W-2:0]        lot_thr_i,
+  // The tracked stream out.
+  output reg                       out_valid_o,
+  input  wire                      out_ready_i,
+  output reg  [ANGLE_W-1:0]        out_angle_o,
+  output reg  [ANGLE_W-1:0]        out_angle_comp_o,
+  output reg  [ANGLE_W+FRAC_W-1:0] out_velocity_o,
+  output reg  [TURN_W-1:0]         out_turns_o,
+  output reg                       out_lot_o
+);
+
+  // The block's own pipeline, as the other modules state it: LATENCY clocks from a sample taken to
+  // its result on the output (no stall), CYCLES clocks a sample at full rate.
+  localparam integer LATENCY = 2 + LOOP_CLOCKS;
+  localparam integer CYCLES = LOOP_CLOCKS;
+  localparam integer P_W = ANGLE_W + FRAC_W;
+  localparam integer X_W = TURN_W + P_W;
+  localparam integer K_MIN = 2;
+  localparam integer K_MAX = (FRAC_W - 1) / 2;
+  // D = COMP_LATENCY + lead / 2^LEAD_F in LEAD_F fraction bits: D_W bits hold its largest value.
+  localparam integer D_W = LEAD_W + 10;
+  localparam integer M_W = P_W + LEAD_F;
+
+  acore_check #(.OK(ANGLE_W >= 8 && ANGLE_W <= 24), .VALUE(ANGLE_W),
+    .MSG("illegal parameter: ANGLE_W must be 8..24"))
+    ANGLE_W_must_be_8_to_24 ();
+  acore_check #(.OK(FRAC_W >= 5 && FRAC_W <= 31), .VALUE(FRAC_W),
+    .MSG("illegal parameter: FRAC_W must be 5..31"))
+    FRAC_W_must_be_5_to_31 ();
+  acore_check #(.OK(ANGLE_W + FRAC_W <= 48), .VALUE(ANGLE_W + FRAC_W),
+    .MSG("illegal parameter: ANGLE_W+FRAC_W must be <= 48"))
+    ANGLE_W_plus_FRAC_W_must_be_at_most_48 ();
+  acore_check #(.OK(TURN_W >= 2 && TURN_W <= 32), .VALUE(TURN_W),
+    .MSG("illegal parameter: TURN_W must be 2..32"))
+    TURN_W_must_be_2_to_32 ();
+  acore_check #(.OK(TURN_W + ANGLE_W + FRAC_W <= 64), .VALUE(TURN_W + ANGLE_W + FRAC_W),
+    .MSG("illegal parameter: TURN_W+ANGLE_W+FRAC_W must be <= 64"))
+    TURN_W_plus_ANGLE_W_plus_FRAC_W_must_be_at_most_64 ();
+  acore_check #(.OK(LOOP_CLOCKS == 1 || LOOP_CLOCKS == 2), .VALUE(LOOP_CLOCKS),
+    .MSG("illegal parameter: LOOP_CLOCKS must be 1 or 2"))
+    LOOP_CLOCKS_must_be_1_or_2 ();
+  acore_check #(.OK(COMP_LATENCY >= 0 && COMP_LATENCY <= 255), .VALUE(COMP_LATENCY),
+    .MSG("illegal parameter: COMP_LATENCY must be 0..255"))
+    COMP_LATENCY_must_be_0_to_255 ();
+  acore_check #(.OK(LEAD_W >= 1 && LEAD_W <= 12), .VALUE(LEAD_W),
+    .MSG("illegal parameter: LEAD_W must be 1..12"))
+    LEAD_W_must_be_1_to_12 ();
+  acore_check #(.OK(LEAD_F >= 0 && LEAD_F <= LEAD_W), .VALUE(LEAD_F),
+    .MSG("illegal parameter: LEAD_F must be 0..LEAD_W"))
+    LEAD_F_must_be_0_to_LEAD_W ();
+
+  // ---- loop ----
+  // LOOP_CLOCKS = 1: the whole update in the clock that takes the sample. LOOP_CLOCKS = 2: the
+  // error in that clock (registered with the prediction), the update in the next; the observer then
+  // takes a sample every other clock at most (in_ready_o low in the update clock), which a folded
+  // estimator (FOLD >= 2 clocks a sample) never notices, and its clock is not bounded by the
+  // prediction-error-update chain of one clock.
+  wire advance = !out_valid_o || out_ready_i;
+  reg  busy_q;  // LOOP_CLOCKS = 2: the update clock of the sample taken last
+  assign in_ready_o = !rst_i && advance && !busy_q;
+  wire take = in_valid_i && in_ready_o;
+
+  reg [X_W-1:0] x_q;      // {turns, phi}
+  reg [P_W-1:0] v_q;      // velocity, signed
+  reg           started_q;
+  reg           a_valid_q;
+  reg           lot_q;
+
+  localparam [3:0] K_MIN4 = K_MIN[3:0];
+  localparam [3:0] K_MAX4 = K_MAX[3:0];
+  wire [3:0] k = (bw_i < K_MIN4) ? K_MIN4 : (bw_i > K_MAX4) ? K_MAX4 : bw_i;
+  wire [4:0] k2 = {k, 1'b1};  // 2k + 1
+
+  // The prediction and the error; the first sample after reset loads phi = theta (error 0; x_q
+  // and v_q are 0 then).
+  wire [P_W-1:0] theta_s = {in_angle_i, {FRAC_W{1'b0}}};
+  wire [X_W-1:0] pred = started_q ? x_q + {{TURN_W{v_q[P_W-1]}}, v_q} : {{TURN_W{1'b0}}, theta_s};
+  wire signed [P_W-1:0] e = $signed(theta_s - pred[P_W-1:0]);
+  wire [P_W-1:0] thr_s = {1'b0, lot_thr_i, {FRAC_W{1'b0}}};
+  wire lot_next = (e > $signed(thr_s)) || (e < -$signed(thr_s));
+
+  // The update from a prediction and its error (this clock's, or the registered ones).
+  reg [X_W-1:0] pred_q;
+  reg [P_W-1:0] e_q;
+  wire [X_W-1:0] u_pred = (LOOP_CLOCKS == 2) ? pred_q : pred;
+  wire signed [P_W-1:0] u_e = (LOOP_CLOCKS == 2) ? $signed(e_q) : e;
+  wire signed [P_W-1:0] e_p = u_e >>> k;
+  wire signed [P_W-1:0] e_i = u_e >>> k2;
+  wire [X_W-1:0] x_next = u_pred + {{TURN_W{e_p[P_W-1]}}, e_p};
+  wire [P_W-1:0] v_next = v_q + e_i;
+  wire update = (LOOP_CLOCKS == 2) ? busy_q : take;
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      x_q <= {X_W{1'b0}};
+      v_q <= {P_W{1'b0}};
+      started_q <= 1'b0;
+      a_valid_q <= 1'b0;
+      lot_q <= 1'b0;
+      busy_q <= 1'b0;
+    end else if (advance) begin
+      a_valid_q <= update;
+      busy_q <= (LOOP_CLOCKS == 2) && take;
+      if (take) begin
+        started_q <= 1'b1;
+        lot_q <= started_q && lot_next;
+        pred_q <= pred;
+        e_q <= e;
+      end
+      if (update) begin
+        x_q <= x_next;
+        v_q <= v_next;
+      end
+    end
+  end
+
+  // ---- product stage: v * D in G partial sums of GS terms each, registered ----
+  // v * d modulo 2^M_W on shifts and adders, one term per bit of d, summed in groups of GS terms
+  // (a chain of GS adders per group) so that no clock period holds the whole D_W-term sum.
+  localparam integer LAT_D = COMP_LATENCY * (2 ** LEAD_F);
+  localparam integer GS = 5;
+  localparam integer G = (D_W + GS - 1) / GS;
+  wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};
+  wire [M_W-1:0] v_ext = {{LEAD_F{v_q[P_W-1]}}, v_q};
+  reg  [M_W-1:0] group_sum [0:G-1];
+  integer j;
+  always @* begin
+    for (j = 0; j < G; j = j + 1) group_sum[j] = {M_W{1'b0}};
+    for (j = 0; j < D_W; j = j + 1)
+      if (d[j]) group_sum[j / GS] = group_sum[j / GS] + (v_ext << j);
+  end
+  wire [P_W-1:0] half = {{ANGLE_W{1'b0}}, 1'b1, {(FRAC_W - 1){1'b0}}};
+
+  reg           b_valid_q;
+  // {turns, phi} + half: the rounded angle and its turn count (the low FRAC_W bits rounded away).
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [X_W-1:0] x_round = x_q + {{TURN_W{1'b0}}, half};
+  /* verilator lint_on UNUSEDSIGNAL */
+  reg [TURN_W+ANGLE_W-1:0] b_round_q;
+  reg [P_W-1:0] b_comp_q;    // phi + half, to which v * D is added
+  reg [P_W-1:0] b_v_q;
+  reg           b_lot_q;
+  reg [M_W-1:0] b_group_q [0:G-1];
+  integer g;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      b_valid_q <= 1'b0;
+    end else if (advance) begin
+      b_valid_q <= a_valid_q;
+      if (a_valid_q) begin
+        b_round_q <= x_round[X_W-1:FRAC_W];
+        b_comp_q <= x_q[P_W-1:0] + half;
+        b_v_q <= v_q;
+        b_lot_q <= lot_q;
+        for (g = 0; g < G; g = g + 1) b_group_q[g] <= group_sum[g];
+      end
+    end
+  end
+
+  // ---- output stage ----
+  reg [M_W-1:0] prod;
+  always @* begin
+    prod = {M_W{1'b0}};
+    for (j = 0; j < G; j = j + 1) prod = prod + b_group_q[j];
+  end
+  // Its low FRAC_W bits are rounded away.
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [P_W-1:0] comp_round = b_comp_q + prod[M_W-1:LEAD_F];
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      out_valid_o <= 1'b0;
+      out_angle_o <= {ANGLE_W{1'b0}};
+      out_angle_comp_o <= {ANGLE_W{1'b0}};
+      out_velocity_o <= {P_W{1'b0}};
+      out_turns_o <= {TURN_W{1'b0}};
+      out_lot_o <= 1'b0;
+    end else if (advance) begin
+      out_valid_o <= b_valid_q;
+      if (b_valid_q) begin
+        out_angle_o <= b_round_q[ANGLE_W-1:0];
+        out_turns_o <= b_round_q[TURN_W+ANGLE_W-1:ANGLE_W];
+        out_angle_comp_o <= comp_round[P_W-1:FRAC_W];
+        out_velocity_o <= b_v_q;
+        out_lot_o <= b_lot_q;
+      end
+    end
+  end
+
+endmodule
+
+`resetall
