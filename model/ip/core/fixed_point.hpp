@@ -60,4 +60,25 @@ inline int64_t shift_add_mul(int64_t a, int64_t b, int b_w, bool b_signed, int r
   return sum;
 }
 
+// The truncated part of shift_add_mul, alone: sum over the bits j < r of beta (0 <= beta < 2^r)
+// of floor(rho * 2^(j-r)), for 0 <= rho < 2^r. It is below 2^r, so it fits the lanes of rho.
+template <typename T>
+T upper_partial_products(T rho, T beta, int r) {
+  T sum = 0;
+  for (int k = 1; k < r; ++k) sum += static_cast<T>((rho >> k) & (T{0} - ((beta >> (r - k)) & 1)));
+  return sum;
+}
+
+// shift_add_mul for a signed b with rshift = r <= b_w - 1, split at bit r of both operands: with
+// a = q 2^r + rho and b = h 2^r + beta (q, h floor, 0 <= rho, beta < 2^r), every partial product
+// j >= r is exact (a h in total), and one of j < r is q 2^j + floor(rho 2^(j-r)), so
+//   shift_add_mul(a, b, b_w, true, r) = a h + q beta + upper_partial_products(rho, beta, r).
+// Only the last term needs the bit loop, in narrow lanes; the batch path uses it this way.
+inline int64_t shift_add_mul_split(int64_t a, int64_t b, int r) {
+  const int64_t m = (int64_t{1} << r) - 1;
+  return a * (b >> r) + (a >> r) * (b & m) +
+         static_cast<int64_t>(upper_partial_products<uint64_t>(static_cast<uint64_t>(a & m),
+                                                               static_cast<uint64_t>(b & m), r));
+}
+
 }  // namespace acore::fx

@@ -6,6 +6,7 @@
 // benchmark, long sweeps.
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 
 #include "core/fixed_point.hpp"
 #include "engine/fixed_model.hpp"
@@ -16,12 +17,18 @@ namespace acore {
 
 namespace {
 
-constexpr int kChunk = 512;
+constexpr int kChunk = 256;  // a multiple of every vector's lanes
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define ACORE_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#define ACORE_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define ACORE_VECTOR_CLONES
+#endif
+// Helpers of a cloned function are inlined into each clone, so they get its instruction set.
+#if defined(__GNUC__)
+#define ACORE_INLINE inline __attribute__((always_inline))
+#else
+#define ACORE_INLINE inline
 #endif
 
 // Scaler over a chunk: s = sat(round_shr(sum_j R_j * shr(d - O, R_SHIFT - G - j), G), S_W).
@@ -50,46 +57,84 @@ void scale_chunk(const int32_t* d, int n, int32_t offset, uint32_t recip, int re
   }
 }
 
-// Horner on the adder/shifter multiplier, both curves at once: they share x, so each bit mask of
-// x is loaded once for the two products.
-ACORE_VECTOR_CLONES
-void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* mask,
-                const int32_t* c13, const int32_t* c24, int n, int degree, int s_w, int s_f,
-                int acc_guard, int acc_w, int out_shift, int32_t* y13, int32_t* y24, uint8_t* ovf) {
-  int32_t a13[kChunk], a24[kChunk], p13[kChunk], p24[kChunk];
+// The truncated partial products (fx::upper_partial_products) over a chunk, in explicit vectors of
+// unsigned lanes L (16 bits when r <= 16: the sum is below 2^r, and 32 lanes fit one AVX-512
+// register). Written by the bits of rho: bit i adds beta >> (r - i) (the same partial products
+// counted the other way), and the shifted betas, shifted[k] = beta >> k, serve all six products of
+// a sample (two curves, DEGREE Horner steps).
+template <typename L>
+struct Lanes;
+template <>
+struct Lanes<uint16_t> {
+  typedef uint16_t type __attribute__((vector_size(64)));
+};
+template <>
+struct Lanes<uint32_t> {
+  typedef uint32_t type __attribute__((vector_size(64)));
+};
+
+template <typename L>
+ACORE_INLINE void upper_chunk(const L* rho, const L* shifted, int n, int r, L* u) {
+  using V = typename Lanes<L>::type;
+  constexpr int kLanes = static_cast<int>(sizeof(V) / sizeof(L));
+  for (int i0 = 0; i0 < n; i0 += kLanes) {
+    V p, sum = {};
+    std::memcpy(&p, rho + i0, sizeof p);
+    for (int i = 1; i < r; ++i) {
+      V b;
+      std::memcpy(&b, shifted + (r - i) * kChunk + i0, sizeof b);
+      sum += b & (V)((p & static_cast<L>(L{1} << i)) != 0);  // all ones where bit i is set
+    }
+    std::memcpy(u + i0, &sum, sizeof sum);
+  }
+}
+
+// One Horner step of both curves, acc = sat(shift_add_mul(acc, x) + (c_j << ACC_G), ACC_W), the
+// product in fx::shift_add_mul_split's form: acc h + q beta in int32 lanes, the rest in L lanes.
+template <typename L>
+ACORE_INLINE void horner_step(int32_t* a13, int32_t* a24, const int32_t* xh, const int32_t* xl,
+                              const L* shifted, const int32_t* k13, const int32_t* k24, int n,
+                              int r, int acc_guard, int acc_w, uint8_t* ovf) {
+  alignas(64) L rho13[kChunk], rho24[kChunk], u13[kChunk], u24[kChunk];
+  const int32_t m = (1 << r) - 1;
+  for (int i = 0; i < kChunk; ++i) {  // the whole chunk: upper_chunk reads whole vectors
+    rho13[i] = static_cast<L>(a13[i] & m);
+    rho24[i] = static_cast<L>(a24[i] & m);
+  }
+  upper_chunk(rho13, shifted, n, r, u13);
+  upper_chunk(rho24, shifted, n, r, u24);
   const int32_t ahi = (1 << (acc_w - 1)) - 1, alo = -(1 << (acc_w - 1));
   for (int i = 0; i < n; ++i) {
+    const int32_t v13 = a13[i] * xh[i] + (a13[i] >> r) * xl[i] + static_cast<int32_t>(u13[i]) +
+                        k13[i] * (1 << acc_guard);
+    const int32_t v24 = a24[i] * xh[i] + (a24[i] >> r) * xl[i] + static_cast<int32_t>(u24[i]) +
+                        k24[i] * (1 << acc_guard);
+    ovf[i] |= static_cast<uint8_t>((v13 > ahi) | (v13 < alo) | (v24 > ahi) | (v24 < alo));
+    a13[i] = std::clamp(v13, alo, ahi);
+    a24[i] = std::clamp(v24, alo, ahi);
+  }
+}
+
+// Horner on the adder/shifter multiplier, both curves at once (they share x).
+template <typename L>
+ACORE_INLINE void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* x,
+                             const int32_t* c13, const int32_t* c24, int n, int degree, int s_w,
+                             int s_f, int acc_guard, int acc_w, int out_shift, int32_t* y13,
+                             int32_t* y24, uint8_t* ovf) {
+  alignas(64) int32_t a13[kChunk] = {}, a24[kChunk] = {}, xh[kChunk], xl[kChunk];
+  alignas(64) L shifted[32 * kChunk];
+  const int32_t m = (1 << s_f) - 1;
+  for (int i = 0; i < n; ++i) {
+    xh[i] = x[i] >> s_f;
+    xl[i] = x[i] & m;
     a13[i] = c13[degree * kChunk + i] * (1 << acc_guard);
     a24[i] = c24[degree * kChunk + i] * (1 << acc_guard);
   }
-  for (int j = degree - 1; j >= 0; --j) {
-    for (int i = 0; i < n; ++i) p13[i] = p24[i] = 0;
-    for (int b = 0; b < s_w; ++b) {
-      const int sh = s_f - b;
-      const int32_t* m = mask[b];
-      const int32_t sign = b == s_w - 1 ? -1 : 1;  // the top bit of x weighs -2^(S_W-1)
-      if (sh >= 0) {
-        for (int i = 0; i < n; ++i) {
-          p13[i] += sign * ((a13[i] >> sh) & m[i]);
-          p24[i] += sign * ((a24[i] >> sh) & m[i]);
-        }
-      } else {
-        for (int i = 0; i < n; ++i) {
-          p13[i] += sign * ((a13[i] * (1 << -sh)) & m[i]);
-          p24[i] += sign * ((a24[i] * (1 << -sh)) & m[i]);
-        }
-      }
-    }
-    const int32_t* k13 = c13 + j * kChunk;
-    const int32_t* k24 = c24 + j * kChunk;
-    for (int i = 0; i < n; ++i) {
-      const int32_t v13 = p13[i] + k13[i] * (1 << acc_guard),
-                    v24 = p24[i] + k24[i] * (1 << acc_guard);
-      ovf[i] |= static_cast<uint8_t>((v13 > ahi) | (v13 < alo) | (v24 > ahi) | (v24 < alo));
-      a13[i] = std::clamp(v13, alo, ahi);
-      a24[i] = std::clamp(v24, alo, ahi);
-    }
-  }
+  for (int k = 1; k < s_f; ++k)
+    for (int i = 0; i < kChunk; ++i) shifted[k * kChunk + i] = static_cast<L>((x[i] & m) >> k);
+  for (int j = degree - 1; j >= 0; --j)
+    horner_step(a13, a24, xh, xl, shifted, c13 + j * kChunk, c24 + j * kChunk, n, s_f, acc_guard,
+                acc_w, ovf);
   const int32_t hi = (1 << (s_w - 1)) - 1, lo = -(1 << (s_w - 1));
   const int32_t half = out_shift > 0 ? 1 << (out_shift - 1) : 0;
   for (int i = 0; i < n; ++i) {
@@ -99,6 +144,22 @@ void poly_chunk(const int32_t* s13, const int32_t* s24, const int32_t* const* ma
     y13[i] = std::clamp(v13, lo, hi);
     y24[i] = std::clamp(v24, lo, hi);
   }
+}
+
+ACORE_VECTOR_CLONES
+void poly_chunk16(const int32_t* s13, const int32_t* s24, const int32_t* x, const int32_t* c13,
+                  const int32_t* c24, int n, int degree, int s_w, int s_f, int acc_guard, int acc_w,
+                  int out_shift, int32_t* y13, int32_t* y24, uint8_t* ovf) {
+  poly_chunk<uint16_t>(s13, s24, x, c13, c24, n, degree, s_w, s_f, acc_guard, acc_w, out_shift, y13,
+                       y24, ovf);
+}
+
+ACORE_VECTOR_CLONES
+void poly_chunk32(const int32_t* s13, const int32_t* s24, const int32_t* x, const int32_t* c13,
+                  const int32_t* c24, int n, int degree, int s_w, int s_f, int acc_guard, int acc_w,
+                  int out_shift, int32_t* y13, int32_t* y24, uint8_t* ovf) {
+  poly_chunk<uint32_t>(s13, s24, x, c13, c24, n, degree, s_w, s_f, acc_guard, acc_w, out_shift, y13,
+                       y24, ovf);
 }
 
 // CORDIC vectoring with quadrant pre-rotation (cordic.cpp), Z kept modulo 2^Z_W.
@@ -166,8 +227,7 @@ void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions
   }
 }
 
-// Input codes to the pre-filter's differences (prefilter.hpp), and x's bits as all-ones masks
-// for the shift-add multiplier.
+// Input codes to the pre-filter's differences (prefilter.hpp).
 ACORE_VECTOR_CLONES
 void prefilter_chunk(const ChannelCodes* in, int n, int32_t* d13, int32_t* d24, uint8_t* ovf) {
   for (int i = 0; i < n; ++i) {
@@ -175,12 +235,6 @@ void prefilter_chunk(const ChannelCodes* in, int n, int32_t* d13, int32_t* d24, 
     d24[i] = in[i][1] - in[i][3];
     ovf[i] = 0;
   }
-}
-
-ACORE_VECTOR_CLONES
-void mask_chunk(const int32_t* x, int n, int s_w, int32_t* mask) {
-  for (int b = 0; b < s_w; ++b)
-    for (int i = 0; i < n; ++i) mask[b * kChunk + i] = -((x[i] >> b) & 1);
 }
 
 ACORE_VECTOR_CLONES
@@ -216,15 +270,12 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
   }
   const DatapathConfig& cfg = img_.cfg;
   const int terms = cfg.degree + 1;
-  int32_t d13[kChunk], d24[kChunk], s13[kChunk], s24[kChunk], x[kChunk], y13[kChunk], y24[kChunk],
-      mag[kChunk];
+  int32_t d13[kChunk] = {}, d24[kChunk] = {}, s13[kChunk] = {}, s24[kChunk] = {}, x[kChunk] = {},
+          y13[kChunk] = {}, y24[kChunk] = {}, mag[kChunk];
   uint32_t angle[kChunk];
   uint8_t ovf[kChunk];
   int32_t region[kChunk];
-  std::vector<int32_t> mask_store(static_cast<size_t>(cfg.s_w) * kChunk);
   std::vector<int32_t> coef13(static_cast<size_t>(terms) * kChunk), coef24(coef13.size());
-  std::vector<const int32_t*> mask(cfg.s_w);
-  for (int b = 0; b < cfg.s_w; ++b) mask[b] = &mask_store[static_cast<size_t>(b) * kChunk];
   std::vector<int32_t> atan32(atan_.begin(), atan_.end()), coef32(coef_.begin(), coef_.end());
 
   for (size_t base = 0; base < n; base += kChunk) {
@@ -237,9 +288,9 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
     region_chunk(s13, s24, m, cfg.regions, region, x);
     if (cfg.correction == kPoly) {
       gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
-      mask_chunk(x, m, cfg.s_w, mask_store.data());
-      poly_chunk(s13, s24, mask.data(), coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w,
-                 cfg.s_f, cfg.acc_guard, cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
+      (cfg.s_f <= 16 ? poly_chunk16 : poly_chunk32)(
+          s13, s24, x, coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w, cfg.s_f, cfg.acc_guard,
+          cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
     } else {  // kNone: the scaled curves go straight to the CORDIC
       std::copy(s13, s13 + m, y13);
       std::copy(s24, s24 + m, y24);
