@@ -5,6 +5,7 @@
 // the CPU has it, picked at run time by target_clones). Used where speed matters: co-sim, the
 // benchmark, long sweeps.
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -12,6 +13,10 @@
 #include "engine/fixed_model.hpp"
 #include "stages/fourier_correct.hpp"
 #include "stages/region_select.hpp"
+
+// The vector helpers below are inlined into each target clone; the ABI note on passing a vector
+// by value (which never happens across a call here) does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace acore {
 
@@ -30,6 +35,23 @@ constexpr int kChunk = 256;  // a multiple of every vector's lanes
 #else
 #define ACORE_INLINE inline
 #endif
+
+// Explicit vectors of 16 int32 lanes (one AVX-512 register, two AVX2 ones): the loops whose
+// state must stay in registers across iterations (the CORDIC), and lane-wise table lookups.
+typedef int32_t I32 __attribute__((vector_size(64)));
+constexpr int kLanes32 = 16;
+typedef uint32_t U32 __attribute__((vector_size(64)));
+
+template <typename V, typename T>
+ACORE_INLINE V load(const T* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <typename V, typename T>
+ACORE_INLINE void store(T* p, const V& v) {
+  std::memcpy(p, &v, sizeof v);
+}
 
 // Scaler over a chunk: s = sat(round_shr(sum_j R_j * shr(d - O, R_SHIFT - G - j), G), S_W).
 ACORE_VECTOR_CLONES
@@ -162,35 +184,48 @@ void poly_chunk32(const int32_t* s13, const int32_t* s24, const int32_t* x, cons
                        y24, ovf);
 }
 
-// CORDIC vectoring with quadrant pre-rotation (cordic.cpp), Z kept modulo 2^Z_W.
+// CORDIC vectoring with quadrant pre-rotation (cordic.cpp), Z kept modulo 2^Z_W: the state of 16
+// samples in registers through the K iterations, two such groups interleaved (each iteration
+// depends on the one before: two independent chains keep the pipelines busy).
+struct CordicLanes {
+  I32 X, Y;
+  U32 Z;
+  ACORE_INLINE CordicLanes(const int32_t* xin, const int32_t* yin, int guard, uint32_t half_turn) {
+    const I32 x = load<I32>(xin) * (1 << guard), y = load<I32>(yin) * (1 << guard);
+    const I32 neg = x < 0;  // all ones where x < 0: rotate by half a turn
+    X = (x ^ neg) - neg;
+    Y = (y ^ neg) - neg;
+    Z = (U32)neg & half_turn;
+  }
+  ACORE_INLINE void iterate(int k, uint32_t atan_k) {
+    const I32 xs = X >> k, ys = Y >> k;
+    const I32 d = Y >> 31;  // 0 when Y >= 0, -1 when Y < 0
+    X += (ys ^ d) - d;      // +ys or -ys
+    Y -= (xs ^ d) - d;
+    Z += (atan_k ^ (U32)d) - (U32)d;
+  }
+  ACORE_INLINE void finish(int guard, uint32_t zmask, uint32_t rnd, int drop, uint32_t amask,
+                           uint32_t* angle, int32_t* mag) const {
+    store(angle, (((Z & zmask) + rnd) >> drop) & amask);
+    store(mag, X >> guard);
+  }
+};
+
 ACORE_VECTOR_CLONES
 void cordic_chunk(const int32_t* xin, const int32_t* yin, int n, const int32_t* atan,
                   int iterations, int guard, int z_w, int angle_w, uint32_t* angle, int32_t* mag) {
-  int32_t X[kChunk], Y[kChunk];
-  uint32_t Z[kChunk];
   const uint32_t half_turn = 1u << (z_w - 1), zmask = (z_w >= 32) ? ~0u : ((1u << z_w) - 1);
-  for (int i = 0; i < n; ++i) {
-    const int32_t x = xin[i] * (1 << guard), y = yin[i] * (1 << guard);
-    const bool neg = x < 0;
-    X[i] = neg ? -x : x;
-    Y[i] = neg ? -y : y;
-    Z[i] = neg ? half_turn : 0u;
-  }
-  for (int k = 0; k < iterations; ++k) {
-    const uint32_t a = static_cast<uint32_t>(atan[k]);
-    for (int i = 0; i < n; ++i) {
-      const int32_t xs = X[i] >> k, ys = Y[i] >> k;
-      const int32_t d = Y[i] >> 31;  // 0 when Y >= 0, -1 when Y < 0
-      X[i] += (ys ^ d) - d;          // +ys or -ys
-      Y[i] -= (xs ^ d) - d;
-      Z[i] += (a ^ static_cast<uint32_t>(d)) - static_cast<uint32_t>(d);
-    }
-  }
   const int drop = z_w - angle_w;
   const uint32_t amask = (1u << angle_w) - 1, rnd = drop > 0 ? 1u << (drop - 1) : 0u;
-  for (int i = 0; i < n; ++i) {
-    angle[i] = (((Z[i] & zmask) + rnd) >> drop) & amask;
-    mag[i] = X[i] >> guard;
+  for (int i0 = 0; i0 < n; i0 += 2 * kLanes32) {
+    const int i1 = i0 + kLanes32;
+    CordicLanes a(xin + i0, yin + i0, guard, half_turn), b(xin + i1, yin + i1, guard, half_turn);
+    for (int k = 0; k < iterations; ++k) {
+      a.iterate(k, static_cast<uint32_t>(atan[k]));
+      b.iterate(k, static_cast<uint32_t>(atan[k]));
+    }
+    a.finish(guard, zmask, rnd, drop, amask, angle + i0, mag + i0);
+    b.finish(guard, zmask, rnd, drop, amask, angle + i1, mag + i1);
   }
 }
 
@@ -208,21 +243,21 @@ void region_chunk(const int32_t* s13, const int32_t* s24, int n, int regions, in
   }
 }
 
-// Each sample's polynomial coefficients, one array per power. Regions are few, so a select per
-// region beats a gather.
+// Each sample's polynomial coefficients, one array per power: a lane-wise lookup (a permute of
+// one register) in the table of the regions' words.
 ACORE_VECTOR_CLONES
 void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions, int terms,
                   int32_t* c13, int32_t* c24) {
   for (int j = 0; j < terms; ++j) {
-    int32_t* o13 = c13 + j * kChunk;
-    int32_t* o24 = c24 + j * kChunk;
-    for (int i = 0; i < n; ++i) o13[i] = o24[i] = 0;
+    I32 t13 = {}, t24 = {};
     for (int r = 0; r < regions; ++r) {
-      const int32_t a = coef[r * 2 * terms + j], b = coef[r * 2 * terms + terms + j];
-      for (int i = 0; i < n; ++i) {
-        o13[i] = region[i] == r ? a : o13[i];
-        o24[i] = region[i] == r ? b : o24[i];
-      }
+      t13[r] = coef[r * 2 * terms + j];
+      t24[r] = coef[r * 2 * terms + terms + j];
+    }
+    for (int i0 = 0; i0 < n; i0 += kLanes32) {
+      const I32 idx = load<I32>(region + i0);
+      store(c13 + j * kChunk + i0, __builtin_shuffle(t13, idx));
+      store(c24 + j * kChunk + i0, __builtin_shuffle(t24, idx));
     }
   }
 }
@@ -237,14 +272,20 @@ void prefilter_chunk(const ChannelCodes* in, int n, int32_t* d13, int32_t* d24, 
   }
 }
 
+// The RTL-visible outputs, each written as one 64-bit word (angle, region, flags, zero padding).
+static_assert(sizeof(FixedOutput) == 8 && offsetof(FixedOutput, region) == 4 &&
+                  offsetof(FixedOutput, flags) == 5,
+              "output_chunk packs FixedOutput as angle | region << 32 | flags << 40");
 ACORE_VECTOR_CLONES
 void output_chunk(const uint32_t* angle, const int32_t* mag, const int32_t* region,
                   const uint8_t* ovf, int n, int64_t mag_lo, int64_t mag_hi, FixedOutput* out) {
+  uint64_t packed[kChunk];
   for (int i = 0; i < n; ++i) {
-    const bool los = mag[i]<mag_lo, dos = mag[i]> mag_hi;
-    out[i] = {angle[i], static_cast<uint8_t>(region[i]),
-              static_cast<uint8_t>((ovf[i] ? 1 : 0) | (los ? 2 : 0) | (dos ? 4 : 0))};
+    const uint64_t flags =
+        (ovf[i] ? 1u : 0u) | (mag[i] < mag_lo ? 2u : 0u) | (mag[i] > mag_hi ? 4u : 0u);
+    packed[i] = angle[i] | static_cast<uint64_t>(region[i]) << 32 | flags << 40;
   }
+  std::memcpy(out, packed, sizeof(uint64_t) * n);
 }
 
 // The ZERO word's adder after everything else: angle - zero modulo a turn.
@@ -274,7 +315,7 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
           y13[kChunk] = {}, y24[kChunk] = {}, mag[kChunk];
   uint32_t angle[kChunk];
   uint8_t ovf[kChunk];
-  int32_t region[kChunk];
+  int32_t region[kChunk] = {};
   std::vector<int32_t> coef13(static_cast<size_t>(terms) * kChunk), coef24(coef13.size());
   std::vector<int32_t> atan32(atan_.begin(), atan_.end()), coef32(coef_.begin(), coef_.end());
 
