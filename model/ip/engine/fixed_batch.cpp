@@ -96,18 +96,22 @@ struct Lanes<uint32_t> {
 };
 
 template <typename L>
-ACORE_INLINE void upper_chunk(const L* rho, const L* shifted, int n, int r, L* u) {
+ACORE_INLINE void upper_chunk(const L* rho13, const L* rho24, const L* shifted, int n, int r,
+                              L* u13, L* u24) {
   using V = typename Lanes<L>::type;
   constexpr int kLanes = static_cast<int>(sizeof(V) / sizeof(L));
   for (int i0 = 0; i0 < n; i0 += kLanes) {
-    V p, sum = {};
-    std::memcpy(&p, rho + i0, sizeof p);
+    const V p13 = load<V>(rho13 + i0), p24 = load<V>(rho24 + i0);
+    V sum13 = {}, sum24 = {};
+#pragma GCC unroll 16
     for (int i = 1; i < r; ++i) {
-      V b;
-      std::memcpy(&b, shifted + (r - i) * kChunk + i0, sizeof b);
-      sum += b & (V)((p & static_cast<L>(L{1} << i)) != 0);  // all ones where bit i is set
+      const V b = load<V>(shifted + (r - i) * kChunk + i0);
+      const L bit = static_cast<L>(L{1} << i);
+      sum13 += b & (V)((p13 & bit) != 0);  // all ones where bit i is set
+      sum24 += b & (V)((p24 & bit) != 0);
     }
-    std::memcpy(u + i0, &sum, sizeof sum);
+    store(u13 + i0, sum13);
+    store(u24 + i0, sum24);
   }
 }
 
@@ -123,8 +127,7 @@ ACORE_INLINE void horner_step(int32_t* a13, int32_t* a24, const int32_t* xh, con
     rho13[i] = static_cast<L>(a13[i] & m);
     rho24[i] = static_cast<L>(a24[i] & m);
   }
-  upper_chunk(rho13, shifted, n, r, u13);
-  upper_chunk(rho24, shifted, n, r, u24);
+  upper_chunk(rho13, rho24, shifted, n, r, u13, u24);
   const int32_t ahi = (1 << (acc_w - 1)) - 1, alo = -(1 << (acc_w - 1));
   for (int i = 0; i < n; ++i) {
     const int32_t v13 = a13[i] * xh[i] + (a13[i] >> r) * xl[i] + static_cast<int32_t>(u13[i]) +
