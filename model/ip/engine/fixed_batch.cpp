@@ -53,22 +53,21 @@ ACORE_INLINE void store(T* p, const V& v) {
   std::memcpy(p, &v, sizeof v);
 }
 
-// Scaler over a chunk: s = sat(round_shr(sum_j R_j * shr(d - O, R_SHIFT - G - j), G), S_W).
+// Scaler over a chunk: s = sat(round_shr(sum_j R_j * shr(d - O, R_SHIFT - G - j), G), S_W). The
+// partial products j >= R_SHIFT - G are exact and add up to (d - O) (R >> (R_SHIFT - G)): one
+// multiply; only the few below are shifted and floored one by one.
 ACORE_VECTOR_CLONES
 void scale_chunk(const int32_t* d, int n, int32_t offset, uint32_t recip, int reg_w, int rshift,
                  int guard, int s_w, int32_t* s, uint8_t* ovf) {
-  int32_t t[kChunk], acc[kChunk];
-  for (int i = 0; i < n; ++i) {
-    t[i] = d[i] - offset;
-    acc[i] = 0;
-  }
-  for (int j = 0; j < reg_w; ++j) {
-    if (!((recip >> j) & 1u)) continue;
-    const int sh = rshift - guard - j;
-    if (sh >= 0)
-      for (int i = 0; i < n; ++i) acc[i] += t[i] >> sh;
-    else
-      for (int i = 0; i < n; ++i) acc[i] += t[i] * (1 << -sh);
+  const int r = rshift - guard;
+  const int32_t whole = static_cast<int32_t>(recip >> r);
+  int32_t acc[kChunk];
+  for (int i0 = 0; i0 < n; i0 += kLanes32) {
+    const I32 t = load<I32>(d + i0) - offset;
+    I32 sum = t * whole;
+    for (int j = 0; j < std::min(r, reg_w); ++j)
+      if ((recip >> j) & 1u) sum += t >> (r - j);
+    store(acc + i0, sum);
   }
   const int32_t hi = (1 << (s_w - 1)) - 1, lo = -(1 << (s_w - 1));
   const int32_t half = guard > 0 ? 1 << (guard - 1) : 0;
