@@ -66,6 +66,7 @@ class FixedModel {
  private:
   RegImage img_;
   StatusWindow window_;
+  int64_t offset_[2] = {}, recip_[2] = {};  // the scaler's words, decoded once
   std::vector<int64_t> coef_;     // sign-extended polynomial words, [region][curve][power]
   std::vector<int64_t> atan_;     // CORDIC constants
   std::vector<int64_t> fourier_;  // sign-extended Fourier words (empty when fourier_k = 0)
