@@ -245,8 +245,19 @@ void region_chunk(const int32_t* s13, const int32_t* s24, int n, int regions, in
   }
 }
 
-// Each sample's polynomial coefficients, one array per power: a lane-wise lookup (a permute of
-// one register) in the table of the regions' words.
+// Lane i of the result is table[idx[i]] (0 <= idx < 16): one register permute.
+ACORE_INLINE I32 lookup(const I32& table, const I32& idx) {
+#if defined(__clang__)  // clang has no variable-index __builtin_shuffle
+  I32 out;
+  for (int i = 0; i < kLanes32; ++i) out[i] = table[idx[i] & 15];
+  return out;
+#else
+  return __builtin_shuffle(table, idx);
+#endif
+}
+
+// Each sample's polynomial coefficients, one array per power: a lane-wise lookup in the table of
+// the regions' words.
 ACORE_VECTOR_CLONES
 void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions, int terms,
                   int32_t* c13, int32_t* c24) {
@@ -258,8 +269,8 @@ void gather_chunk(const int32_t* region, int n, const int32_t* coef, int regions
     }
     for (int i0 = 0; i0 < n; i0 += kLanes32) {
       const I32 idx = load<I32>(region + i0);
-      store(c13 + j * kChunk + i0, __builtin_shuffle(t13, idx));
-      store(c24 + j * kChunk + i0, __builtin_shuffle(t24, idx));
+      store(c13 + j * kChunk + i0, lookup(t13, idx));
+      store(c24 + j * kChunk + i0, lookup(t24, idx));
     }
   }
 }
