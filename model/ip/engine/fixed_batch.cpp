@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // FixedModel::run_batch: the bit-accurate chain, stage by stage over chunks of samples, in int32
 // structure-of-arrays loops. Each loop is the stage's model (scaler.cpp, poly_correct.cpp,
-// cordic.cpp) written across samples instead of within one, so that GCC vectorizes it (AVX2 where
-// the CPU has it, picked at run time by target_clones). Used where speed matters: co-sim, the
-// benchmark, long sweeps.
+// cordic.cpp) written across samples instead of within one: plain loops GCC vectorizes, and
+// explicit vectors (GCC/clang vector extensions: 16 int32 or 32 uint16 lanes) where state must stay
+// in registers (the CORDIC) or where lanes narrower than int32 pay (the shift-add products, in
+// fx::shift_add_mul_split's form). AVX-512 or AVX2 where the CPU has it, picked at run time by
+// target_clones. Used where speed matters: co-sim, the benchmark, long sweeps.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
