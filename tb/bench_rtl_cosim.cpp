@@ -2,7 +2,8 @@
 // Verilated RTL throughput (samples per wall second, one core, tracing off): the RTL engine alone
 // (run_rtl: register load + stream), the RTL at random stalls, and RTL + bit-accurate model compare
 // (what `anglecore cosim` does); the same for the serial core (226 clocks a sample, on the first
-// 20000 samples). Run: build/tb/bench_rtl_cosim --benchmark_counters_tabular=true
+// 20000 samples); the engine at FOLD=2 as well. Run:
+//   build/tb/bench_rtl_cosim --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include "calibration/calibration.hpp"
@@ -29,15 +30,22 @@ const Setup& setup() {
   return s;
 }
 
+// Args: stall percent (input gaps and output backpressure), FOLD of the pipelined top.
 void BM_RtlEngine(benchmark::State& state) {
   const Setup& s = setup();
   acore::RtlRunOptions opt;
   opt.backpressure = opt.gaps = static_cast<double>(state.range(0)) / 100.0;
+  opt.fold = static_cast<int>(state.range(1));
   for (auto _ : state) benchmark::DoNotOptimize(acore::run_rtl(s.img, s.in, opt));
   state.counters["samples/s"] = benchmark::Counter(
       static_cast<double>(s.in.size()) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_RtlEngine)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RtlEngine)
+    ->Args({0, 1})
+    ->Args({30, 1})
+    ->Args({0, 2})
+    ->ArgNames({"stall%", "fold"})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_CosimCompare(benchmark::State& state) {
   const Setup& s = setup();

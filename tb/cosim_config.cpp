@@ -8,8 +8,14 @@
 // the build's LATENCY is what the RTL shows, that at full rate (input always valid, output always
 // ready) a sample is taken exactly every CYCLES (= FOLD) clocks and comes out LATENCY clocks later,
 // and that a long output stall (past the folded top's output FIFO) loses and repeats nothing.
+//   cosim_config --long NAME [SAMPLES]
+// The long regression (CTest label `long`, outside the default run): SAMPLES (default 10^7) in
+// all, a fifth the paper scenario, the rest random inputs under random register images (a new
+// image every 200000 samples), the corner inputs under each image; random input gaps and output
+// backpressure throughout. Prints the samples, mismatches and seconds of each part.
 // Exit 0 when all match, 1 on a mismatch, 2 on bad use.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -155,16 +161,71 @@ int run(const std::string& name, size_t samples) {
   return bad ? 1 : 0;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+int run_long(const std::string& name, size_t total) {
+  const RtlBuild& build = rtl_build_named(name);
+  if (build.top == RtlTop::kShell)
+    throw InputError("'" + name + "' is a build of the register shell (tb/test_apb_shell)");
+  const DatapathConfig& cfg = build.cfg;
+  cfg.validate();
+  std::printf("long co-sim of %s (%s): %s, %zu samples\n", name.c_str(), build.module.c_str(),
+              cfg.describe().c_str(), total);
+  const auto t0 = std::chrono::steady_clock::now();
+  const RegImage paper = paper_image(cfg);
+  const auto corners = corner_codes(cfg.in_w);
+  const size_t block = 200000, n_paper = total / 5;
+  size_t bad = 0, done = 0, blocks = 0;
+  std::mt19937_64 rng(std::hash<std::string>{}(name) ^ 0x10e7);
+  const auto run = [&](const RegImage& img, const std::vector<ChannelCodes>& in, const char* what) {
+    RtlRunOptions ro;
+    ro.top = build.top;
+    ro.seed = ++blocks;
+    ro.gaps = 0.2;
+    ro.backpressure = 0.2;
+    const cosim::Comparison c = cosim::compare(run_rtl(img, in, ro), FixedModel(img), in);
+    if (c.mismatches) std::printf("%s (block %zu): %s\n", what, blocks, c.first.c_str());
+    bad += c.mismatches;
+    done += in.size();
+  };
+  const auto paper_in = to_codes(test::paper_recording(n_paper, true), paper.in_scale, cfg.in_w);
+  for (size_t b = 0; b < paper_in.size(); b += block)
+    run(paper, {paper_in.begin() + b, paper_in.begin() + std::min(paper_in.size(), b + block)},
+        "paper scenario");
+  run(paper, corners, "corner inputs");
+  std::printf("%-28s %9zu samples, %zu mismatches, %.1f s\n", "paper scenario + corners", done, bad,
+              seconds_since(t0));
+  size_t images = 0;
+  while (done < total) {
+    const RegImage img = cosim::random_image(paper, rng, cfg.fourier_k > 0 && (rng() & 1));
+    run(img, cosim::random_codes(rng, std::min(block, total - done), cfg.in_w), "random image");
+    run(img, corners, "corners, random image");
+    ++images;
+  }
+  std::printf("%-28s %9zu samples in all (%zu random images), %zu mismatches, %.1f s\n", "long",
+              done, images, bad, seconds_since(t0));
+  std::printf("%s: %s\n", name.c_str(), bad ? "MISMATCH" : "0 mismatches");
+  return bad ? 1 : 0;
+}
+
 }  // namespace
 }  // namespace acore
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: cosim_config NAME [SAMPLES]   (NAME from rtl/configs.txt)\n");
+  const bool long_run = argc >= 2 && std::string(argv[1]) == "--long";
+  const int first = long_run ? 2 : 1;
+  if (argc < first + 1 || argc > first + 2) {
+    std::fprintf(stderr,
+                 "usage: cosim_config [--long] NAME [SAMPLES]   (NAME from rtl/configs.txt)\n");
     return 2;
   }
   try {
-    return acore::run(argv[1], argc == 3 ? std::strtoul(argv[2], nullptr, 10) : 30000);
+    const char* count = argc == first + 2 ? argv[first + 1] : nullptr;
+    if (long_run)
+      return acore::run_long(argv[first], count ? std::strtoul(count, nullptr, 10) : 10000000);
+    return acore::run(argv[first], count ? std::strtoul(count, nullptr, 10) : 30000);
   } catch (const acore::InputError& e) {
     std::fprintf(stderr, "cosim_config: %s\n", e.what());
     return 2;

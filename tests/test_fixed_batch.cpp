@@ -58,6 +58,38 @@ TEST(FixedBatch, MatchesStepOnRandomImagesAndInputsIncludingSaturation) {
     }
 }
 
+// The widths the vectorized loops read at run time (the truncated partial products in 16- or 32-bit
+// lanes by S_F, the scaler's split at R_SHIFT - SCALE_G, the CORDIC's guard bits and iterations,
+// the accumulator), on random images and inputs over the whole IN_W range.
+TEST(FixedBatch, MatchesStepAtOtherWidths) {
+  std::mt19937_64 rng(11);
+  for (const char* p :
+       {"S_F=17 S_W=20", "S_F=12 S_W=15", "S_F=8 S_W=14 COEF_F=12 ACC_I=7", "R_SHIFT=13 SCALE_G=0",
+        "R_SHIFT=16 SCALE_G=2", "IN_W=12 R_SHIFT=3 SCALE_G=3 REG_W=14 COEF_F=12 Z_W=16",
+        "CORDIC_G=5 K=12 Z_W=18 ANGLE_W=14", "IN_W=12 REG_W=14 COEF_F=12 Z_W=16",
+        "ACC_G=7 ACC_I=7 COEF_F=12 DEGREE=5 REGIONS=8"}) {
+    const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
+    RegImage img;
+    img.cfg = cfg;
+    img.words.assign(cfg.words(), 0);
+    std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
+    for (auto& w : img.words) w = word(rng);
+    img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    const int32_t lo = -(1 << (cfg.in_w - 1)), hi = (1 << (cfg.in_w - 1)) - 1;
+    std::uniform_int_distribution<int32_t> code(lo, hi);
+    std::vector<ChannelCodes> codes(5000);
+    for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
+    codes.push_back({hi, hi, lo, lo});
+    codes.push_back({lo, lo, hi, hi});
+    codes.push_back({0, 0, 0, 0});
+    const FixedModel m(img);
+    ASSERT_TRUE(m.batch_fits_int32()) << p;  // else run_batch is step() and nothing is compared
+    SCOPED_TRACE(p);
+    expect_same(m, codes);
+  }
+}
+
 // The other correction modes: none runs the vectorized loops without the Horner chunk; poly2d and
 // XCENTER fall back to step() (so the comparison guards the dispatch, not a second implementation).
 TEST(FixedBatch, MatchesStepInTheOtherCorrectionModes) {

@@ -37,6 +37,28 @@ TEST(ShiftAddMul, TruncationStaysWithinOneLsbPerDroppedPartialProduct) {
   }
 }
 
+TEST(ShiftAddMul, SplitAtTheShiftEqualsTheBitLoop) {
+  // The split form of the product (shift_add_mul_split: the stages and the batch path) against the
+  // partial-product loop, signed b (the corrections) and unsigned b (the scaler's reciprocal), at
+  // the shifts in use (9, 16: the table path) and around them, on random words and the extremes.
+  std::mt19937_64 rng(3);
+  for (int r : {3, 9, 15, 16, 17, 20}) {
+    const int bw = r + 2 + static_cast<int>(rng() % 4);
+    const int64_t bmin = -(int64_t{1} << (bw - 1)), bmax = (int64_t{1} << (bw - 1)) - 1;
+    std::uniform_int_distribution<int64_t> a(-(1 << 24), 1 << 24), b(bmin, bmax);
+    std::vector<int64_t> as{0, 1, -1, (1 << 24) - 1, -(1 << 24)}, bs{0, 1, -1, bmin, bmax};
+    for (int k = 0; k < 20000; ++k) as.push_back(a(rng)), bs.push_back(b(rng));
+    for (size_t k = 0; k < as.size(); ++k) {
+      ASSERT_EQ(fx::shift_add_mul_split(as[k], bs[k], r),
+                fx::shift_add_mul(as[k], bs[k], bw, true, r))
+          << "a " << as[k] << " b " << bs[k] << " r " << r;
+      const int64_t u = bs[k] & ((int64_t{1} << bw) - 1);  // the same bits read unsigned
+      ASSERT_EQ(fx::shift_add_mul_split(as[k], u, r), fx::shift_add_mul(as[k], u, bw, false, r))
+          << "a " << as[k] << " unsigned b " << u << " r " << r;
+    }
+  }
+}
+
 TEST(FixedHelpers, RoundSaturateSignExtend) {
   EXPECT_EQ(fx::round_shr(5, 1), 3);    // 2.5 -> 3 (half up)
   EXPECT_EQ(fx::round_shr(-5, 1), -2);  // -2.5 -> -2 (half up)

@@ -94,4 +94,40 @@ inline int64_t shift_add_mul(int64_t a, int64_t b, int b_w, bool b_signed, int r
   return sum;
 }
 
+// The truncated part of shift_add_mul, alone: sum over the bits j < r of beta (0 <= beta < 2^r)
+// of floor(rho * 2^(j-r)), for 0 <= rho < 2^r. It is below 2^r, so it fits the lanes of rho.
+template <typename T>
+T upper_partial_products(T rho, T beta, int r) {
+  T sum = 0;
+  for (int k = 1; k < r; ++k) sum += static_cast<T>((rho >> k) & (T{0} - ((beta >> (r - k)) & 1)));
+  return sum;
+}
+
+// The same for r = 16 from a table of the 8-bit case: with rho = 2^8 rho1 + rho0 and
+// beta = 2^8 beta1 + beta0, the bits j >= 8 of beta give rho1 beta1 + U8(rho0, beta1) and the
+// bits j < 8 give U8(rho1, beta0) (rho0 < 2^8 is floored away there), U8 = the 8-bit sum.
+// The 8-bit sums U8(rho, beta) at [rho << 8 | beta], built once from upper_partial_products.
+const uint8_t* upper_partial_products8_table();
+inline uint32_t upper_partial_products16(uint32_t rho, uint32_t beta) {
+  static const uint8_t* const u8 = upper_partial_products8_table();
+  const uint32_t rho1 = rho >> 8, rho0 = rho & 0xff, beta1 = beta >> 8, beta0 = beta & 0xff;
+  return rho1 * beta1 + u8[rho0 << 8 | beta1] + u8[rho1 << 8 | beta0];
+}
+
+// shift_add_mul with rshift = r, split at bit r of both operands: with a = q 2^r + rho and
+// b = h 2^r + beta (q, h floor, 0 <= rho, beta < 2^r), every partial product j >= r is exact (a h
+// in total, the sign bit's negative weight included when r <= b_w - 1), and one of j < r is
+// q 2^j + floor(rho 2^(j-r)), so
+//   shift_add_mul(a, b, b_w, b_signed, r) = a h + q beta + upper_partial_products(rho, beta, r)
+// for an unsigned b, and for a signed b when r <= b_w - 1. Only the last term needs the bit loop
+// (or the table for r = 16); the per-sample stages and the batch path use it this way.
+inline int64_t shift_add_mul_split(int64_t a, int64_t b, int r) {
+  const int64_t m = (int64_t{1} << r) - 1;
+  const uint64_t rho = static_cast<uint64_t>(a & m), beta = static_cast<uint64_t>(b & m);
+  const uint64_t upper =
+      r == 16 ? upper_partial_products16(static_cast<uint32_t>(rho), static_cast<uint32_t>(beta))
+              : upper_partial_products<uint64_t>(rho, beta, r);
+  return a * (b >> r) + (a >> r) * (b & m) + static_cast<int64_t>(upper);
+}
+
 }  // namespace acore::fx

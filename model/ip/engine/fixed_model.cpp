@@ -36,6 +36,10 @@ FixedModel::FixedModel(const RegImage& img) : FixedModel(img, StatusWindow::defa
 FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), window_(window) {
   const DatapathConfig& cfg = img_.cfg;
   cfg.validate();
+  for (int c = 0; c < 2; ++c) {
+    offset_[c] = img_.offset(c);
+    recip_[c] = img_.recip(c);
+  }
   for (int r = 0; r < cfg.regions; ++r)
     for (int c = 0; c < 2; ++c)
       for (int t = 0; t < cfg.coef_per_curve(); ++t) coef_.push_back(img_.poly(r, c, t));
@@ -67,8 +71,8 @@ FixedSample FixedModel::step(const ChannelCodes& c) const {
   const DatapathConfig& cfg = img_.cfg;
   FixedSample out;
   const DiffPair d = prefilter(c[0], c[1], c[2], c[3]);
-  out.s13 = scale_curve(d.d13, img_.offset(0), img_.recip(0), cfg, &out.ovf);
-  out.s24 = scale_curve(d.d24, img_.offset(1), img_.recip(1), cfg, &out.ovf);
+  out.s13 = scale_curve(d.d13, offset_[0], recip_[0], cfg, &out.ovf);
+  out.s24 = scale_curve(d.d24, offset_[1], recip_[1], cfg, &out.ovf);
   const RegionChoice rc = select_region(out.s13, out.s24, cfg.regions);
   out.region = rc.region;
   const int terms = cfg.coef_per_curve();

@@ -52,8 +52,8 @@ class FixedModel {
   explicit FixedModel(const RegImage& img, StatusWindow window);
   explicit FixedModel(const RegImage& img);
   FixedSample step(const ChannelCodes& c) const;
-  // The same chain over many samples at once (model/fixed_batch.cpp): structure-of-arrays int32
-  // loops the compiler vectorizes, bit-identical to step() in the RTL-visible outputs
+  // The same chain over many samples at once (engine/fixed_batch.cpp): structure-of-arrays loops
+  // and explicit SIMD vectors, bit-identical to step() in the RTL-visible outputs
   // (tests/test_fixed_batch.cpp). Falls back to step() for configurations wider than 32 bits; the
   // Fourier stage (it only reads the angle) runs per sample after the vectorized chain.
   void run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const;
@@ -66,6 +66,7 @@ class FixedModel {
  private:
   RegImage img_;
   StatusWindow window_;
+  int64_t offset_[2] = {}, recip_[2] = {};  // the scaler's words, decoded once
   std::vector<int64_t> coef_;     // sign-extended polynomial words, [region][curve][power]
   std::vector<int64_t> atan_;     // CORDIC constants
   std::vector<int64_t> fourier_;  // sign-extended Fourier words (empty when fourier_k = 0)

@@ -15,7 +15,8 @@ int64_t poly_eval(int64_t x, const int64_t* coef, const DatapathConfig& cfg, boo
   const PolyArg a = poly_argument(x, cfg);
   int64_t acc = coef[cfg.degree] * (int64_t{1} << cfg.acc_guard);
   for (int j = cfg.degree - 1; j >= 0; --j) {
-    const int64_t prod = fx::shift_add_mul(acc, a.u, cfg.s_w, true, a.shift);
+    // = fx::shift_add_mul(acc, a.u, cfg.s_w, true, a.shift): a.shift <= S_F <= S_W - 2.
+    const int64_t prod = fx::shift_add_mul_split(acc, a.u, a.shift);
     acc = fx::saturate(prod + coef[j] * (int64_t{1} << cfg.acc_guard), cfg.acc_w(), ovf);
   }
   return acc;

@@ -8,7 +8,8 @@ namespace acore {
 int64_t scale_curve(int64_t d, int64_t offset, int64_t recip, const DatapathConfig& cfg,
                     bool* ovf) {
   const int64_t t = d - offset;
-  const int64_t p = fx::shift_add_mul(t, recip, cfg.reg_w, false, cfg.r_shift - cfg.scale_guard);
+  // = fx::shift_add_mul(t, recip, cfg.reg_w, false, cfg.r_shift - cfg.scale_guard) (R unsigned).
+  const int64_t p = fx::shift_add_mul_split(t, recip, cfg.r_shift - cfg.scale_guard);
   return fx::saturate(fx::round_shr(p, cfg.scale_guard), cfg.s_w, ovf);
 }
 
