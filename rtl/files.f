@@ -34,3 +34,6 @@ acore_crc32.v
 acore_coef_scrub.v
 acore_coef_bank.v
 acore_apb.v
+acore_abz.v
+acore_uvw.v
+acore_spi_as5047.v
