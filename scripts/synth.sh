@@ -90,12 +90,15 @@ run_yosys() {  # run_yosys FLOW DESIGN
   echo "yosys $flow $d: done"
 }
 run_pnr() {  # run_pnr DESIGN
-  local d=$1 pcf=$syn/acore_hx8k_ct256.pcf
+  local d=$1 pcf
   [ -e "$build/$d.json" ] || { echo "nextpnr $d: skipped (no iCE40 netlist)"; return 1; }
-  # Pin constraints where the PCF places every port (the whole tops in their wrappers); the stage and
-  # shell wrappers and the 16-bit CORDIC are placed with their pins unconstrained.
+  # Pin constraints where a PCF of synth/ places every port (the whole tops in their wrappers:
+  # acore_hx8k_ct256.pcf; the board top: acore_board_hx8k_ct256.pcf); the stage and shell wrappers
+  # and the 16-bit CORDIC are placed with their pins unconstrained.
   local pins=(--pcf-allow-unconstrained)
-  if registry pcf-covers "$build/$d.json" "$pcf"; then pins=(--pcf "$pcf"); fi
+  for pcf in "$syn"/*.pcf; do
+    if registry pcf-covers "$build/$d.json" "$pcf"; then pins=(--pcf "$pcf"); break; fi
+  done
   if ! nextpnr-ice40 --hx8k --package ct256 --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
     "${pins[@]}" --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1; then
     # A design larger than the device is a measurement (the summary says "does not fit"), not a failure.
