@@ -17,7 +17,7 @@
 //
 // The product angle N is computed one bit of N a clock (shift-add, no multiplier): an angle that
 // arrives while one is computed waits, and a newer one replaces it (latest wins), so the target
-// follows the stream N_W + 2 clocks late at any sample rate.
+// follows the stream N_W + 3 clocks late at any sample rate.
 //
 // Hysteresis (one angle LSB): with lo = floor(angle 4N / T) and hi = floor((angle + 1) 4N / T)
 // (T = 2^ANGLE_W, hi = 4N wraps to 0), the target stays where it is when it equals hi, and is lo
@@ -65,7 +65,7 @@ module acore_abz #(
   localparam integer M_W = N_W + 2;          // 4N itself (and a signed difference of counts)
   localparam integer P_W = ANGLE_W + N_W;    // angle N
   localparam integer NMAX = 1 << (N_W - 1);
-  localparam integer LATENCY = N_W + 2;      // clocks from an accepted angle to its target
+  localparam integer LATENCY = N_W + 3;      // clocks from an accepted angle to its target
 
   acore_check #(.OK(ANGLE_W >= 2 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 2..32")) ANGLE_W_must_be_2_to_32 ();
@@ -123,6 +123,19 @@ module acore_abz #(
   wire [M_W-1:0] lo = acc_q[P_W-1:ANGLE_W-2];
   wire [M_W-1:0] hi_raw = p_hi[P_W-1:ANGLE_W-2];
   wire [M_W-1:0] hi = (hi_raw == m4) ? {M_W{1'b0}} : hi_raw;
+  // Registered once (the product's carry chain and the band's compare stay off the count's path).
+  reg res2_q;
+  reg [M_W-1:0] lo_q, hi_q;
+  reg [N_W-1:0] n_res_q;
+  always @(posedge clk_i) begin
+    if (rst_i) res2_q <= 1'b0;
+    else res2_q <= res_q;
+    if (res_q) begin
+      lo_q <= lo;
+      hi_q <= hi;
+      n_res_q <= n_run_q;
+    end
+  end
 
   // ---- the count ----
   reg [C_W-1:0] cnt_q, tgt_q;
@@ -136,7 +149,7 @@ module acore_abz #(
   wire up = (diff <= m2_cur);
   wire [C_W-1:0] top_cnt = m4_cur[C_W-1:0] - 1'b1;
   wire [SP_W-1:0] sp_load = (spacing_i == {SP_W{1'b0}}) ? {SP_W{1'b0}} : spacing_i - 1'b1;
-  wire [C_W-1:0] new_tgt = (tgt_q == hi[C_W-1:0] && hi != lo) ? tgt_q : lo[C_W-1:0];
+  wire [C_W-1:0] new_tgt = (tgt_q == hi_q[C_W-1:0] && hi_q != lo_q) ? tgt_q : lo_q[C_W-1:0];
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
@@ -145,13 +158,13 @@ module acore_abz #(
       n_cur_q <= n_clamped;
     end else begin
       if (sp_q != {SP_W{1'b0}}) sp_q <= sp_q - 1'b1;
-      if (res_q && n_run_q != n_cur_q) begin
+      if (res2_q && n_res_q != n_cur_q) begin
         // A new N: re-home without edges.
-        n_cur_q <= n_run_q;
-        cnt_q <= lo[C_W-1:0];
-        tgt_q <= lo[C_W-1:0];
+        n_cur_q <= n_res_q;
+        cnt_q <= lo_q[C_W-1:0];
+        tgt_q <= lo_q[C_W-1:0];
       end else begin
-        if (res_q) tgt_q <= new_tgt;
+        if (res2_q) tgt_q <= new_tgt;
         if (moving && sp_q == {SP_W{1'b0}}) begin
           sp_q <= sp_load;
           if (up) cnt_q <= (cnt_q == top_cnt) ? {C_W{1'b0}} : cnt_q + 1'b1;
@@ -174,7 +187,7 @@ module acore_abz #(
     end
   end
   assign count_o = cnt_q;
-  assign settled_o = ~moving & ~pend_q & ~run_q & ~res_q & ~angle_valid_i;
+  assign settled_o = ~moving & ~pend_q & ~run_q & ~res_q & ~res2_q & ~angle_valid_i;
 
 endmodule
 
