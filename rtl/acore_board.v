@@ -33,6 +33,8 @@ module acore_board #(
   // The angle (the estimator's default) and the interfaces' widths.
   parameter integer ANGLE_W = 16,
   parameter integer IN_W = 16,
+  parameter integer REG_W = 18,
+  parameter integer S_W = 18,
   parameter integer RG_W = $clog2(REGIONS)
 ) (
   input  wire               clk_i,
@@ -74,6 +76,15 @@ module acore_board #(
   output wire               miso_oe_o
 );
 
+`include "acore_derived.vh"
+
+  // The estimator's timing (the shell's): clocks from a sample taken to its angle on angle_o, and
+  // clocks per sample at full rate (the interfaces take one sample a clock).
+  localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO) :
+      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, 0, 12, FOLD);
+  localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO) :
+      acore_top_cycles(FOLD);
+
   // ---- the estimator and its register shell ----
   wire est_valid, est_ovf, est_los, est_dos, est_tag;
   wire [ANGLE_W-1:0] est_angle;
@@ -85,7 +96,8 @@ module acore_board #(
   wire [ANGLE_W-1:0] uvw_offset;
   acore_apb #(
     .SERIAL(SERIAL), .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .FOLD(FOLD),
-    .ZERO(ZERO), .INIT_FILE(INIT_FILE), .ANGLE_W(ANGLE_W), .IN_W(IN_W), .IFACE(1)
+    .ZERO(ZERO), .INIT_FILE(INIT_FILE), .ANGLE_W(ANGLE_W), .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W),
+    .IFACE(1)
   ) u_shell (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i), .penable_i(penable_i), .pwrite_i(pwrite_i),
     .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i), .prdata_o(prdata_o),
