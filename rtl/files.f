@@ -37,4 +37,5 @@ acore_apb.v
 acore_abz.v
 acore_uvw.v
 acore_spi_as5047.v
+acore_pwm.v
 acore_board.v
