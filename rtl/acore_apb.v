@@ -72,6 +72,9 @@ module acore_apb #(
   parameter integer CRC_W = (SERIAL != 0) ? 8 : 16,
   // APB byte address width (>= 11: registers below 0x100, the shadow window at 0x400).
   parameter integer APB_AW = 12,
+  // 1: the drive interfaces' configuration registers (ABZ_N .. UVW_OFFSET) and their outputs
+  // (rtl/acore_board.v); 0: those addresses are outside the map and the outputs hold their resets.
+  parameter integer IFACE = 0,
   // Reset values of the LOS/DOS window (MAG_W bits): the default never flags.
   parameter integer MAG_LO_RESET = 0,
   parameter integer MAG_HI_RESET = -1,
@@ -113,7 +116,13 @@ module acore_apb #(
   output wire               ovf_o,
   output wire               los_o,
   output wire               dos_o,
-  output wire               out_tag_o
+  output wire               out_tag_o,
+  // The drive interfaces' configuration (IFACE = 1; rtl/acore_abz.v, rtl/acore_uvw.v).
+  output wire [12:0]        abz_n_o,
+  output wire [13:0]        abz_index_o,
+  output wire [15:0]        abz_spacing_o,
+  output wire [4:0]         uvw_pp_o,
+  output wire [ANGLE_W-1:0] uvw_offset_o
 );
 
 `include "acore_derived.vh"
@@ -166,6 +175,8 @@ module acore_apb #(
   acore_check #(.OK(APB_AW >= 11 && APB_AW <= 32), .VALUE(APB_AW),
     .MSG("illegal parameter: APB_AW must be 11..32 (registers at 0x000, the shadow window at 0x400)"))
     APB_AW_must_be_11_to_32 ();
+  acore_check #(.OK(IFACE == 0 || IFACE == 1), .VALUE(IFACE),
+    .MSG("illegal parameter: IFACE must be 0 or 1")) IFACE_must_be_0_or_1 ();
   acore_check #(.OK(CRC_W == 1 || CRC_W == 2 || CRC_W == 4 || CRC_W == 8 || CRC_W == 16 || CRC_W == 32),
     .VALUE(CRC_W), .MSG("illegal parameter: CRC_W must be 1, 2, 4, 8, 16 or 32"))
     CRC_W_must_divide_32 ();
@@ -247,7 +258,16 @@ module acore_apb #(
   wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));
   wire busy_err = busy & (in_win | (in_regs & pwrite_i & ((ridx == R_CRC_EXPECTED) |
                                                           ((ridx == R_CTRL) & pwdata_i[CTRL_COMMIT]))));
-  wire err_d = (paddr_i[1:0] != 2'b00) | (pwrite_i & (pstrb_i != 4'hF)) | ~(reg_ok | in_win) | busy_err;
+  // Interface values out of range: N 1..2^(N_W-1), pole pairs 1..2^(PP_W-1) (the field widths).
+  localparam integer ABZ_N_MAX = 1 << (ABZ_N_N_W - 1);
+  localparam integer UVW_PP_MAX = 1 << (UVW_PP_POLE_PAIRS_W - 1);
+  wire [ABZ_N_N_W-1:0] wr_n = pwdata_i[ABZ_N_N +: ABZ_N_N_W];
+  wire [UVW_PP_POLE_PAIRS_W-1:0] wr_pp = pwdata_i[UVW_PP_POLE_PAIRS +: UVW_PP_POLE_PAIRS_W];
+  wire range_err = (IFACE != 0) & in_regs & pwrite_i &
+      (((ridx == R_ABZ_N) & ((wr_n == 0) | ({19'd0, wr_n} > ABZ_N_MAX))) |
+       ((ridx == R_UVW_PP) & ((wr_pp == 0) | ({27'd0, wr_pp} > UVW_PP_MAX))));
+  wire err_d = (paddr_i[1:0] != 2'b00) | (pwrite_i & (pstrb_i != 4'hF)) | ~(reg_ok | in_win) | busy_err |
+               range_err;
 
   // Control and status registers. The sticky STATUS bits are STATUS[STICKY_W-1:0] (the map's W1C
   // bits, scripts/gen_apb_regs.py checks it); their interrupt enables and pending bits have the same
@@ -291,6 +311,11 @@ module acore_apb #(
       R_CRC_REF: rd_d[CRC_REF_CRC_REF +: CRC_REF_CRC_REF_W] = crc_ref;
       R_CRC_SCRUB: rd_d[CRC_SCRUB_CRC_SCRUB +: CRC_SCRUB_CRC_SCRUB_W] = crc_scrub;
       R_SCRUB_PASSES: rd_d[SCRUB_PASSES_PASSES +: SCRUB_PASSES_PASSES_W] = scrub_passes;
+      R_ABZ_N: rd_d[ABZ_N_N +: ABZ_N_N_W] = abz_n_q;
+      R_ABZ_INDEX: rd_d[ABZ_INDEX_POS +: ABZ_INDEX_POS_W] = abz_index_q;
+      R_ABZ_SPACING: rd_d[ABZ_SPACING_SPACING +: ABZ_SPACING_SPACING_W] = abz_spacing_q;
+      R_UVW_PP: rd_d[UVW_PP_POLE_PAIRS +: UVW_PP_POLE_PAIRS_W] = uvw_pp_q;
+      R_UVW_OFFSET: rd_d[UVW_OFFSET_OFFSET +: UVW_OFFSET_OFFSET_W] = uvw_offset_q;
       default: rd_d = 32'd0;
     endcase
   end
@@ -304,6 +329,7 @@ module acore_apb #(
   wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);
   wire ok_reg_wr = ok_wr & in_regs;
   reg err_q, win_q, w_ctrl_q, w_status_q, w_mag_lo_q, w_mag_hi_q, w_crc_q, w_win_q;
+  reg w_abz_n_q, w_abz_index_q, w_abz_spacing_q, w_uvw_pp_q, w_uvw_offset_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
     if (setup) begin
@@ -316,6 +342,11 @@ module acore_apb #(
       w_mag_hi_q <= ok_reg_wr & (ridx == R_MAG_HI);
       w_crc_q <= ok_reg_wr & (ridx == R_CRC_EXPECTED) & ~busy;
       w_win_q <= ok_wr & in_win & ~busy;
+      w_abz_n_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_ABZ_N) & ~range_err;
+      w_abz_index_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_ABZ_INDEX);
+      w_abz_spacing_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_ABZ_SPACING);
+      w_uvw_pp_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_UVW_PP) & ~range_err;
+      w_uvw_offset_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_UVW_OFFSET);
     end
   end
   wire [REG_W-1:0] sh_rdata;
@@ -329,6 +360,33 @@ module acore_apb #(
   wire commit = wr_ctrl & pwdata_i[CTRL_COMMIT];
   wire clear = wr_ctrl & pwdata_i[CTRL_CLEAR];
   wire [STICKY_W-1:0] w1c = (access && w_status_q) ? pwdata_i[STICKY_W-1:0] : {STICKY_W{1'b0}};
+  // The interface registers (IFACE = 1).
+  reg [ABZ_N_N_W-1:0] abz_n_q;
+  reg [ABZ_INDEX_POS_W-1:0] abz_index_q;
+  reg [ABZ_SPACING_SPACING_W-1:0] abz_spacing_q;
+  reg [UVW_PP_POLE_PAIRS_W-1:0] uvw_pp_q;
+  reg [UVW_OFFSET_OFFSET_W-1:0] uvw_offset_q;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      abz_n_q <= ABZ_N_RESET[ABZ_N_N +: ABZ_N_N_W];
+      abz_index_q <= ABZ_INDEX_RESET[ABZ_INDEX_POS +: ABZ_INDEX_POS_W];
+      abz_spacing_q <= ABZ_SPACING_RESET[ABZ_SPACING_SPACING +: ABZ_SPACING_SPACING_W];
+      uvw_pp_q <= UVW_PP_RESET[UVW_PP_POLE_PAIRS +: UVW_PP_POLE_PAIRS_W];
+      uvw_offset_q <= {UVW_OFFSET_OFFSET_W{1'b0}};
+    end else if (access) begin
+      if (w_abz_n_q) abz_n_q <= wr_n;
+      if (w_abz_index_q) abz_index_q <= pwdata_i[ABZ_INDEX_POS +: ABZ_INDEX_POS_W];
+      if (w_abz_spacing_q) abz_spacing_q <= pwdata_i[ABZ_SPACING_SPACING +: ABZ_SPACING_SPACING_W];
+      if (w_uvw_pp_q) uvw_pp_q <= wr_pp;
+      if (w_uvw_offset_q) uvw_offset_q <= pwdata_i[UVW_OFFSET_OFFSET +: UVW_OFFSET_OFFSET_W];
+    end
+  end
+  assign abz_n_o = abz_n_q;
+  assign abz_index_o = abz_index_q;
+  assign abz_spacing_o = abz_spacing_q;
+  assign uvw_pp_o = uvw_pp_q;
+  assign uvw_offset_o = uvw_offset_q;
+
   localparam [MAG_W-1:0] MAG_LO_R = MAG_LO_RESET[MAG_W-1:0];
   localparam [MAG_W-1:0] MAG_HI_R = MAG_HI_RESET[MAG_W-1:0];
   // Events of this clock at their STATUS positions (set wins over a clear in the same clock: no

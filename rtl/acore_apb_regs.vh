@@ -21,9 +21,16 @@ localparam [5:0] R_CRC_SHADOW = 6'h11;
 localparam [5:0] R_CRC_REF = 6'h12;
 localparam [5:0] R_CRC_SCRUB = 6'h13;
 localparam [5:0] R_SCRUB_PASSES = 6'h14;
+localparam [5:0] R_ABZ_N = 6'h18;
+localparam [5:0] R_ABZ_INDEX = 6'h19;
+localparam [5:0] R_ABZ_SPACING = 6'h1A;
+localparam [5:0] R_UVW_PP = 6'h1B;
+localparam [5:0] R_UVW_OFFSET = 6'h1C;
 // The registers the decode answers, one bit per word index: read only, and writable.
+// (The registers of a 'when PARAM' group only when that parameter is nonzero.)
 localparam [63:0] REGS_RO = 64'h00000000001E041F;
-localparam [63:0] REGS_WR = 64'h0000000000013300;
+localparam [63:0] REGS_WR = 64'h0000000000013300 |
+    ((IFACE) != 0 ? 64'h000000001F000000 : 64'h0);
 // COEF: 256 words from byte 0x400 (word index 256).
 localparam integer COEF_BASE = 1024;
 localparam integer COEF_WORDS = 256;
@@ -70,10 +77,20 @@ localparam integer CRC_SHADOW_CRC_SHADOW = 0, CRC_SHADOW_CRC_SHADOW_W = 32;
 localparam integer CRC_REF_CRC_REF = 0, CRC_REF_CRC_REF_W = 32;
 localparam integer CRC_SCRUB_CRC_SCRUB = 0, CRC_SCRUB_CRC_SCRUB_W = 32;
 localparam integer SCRUB_PASSES_PASSES = 0, SCRUB_PASSES_PASSES_W = 16;
+localparam integer ABZ_N_N = 0, ABZ_N_N_W = 13;
+localparam integer ABZ_INDEX_POS = 0, ABZ_INDEX_POS_W = 14;
+localparam integer ABZ_SPACING_SPACING = 0, ABZ_SPACING_SPACING_W = 16;
+localparam integer UVW_PP_POLE_PAIRS = 0, UVW_PP_POLE_PAIRS_W = 5;
+localparam integer UVW_OFFSET_OFFSET = 0, UVW_OFFSET_OFFSET_W = ANGLE_W;
 localparam integer COEF_WORD = 0, COEF_WORD_W = REG_W;
 // Reset values of the writable registers (fields with a constant reset).
 localparam [31:0] CTRL_RESET = 32'h00000008;
 localparam [31:0] CRC_EXPECTED_RESET = 32'h00000000;
+localparam [31:0] ABZ_N_RESET = 32'h00000400;
+localparam [31:0] ABZ_INDEX_RESET = 32'h00000000;
+localparam [31:0] ABZ_SPACING_RESET = 32'h00000001;
+localparam [31:0] UVW_PP_RESET = 32'h00000001;
+localparam [31:0] UVW_OFFSET_RESET = 32'h00000000;
 // The registers of constants (the CONFIG registers read the build's parameters).
 localparam [31:0] ID_VALUE =
     (32'h4143 << ID_MAGIC) |

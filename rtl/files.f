@@ -36,3 +36,8 @@ acore_coef_scrub.v
 acore_coef_bank.v
 acore_apb.v
 acore_track.v
+acore_abz.v
+acore_uvw.v
+acore_spi_as5047.v
+acore_pwm.v
+acore_board.v

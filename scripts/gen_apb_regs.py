@@ -52,6 +52,7 @@ class Reg:
         self.kind, self.offset, self.name, self.access, self.summary, self.words = (
             kind, offset, name, access, summary, words)
         self.fields = []
+        self.when = None  # a parameter of acore_apb.v: the register exists when it is nonzero
 
 
 def camel(name):
@@ -60,7 +61,7 @@ def camel(name):
 
 def parse(path):
     """(space, regs, notes) from the description; DescError names the line and the field."""
-    regs, notes, space = [], [], None
+    regs, notes, space, when = [], [], None, None
     with open(path) as f:
         lines = f.read().split("\n")
     for n, raw in enumerate(lines, 1):
@@ -79,6 +80,13 @@ def parse(path):
 
         if kind == "space":
             space = num(rest, "space")
+        elif kind == "when":
+            if rest == "-":
+                when = None
+            elif re.fullmatch(r"[A-Z][A-Z0-9_]*", rest):
+                when = rest
+            else:
+                raise DescError(f"{where}: 'when' takes a parameter name or '-', not '{rest}'")
         elif kind == "note":
             notes.append(rest)
         elif kind in ("reg", "const", "window"):
@@ -103,7 +111,10 @@ def parse(path):
                 raise DescError(f"{where}: register {name} at {parts[0]}: registers live below 0x100")
             if kind == "const" and access != "RO":
                 raise DescError(f"{where}: register of constants {name} must be RO")
+            if when and kind != "reg":
+                raise DescError(f"{where}: {name}: only a 'reg' can depend on a parameter ('when')")
             regs.append(Reg(kind, offset, name, access, parts[-1], words))
+            regs[-1].when = when
         elif kind == "field":
             if not regs:
                 raise DescError(f"{where}: a field before any register")
@@ -136,7 +147,7 @@ def parse(path):
                         raise DescError(f"{where}: field {name} ({bits}) overlaps {x.name} ({x.bits()})")
             reg.fields.append(Field(msb, lsb, name, access, reset, meaning))
         else:
-            raise DescError(f"{where}: unknown line kind '{kind}' (space, reg, field, window, note)")
+            raise DescError(f"{where}: unknown line kind '{kind}' (space, reg, field, window, when, note)")
     if space is None:
         raise DescError(f"{path}: no 'space' line")
     names, offsets = set(), set()
@@ -186,11 +197,22 @@ def gen_vh(space, regs, notes):
     out.append("// Register word indices (byte address / 4).\n")
     for r in plain:
         out.append(f"localparam [5:0] R_{r.name} = 6'h{r.offset >> 2:02X};\n")
-    ro = sum(1 << (r.offset >> 2) for r in plain if r.access == "RO")
-    wr = sum(1 << (r.offset >> 2) for r in plain if r.access != "RO")
+    ro = sum(1 << (r.offset >> 2) for r in plain if r.access == "RO" and not r.when)
+    wr = sum(1 << (r.offset >> 2) for r in plain if r.access != "RO" and not r.when)
     out.append("// The registers the decode answers, one bit per word index: read only, and writable.\n")
-    out.append(f"localparam [63:0] REGS_RO = 64'h{ro:016X};\n")
-    out.append(f"localparam [63:0] REGS_WR = 64'h{wr:016X};\n")
+    conds = sorted({r.when for r in plain if r.when})
+    if not conds:
+        out.append(f"localparam [63:0] REGS_RO = 64'h{ro:016X};\n")
+        out.append(f"localparam [63:0] REGS_WR = 64'h{wr:016X};\n")
+    else:
+        out.append("// (The registers of a 'when PARAM' group only when that parameter is nonzero.)\n")
+        for kind, base, test in (("RO", ro, lambda r: r.access == "RO"), ("WR", wr, lambda r: r.access != "RO")):
+            terms = [f"64'h{base:016X}"]
+            for c in conds:
+                m = sum(1 << (r.offset >> 2) for r in plain if r.when == c and test(r))
+                if m:
+                    terms.append(f"(({c}) != 0 ? 64'h{m:016X} : 64'h0)")
+            out.append(f"localparam [63:0] REGS_{kind} = " + " |\n    ".join(terms) + ";\n")
     for w in (r for r in regs if r.kind == "window"):
         out.append(f"// {w.name}: {w.words} words from byte 0x{w.offset:03X} (word index {w.offset >> 2}).\n")
         out.append(f"localparam integer {w.name}_BASE = {w.offset};\n")
@@ -239,7 +261,7 @@ def gen_hpp(space, regs, notes):
            f"constexpr uint32_t kAddrSpace = 0x{space:X};\n"]
     for r in regs:
         what = (f"{r.words} words, word a at 0x{r.offset:03X} + 4a" if r.kind == "window"
-                else f"{r.access}")
+                else f"{r.access}" + (f", when {r.when} != 0" if r.when else ""))
         out.append(f"\n{cpp_comment(f'{r.name} ({what}): {r.summary}')}")
         out.append(f"constexpr uint32_t k{camel(r.name)} = 0x{r.offset:03X};\n")
         for f in r.fields:
@@ -297,12 +319,14 @@ def gen_md(space, regs, notes):
             reset = r.fields[0].reset
         else:
             reset = "parameters"
+        cond = f" (only when `{r.when}` = 1)" if r.when else ""
         out.append(f"| {addr} | [{name}](#{r.name.lower()}) | {r.access} | {reset} | "
-                   f"{md_escape(r.summary)} |\n")
+                   f"{md_escape(r.summary)}{cond} |\n")
     for r in regs:
         addr = (f"0x{r.offset:03X} + 4a, a < WORDS (at most {r.words})" if r.kind == "window"
                 else f"0x{r.offset:03X}")
-        out.append(f"\n## {r.name}\n\n{addr}, {r.access}. {md_escape(r.summary)}\n\n")
+        cond = f" Present only when the shell's parameter `{r.when}` is 1." if r.when else ""
+        out.append(f"\n## {r.name}\n\n{addr}, {r.access}. {md_escape(r.summary)}{cond}\n\n")
         out.append("| bits | field | access | reset | meaning |\n|---|---|---|---|---|\n")
         for f in sorted(r.fields, key=lambda x: -x.lsb if isinstance(x.msb, int) else 0):
             out.append(f"| {f.bits()} | {f.name} | {f.access} | {f.reset} | {md_escape(f.meaning)} |\n")

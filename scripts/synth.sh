@@ -93,16 +93,19 @@ run_yosys() {  # run_yosys FLOW DESIGN
   echo "yosys $flow $d: done"
 }
 run_pnr() {  # run_pnr DESIGN [DEVICE]: DEVICE hx8k (default, ct256) or up5k (sg48)
-  local d=$1 dev=${2:-hx8k} pcf=$syn/acore_hx8k_ct256.pcf
+  local d=$1 dev=${2:-hx8k} pcf
   [ -e "$build/$d.json" ] || { echo "nextpnr $d: skipped (no iCE40 netlist)"; return 1; }
-  # Pin constraints where the PCF places every port (the whole tops in their wrappers); the stage and
-  # shell wrappers and the 16-bit CORDIC are placed with their pins unconstrained, as is everything on
-  # the UP5K (the PCF is the HX8K board's).
+  # Pin constraints where a PCF of synth/ places every port (the whole tops in their wrappers:
+  # acore_hx8k_ct256.pcf; the board top: acore_board_hx8k_ct256.pcf); the stage and shell wrappers
+  # and the 16-bit CORDIC are placed with their pins unconstrained, as is everything on the UP5K
+  # (the PCFs are the HX8K board's).
   local pins=(--pcf-allow-unconstrained) device=(--hx8k --package ct256)
   if [ "$dev" = up5k ]; then
     device=(--up5k --package sg48)
-  elif registry pcf-covers "$build/$d.json" "$pcf"; then
-    pins=(--pcf "$pcf")
+  else
+    for pcf in "$syn"/*.pcf; do
+      if registry pcf-covers "$build/$d.json" "$pcf"; then pins=(--pcf "$pcf"); break; fi
+    done
   fi
   if ! nextpnr-ice40 "${device[@]}" --json "$build/$d.json" --asc "$build/$d.asc" --freq $freq \
     "${pins[@]}" --timing-allow-fail --seed 1 -l "$rep/nextpnr_$d.log" >/dev/null 2>&1; then

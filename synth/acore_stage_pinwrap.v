@@ -153,4 +153,91 @@ module acore_fourier_correct_pinwrap #(
     .angle_o(angle_o));
 endmodule
 
+// The drive interfaces (rtl/acore_abz.v, acore_uvw.v, acore_spi_as5047.v): the angle and the
+// configuration words through the shift register, the interface's own pins on pins.
+module acore_abz_pinwrap #(
+  parameter integer ANGLE_W = 16,
+  parameter integer N_W = 13,
+  parameter integer SP_W = 16
+) (
+  input  wire clk_i,
+  input  wire rst_i,
+  input  wire sdi_i,
+  input  wire shift_i,
+  input  wire en_i,
+  output wire a_o,
+  output wire b_o,
+  output wire z_o,
+  output wire settled_o
+);
+  localparam integer SR_W = ANGLE_W + N_W + (N_W + 1) + SP_W;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  wire [N_W:0] count;
+  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(N_W), .SP_W(SP_W)) u_stage (
+    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(en_q), .angle_i(sr_q[ANGLE_W-1:0]),
+    .n_i(sr_q[ANGLE_W +: N_W]), .index_i(sr_q[ANGLE_W + N_W +: N_W + 1]),
+    .spacing_i(sr_q[ANGLE_W + 2 * N_W + 1 +: SP_W]), .a_o(a_o), .b_o(b_o), .z_o(z_o),
+    .count_o(count), .settled_o(settled_o));
+endmodule
+
+module acore_uvw_pinwrap #(
+  parameter integer ANGLE_W = 16,
+  parameter integer PP_W = 5
+) (
+  input  wire       clk_i,
+  input  wire       rst_i,
+  input  wire       sdi_i,
+  input  wire       shift_i,
+  input  wire       en_i,
+  output wire       u_o,
+  output wire       v_o,
+  output wire       w_o,
+  output wire [2:0] sector_o,
+  output wire       valid_o
+);
+  localparam integer SR_W = 2 * ANGLE_W + PP_W;
+  reg [SR_W-1:0] sr_q;
+  reg en_q;
+  always @(posedge clk_i) begin
+    if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+    en_q <= en_i;
+  end
+  acore_uvw #(.ANGLE_W(ANGLE_W), .PP_W(PP_W)) u_stage (
+    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(en_q), .angle_i(sr_q[ANGLE_W-1:0]),
+    .pp_i(sr_q[ANGLE_W +: PP_W]), .offset_i(sr_q[ANGLE_W + PP_W +: ANGLE_W]), .u_o(u_o), .v_o(v_o),
+    .w_o(w_o), .sector_o(sector_o), .valid_o(valid_o));
+endmodule
+
+module acore_spi_as5047_pinwrap #(
+  parameter integer ANGLE_W = 16,
+  parameter integer SYNC = 2
+) (
+  input  wire       clk_i,
+  input  wire       rst_i,
+  input  wire       sdi_i,
+  input  wire       shift_i,
+  input  wire       sclk_i,
+  input  wire       csn_i,
+  input  wire       mosi_i,
+  output wire       miso_o,
+  output wire       miso_oe_o,
+  output wire       frame_o,
+  output wire [2:0] errfl_o
+);
+  localparam integer SR_W = 2 * ANGLE_W + 14 + 8 + 4;
+  reg [SR_W-1:0] sr_q;
+  always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
+  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(SYNC)) u_stage (
+    .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
+    .miso_oe_o(miso_oe_o), .angle_unc_i(sr_q[ANGLE_W-1:0]), .angle_com_i(sr_q[ANGLE_W +: ANGLE_W]),
+    .mag_i(sr_q[2 * ANGLE_W +: 14]), .agc_i(sr_q[2 * ANGLE_W + 14 +: 8]),
+    .los_i(sr_q[SR_W-4]), .dos_i(sr_q[SR_W-3]), .ovf_i(sr_q[SR_W-2]), .lot_i(sr_q[SR_W-1]),
+    .frame_o(frame_o), .errfl_o(errfl_o));
+endmodule
+
 `resetall

@@ -7,9 +7,10 @@
 The RTL writes constant products with `*` (parameters, localparams, the constant functions of
 rtl/acore_derived.vh): they are evaluated at elaboration. The datapath multiplies on adders and
 shifters only. This check proves it on the netlist: for every line of rtl/configs.txt whose module
-is acore_top, acore_serial_top, acore_apb, acore_cordic, acore_cordic_serial or acore_track, Yosys
-reads rtl/files.f,
-elaborates the module with the line's parameters (hierarchy -chparam) and runs `proc`; the design must then hold
+is acore_top, acore_serial_top, acore_apb, acore_cordic, acore_cordic_serial, acore_track, a drive
+interface or the board top (acore_abz, acore_uvw, acore_spi_as5047, acore_pwm, acore_board), Yosys
+reads rtl/files.f, elaborates the module with the line's parameters (hierarchy -chparam) and runs
+`proc`; the design must then hold
 no $mul, $macc, $div, $mod, $divfloor, $modfloor or $pow cell (checked before any optimization, so
 a product cannot hide behind constant folding). A negative control first: a module with one `*`
 between two inputs must fail the same check, so the check cannot pass on a design it did not see.
@@ -27,7 +28,7 @@ import tempfile
 import time
 
 MODULES = ("acore_top", "acore_serial_top", "acore_apb", "acore_cordic", "acore_cordic_serial",
-           "acore_track")
+           "acore_track", "acore_abz", "acore_uvw", "acore_spi_as5047", "acore_pwm", "acore_board")
 CELLS = ("$mul", "$macc", "$div", "$mod", "$divfloor", "$modfloor", "$pow")
 
 

@@ -184,6 +184,50 @@ constexpr uint32_t kScrubPasses = 0x050;
 constexpr int kScrubPassesPassesShift = 0;
 constexpr uint32_t kScrubPassesPassesMask = 0xFFFFu;
 
+// ABZ_N (RW, when IFACE != 0): ABZ quadrature: pulses a turn.
+constexpr uint32_t kAbzN = 0x060;
+// N [12:0] (RW): A/B periods a turn, 1..4096 (4N counts a turn); a write of another value is an
+// error. A new N re-homes the count without edges.
+constexpr int kAbzNNShift = 0;
+constexpr uint32_t kAbzNNMask = 0x1FFFu;
+constexpr uint32_t kAbzNReset = 0x400u;
+// The bits that read back.
+constexpr uint32_t kAbzNReadMask = 0x1FFFu;
+
+// ABZ_INDEX (RW, when IFACE != 0): ABZ quadrature: the index position.
+constexpr uint32_t kAbzIndex = 0x064;
+// POS [13:0] (RW): The count (0..4N-1) at which Z is high, one count wide, once a turn.
+constexpr int kAbzIndexPosShift = 0;
+constexpr uint32_t kAbzIndexPosMask = 0x3FFFu;
+constexpr uint32_t kAbzIndexReset = 0x0u;
+// The bits that read back.
+constexpr uint32_t kAbzIndexReadMask = 0x3FFFu;
+
+// ABZ_SPACING (RW, when IFACE != 0): ABZ quadrature: the minimum edge spacing.
+constexpr uint32_t kAbzSpacing = 0x068;
+// SPACING [15:0] (RW): Minimum clocks between two A/B edges (0 and 1: one a clock); a jump is
+// caught up at this rate, every count emitted.
+constexpr int kAbzSpacingSpacingShift = 0;
+constexpr uint32_t kAbzSpacingSpacingMask = 0xFFFFu;
+constexpr uint32_t kAbzSpacingReset = 0x1u;
+// The bits that read back.
+constexpr uint32_t kAbzSpacingReadMask = 0xFFFFu;
+
+// UVW_PP (RW, when IFACE != 0): UVW commutation: pole pairs.
+constexpr uint32_t kUvwPp = 0x06C;
+// POLE_PAIRS [4:0] (RW): Pole pairs, 1..16; a write of another value is an error.
+constexpr int kUvwPpPolePairsShift = 0;
+constexpr uint32_t kUvwPpPolePairsMask = 0x1Fu;
+constexpr uint32_t kUvwPpReset = 0x1u;
+// The bits that read back.
+constexpr uint32_t kUvwPpReadMask = 0x1Fu;
+
+// UVW_OFFSET (RW, when IFACE != 0): UVW commutation: the electrical zero.
+constexpr uint32_t kUvwOffset = 0x070;
+// OFFSET [ANGLE_W-1:0] (RW): The angle (turn fraction, ANGLE_W bits) at which the electrical angle
+// is 0: sector 0 starts there.
+constexpr int kUvwOffsetOffsetShift = 0;
+
 // COEF (256 words, word a at 0x400 + 4a): The shadow coefficient words: word a (a < WORDS) of the
 // register image at 0x400 + 4a.
 constexpr uint32_t kCoef = 0x400;

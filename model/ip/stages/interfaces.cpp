@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+#include "stages/interfaces.hpp"
+
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace acore {
+
+namespace {
+void check_abz(int angle_w, int64_t n) {
+  if (n < 1 || n > kAbzMaxN)
+    throw InputError("ABZ: N must be 1.." + std::to_string(kAbzMaxN) + " pulses a turn, not " +
+                     std::to_string(n));
+  if (angle_w < 2 || angle_w > 32)
+    throw InputError("ABZ: angle width must be 2..32, not " + std::to_string(angle_w));
+}
+}  // namespace
+
+int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n) {
+  check_abz(angle_w, n);
+  const uint64_t a = angle & ((uint64_t{1} << angle_w) - 1);
+  // (a N) >> (angle_w - 2): the RTL's shift-add product, then its upper bits.
+  uint64_t p = 0;
+  for (int i = 0; i < 13; ++i)
+    if ((static_cast<uint64_t>(n) >> i) & 1) p += a << i;
+  return static_cast<int64_t>(p >> (angle_w - 2));
+}
+
+int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_target) {
+  const int64_t lo = abz_count_of(angle, angle_w, n);
+  const uint64_t a = angle & ((uint64_t{1} << angle_w) - 1);
+  uint64_t p = 0;
+  for (int i = 0; i < 13; ++i)
+    if ((static_cast<uint64_t>(n) >> i) & 1) p += a << i;
+  int64_t hi = static_cast<int64_t>((p + static_cast<uint64_t>(n)) >> (angle_w - 2));
+  if (hi == 4 * n) hi = 0;
+  return (previous_target == hi && hi != lo) ? hi : lo;
+}
+
+AbzPins abz_pins(int64_t count, int64_t index) {
+  return {((count >> 1) ^ count) & 1 ? true : false, ((count >> 1) & 1) != 0, count == index};
+}
+
+AbzCounter::AbzCounter(int64_t n, int spacing) : n_(n), spacing_(spacing < 1 ? 1 : spacing) {
+  check_abz(16, n);
+}
+
+int AbzCounter::step() {
+  if (wait_ > 0) {
+    --wait_;
+    return 0;
+  }
+  if (count_ == target_) return 0;
+  const int64_t m = 4 * n_;
+  const int64_t d = ((target_ - count_) % m + m) % m;
+  const int dir = d <= 2 * n_ ? 1 : -1;
+  count_ = ((count_ + dir) % m + m) % m;
+  wait_ = spacing_ - 1;
+  return dir;
+}
+
+UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs) {
+  if (pole_pairs < 1 || pole_pairs > kUvwMaxPolePairs)
+    throw InputError("UVW: pole pairs must be 1.." + std::to_string(kUvwMaxPolePairs) + ", not " +
+                     std::to_string(pole_pairs));
+  if (angle_w < 3 || angle_w > 32)
+    throw InputError("UVW: angle width must be 3..32, not " + std::to_string(angle_w));
+  const uint64_t mask = (uint64_t{1} << angle_w) - 1;
+  const uint64_t d = (angle - offset) & mask;
+  uint64_t e = 0;
+  for (int i = 0; i < 5; ++i)
+    if ((pole_pairs >> i) & 1) e += d << i;
+  e &= mask;
+  // Sector thresholds ceil(k 2^angle_w / 6), as the RTL's constants.
+  int s = 0;
+  for (int k = 1; k <= 5; ++k) {
+    const uint64_t t = ((uint64_t{1} << angle_w) * static_cast<uint64_t>(k) + 5) / 6;
+    if (e >= t) s = k;
+  }
+  return {s, s <= 2, s >= 2 && s <= 4, s >= 4 || s == 0};
+}
+
+namespace as5047 {
+bool parity_even(uint16_t word) {
+  int c = 0;
+  for (int i = 0; i < 16; ++i) c ^= (word >> i) & 1;
+  return c == 0;
+}
+uint16_t with_even_parity(uint16_t word15) {
+  const uint16_t w = word15 & 0x7FFF;
+  return static_cast<uint16_t>(w | (parity_even(w) ? 0 : 0x8000));
+}
+}  // namespace as5047
+
+uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits) {
+  using namespace as5047;
+  // The answer, from the register chosen by the previous frame, as the frame starts.
+  uint16_t data = 0;
+  switch (answer_reg_) {
+    case kErrfl:
+      data = errfl_;
+      break;
+    case kDiaagc:
+      data = static_cast<uint16_t>((in.los << 11) | (in.dos << 10) | (in.ovf << 9) |
+                                   ((in.lot ? 0 : 1) << 8) | in.agc);
+      break;
+    case kMag:
+      data = in.mag & 0x3FFF;
+      break;
+    case kAngleUnc:
+      data = static_cast<uint16_t>((in.angle_unc >> (in.angle_w - 14)) & 0x3FFF);
+      break;
+    case kAngleCom:
+      data = static_cast<uint16_t>((in.angle_com >> (in.angle_w - 14)) & 0x3FFF);
+      break;
+    default:
+      break;
+  }
+  const bool ef = errfl_ != 0;
+  const uint16_t answer = with_even_parity(static_cast<uint16_t>((ef ? 0x4000 : 0) | data));
+  if (answer_reg_ == kErrfl) errfl_ = 0;  // read clears
+  // The command at the end of the frame.
+  const uint16_t addr = mosi & 0x3FFF;
+  const bool read = (mosi >> 14) & 1;
+  const bool known = addr == kNop || addr == kErrfl || addr == kDiaagc || addr == kMag ||
+                     addr == kAngleUnc || addr == kAngleCom;
+  const bool write = !read && addr != kNop;
+  if (bits != 16) {
+    errfl_ |= kFrErr;
+    answer_reg_ = kNop;
+  } else if (!parity_even(mosi)) {
+    errfl_ |= kParErr;
+    answer_reg_ = kNop;
+    write_data_ = false;
+  } else if (write_data_) {
+    write_data_ = false;
+    answer_reg_ = kNop;
+  } else {
+    if (write || !known) errfl_ |= kInvComm;
+    write_data_ = write;
+    answer_reg_ = (read && known) ? addr : kNop;
+  }
+  // The answer the master received: only the bits it clocked.
+  return bits >= 16 ? answer : static_cast<uint16_t>(answer >> (16 - bits));
+}
+
+}  // namespace acore

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// The drive interfaces on the angle stream, bit-exact with rtl/acore_abz.v, rtl/acore_uvw.v and
+// rtl/acore_spi_as5047.v (what they compute; the RTL's clock timing is documented in each module):
+//   - ABZ: the count a quadrature decoder reads once the output has caught up, with the one-LSB
+//     hysteresis, and the step-by-step walk toward it (the shorter way, at most one edge per
+//     `spacing` clocks);
+//   - UVW: the six-step sector of the electrical angle ((angle - offset) pole_pairs) and the three
+//     signals;
+//   - the AS5047P-compatible SPI port at frame level: command in, the answer of the previous
+//     command out, ERRFL and the error flag.
+// Register values outside their ranges (N, pole pairs) are refused with InputError, as the APB
+// shell refuses the write (the RTL clamps what reaches it).
+#pragma once
+#include <cstdint>
+
+namespace acore {
+
+// ---- ABZ
+// --------------------------------------------------------------------------------------------
+constexpr int64_t kAbzMaxN = 4096;  // pulses a turn (the shell's ABZ_N, 13 bits)
+
+// floor(angle 4N / 2^angle_w): the count of an angle (0 .. 4N-1). Throws InputError on N outside
+// 1 .. kAbzMaxN or an angle_w outside 2..32.
+int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n);
+// The target after a new angle given the previous target: the count of angle + 1 LSB (mod 4N)
+// when the previous target is that count (the one-LSB hysteresis band), the angle's count
+// otherwise.
+int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_target);
+// A quadrature pair from a count: A = c1 ^ c0, B = c1 (Gray 00, 10, 11, 01 forward).
+struct AbzPins {
+  bool a, b, z;
+};
+AbzPins abz_pins(int64_t count, int64_t index);
+
+// The count walking toward its target, one clock per step() (acore_abz.v's count register).
+class AbzCounter {
+ public:
+  AbzCounter(int64_t n, int spacing);
+  void set_target(int64_t target) { target_ = target; }
+  // One clock: a step toward the target (the shorter way, a half turn forward) when the spacing
+  // since the last edge has passed. Returns +1, -1 or 0.
+  int step();
+  int64_t count() const { return count_; }
+  int64_t target() const { return target_; }
+
+ private:
+  int64_t n_, count_ = 0, target_ = 0;
+  int spacing_, wait_ = 0;
+};
+
+// ---- UVW
+// --------------------------------------------------------------------------------------------
+constexpr int kUvwMaxPolePairs = 16;
+
+struct UvwState {
+  int sector;  // 0..5: floor(6 e / 2^angle_w)
+  bool u, v, w;
+};
+// The electrical angle e = ((angle - offset) pole_pairs) mod 2^angle_w, its sector and U, V, W
+// (U in sectors 0-2, V in 2-4, W in 4, 5, 0). Throws InputError on pole_pairs outside 1..16.
+UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs);
+
+// ---- AS5047P SPI
+// ----------------------------------------------------------------------------------
+namespace as5047 {
+constexpr uint16_t kNop = 0x0000, kErrfl = 0x0001, kDiaagc = 0x3FFC, kMag = 0x3FFD,
+                   kAngleUnc = 0x3FFE, kAngleCom = 0x3FFF;
+constexpr uint16_t kFrErr = 1, kInvComm = 2, kParErr = 4;  // ERRFL bits
+// The 16-bit word with bit 15 set so that its parity is even.
+uint16_t with_even_parity(uint16_t word15);
+bool parity_even(uint16_t word);
+}  // namespace as5047
+
+// What the port's registers read (the angles' upper 14 bits are sent).
+struct As5047Inputs {
+  uint64_t angle_unc = 0, angle_com = 0;
+  int angle_w = 16;
+  uint16_t mag = 0;
+  uint8_t agc = 0;
+  bool los = false, dos = false, ovf = false, lot = false;
+};
+
+// The port at frame level: frame() takes the master's word and clock count and returns the word
+// the port sent (the answer prepared by the previous frame, from `in` as it is when this frame
+// starts).
+class As5047Port {
+ public:
+  uint16_t frame(uint16_t mosi, const As5047Inputs& in, int bits = 16);
+  uint16_t errfl() const { return errfl_; }
+
+ private:
+  uint16_t errfl_ = 0;
+  uint16_t answer_reg_ = as5047::kNop;
+  bool write_data_ = false;
+};
+
+}  // namespace acore

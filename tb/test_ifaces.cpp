@@ -1,0 +1,677 @@
+// SPDX-License-Identifier: MIT
+// The drive interfaces on the angle stream alone, each Verilated from its registry line
+// (rtl/configs.txt: stage_abz, stage_uvw, stage_spi) and checked against an expectation written
+// here, independently of the RTL:
+//   - ABZ (rtl/acore_abz.v): a quadrature decoder (Gray-step table, x4 counting) counts the A/B
+//     edges; after every catch-up its count equals floor(angle 4N / 2^ANGLE_W) (with the one-LSB
+//     hysteresis rule in closed form), no step ever changes A and B together (a lost count), no two
+//     edges are closer than the spacing register, the catch-up takes the shorter way at the full
+//     rate, and Z rises exactly when the decoder passes the index count, once a turn;
+//   - UVW (rtl/acore_uvw.v): every angle of the turn for several pole-pair counts and offsets
+//     against the six-step sectors in closed form (integer arithmetic on 6e against the turn);
+//   - SPI (rtl/acore_spi_as5047.v): an SPI mode-1 master at clk/4 .. clk/10 sending the frames open
+//     motor-control drivers send to an AS5047P (SimpleFOC's MagneticSensorSPI: the read command
+//     0x3FFF | R | parity, then a NOP frame whose answer is the angle; ODrive: 0xFFFF every cycle,
+//     the answer's parity and error flag checked), reads the angle; parity errors, framing errors
+//     and invalid commands are refused and reported in ERRFL and the error flag.
+#include <gtest/gtest.h>
+#include <verilated.h>
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "Vstage_abz.h"
+#include "Vstage_pwm.h"
+#include "Vstage_spi.h"
+#include "Vstage_uvw.h"
+#include "stages/interfaces.hpp"
+
+namespace acore {
+namespace {
+
+template <class V>
+std::unique_ptr<V> make(std::unique_ptr<VerilatedContext>& ctx, uint64_t seed) {
+  ctx = std::make_unique<VerilatedContext>();
+  ctx->randReset(2);
+  ctx->randSeed(static_cast<int>(seed));
+  return std::make_unique<V>(ctx.get());
+}
+template <class V>
+void tick(V& top) {
+  top.clk_i = 0;
+  top.eval();
+  top.clk_i = 1;
+  top.eval();
+}
+
+// ---- ABZ ----------------------------------------------------------------------------------------
+constexpr int kAbzAngleW = ACORE_STAGE_ABZ_ANGLE_W;
+constexpr int kAbzNW = ACORE_STAGE_ABZ_N_W;
+constexpr int64_t kTurn = int64_t{1} << kAbzAngleW;
+
+// An x4 quadrature decoder as a drive's timer counts: the Gray position of (A, B) is 0 (00),
+// 1 (A), 2 (AB), 3 (B); a step of +1 or -1 counts, a step of 2 (both changed) is a lost count.
+struct Decoder {
+  int64_t pos = 0;  // unwrapped
+  int last = 0;
+  int64_t lost = 0, edges = 0;
+  uint64_t last_edge = 0, min_gap = UINT64_MAX;
+  static int gray(int a, int b) {
+    static const int table[2][2] = {{0, 3}, {1, 2}};  // [a][b]
+    return table[a][b];
+  }
+  void sample(int a, int b, uint64_t t) {
+    const int g = gray(a, b);
+    const int d = (g - last + 4) % 4;
+    if (d == 0) return;
+    if (d == 2) ++lost;
+    pos += d == 1 ? 1 : d == 3 ? -1 : 0;
+    if (edges > 0 && t - last_edge < min_gap) min_gap = t - last_edge;
+    last_edge = t;
+    ++edges;
+    last = g;
+  }
+};
+
+struct AbzBench {
+  std::unique_ptr<VerilatedContext> ctx;
+  std::unique_ptr<Vstage_abz> top;
+  Decoder dec;
+  uint64_t t = 0;
+  int64_t n = 1;
+  int64_t index = 0;
+  int64_t z_rises = 0, z_bad = 0;
+  int z_prev = 0;
+  AbzBench(int64_t n_, int64_t index_, int spacing, uint64_t seed) : n(n_), index(index_) {
+    top = make<Vstage_abz>(ctx, seed);
+    top->n_i = static_cast<uint32_t>(n);
+    top->index_i = static_cast<uint32_t>(index);
+    top->spacing_i = static_cast<uint32_t>(spacing);
+    top->angle_valid_i = 0;
+    top->rst_i = 1;
+    tick(*top);
+    tick(*top);
+    top->rst_i = 0;
+    tick(*top);
+    dec = Decoder{};
+    dec.last = Decoder::gray(top->a_o, top->b_o);
+    z_prev = top->z_o;
+  }
+  int64_t counts() const { return 4 * n; }
+  int64_t wrapped() const { return ((dec.pos % counts()) + counts()) % counts(); }
+  void step() {
+    tick(*top);
+    ++t;
+    dec.sample(top->a_o, top->b_o, t);
+    // Z is high exactly while the decoder stands on the index count.
+    if (top->z_o && wrapped() != index) ++z_bad;
+    if (top->z_o && !z_prev) ++z_rises;
+    z_prev = top->z_o;
+  }
+  void angle(uint32_t a) {
+    top->angle_valid_i = 1;
+    top->angle_i = a;
+    step();
+    top->angle_valid_i = 0;
+  }
+  // Clocks until settled (bounded); the outputs are one clock behind the count.
+  uint64_t settle(uint64_t limit) {
+    const uint64_t t0 = t;
+    while (!top->settled_o && t - t0 < limit) step();
+    step();
+    return t - t0;
+  }
+};
+
+// floor(a 4N / T) and floor((a + 1) 4N / T) mod 4N: the hysteresis band's two counts.
+int64_t count_lo(int64_t a, int64_t n) { return (a * 4 * n) >> kAbzAngleW; }
+int64_t count_hi(int64_t a, int64_t n) { return (((a + 1) * 4 * n) >> kAbzAngleW) % (4 * n); }
+// The shorter way from c to t modulo m (a half turn goes forward).
+int64_t distance(int64_t c, int64_t t, int64_t m) {
+  const int64_t d = ((t - c) % m + m) % m;
+  return d <= m / 2 ? d : m - d;
+}
+
+class Abz : public ::testing::TestWithParam<int> {};
+
+TEST_P(Abz, DecoderCountEqualsFloorAfterEveryCatchUpWithoutLostCounts) {
+  const int64_t n = GetParam();
+  std::mt19937_64 rng(1000 + n);
+  for (int spacing : {1, 3}) {
+    const int64_t index = (4 * n) / 3;
+    AbzBench b(n, index, spacing, rng());
+    int64_t expected = 0;
+    int64_t max_late = 0;
+    for (int k = 0; k < 120; ++k) {
+      // Jumps anywhere, small moves, single-LSB moves, and the extremes of the turn.
+      int64_t a;
+      switch (k % 4) {
+        case 0:
+          a = static_cast<int64_t>(rng() % kTurn);
+          break;
+        case 1:
+          a = (b.top->angle_i + static_cast<int64_t>(rng() % 2001) - 1000 + kTurn) % kTurn;
+          break;
+        case 2:
+          a = (b.top->angle_i + (rng() % 2 ? 1 : kTurn - 1)) % kTurn;
+          break;
+        default:
+          a = (k / 4) % 2 ? kTurn - 1 : 0;
+      }
+      const int64_t lo = count_lo(a, n), hi = count_hi(a, n);
+      const int64_t next = expected == hi ? hi : lo;
+      const int64_t dist = distance(expected, next, 4 * n);
+      b.angle(static_cast<uint32_t>(a));
+      const uint64_t took = b.settle(100 + 4 * n * spacing + 64);
+      ASSERT_EQ(b.wrapped(), next) << "N " << n << " angle " << a << " step " << k;
+      ASSERT_EQ(b.top->count_o, next);
+      // At the full rate: one edge per `spacing` clocks after the N_W + 2 clocks of the product.
+      max_late = std::max<int64_t>(max_late, static_cast<int64_t>(took) - dist * spacing);
+      expected = next;
+    }
+    EXPECT_EQ(b.dec.lost, 0);
+    EXPECT_GE(b.dec.min_gap, static_cast<uint64_t>(spacing));
+    EXPECT_LE(max_late, kAbzNW + 6);
+    EXPECT_EQ(b.z_bad, 0);
+  }
+}
+
+TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
+  const int64_t n = GetParam();
+  std::mt19937_64 rng(2000 + n);
+  const int64_t index = static_cast<int64_t>(rng() % (4 * n));
+  AbzBench b(n, index, 1, rng());
+  // The angle advances faster than one count a clock (the count runs at the maximum rate behind it)
+  // for about three turns, forward, then back two turns.
+  const int64_t per_clock_counts_x16 = 24;  // 1.5 counts a clock
+  // (The target is converted once per N_W + 1 clocks, latest sample wins: the angle may move at
+  // most a quarter turn per conversion, or the shorter way would be the wrong way; for small N that
+  // bound is below 1.5 counts a clock.)
+  const int64_t step = std::max<int64_t>(
+      1,
+      std::min<int64_t>(per_clock_counts_x16 * kTurn / (16 * 4 * n), kTurn / (4 * (kAbzNW + 2))));
+  int64_t unwrapped = 0;
+  auto run = [&](int64_t turns, int dir) {
+    const int64_t clocks = turns * kTurn / step;
+    for (int64_t k = 0; k < clocks; ++k) {
+      unwrapped += dir * step;
+      // Keep the count within half a turn of the angle (the shorter way stays the true way).
+      const int64_t lag = std::llabs(((unwrapped * 4 * n) >> kAbzAngleW) - b.dec.pos);
+      if (lag > n) {
+        b.settle(1u << 30);
+      }
+      b.angle(static_cast<uint32_t>(((unwrapped % kTurn) + kTurn) % kTurn));
+    }
+    b.settle(1u << 30);
+  };
+  run(3, +1);
+  const int64_t fwd_pos = b.dec.pos;
+  EXPECT_EQ(fwd_pos, (unwrapped * 4 * n) >> kAbzAngleW);
+  // Index: one rise per pass over the index count, forward.
+  int64_t passes = 0;
+  for (int64_t c = 1; c <= fwd_pos; ++c) passes += (c % (4 * n)) == index;
+  EXPECT_EQ(b.z_rises, passes);
+  run(2, -1);
+  // Backwards the band's upper count may hold (approached from above): lo or hi.
+  const int64_t a = ((unwrapped % kTurn) + kTurn) % kTurn;
+  const int64_t wrapped = b.wrapped();
+  EXPECT_TRUE(wrapped == count_lo(a, n) || wrapped == count_hi(a, n)) << wrapped;
+  EXPECT_EQ(b.dec.lost, 0);
+  // The count ran at the full rate (one edge a clock) whenever the angle asked for more.
+  if (step * 4 * n > kTurn) EXPECT_EQ(b.dec.min_gap, 1u);
+  EXPECT_EQ(b.z_bad, 0);
+  // Unwrapped too: the decoder went forward three turns and back two without a miscount.
+  const int64_t lo_unwrapped = (unwrapped * 4 * n) >> kAbzAngleW;
+  EXPECT_TRUE(b.dec.pos == lo_unwrapped || b.dec.pos == lo_unwrapped + 1) << b.dec.pos;
+}
+
+TEST_P(Abz, OneLsbDitherAtRestHoldsTheCount) {
+  const int64_t n = GetParam();
+  std::mt19937_64 rng(3000 + n);
+  AbzBench b(n, 0, 1, rng());
+  // An angle a whose next LSB crosses a count boundary.
+  int64_t a = static_cast<int64_t>(rng() % (kTurn - 2));
+  while (count_lo(a + 1, n) == count_lo(a, n)) a = (a + 1) % (kTurn - 2);
+  b.angle(static_cast<uint32_t>(a));
+  b.settle(1u << 30);
+  ASSERT_EQ(b.wrapped(), count_lo(a, n));
+  b.angle(static_cast<uint32_t>(a + 1));
+  b.settle(1u << 30);
+  ASSERT_EQ(b.wrapped(), count_lo(a + 1, n));
+  const int64_t edges = b.dec.edges;
+  for (int k = 0; k < 200; ++k) {
+    b.angle(static_cast<uint32_t>(a + (k % 2 == 0 ? 0 : 1)));
+    for (int j = 0; j < 20; ++j) b.step();
+  }
+  EXPECT_EQ(b.dec.edges, edges) << "dithering by one LSB moved the count";
+  // Two LSBs down leave the band: the count follows.
+  if (a >= 1 && count_lo(a - 1, n) != count_lo(a + 1, n)) {
+    b.angle(static_cast<uint32_t>(a - 1));
+    b.settle(1u << 30);
+    EXPECT_EQ(b.wrapped(), count_lo(a - 1, n));
+  }
+}
+
+TEST_P(Abz, MinimumSpacingHoldsAfterAJump) {
+  const int64_t n = GetParam();
+  std::mt19937_64 rng(4000 + n);
+  const int spacing = 7;
+  AbzBench b(n, 0, spacing, rng());
+  const int64_t a = static_cast<int64_t>(rng() % kTurn);
+  b.angle(static_cast<uint32_t>(a));
+  const uint64_t took = b.settle(1u << 30);
+  const int64_t target = count_lo(a, n);
+  const int64_t dist = distance(0, target, 4 * n);
+  EXPECT_EQ(b.wrapped(), target);
+  EXPECT_EQ(b.dec.edges, dist);
+  if (dist > 1) EXPECT_EQ(b.dec.min_gap, static_cast<uint64_t>(spacing));
+  EXPECT_LE(static_cast<int64_t>(took), dist * spacing + kAbzNW + 6);
+  EXPECT_EQ(b.dec.lost, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(PulsesPerTurn, Abz, ::testing::Values(1, 3, 1000, 1024, 4096, 7, 360));
+
+TEST(AbzRange, OutOfRangeNIsClamped) {
+  // N = 0 counts as 1, N above 2^(N_W-1) as 2^(N_W-1) (the register shell refuses both).
+  for (const auto& [n_in, n_eff] : std::vector<std::pair<int64_t, int64_t>>{
+           {0, 1}, {(int64_t{1} << (kAbzNW - 1)) + 5, int64_t{1} << (kAbzNW - 1)}}) {
+    AbzBench b(n_in, 0, 1, 7);
+    b.n = n_eff;
+    const int64_t a = kTurn / 3;
+    b.angle(static_cast<uint32_t>(a));
+    b.settle(1u << 30);
+    EXPECT_EQ(b.wrapped(), count_lo(a, n_eff)) << n_in;
+  }
+}
+
+// ---- UVW ----------------------------------------------------------------------------------------
+constexpr int kUvwAngleW = ACORE_STAGE_UVW_ANGLE_W;
+
+TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
+  const int64_t turn = int64_t{1} << kUvwAngleW;
+  std::mt19937_64 rng(11);
+  std::unique_ptr<VerilatedContext> ctx;
+  auto top = make<Vstage_uvw>(ctx, 5);
+  top->rst_i = 1;
+  top->angle_valid_i = 0;
+  tick(*top);
+  tick(*top);
+  top->rst_i = 0;
+  for (int pp = 1; pp <= 16; ++pp) {
+    const int64_t offset = pp == 1 ? 0 : static_cast<int64_t>(rng() % turn);
+    top->pp_i = pp;
+    top->offset_i = static_cast<uint32_t>(offset);
+    // Every angle for a few pole-pair counts, a random eighth of the turn for the others.
+    const bool all = pp == 1 || pp == 3 || pp == 7 || pp == 16;
+    const int64_t start = all ? 0 : static_cast<int64_t>(rng() % turn);
+    const int64_t count = all ? turn : turn / 8;
+    std::vector<int64_t> sent;
+    int64_t wrong = 0, checked = 0;
+    for (int64_t k = 0; k < count + 3; ++k) {
+      const bool send = k < count;
+      const int64_t a = (start + k) % turn;
+      top->angle_valid_i = send;
+      top->angle_i = static_cast<uint32_t>(a);
+      tick(*top);
+      if (send) sent.push_back(a);
+      if (top->valid_o) {
+        const int64_t x = ((((sent[checked] - offset) % turn + turn) % turn) * pp) % turn;
+        const int64_t six = 6 * x;  // the electrical angle in sixths of a turn
+        const int sector = static_cast<int>(six / turn);
+        const bool u = six < 3 * turn;
+        const bool v = ((six - 2 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
+        const bool w = ((six - 4 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
+        wrong += top->sector_o != sector || top->u_o != u || top->v_o != v || top->w_o != w;
+        ++checked;
+      }
+    }
+    EXPECT_EQ(checked, count) << "pp " << pp;
+    EXPECT_EQ(wrong, 0) << "pp " << pp;
+  }
+  // Out of range: 0 pole pairs counts as 1, 31 as 16.
+  for (const auto& [pp_in, pp_eff] : std::vector<std::pair<int, int>>{{0, 1}, {31, 16}}) {
+    top->pp_i = pp_in;
+    top->offset_i = 0;
+    const int64_t a = turn / 5 + 77;
+    top->angle_valid_i = 1;
+    top->angle_i = static_cast<uint32_t>(a);
+    tick(*top);
+    top->angle_valid_i = 0;
+    tick(*top);
+    tick(*top);
+    EXPECT_EQ(top->sector_o, (6 * ((a * pp_eff) % turn)) / turn) << pp_in;
+  }
+}
+
+// ---- SPI (AS5047P frame) ----------------------------------------------------------------------
+constexpr int kSpiAngleW = ACORE_STAGE_SPI_ANGLE_W;
+
+// Even parity as the drivers compute it: the number of ones in the 16-bit word is even.
+int ones(uint16_t v) {
+  int c = 0;
+  for (int i = 0; i < 16; ++i) c += (v >> i) & 1;
+  return c;
+}
+uint16_t with_parity(uint16_t cmd15) {
+  return static_cast<uint16_t>((cmd15 & 0x7FFF) | ((ones(cmd15 & 0x7FFF) & 1) << 15));
+}
+
+struct SpiMaster {
+  std::unique_ptr<VerilatedContext> ctx;
+  std::unique_ptr<Vstage_spi> top;
+  int half = 2;  // clocks per SCLK half period (2: SCLK = clk/4)
+  int lead = 2;  // clocks from CSn low to the first rising SCLK edge
+  int gap = 8;   // clocks CSn stays high between frames
+  uint64_t frames = 0, oe_bad = 0;
+  explicit SpiMaster(uint64_t seed) {
+    top = make<Vstage_spi>(ctx, seed);
+    top->csn_i = 1;
+    top->sclk_i = 0;
+    top->mosi_i = 0;
+    top->rst_i = 1;
+    tick(*top);
+    tick(*top);
+    top->rst_i = 0;
+    for (int k = 0; k < 8; ++k) tick(*top);
+  }
+  void angle(uint32_t unc, uint32_t com) {
+    top->angle_unc_i = unc;
+    top->angle_com_i = com;
+  }
+  void clocks(int k) {
+    for (int i = 0; i < k; ++i) tick(*top);
+  }
+  // One mode-1 frame of `bits` bits (16 normally): MOSI changes on the rising edge, MISO is
+  // sampled on the falling edge, MSB first.
+  uint16_t frame(uint16_t mosi, int bits = 16) {
+    top->csn_i = 0;
+    clocks(lead);
+    uint16_t miso = 0;
+    for (int i = 0; i < bits; ++i) {
+      top->sclk_i = 1;
+      top->mosi_i = (mosi >> (15 - i)) & 1;
+      clocks(half);
+      miso = static_cast<uint16_t>((miso << 1) | (top->miso_o & 1));
+      oe_bad += !top->miso_oe_o;
+      top->sclk_i = 0;
+      clocks(half);
+    }
+    top->csn_i = 1;
+    clocks(gap);
+    ++frames;
+    return miso;
+  }
+};
+
+// SimpleFOC's MagneticSensorSPI with its AS5047 configuration (SPI mode 1, angle register 0x3FFF,
+// R/W bit 14, parity bit 15, 14 data bits from bit 13): a command frame, then a NOP frame whose
+// answer is the register; the data is the answer's low 14 bits (no parity or flag check).
+uint16_t simplefoc_read(SpiMaster& m, uint16_t reg) {
+  uint16_t command = static_cast<uint16_t>(reg | (1u << 14));
+  command = static_cast<uint16_t>(command | ((ones(command) & 1) << 15));
+  m.frame(command);
+  const uint16_t value = m.frame(0x0000);
+  return static_cast<uint16_t>(value & 0x3FFF);
+}
+
+uint32_t top14(uint32_t angle) { return angle >> (kSpiAngleW - 14); }
+
+TEST(SpiAs5047, SimpleFocFramesReadTheAngle) {
+  std::mt19937_64 rng(21);
+  for (int half : {2, 3, 5}) {
+    SpiMaster m(rng());
+    m.half = half;
+    for (int k = 0; k < 60; ++k) {
+      const uint32_t com = static_cast<uint32_t>(rng() & ((1u << kSpiAngleW) - 1));
+      const uint32_t unc = static_cast<uint32_t>(rng() & ((1u << kSpiAngleW) - 1));
+      m.angle(unc, com);
+      ASSERT_EQ(simplefoc_read(m, 0x3FFF), top14(com)) << "half " << half << " k " << k;
+      ASSERT_EQ(simplefoc_read(m, 0x3FFE), top14(unc));
+    }
+    EXPECT_EQ(m.oe_bad, 0u);
+  }
+}
+
+// ODrive's SPI_ABS_AMS mode: 0xFFFF (read ANGLECOM with its parity) every control cycle, the
+// answer (to the previous cycle's command) refused when its parity is odd or its error flag set.
+TEST(SpiAs5047, OdriveFramesReadTheAngleWithParityAndFlag) {
+  std::mt19937_64 rng(22);
+  SpiMaster m(rng());
+  EXPECT_EQ(with_parity(0x7FFF), 0xFFFF);  // the drivers' constant is the parity-correct read
+  uint32_t prev = 0;
+  int accepted = 0;
+  for (int k = 0; k < 200; ++k) {
+    const uint32_t com = static_cast<uint32_t>(rng() & ((1u << kSpiAngleW) - 1));
+    m.angle(com ^ 0x5A5A, com);
+    m.gap = 6 + static_cast<int>(rng() % 20);
+    const uint16_t raw = m.frame(0xFFFF);
+    const bool parity_bad = ones(raw) & 1;
+    const bool ef = (raw >> 14) & 1;
+    ASSERT_FALSE(parity_bad) << k;
+    ASSERT_FALSE(ef) << k;
+    // The first answer is NOP's (no command before it); then the angle at the frame's start.
+    ASSERT_EQ(raw & 0x3FFF, k == 0 ? 0u : top14(com)) << k;
+    accepted += k > 0;
+    prev = com;
+  }
+  (void)prev;
+  EXPECT_EQ(accepted, 199);
+  EXPECT_EQ(m.top->errfl_o, 0);
+}
+
+TEST(SpiAs5047, ParityErrorsAreRefusedAndReported) {
+  std::mt19937_64 rng(23);
+  SpiMaster m(rng());
+  m.angle(0x1234, 0xBEEF);
+  // A read of ANGLECOM with the parity bit wrong (odd): refused.
+  m.frame(0x7FFF);
+  const uint16_t after = m.frame(0xFFFF);
+  EXPECT_EQ(ones(after) & 1, 0) << "the answer itself has even parity";
+  EXPECT_TRUE((after >> 14) & 1) << "error flag";
+  EXPECT_EQ(after & 0x3FFF, 0u) << "no register was read";
+  // An ODrive would refuse that answer (EF). The 0xFFFF of the same frame was a valid read: the
+  // next answer is the angle, the flag still set until ERRFL is read.
+  const uint16_t next = m.frame(with_parity(0x4001));  // read ERRFL
+  EXPECT_EQ(next & 0x3FFF, top14(0xBEEF));
+  EXPECT_TRUE((next >> 14) & 1);
+  const uint16_t errfl = m.frame(0x0000);
+  EXPECT_EQ(errfl & 0x3FFF, 0x4u) << "PARERR";
+  EXPECT_TRUE((errfl >> 14) & 1);
+  const uint16_t clean = m.frame(0x0000);
+  EXPECT_FALSE((clean >> 14) & 1) << "ERRFL's read cleared it";
+  EXPECT_EQ(m.top->errfl_o, 0);
+  // Every single-bit corruption of the read command is refused.
+  for (int bit = 0; bit < 16; ++bit) {
+    m.frame(static_cast<uint16_t>(0xFFFF ^ (1u << bit)));
+    const uint16_t ans = m.frame(with_parity(0x4001));
+    EXPECT_TRUE((ans >> 14) & 1) << bit;
+    EXPECT_EQ(ans & 0x3FFF, 0u) << bit;
+    EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x4u) << bit;
+  }
+}
+
+TEST(SpiAs5047, FramingAndInvalidCommandsAndDiagnostics) {
+  std::mt19937_64 rng(24);
+  SpiMaster m(rng());
+  m.angle(0, 0);
+  // A 15-clock frame: FRERR.
+  m.frame(0xFFFF, 15);
+  m.frame(with_parity(0x4001));
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x1u);
+  // A read of an address that does not exist: INVCOMM.
+  m.frame(with_parity(0x4000 | 0x1234));
+  m.frame(with_parity(0x4001));
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x2u);
+  // A write command: INVCOMM (no writable register), its data frame consumed.
+  m.frame(with_parity(0x0016));
+  m.frame(with_parity(0x0FFF));
+  m.frame(with_parity(0x4001));
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x2u);
+  // DIAAGC: MAGL = LOS, MAGH = DOS, COF = overflow, LF = not LOT, AGC; MAG.
+  for (int k = 0; k < 32; ++k) {
+    const int los = k & 1, dos = (k >> 1) & 1, ovf = (k >> 2) & 1, lot = (k >> 3) & 1;
+    const int agc = static_cast<int>(rng() & 0xFF), mag = static_cast<int>(rng() & 0x3FFF);
+    m.top->los_i = los;
+    m.top->dos_i = dos;
+    m.top->ovf_i = ovf;
+    m.top->lot_i = lot;
+    m.top->agc_i = agc;
+    m.top->mag_i = mag;
+    m.frame(with_parity(0x7FFC));
+    const uint16_t diag = m.frame(with_parity(0x7FFD));
+    EXPECT_EQ(ones(diag) & 1, 0);
+    EXPECT_EQ(diag & 0x3FFF, static_cast<uint32_t>((los << 11) | (dos << 10) | (ovf << 9) |
+                                                   ((1 - lot) << 8) | agc));
+    EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(mag));
+  }
+  EXPECT_FALSE((m.frame(0x0000) >> 14) & 1);
+}
+
+// ---- PWM (AS5047P frame) --------------------------------------------------------------------
+TEST(Pwm, InputCaptureDecoderRecoversTheAngle) {
+  std::mt19937_64 rng(41);
+  for (int pre : {0, 2}) {
+    std::unique_ptr<VerilatedContext> ctx;
+    auto top = make<Vstage_pwm>(ctx, rng());
+    top->pre_i = pre;
+    top->angle_i = 0;
+    top->err_i = 0;
+    top->rst_i = 1;
+    tick(*top);
+    tick(*top);
+    top->rst_i = 0;
+    const uint64_t unit = static_cast<uint64_t>(pre) + 1;
+    uint64_t t = 0, rise = 0, high = 0, low_run = 0;
+    int prev = 0, frames = 0, wrong = 0;
+    uint32_t sent = 0, frame_angle = 0;
+    bool sent_err = false, frame_err = false, have = false;
+    while (frames < 40) {
+      // A new angle and error bit at every frame start (frame_o: taken at this clock).
+      if (top->frame_o) {
+        sent = static_cast<uint32_t>(rng() & 0xFFFF);
+        sent_err = rng() % 4 == 0;
+        top->angle_i = sent;
+        top->err_i = sent_err;
+      }
+      tick(*top);
+      ++t;
+      const int pwm = top->pwm_o;
+      // A frame starts at a rising edge after the 8-period exit (low) phase; the error_n gap (4 low
+      // periods inside the frame) is not a start.
+      if (pwm && !prev && low_run >= 8 * unit) {
+        // The frame since the previous start is complete; decode it.
+        if (have) {
+          const uint64_t period = t - rise;
+          const int64_t high_units = static_cast<int64_t>(high / unit);
+          const int64_t angle12 = high_units - (frame_err ? 12 : 16);
+          wrong += period != 4119 * unit || high % unit != 0 ||
+                   angle12 != static_cast<int64_t>(frame_angle >> 4);
+          ++frames;
+        }
+        have = true;
+        rise = t;
+        high = 0;
+        frame_angle = sent;
+        frame_err = sent_err;
+      }
+      high += pwm;
+      low_run = pwm ? 0 : low_run + 1;
+      prev = pwm;
+    }
+    EXPECT_EQ(wrong, 0) << "pre " << pre;
+  }
+}
+
+// Co-simulation with the bit-exact model (model/ip/stages/interfaces.hpp): random frames, valid and
+// corrupted commands of every register, short frames, at random SCLK rates, with the
+// inputs changing between frames; every word the master receives equals the model's.
+TEST(SpiAs5047, RandomFramesMatchTheModel) {
+  std::mt19937_64 rng(25);
+  SpiMaster m(rng());
+  As5047Port model;
+  As5047Inputs in;
+  in.angle_w = kSpiAngleW;
+  const uint16_t regs[] = {0x0000, 0x0001, 0x3FFC, 0x3FFD, 0x3FFE, 0x3FFF, 0x0016, 0x1234};
+  int mismatches = 0;
+  for (int k = 0; k < 3000; ++k) {
+    in.angle_com = rng() & ((1u << kSpiAngleW) - 1);
+    in.angle_unc = rng() & ((1u << kSpiAngleW) - 1);
+    in.mag = static_cast<uint16_t>(rng() & 0x3FFF);
+    in.agc = static_cast<uint8_t>(rng());
+    in.los = rng() & 1;
+    in.dos = rng() & 1;
+    in.ovf = rng() & 1;
+    in.lot = rng() & 1;
+    m.angle(static_cast<uint32_t>(in.angle_unc), static_cast<uint32_t>(in.angle_com));
+    m.top->mag_i = in.mag;
+    m.top->agc_i = in.agc;
+    m.top->los_i = in.los;
+    m.top->dos_i = in.dos;
+    m.top->ovf_i = in.ovf;
+    m.top->lot_i = in.lot;
+    uint16_t cmd = as5047::with_even_parity(
+        static_cast<uint16_t>(regs[rng() % 8] | ((rng() % 4) ? 0x4000 : 0)));
+    if (rng() % 8 == 0) cmd ^= static_cast<uint16_t>(1u << (rng() % 16));
+    const int bits = rng() % 16 == 0 ? 13 + static_cast<int>(rng() % 3) : 16;
+    m.half = 2 + static_cast<int>(rng() % 3);
+    m.gap = 6 + static_cast<int>(rng() % 6);
+    const uint16_t got = m.frame(cmd, bits);
+    const uint16_t want = model.frame(cmd, in, bits);
+    mismatches += got != want;
+    if (got != want && mismatches < 5)
+      ADD_FAILURE() << "frame " << k << " cmd " << std::hex << cmd << " bits " << std::dec << bits
+                    << ": rtl " << std::hex << got << " model " << want;
+    mismatches += m.top->errfl_o != model.errfl();
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
+// The ABZ count after every catch-up equals the model's target (the same walk as the first test,
+// the expectation now from model/ip/stages/interfaces.hpp).
+TEST(AbzCosim, CountMatchesTheModelTarget) {
+  std::mt19937_64 rng(26);
+  for (int64_t n : {1, 3, 1000, 1024, 4096}) {
+    AbzBench b(n, 0, 1, rng());
+    int64_t target = 0, mismatches = 0;
+    for (int k = 0; k < 200; ++k) {
+      const uint64_t a = k % 2 ? rng() % kTurn : (b.top->angle_i + rng() % 3 + kTurn - 1) % kTurn;
+      target = abz_target(a, kAbzAngleW, n, target);
+      b.angle(static_cast<uint32_t>(a));
+      b.settle(1u << 30);
+      mismatches += b.wrapped() != target;
+    }
+    EXPECT_EQ(mismatches, 0) << n;
+  }
+}
+
+// UVW against the model on random angles, offsets and pole pairs.
+TEST(UvwCosim, MatchesTheModel) {
+  std::mt19937_64 rng(27);
+  std::unique_ptr<VerilatedContext> ctx;
+  auto top = make<Vstage_uvw>(ctx, 9);
+  top->rst_i = 1;
+  tick(*top);
+  top->rst_i = 0;
+  int mismatches = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const uint64_t a = rng() & 0xFFFF, off = rng() & 0xFFFF;
+    const int pp = 1 + static_cast<int>(rng() % 16);
+    top->angle_valid_i = 1;
+    top->angle_i = static_cast<uint32_t>(a);
+    top->offset_i = static_cast<uint32_t>(off);
+    top->pp_i = pp;
+    tick(*top);
+    top->angle_valid_i = 0;
+    tick(*top);
+    tick(*top);
+    const UvwState s = uvw_state(a, off, kUvwAngleW, pp);
+    mismatches +=
+        top->sector_o != s.sector || top->u_o != s.u || top->v_o != s.v || top->w_o != s.w;
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
+}  // namespace
+}  // namespace acore

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// The drive interfaces' model (model/ip/stages/interfaces.hpp) against closed forms written here:
+// the ABZ count as floor of the exact rational angle 4N / 2^W (128-bit), its hysteresis band, the
+// counter's walk (never more than one count a step, the shorter way, the spacing); the UVW sector
+// from the electrical angle in degrees against 60-degree boundaries (rational compare); the
+// AS5047P frame's parity, answers, ERRFL and error flag; and the refusal of out-of-range values.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/errors.hpp"
+#include "stages/interfaces.hpp"
+
+namespace acore {
+namespace {
+
+TEST(AbzModel, CountIsTheFloorOfTheExactProduct) {
+  std::mt19937_64 rng(1);
+  for (int64_t n : {1, 3, 7, 360, 1000, 1024, 4096}) {
+    for (int w : {14, 16, 20}) {
+      for (int k = 0; k < 2000; ++k) {
+        const uint64_t a = rng() & ((uint64_t{1} << w) - 1);
+        const unsigned __int128 p = static_cast<unsigned __int128>(a) * 4 * n;
+        EXPECT_EQ(abz_count_of(a, w, n), static_cast<int64_t>(p >> w));
+      }
+      const uint64_t last = (uint64_t{1} << w) - 1;
+      EXPECT_EQ(abz_count_of(last, w, n), 4 * n - 1) << "the last angle is the last count";
+      EXPECT_EQ(abz_count_of(0, w, n), 0);
+    }
+  }
+}
+
+TEST(AbzModel, HysteresisHoldsTheUpperCountOfTheBand) {
+  const int w = 16;
+  for (int64_t n : {1, 1000, 4096}) {
+    for (uint64_t a : {uint64_t{0}, uint64_t{12345}, uint64_t{65535}}) {
+      const int64_t lo = abz_count_of(a, w, n);
+      const int64_t hi = abz_count_of((a + 1) & 0xFFFF, w, n);
+      EXPECT_EQ(abz_target(a, w, n, hi), hi);
+      EXPECT_EQ(abz_target(a, w, n, (hi + 2) % (4 * n)), lo);
+      EXPECT_EQ(abz_target(a, w, n, lo), lo);
+    }
+  }
+}
+
+TEST(AbzModel, CounterWalksTheShorterWayAtTheSpacing) {
+  for (int spacing : {1, 4}) {
+    AbzCounter c(1000, spacing);
+    c.set_target(3990);  // 10 counts backwards
+    int steps = 0, clocks = 0;
+    while (c.count() != c.target()) {
+      const int s = c.step();
+      ++clocks;
+      if (s != 0) {
+        EXPECT_EQ(s, -1);
+        ++steps;
+      }
+    }
+    EXPECT_EQ(steps, 10);
+    EXPECT_EQ(clocks, 1 + (steps - 1) * spacing);
+    c.set_target(3990 + 2000 - 4000);  // exactly half a turn: forward
+    int first = 0;
+    while (first == 0) first = c.step();
+    EXPECT_EQ(first, 1);
+  }
+}
+
+TEST(AbzModel, PinsAreGrayAndIndexOneCount) {
+  const bool a[4] = {false, true, true, false}, b[4] = {false, false, true, true};
+  for (int c = 0; c < 16; ++c) {
+    const AbzPins p = abz_pins(c, 5);
+    EXPECT_EQ(p.a, a[c % 4]);
+    EXPECT_EQ(p.b, b[c % 4]);
+    EXPECT_EQ(p.z, c == 5);
+  }
+}
+
+TEST(UvwModel, SectorsAgainstSixtyDegreeBoundaries) {
+  std::mt19937_64 rng(2);
+  const int w = 16;
+  for (int pp = 1; pp <= 16; ++pp) {
+    for (int k = 0; k < 3000; ++k) {
+      const uint64_t a = rng() & 0xFFFF, off = rng() & 0xFFFF;
+      // Electrical angle in 1/2^16 turn units, then degrees as a rational: deg = 360 e / 2^16.
+      const uint64_t e = (((a - off) & 0xFFFF) * static_cast<uint64_t>(pp)) & 0xFFFF;
+      int sector = 0;
+      while (sector < 5 && 360 * e >= static_cast<uint64_t>(60 * (sector + 1)) << w) ++sector;
+      const UvwState s = uvw_state(a, off, w, pp);
+      EXPECT_EQ(s.sector, sector);
+      // U high on [0, 180), V on [120, 300), W on [240, 360) + [0, 60) degrees.
+      const uint64_t deg_x = 360 * e;  // degrees << w
+      const auto in = [&](int lo, int hi) {
+        return deg_x >= (static_cast<uint64_t>(lo) << w) &&
+               deg_x < (static_cast<uint64_t>(hi) << w);
+      };
+      EXPECT_EQ(s.u, in(0, 180));
+      EXPECT_EQ(s.v, in(120, 300));
+      EXPECT_EQ(s.w, in(240, 360) || in(0, 60));
+    }
+  }
+}
+
+TEST(InterfaceModels, OutOfRangeValuesAreRefused) {
+  EXPECT_THROW(abz_count_of(0, 16, 0), InputError);
+  EXPECT_THROW(abz_count_of(0, 16, 4097), InputError);
+  EXPECT_THROW(AbzCounter(5000, 1), InputError);
+  EXPECT_THROW(uvw_state(0, 0, 16, 0), InputError);
+  EXPECT_THROW(uvw_state(0, 0, 16, 17), InputError);
+  try {
+    uvw_state(0, 0, 16, 17);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pole pairs must be 1..16"), std::string::npos);
+  }
+}
+
+TEST(As5047Model, FramesAnswersAndErrors) {
+  using namespace as5047;
+  EXPECT_EQ(with_even_parity(0x7FFF), 0xFFFF);
+  EXPECT_EQ(with_even_parity(0x4001), 0x4001);
+  As5047Port port;
+  As5047Inputs in;
+  in.angle_com = 0xBEEF;
+  in.angle_unc = 0x1234;
+  EXPECT_EQ(port.frame(0xFFFF, in), 0x0000);  // NOP's answer first
+  EXPECT_EQ(port.frame(with_even_parity(0x7FFE), in) & 0x3FFF, 0xBEEF >> 2);
+  EXPECT_EQ(port.frame(0x0000, in) & 0x3FFF, 0x1234 >> 2);
+  // A parity error: the next answer carries EF, data 0; ERRFL.PARERR until read.
+  port.frame(0x7FFF, in);
+  const uint16_t ans = port.frame(with_even_parity(0x4001), in);
+  EXPECT_TRUE(parity_even(ans));
+  EXPECT_EQ(ans, with_even_parity(0x4000));
+  EXPECT_EQ(port.frame(0x0000, in), with_even_parity(0x4000 | kParErr));
+  EXPECT_EQ(port.frame(0x0000, in), 0x0000);
+  // Framing and invalid commands.
+  port.frame(0xFFFF, in, 15);
+  EXPECT_EQ(port.errfl(), kFrErr);
+  port.frame(with_even_parity(0x4000 | 0x0123), in);
+  EXPECT_EQ(port.errfl(), kFrErr | kInvComm);
+}
+
+}  // namespace
+}  // namespace acore
