@@ -74,23 +74,16 @@ void run_estimate(const EstimateArgs& a) {
                        ": this anglecore was built without the RTL (ACORE_WITH_RTL=OFF)");
 #endif
   }
-  nlohmann::json j = {{"engine", engine_name(engine)}, {"samples", rec.size()}};
-  if (engine == Engine::Rtl) j["fold"] = a.fold;
-  j["zero_offset"] = {{"rad", s.zero_offset},
-                      {"deg", s.zero_offset * 180 / M_PI},
-                      {"code", angle_code(s.zero_offset, img.cfg.angle_w)},
-                      {"applied_by", s.zero_word ? "zero_word" : "software"}};
   std::cout << fmt::format("zero offset {:+.4f} deg electrical, removed by {}\n",
                            s.zero_offset * 180 / M_PI,
                            s.zero_word ? "the ZERO word" : "estimate (software)");
   std::vector<double> err;
+  ErrorStats st, su;
   if (rec.has_theta()) {
     const int p = a.p ? a.p : recording_periodicity(rec, a.in);
     err = angle_error_deg(s.angle, rec.theta_ref, p);
-    const ErrorStats st = error_stats(err);
-    const ErrorStats su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
-    j["error_deg"] = stats_json(st);
-    j["uncorrected_error_deg"] = stats_json(su);
+    st = error_stats(err);
+    su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
     std::cout << fmt::format(
         "{} engine, {} samples: error RMS {:.4f} deg, max {:.4f} deg, mean {:+.4f} deg "
         "(uncorrected {:.3f} / {:.3f} / {:+.3f})\n",
@@ -101,7 +94,9 @@ void run_estimate(const EstimateArgs& a) {
   }
   size_t flagged = 0;
   for (unsigned f : s.flags) flagged += f != 0;
-  j["flagged_samples"] = flagged;
+  const nlohmann::json j =
+      estimate_json(engine, rec.size(), a.fold, img, s.zero_offset, s.zero_word,
+                    rec.has_theta() ? &st : nullptr, rec.has_theta() ? &su : nullptr, flagged);
   if (!a.out.empty()) write_angles(a.out, rec, s, err);
   write_json(a.json, j);
 }
