@@ -148,6 +148,15 @@ class RegisterImage:
                 out[k] = v
         return out
 
+    @property
+    def zero_offset(self) -> float:
+        """The calibration's zero offset, rad (sensor angle - p theta_ref, electrical)."""
+        return self._img.zero_offset
+
+    @property
+    def in_scale(self) -> float:
+        return self._img.in_scale
+
     def write(self, path: os.PathLike | str) -> None:
         self._img.write(os.fspath(path))
 

@@ -2,6 +2,7 @@
 // The bit-accurate chain against std::atan2 over the same 1 M samples, in one run:
 //   build/tests/bench/bench_estimator
 // Compare the per-sample times (items_per_second) of BM_FixedChain and BM_Atan2.
+// BM_EstimateFixedBatch is the Python package's estimate path (scripts/bench_python.py).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -54,6 +55,26 @@ void BM_FixedChain(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
 }
 BENCHMARK(BM_FixedChain)->Unit(benchmark::kMillisecond);
+
+// What the Python package's estimate(engine="fixed", uncorrected=False) runs on numpy arrays:
+// recording values to codes, the batch chain, angles in rad and the error against theta_ref
+// (scripts/bench_python.py compares the two in one run).
+void BM_EstimateFixedBatch(benchmark::State& state) {
+  const auto& f = fixture();
+  acore::ChannelColumns in;
+  in.channels = f.rec.channels;
+  for (int c = 0; c < f.rec.channels; ++c) in.ch[c] = f.rec.ch[c].data();
+  in.theta_ref = f.rec.theta_ref.data();
+  in.n = kSamples;
+  std::vector<double> angle(kSamples), err(kSamples);
+  std::vector<uint8_t> flags(kSamples), region(kSamples);
+  for (auto _ : state) {
+    acore::run_fixed_batch(f.img, in, 1, {angle.data(), flags.data(), region.data(), err.data()});
+    benchmark::DoNotOptimize(err.data());
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
+}
+BENCHMARK(BM_EstimateFixedBatch)->Unit(benchmark::kMillisecond);
 
 void BM_FixedChainPerSample(benchmark::State& state) {
   const auto& f = fixture();
