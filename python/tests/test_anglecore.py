@@ -93,11 +93,12 @@ def test_fixed_batch_equals_per_sample_model(paper):
 
 
 def test_harmonics_equals_cli(cli, tmp_path):
-    spec = {"p": 1, "A0": 1.0, "B0": 1.0, "Ap": 0.02, "Bp": -0.01, "delta_p": 0.01,
-            "terms": [{"n": 3, "A": 0.01, "theta": 0.2, "B": 0.008, "psi": -0.4}]}
+    spec = json.loads((ROOT / "tests" / "data" / "kuntz_eq33.json").read_text())
+    spec["terms"].append({"n": 3, "A": 0.01, "theta": 0.2, "B": 0.008, "psi": -0.4})
     (tmp_path / "spec.json").write_text(json.dumps(spec))
-    assert ac.harmonics(spec) == cli.json("harmonics", "--spec", tmp_path / "spec.json")
-    assert ac.harmonics(tmp_path / "spec.json")["p"] == 1
+    ours = ac.harmonics(spec)
+    assert ours == cli.json("harmonics", "--spec", tmp_path / "spec.json")
+    assert ac.harmonics(tmp_path / "spec.json") == ours
 
 
 def test_diagnose_equals_cli(cli, tmp_path):
@@ -111,12 +112,19 @@ def test_diagnose_equals_cli(cli, tmp_path):
     assert ours["verdict"] in ("explained", "unexplained", "no_gap")
 
 
-def test_simulate_config_dict_and_physics():
-    cfg = ac.scenario_config("paper")
-    cfg["effects"] = [{"type": "gain_mismatch", "channel": "c1", "gain": 1.02}]
-    a = ac.simulate(cfg, samples=256, seed=5)
-    b = ac.simulate("paper", samples=256, seed=5)
-    assert not np.array_equal(a.c1, b.c1) and np.array_equal(a.theta_ref, b.theta_ref)
+def test_simulate_config_dict_equals_cli_and_physics(cli, tmp_path):
+    cfg = ac.scenario_config("paper", channels=2)
+    cfg["effects"] = [{"effect": "offset", "offset_sin": 0.03}]
+    (tmp_path / "s.json").write_text(json.dumps(cfg))
+    cli("simulate", "--config", tmp_path / "s.json", "--samples", 500, "--seed", 5, "--out",
+        tmp_path / "s.csv")
+    theirs = ac.read_recording(tmp_path / "s.csv")
+    for ours in (ac.simulate(cfg, samples=500, seed=5), ac.simulate(tmp_path / "s.json", 500, 5)):
+        assert set(ours.columns) == set(theirs.columns) == {"t", "theta_ref", "sin", "cos"}
+        for k in ours.columns:
+            np.testing.assert_array_equal(ours.columns[k], theirs.columns[k], err_msg=k)
+    plain = ac.simulate(ac.scenario_config("paper", channels=2), samples=500, seed=5)
+    assert np.mean(theirs.sin - plain.sin) == pytest.approx(0.03, abs=1e-12)
     names = [s["name"] for s in ac.physics_scenarios()]
     case = ac.simulate_physics(names[0], samples=512, seed=1)
     assert len(case["real"]) == 512 and case["real"].meta["scenario"] == "physics"
