@@ -25,8 +25,11 @@ def test_simulate_equals_cli_recording(paper):
 
 def test_recording_roundtrip_and_arrays(tmp_path):
     theta = np.linspace(0, 2 * np.pi, 100, endpoint=False)
-    rec = ac.Recording(theta_ref=theta, sin=np.sin(theta), cos=np.cos(theta), meta={"p": 2})
-    assert rec.sin is rec.columns["sin"] and len(rec) == 100 and rec.periodicity == 2
+    s = np.sin(theta)
+    rec = ac.Recording(theta_ref=theta, sin=s, cos=np.cos(theta), meta={"p": 2})
+    assert rec.sin is s and rec.theta_ref is theta  # the caller's arrays, not copies
+    assert len(rec) == 100 and rec.periodicity == 2
+    assert ac.Recording(sin=[0.0, 1.0], cos=[1.0, 0.0]).sin.dtype == np.float64
     rec.write(tmp_path / "r.csv")
     back = ac.read_recording(tmp_path / "r.csv")
     assert back.channels == 2
