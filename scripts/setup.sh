@@ -3,7 +3,9 @@
 # Install every Debian package AngleCore needs, only when something is missing, then the pinned
 # PyPI packages into the project's virtual environment .venv/: FuseSoC and edalize (rtl/anglecore.core;
 # tb/fusesoc.sh runs its targets) and magpylib (the independent field model that the CTest
-# physics_field_vs_magpylib checks model/physics_magnet.cpp against).
+# physics_field_vs_magpylib checks model/physics_magnet.cpp against), and the Python package anglecore
+# (docs/python.md), built from this repository by `pip install .` with its pinned build requirements
+# (scikit-build-core, nanobind) and tested with pytest (python/tests, CTest label python).
 # Idempotent and quiet when all is there; uses sudo when not root.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,7 +15,7 @@ packages=(
   verilator iverilog yosys nextpnr-ice40 fpga-icestorm
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev zlib1g-dev
-  python3-matplotlib python3-numpy python3-venv
+  python3-matplotlib python3-numpy python3-venv python3-dev ccache
 )
 
 missing=()
@@ -33,12 +35,22 @@ fi
 fusesoc_version=2.4.7
 edalize_version=0.6.8
 magpylib_version=5.1.1
+numpy_version=2.4.6
+pytest_version=9.2.0
+skbuild_version=1.1.2   # the same pins as pyproject.toml's [build-system]
+nanobind_version=2.9.2
 venv=$root/.venv
-installed=$("$venv/bin/python" -c "from importlib.metadata import version as v; print(v('fusesoc'), v('edalize'), v('magpylib'))" \
+want="$fusesoc_version $edalize_version $magpylib_version $numpy_version $pytest_version $skbuild_version $nanobind_version"
+installed=$("$venv/bin/python" -c "from importlib.metadata import version as v; print(*(v(p) for p in ('fusesoc', 'edalize', 'magpylib', 'numpy', 'pytest', 'scikit-build-core', 'nanobind')))" \
   2>/dev/null || true)
-if [ "$installed" != "$fusesoc_version $edalize_version $magpylib_version" ]; then
-  echo "setup: installing fusesoc $fusesoc_version, edalize $edalize_version, magpylib $magpylib_version into $venv" >&2
+if [ "$installed" != "$want" ]; then
+  echo "setup: installing fusesoc $fusesoc_version, edalize $edalize_version, magpylib $magpylib_version, numpy $numpy_version, pytest $pytest_version, scikit-build-core $skbuild_version, nanobind $nanobind_version into $venv" >&2
   /usr/bin/python3 -m venv "$venv"
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "fusesoc==$fusesoc_version" \
-    "edalize==$edalize_version" "magpylib==$magpylib_version"
+    "edalize==$edalize_version" "magpylib==$magpylib_version" "numpy==$numpy_version" \
+    "pytest==$pytest_version" "scikit-build-core==$skbuild_version" "nanobind==$nanobind_version"
 fi
+
+# The package itself: built in build/python/ (kept, so a second run only relinks what changed, and
+# compiled through ccache), installed into .venv. No build isolation: the pinned requirements above.
+"$venv/bin/python" -m pip install -q --disable-pip-version-check --no-build-isolation "$root"

@@ -40,7 +40,7 @@ def component(path, order):
 
 
 def sources():
-    for top in ("model", "tb", "tests"):
+    for top in ("model", "tb", "tests", "python"):
         for dp, dn, fn in os.walk(os.path.join(ROOT, top)):
             dn[:] = [d for d in dn if not d.startswith(".")]
             for f in sorted(fn):

@@ -91,22 +91,6 @@ void write_json(const std::string& path, const nlohmann::json& j) {
   if (!f) throw InputError(path + ": write failed");
 }
 
-nlohmann::json stats_json(const ErrorStats& s) {
-  return {{"rms", s.rms}, {"max_abs", s.max_abs}, {"mean", s.mean}};
-}
-
-int recording_periodicity(const Recording& rec, const std::string& path) {
-  const auto it = rec.meta.find("p");
-  if (it == rec.meta.end()) return 1;
-  try {
-    size_t used = 0;
-    const int p = std::stoi(it->second, &used);
-    if (used == it->second.size() && p >= 1 && p <= 64) return p;
-  } catch (const std::exception&) {
-  }
-  throw InputError(path + ": metadata 'p': '" + it->second + "' is not a periodicity 1..64");
-}
-
 void require_finite_numbers(CLI::App& app) {
   static const CLI::Validator finite(
       [](std::string& text) -> std::string {

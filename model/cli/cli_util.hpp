@@ -27,11 +27,8 @@ void write_json(const std::string& path, const nlohmann::json& j);
 std::ostream& json_stdout();
 // True when argv asks for JSON on standard output (`--json -` or `--json=-`).
 bool json_to_stdout(int argc, char** argv);
-nlohmann::json stats_json(const ErrorStats& s);
 // Every floating-point option of every subcommand must be finite: CLI11's range checks compare,
 // and NaN fails no comparison (it would pass them). Called once, after the subcommands are added.
 void require_finite_numbers(CLI::App& app);
-// `# p=N` in the recording's metadata, else 1; throws InputError on a malformed value.
-int recording_periodicity(const Recording& rec, const std::string& path);
 
 }  // namespace acore::cli

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <memory>
 
-#include "calibration/calibration.hpp"
+#include "calibration/calibrate_options.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
@@ -17,114 +17,30 @@ namespace acore::cli {
 
 namespace {
 struct CalibrateArgs {
-  std::string in, out, json, correction = "poly", zero_offset = "auto";
-  int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, in_w = 16, p = 0;
-  int fourier = 0, fourier_iterations = DatapathConfig{}.fourier_iterations;
-  int fourier_guard = DatapathConfig{}.fourier_guard;
-  double in_scale = 0;
-  bool coef_f_given = false, iterations_given = false, xcenter = false, zero_word = false;
+  std::string in, out, json;
+  CalibrateSpec spec;
+  int iterations = 16, coef_f = 15;  // taken only when given (spec.iterations, spec.coef_frac)
 };
-
-// --zero-offset: "auto" (estimate) or an electrical angle in degrees.
-void parse_zero_offset(const std::string& v, CalOptions* opt) {
-  if (v == "auto") return;
-  size_t used = 0;
-  double deg = 0;
-  try {
-    deg = std::stod(v, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != v.size() || !std::isfinite(deg))
-    throw InputError("--zero-offset: '" + v + "' is neither 'auto' nor an angle in degrees");
-  opt->estimate_zero = false;
-  opt->zero_offset = deg * M_PI / 180;
-}
 
 void run_calibrate(const CalibrateArgs& a) {
   const Recording rec = read_recording(a.in);
-  CalOptions opt;
-  opt.correction = parse_correction(a.correction);
-  opt.degree = a.degree;
-  opt.regions = a.regions;
-  opt.xcenter = a.xcenter ? 1 : 0;
-  opt.periodicity = a.p ? a.p : recording_periodicity(rec, a.in);
-  opt.fourier_k = a.fourier;
-  parse_zero_offset(a.zero_offset, &opt);
-  DatapathConfig cfg = cordic_width_preset(a.angle_w);
-  cfg.correction = opt.correction;
-  cfg.fourier_k = a.fourier;
-  cfg.fourier_iterations = a.fourier_iterations;
-  cfg.fourier_guard = a.fourier_guard;
-  cfg.degree = a.degree;
-  cfg.regions = a.regions;
-  cfg.xcenter = opt.xcenter;
-  cfg.zero_word = a.zero_word ? 1 : 0;
-  if (a.iterations_given) cfg.iterations = a.iterations;
-  // A wider input needs wider offset words (REG_W >= IN_W + 2); the coefficients keep Q3.x.
-  cfg.in_w = a.in_w;
-  if (const int grow = cfg.in_w + 2 - cfg.reg_w; grow > 0) {
-    cfg.reg_w += grow;
-    cfg.coef_f += grow;
-  }
-  if (a.coef_f_given) {
-    cfg.acc_guard += cfg.coef_f - a.coef_f;  // the accumulator keeps its fraction bits
-    cfg.coef_f = a.coef_f;
-    cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
-  }
-  cfg.validate();
-  const FloatCoefficients fc = calibrate(rec, opt);
-  const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
-  RegImage img =
-      a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
-  cfg = img.cfg;
-  img.provenance.push_back("command=" + command_line());
-  img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
+  const CalibrateOutcome c = calibrate_recording(rec, a.spec, a.in, command_line());
+  const RegImage& img = c.image;
+  const DatapathConfig& cfg = img.cfg;
   write_regimage(img, a.out);
-
-  // Fit quality on the calibration recording itself, both engines.
-  const auto ef = angle_error_deg(run_float(rec, fc).angle, rec.theta_ref, opt.periodicity);
-  const AngleSeries fixed = run_fixed(rec, img);
-  const auto ex = angle_error_deg(fixed.angle, rec.theta_ref, opt.periodicity);
-  const auto eu = angle_error_deg(fixed.uncorrected, rec.theta_ref, opt.periodicity);
-  const ErrorStats sf = error_stats(ef), sx = error_stats(ex), su = error_stats(eu);
   std::cout << fmt::format("calibrated {} samples: {} words ({}), in_scale={}\n", rec.size(),
-                           cfg.words(), cfg.describe(), in_scale);
+                           cfg.words(), cfg.describe(), img.in_scale);
   std::cout << fmt::format(
       "  zero offset {:+.4f} deg electrical (sensor angle - p theta_ref, {}), {}\n",
-      img.zero_offset * 180 / M_PI, opt.estimate_zero ? "estimated" : "given",
+      img.zero_offset * 180 / M_PI, c.options.estimate_zero ? "estimated" : "given",
       cfg.zero_word ? fmt::format("in the ZERO word (address {}, code {})", cfg.addr_zero(),
                                   img.zero_position())
                     : "subtracted by `estimate` in software");
   std::cout << fmt::format(
       "  on the calibration recording (reference frame): uncorrected RMS {:.3f} deg, "
       "corrected RMS {:.3f} (float) {:.3f} (fixed) deg\n",
-      su.rms, sf.rms, sx.rms);
-  nlohmann::json j = {
-      {"samples", rec.size()},
-      {"words", cfg.words()},
-      {"correction", correction_name(cfg.correction)},
-      {"xcenter", cfg.xcenter},
-      {"angle_w", cfg.angle_w},
-      {"reg_w", cfg.reg_w},
-      {"degree", cfg.degree},
-      {"regions", cfg.regions},
-      {"iterations", cfg.iterations},
-      {"in_scale", in_scale},
-      {"offset", {fc.offset[0], fc.offset[1]}},
-      {"amplitude", {fc.amp[0], fc.amp[1]}},
-      {"poly", fc.poly},
-      {"fourier_k", cfg.fourier_k},
-      {"fourier", fc.fourier},
-      {"zero_word", cfg.zero_word},
-      {"zero_offset",
-       {{"rad", img.zero_offset},
-        {"deg", img.zero_offset * 180 / M_PI},
-        {"code", img.zero_offset_code()},
-        {"estimated", opt.estimate_zero}}},
-      {"fit_error_deg",
-       {{"float", stats_json(sf)}, {"fixed", stats_json(sx)}, {"uncorrected", stats_json(su)}}}};
-  write_json(a.json, j);
+      c.fit_uncorrected.rms, c.fit_float.rms, c.fit_fixed.rms);
+  write_json(a.json, c.report);
 }
 }  // namespace
 
@@ -135,15 +51,15 @@ void add_calibrate(CLI::App& app) {
   c->add_option("--in", args->in, "Calibration recording (CSV with theta_ref)")->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
   c->add_option(
-       "--correction", args->correction,
+       "--correction", args->spec.correction,
        "poly (1-D in x, the paper's), poly2d (2-D in x and the other curve), none (no correction)")
       ->check(CLI::IsMember({"poly", "poly2d", "none"}));
-  c->add_option("--degree", args->degree,
+  c->add_option("--degree", args->spec.degree,
                 "Polynomial degree n (poly: 1..7; poly2d: total degree 1..3)")
       ->check(CLI::Range(1, 7));
-  c->add_option("--regions", args->regions, "Correction regions (4 or 8)")
+  c->add_option("--regions", args->spec.regions, "Correction regions (4 or 8)")
       ->check(CLI::IsMember({4, 8}));
-  c->add_flag("--xcenter", args->xcenter,
+  c->add_flag("--xcenter", args->spec.xcenter,
               "8 regions: fit in u = 2 (x -+ 3/8), centred in its half region (keeps high-degree "
               "coefficients in range, so COEF_F stays 15)");
   c->add_option("--iterations", args->iterations,
@@ -154,48 +70,45 @@ void add_calibrate(CLI::App& app) {
                 "automatically when a coefficient needs more range)")
       ->check(CLI::Range(1, 17));
   c->add_option(
-       "--angle-w", args->angle_w,
+       "--angle-w", args->spec.angle_w,
        "Output angle width: 8..16 (K=16, Z_W=20, REG_W=18), 18 (K=18, Z_W=22, REG_W=20) or 20 "
        "(K=20, Z_W=24, REG_W=22); see docs/datapath.md, CORDIC widths")
       ->check(CLI::Range(8, 20));
-  c->add_option("--in-w", args->in_w,
+  c->add_option("--in-w", args->spec.in_w,
                 "Input code width IN_W (default 16; REG_W grows to IN_W + 2 if needed)")
       ->check(CLI::Range(8, 24));
-  c->add_option("--in-scale", args->in_scale,
+  c->add_option("--in-scale", args->spec.in_scale,
                 "Input codes per recording unit (default: automatic power of two)")
       ->check(CLI::PositiveNumber);
-  c->add_option("--periodicity", args->p,
+  c->add_option("--periodicity", args->spec.periodicity,
                 "Electrical periods per turn (default: the recording's # p=)")
       ->check(CLI::Range(1, 64));
   c->add_option(
-       "--fourier", args->fourier,
+       "--fourier", args->spec.fourier,
        "Harmonics K of the angle-domain Fourier correction after the CORDIC (default 0: off); "
        "2K+1 more words; with --correction none it corrects the uncorrected angle")
       ->check(CLI::Range(0, 31));
-  c->add_option("--fourier-iterations", args->fourier_iterations,
+  c->add_option("--fourier-iterations", args->spec.fourier_iterations,
                 "Rotation-CORDIC stages per harmonic of the Fourier correction (<= --iterations)")
       ->check(CLI::Range(4, 24));
-  c->add_option("--fourier-guard", args->fourier_guard,
+  c->add_option("--fourier-guard", args->spec.fourier_guard,
                 "Guard fraction bits of the Fourier rotations")
       ->check(CLI::Range(0, 8));
   c->add_option(
-      "--zero-offset", args->zero_offset,
+      "--zero-offset", args->spec.zero_offset,
       "Zero offset (sensor angle - p theta_ref, electrical): 'auto' (default) estimates it as the "
       "circular mean of the uncorrected angle error and fits the correction against the aligned "
       "reference; a number of degrees takes it as given (0: fit against theta_ref itself)");
   c->add_flag(
-      "--zero-word", args->zero_word,
+      "--zero-word", args->spec.zero_word,
       "Store the zero offset in one more register word (RTL ZERO=1, after every other word): the "
       "hardware outputs angle - zero, in the reference frame. Without it the image header records "
       "the offset and `estimate` subtracts it in software");
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
-    args->coef_f_given = c->count("--coef-frac") > 0;
-    args->iterations_given = c->count("--iterations") > 0;
-    if (args->correction == "poly2d" && args->degree > 3)
-      throw InputError(
-          fmt::format("--degree {}: poly2d takes a total degree of 1..3", args->degree));
-    if (args->xcenter && args->regions != 8) throw InputError("--xcenter needs --regions 8");
+    if (c->count("--coef-frac") > 0) args->spec.coef_frac = args->coef_f;
+    if (c->count("--iterations") > 0) args->spec.iterations = args->iterations;
+    args->spec.validate();
     run_calibrate(*args);
   });
 }

@@ -140,12 +140,6 @@ void run_estimate(const EstimateArgs& a) {
                        ": this anglecore was built without the RTL (ACORE_WITH_RTL=OFF)");
 #endif
   }
-  nlohmann::json j = {{"engine", engine_name(engine)}, {"samples", rec.size()}};
-  if (engine == Engine::Rtl) j["fold"] = a.fold;
-  j["zero_offset"] = {{"rad", s.zero_offset},
-                      {"deg", s.zero_offset * 180 / M_PI},
-                      {"code", angle_code(s.zero_offset, img.cfg.angle_w)},
-                      {"applied_by", s.zero_word ? "zero_word" : "software"}};
   std::cout << fmt::format("zero offset {:+.4f} deg electrical, removed by {}\n",
                            s.zero_offset * 180 / M_PI,
                            s.zero_word ? "the ZERO word" : "estimate (software)");
@@ -155,19 +149,19 @@ void run_estimate(const EstimateArgs& a) {
   if (a.track_bandwidth != 0 && !(fs > 0))
     throw InputError(a.in + ": --track-bandwidth needs the recording's t column (increasing)");
   const Tracked tr = track_series(s.angle, fs, p, img.cfg.angle_w, a);
+  nlohmann::json track;
   if (fs > 0) {
     const double bw = track_bandwidth_hz(tr.code, fs);
     std::cout << fmt::format(
         "tracking observer: code {} = {:.1f} Hz bandwidth at {:.6g} samples/s{}\n", tr.code, bw, fs,
         a.track_bandwidth > 0 ? fmt::format(" (nearest to {:.1f} Hz)", a.track_bandwidth) : "");
-    j["track"] = {{"code", tr.code}, {"bandwidth_hz", bw}, {"sample_rate_hz", fs}};
+    track["track"] = {{"code", tr.code}, {"bandwidth_hz", bw}, {"sample_rate_hz", fs}};
   }
+  ErrorStats st, su;
   if (rec.has_theta()) {
     err = angle_error_deg(s.angle, rec.theta_ref, p);
-    const ErrorStats st = error_stats(err);
-    const ErrorStats su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
-    j["error_deg"] = stats_json(st);
-    j["uncorrected_error_deg"] = stats_json(su);
+    st = error_stats(err);
+    su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
     std::cout << fmt::format(
         "{} engine, {} samples: error RMS {:.4f} deg, max {:.4f} deg, mean {:+.4f} deg "
         "(uncorrected {:.3f} / {:.3f} / {:+.3f})\n",
@@ -181,7 +175,7 @@ void run_estimate(const EstimateArgs& a) {
       std::vector<double> dv(rec.size());
       for (size_t i = 0; i < rec.size(); ++i) dv[i] = tr.rpm[i] - tref.rpm[i];
       const ErrorStats sv = error_stats(dv);
-      j["velocity_error_rpm"] = stats_json(sv);
+      track["velocity_error_rpm"] = stats_json(sv);
       std::cout << fmt::format("velocity error RMS {:.4f} rpm, max {:.4f} rpm, mean {:+.4f} rpm\n",
                                sv.rms, sv.max_abs, sv.mean);
     }
@@ -191,7 +185,10 @@ void run_estimate(const EstimateArgs& a) {
   }
   size_t flagged = 0;
   for (unsigned f : s.flags) flagged += f != 0;
-  j["flagged_samples"] = flagged;
+  nlohmann::json j =
+      estimate_json(engine, rec.size(), a.fold, img, s.zero_offset, s.zero_word,
+                    rec.has_theta() ? &st : nullptr, rec.has_theta() ? &su : nullptr, flagged);
+  j.update(track);
   if (!a.out.empty()) write_angles(a.out, rec, s, err, tr);
   write_json(a.json, j);
 }

@@ -3,6 +3,7 @@
 //   build/tests/bench/bench_estimator
 // After the table, one line gives each chain's samples per second as a multiple of std::atan2's,
 // all measured in this run (the median of the repetitions when --benchmark_repetitions is given).
+// BM_EstimateFixedBatch is the Python package's estimate path (scripts/bench_python.py).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -61,6 +62,26 @@ void BM_FixedChain(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
 }
 BENCHMARK(BM_FixedChain)->Unit(benchmark::kMillisecond);
+
+// What the Python package's estimate(engine="fixed", uncorrected=False) runs on numpy arrays, in
+// C++: fresh output arrays, recording values to codes, the batch chain, angles in rad, the error
+// against theta_ref and its statistics (scripts/bench_python.py compares the two in one run).
+void BM_EstimateFixedBatch(benchmark::State& state) {
+  const auto& f = fixture();
+  acore::ChannelColumns in;
+  in.channels = f.rec.channels;
+  for (int c = 0; c < f.rec.channels; ++c) in.ch[c] = f.rec.ch[c].data();
+  in.theta_ref = f.rec.theta_ref.data();
+  in.n = kSamples;
+  for (auto _ : state) {
+    std::vector<double> angle(kSamples), err(kSamples);
+    std::vector<uint8_t> flags(kSamples), region(kSamples);
+    acore::run_fixed_batch(f.img, in, 1, {angle.data(), flags.data(), region.data(), err.data()});
+    benchmark::DoNotOptimize(acore::error_stats(err).rms);
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kSamples));
+}
+BENCHMARK(BM_EstimateFixedBatch)->Unit(benchmark::kMillisecond);
 
 void BM_FixedChainPerSample(benchmark::State& state) {
   const auto& f = fixture();

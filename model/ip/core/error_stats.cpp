@@ -20,18 +20,25 @@ std::vector<double> angle_error_deg(const std::vector<double>& est, const std::v
   return e;
 }
 
-ErrorStats error_stats(const std::vector<double>& e) {
+ErrorStats error_stats(const std::vector<double>& e) { return error_stats(e.data(), e.size()); }
+
+ErrorStats error_stats(const double* e, size_t n) {
   ErrorStats s;
-  if (e.empty()) return s;
+  if (n == 0) return s;
   double sum = 0, sq = 0;
-  for (double v : e) {
+  for (size_t i = 0; i < n; ++i) {
+    const double v = e[i];
     sum += v;
     sq += v * v;
     s.max_abs = std::max(s.max_abs, std::fabs(v));
   }
-  s.mean = sum / e.size();
-  s.rms = std::sqrt(sq / e.size());
+  s.mean = sum / n;
+  s.rms = std::sqrt(sq / n);
   return s;
+}
+
+nlohmann::json stats_json(const ErrorStats& s) {
+  return {{"rms", s.rms}, {"max_abs", s.max_abs}, {"mean", s.mean}};
 }
 
 }  // namespace acore

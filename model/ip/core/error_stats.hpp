@@ -2,6 +2,8 @@
 // Angle-error statistics (docs/contracts.md, command line): error = estimate - reference, wrapped
 // to (-180, 180] degrees.
 #pragma once
+#include <cstddef>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace acore {
@@ -16,5 +18,8 @@ double wrap_deg(double deg);
 std::vector<double> angle_error_deg(const std::vector<double>& est_rad,
                                     const std::vector<double>& ref_rad, int periodicity = 1);
 ErrorStats error_stats(const std::vector<double>& err_deg);
+ErrorStats error_stats(const double* err_deg, size_t n);
+// {"rms", "max_abs", "mean"}: the statistics as every JSON report writes them.
+nlohmann::json stats_json(const ErrorStats& s);
 
 }  // namespace acore

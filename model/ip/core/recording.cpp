@@ -254,4 +254,16 @@ void write_recording(const Recording& rec, const std::string& path) {
   if (!f) throw InputError(fmt::format("{}: write failed", path));
 }
 
+int recording_periodicity(const Recording& rec, const std::string& path) {
+  const auto it = rec.meta.find("p");
+  if (it == rec.meta.end()) return 1;
+  try {
+    size_t used = 0;
+    const int p = std::stoi(it->second, &used);
+    if (used == it->second.size() && p >= 1 && p <= 64) return p;
+  } catch (const std::exception&) {
+  }
+  throw InputError(path + ": metadata 'p': '" + it->second + "' is not a periodicity 1..64");
+}
+
 }  // namespace acore

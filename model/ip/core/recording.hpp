@@ -35,6 +35,10 @@ struct Recording {
 // the angles cover a full (electrical) turn. Used wherever a fit needs the whole circle.
 int turn_sectors_covered(const std::vector<double>& theta, int periodicity = 1);
 
+// `# p=N` in the recording's metadata, else 1; throws InputError naming `what` (the file) on a
+// malformed value.
+int recording_periodicity(const Recording& rec, const std::string& what);
+
 // Reads a recording; throws InputError "FILE:LINE: column 'NAME': ..." on any defect.
 Recording read_recording(const std::string& path);
 // Parses recording text; `name` is used in error messages in place of a path.

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "engine/estimator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "engine/float_model.hpp"
 
@@ -91,6 +93,50 @@ AngleSeries run_fixed(const Recording& rec, const RegImage& img) {
   for (const ChannelCodes& c : to_codes(rec, img.in_scale, img.cfg.in_w))
     rows.push_back(model.step(c));
   return series_from_fixed(rows, img);
+}
+
+void run_fixed_batch(const RegImage& img, const ChannelColumns& in, int periodicity,
+                     const BatchAngles& out) {
+  const FixedModel model(img);
+  const int in_w = img.cfg.in_w;
+  const double sw = img.software_zero_offset();
+  const double to_rad = 2 * M_PI / std::ldexp(1.0, img.cfg.angle_w);
+  constexpr size_t kChunk = 4096;  // codes and outputs stay in cache between the two passes
+  std::vector<ChannelCodes> codes(std::min(kChunk, in.n));
+  std::vector<FixedOutput> rows(codes.size());
+  for (size_t start = 0; start < in.n; start += kChunk) {
+    const size_t m = std::min(kChunk, in.n - start);
+    for (size_t i = 0; i < m; ++i)
+      for (int c = 0; c < 4; ++c)
+        codes[i][c] =
+            c < in.channels
+                ? static_cast<int32_t>(FixedModel::to_code(in.ch[c][start + i], img.in_scale, in_w))
+                : 0;
+    model.run_batch(codes.data(), m, rows.data());
+    for (size_t i = 0; i < m; ++i) {
+      const size_t k = start + i;
+      out.angle[k] = minus_offset(rows[i].angle * to_rad, sw);
+      if (out.flags) out.flags[k] = rows[i].flags;
+      if (out.region) out.region[k] = rows[i].region;
+      if (out.error_deg && in.theta_ref)
+        out.error_deg[k] = wrap_deg((out.angle[k] - periodicity * in.theta_ref[k]) * 180.0 / M_PI);
+    }
+  }
+}
+
+nlohmann::json estimate_json(Engine engine, size_t samples, int fold, const RegImage& img,
+                             double zero_offset, bool zero_word, const ErrorStats* error,
+                             const ErrorStats* uncorrected, size_t flagged) {
+  nlohmann::json j = {{"engine", engine_name(engine)}, {"samples", samples}};
+  if (engine == Engine::Rtl) j["fold"] = fold;
+  j["zero_offset"] = {{"rad", zero_offset},
+                      {"deg", zero_offset * 180 / M_PI},
+                      {"code", angle_code(zero_offset, img.cfg.angle_w)},
+                      {"applied_by", zero_word ? "zero_word" : "software"}};
+  if (error) j["error_deg"] = stats_json(*error);
+  if (uncorrected) j["uncorrected_error_deg"] = stats_json(*uncorrected);
+  j["flagged_samples"] = flagged;
+  return j;
 }
 
 }  // namespace acore

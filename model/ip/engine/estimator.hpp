@@ -3,9 +3,13 @@
 // `diagnose`. The RTL engine lives in tb/rtl_engine.hpp (the pipelined top, "rtl", and the serial
 // core, "rtl-serial") and returns the same FixedSample rows.
 #pragma once
+#include <array>
+#include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "core/error_stats.hpp"
 #include "core/recording.hpp"
 #include "engine/fixed_model.hpp"
 #include "regmap/coefficients.hpp"
@@ -35,5 +39,31 @@ AngleSeries run_float(const Recording& rec, const FloatCoefficients& fc);
 AngleSeries run_fixed(const Recording& rec, const RegImage& img);
 // Converts bit-accurate rows (model or RTL) of this image into angles in the reference frame.
 AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const RegImage& img);
+
+// Recording columns in caller-owned memory (numpy arrays in the Python package): channels c1..c4,
+// or sin, cos in ch[0], ch[1]; theta_ref may be null.
+struct ChannelColumns {
+  int channels = 4;
+  std::array<const double*, 4> ch{};
+  const double* theta_ref = nullptr;
+  size_t n = 0;
+};
+// Caller-owned outputs of n samples each; error_deg is written only when it and theta_ref are set.
+struct BatchAngles {
+  double* angle = nullptr;  // as AngleSeries::angle of run_fixed, bit for bit
+  uint8_t* flags = nullptr;
+  uint8_t* region = nullptr;
+  double* error_deg = nullptr;  // angle - p theta_ref, as angle_error_deg
+};
+// run_fixed's angles, region and flags through FixedModel::run_batch (the vectorized path), chunk
+// by chunk, with no copy of the columns; without the uncorrected angle (the batch has none).
+void run_fixed_batch(const RegImage& img, const ChannelColumns& in, int periodicity,
+                     const BatchAngles& out);
+
+// The `estimate --json` object (docs/contracts.md): engine, samples, fold (rtl), zero_offset,
+// error_deg and uncorrected_error_deg (each when given), flagged_samples.
+nlohmann::json estimate_json(Engine engine, size_t samples, int fold, const RegImage& img,
+                             double zero_offset, bool zero_word, const ErrorStats* error,
+                             const ErrorStats* uncorrected, size_t flagged);
 
 }  // namespace acore

@@ -1,0 +1,310 @@
+# SPDX-License-Identifier: MIT
+"""AngleCore's angle-sensor model on numpy arrays (docs/python.md).
+
+    import anglecore as ac
+    cal = ac.simulate("paper", samples=3600, seed=11)
+    val = ac.simulate("paper", samples=3600, seed=12)
+    img = ac.calibrate(cal)
+    res = ac.estimate(img, val, engine="fixed")
+    print(res.error_deg["rms"])
+
+Every function calls the C++ model's own function (the one the `anglecore` command calls), so the
+results equal the command's on the same inputs: register words, bit-accurate angles, statistics.
+Bad input raises ValueError with the model's message; a wrong array type TypeError.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+from . import _core
+
+__all__ = [
+    "Recording", "RegisterImage", "Estimate", "read_recording", "read_image", "simulate",
+    "scenarios", "physics_scenarios", "simulate_physics", "calibrate", "estimate", "harmonics",
+    "diagnose", "ENGINES",
+]
+
+ENGINES = ("float", "fixed", "rtl", "rtl-serial")
+_CHANNELS = {4: ("c1", "c2", "c3", "c4"), 2: ("sin", "cos")}
+_COLUMNS = ("t", "theta_ref", "c1", "c2", "c3", "c4", "sin", "cos", "temp")
+
+
+def _column(name: str, x: Any) -> np.ndarray:
+    """A float64, 1-D, C-contiguous array (the caller's own when it already is one: no copy)."""
+    if isinstance(x, np.ndarray):
+        if x.dtype != np.float64:
+            raise TypeError(f"column '{name}': expected a float64 array, got dtype {x.dtype}")
+    elif isinstance(x, (list, tuple)):
+        x = np.asarray(x, dtype=np.float64)
+    else:
+        raise TypeError(f"column '{name}': expected a numpy float64 array, got {type(x).__name__}")
+    if x.ndim != 1:
+        raise ValueError(f"column '{name}': expected a 1-D array, got shape {x.shape}")
+    return np.ascontiguousarray(x)
+
+
+class Recording:
+    """A sensor recording (docs/contracts.md, recording file): columns as numpy float64 arrays.
+
+    Four channels c1..c4, or two (sin, cos); theta_ref (rad), t (s), temp (degC) optional.
+    meta holds the `# key=value` lines (p = periodicity), comments the other `#` lines.
+    """
+
+    def __init__(self, *, theta_ref=None, t=None, temp=None, c1=None, c2=None, c3=None, c4=None,
+                 sin=None, cos=None, meta: Optional[Dict[str, Any]] = None,
+                 comments: Optional[List[str]] = None):
+        given = {k: v for k, v in dict(t=t, theta_ref=theta_ref, c1=c1, c2=c2, c3=c3, c4=c4,
+                                       sin=sin, cos=cos, temp=temp).items() if v is not None}
+        four = [k for k in _CHANNELS[4] if k in given]
+        two = [k for k in _CHANNELS[2] if k in given]
+        if len(four) == 4 and not two:
+            self.channels = 4
+        elif len(two) == 2 and not four:
+            self.channels = 2
+        else:
+            raise ValueError("Recording: give the four channels c1..c4 or the two sin, cos")
+        self.columns: Dict[str, np.ndarray] = {k: _column(k, v) for k, v in given.items()}
+        lengths = {k: len(v) for k, v in self.columns.items()}
+        if len(set(lengths.values())) != 1:
+            raise ValueError(f"Recording: columns differ in length: {lengths}")
+        self.meta: Dict[str, str] = {str(k): str(v) for k, v in (meta or {}).items()}
+        self.comments: List[str] = list(comments or [])
+
+    @classmethod
+    def _from_core(cls, d: dict) -> "Recording":
+        rec = cls.__new__(cls)
+        rec.channels = d["channels"]
+        rec.columns = dict(d["columns"])
+        rec.meta = dict(d["meta"])
+        rec.comments = list(d["comments"])
+        return rec
+
+    def _core(self) -> dict:
+        return {"channels": self.channels, "columns": self.columns, "meta": self.meta,
+                "comments": self.comments}
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        if name in _COLUMNS:
+            cols = self.__dict__.get("columns", {})
+            if name in cols:
+                return cols[name]
+            raise AttributeError(f"this recording has no column '{name}'")
+        raise AttributeError(name)
+
+    def __len__(self) -> int:
+        return len(self.columns[_CHANNELS[self.channels][0]])
+
+    def __repr__(self) -> str:
+        return f"Recording({len(self)} samples, columns {list(self.columns)})"
+
+    @property
+    def channel_names(self):
+        return _CHANNELS[self.channels]
+
+    @property
+    def periodicity(self) -> int:
+        """The recording's `# p=` (1 when absent); ValueError when malformed."""
+        return _core.recording_periodicity(self._core(), "recording")
+
+    def write(self, path: os.PathLike | str) -> None:
+        _core.write_recording(self._core(), os.fspath(path))
+
+    def to_csv(self) -> str:
+        return _core.format_recording(self._core())
+
+
+def read_recording(path: os.PathLike | str) -> Recording:
+    """Reads a recording CSV; ValueError "FILE:LINE: column 'NAME': ..." on any defect."""
+    return Recording._from_core(_core.read_recording(os.fspath(path)))
+
+
+class RegisterImage:
+    """A register image: .words (uint64 array, address order), .header (the `// acore:` keys),
+    .report (the `calibrate --json` object when made by calibrate), .write(path)."""
+
+    def __init__(self, core: "_core.RegImage", report: Optional[dict] = None):
+        self._img = core
+        self.report = report
+
+    @property
+    def words(self) -> np.ndarray:
+        return self._img.words
+
+    @property
+    def text(self) -> str:
+        """The image file's text ($readmemh with the header), as write() writes it."""
+        return self._img.text
+
+    @property
+    def header(self) -> Dict[str, str]:
+        out: Dict[str, str] = {}
+        for line in self._img.text.splitlines():
+            if line.startswith("// acore: ") and "=" in line:
+                k, v = line[len("// acore: "):].split("=", 1)
+                out[k] = v
+        return out
+
+    @property
+    def zero_offset(self) -> float:
+        """The calibration's zero offset, rad (sensor angle - p theta_ref, electrical)."""
+        return self._img.zero_offset
+
+    @property
+    def in_scale(self) -> float:
+        return self._img.in_scale
+
+    def write(self, path: os.PathLike | str) -> None:
+        self._img.write(os.fspath(path))
+
+    def __repr__(self) -> str:
+        return f"RegisterImage({len(self.words)} words, crc32=0x{self._img.crc32:08x})"
+
+
+def read_image(path: os.PathLike | str) -> RegisterImage:
+    return RegisterImage(_core.read_image(os.fspath(path)))
+
+
+def scenarios() -> List[str]:
+    """The built-in scenario names (`anglecore simulate --list`)."""
+    return list(_core.scenario_names())
+
+
+def simulate(scenario_or_config: Any = "paper", samples: int = 4096, seed: int = 1,
+             channels: Optional[int] = None) -> Recording:
+    """A recording from a built-in scenario name, a scenario JSON file (path ending in .json) or a
+    scenario dict (the fields of `simulate --dump-config`, effects included), as
+    `anglecore simulate --scenario/--config ... --samples N --seed S [--channels C]`."""
+    if isinstance(scenario_or_config, os.PathLike):
+        scenario_or_config = os.fspath(scenario_or_config)
+    if channels not in (None, 2, 4):
+        raise ValueError(f"channels {channels}: not one of 2, 4")
+    if int(samples) < 1:
+        raise ValueError(f"samples {samples}: must be >= 1")
+    return Recording._from_core(
+        _core.simulate(scenario_or_config, int(samples), int(seed), channels or 0))
+
+
+def scenario_config(scenario_or_config: Any, channels: Optional[int] = None) -> dict:
+    """The scenario as a dict (`simulate --dump-config`): a starting point for a custom one."""
+    return _core.scenario_json(scenario_or_config, channels or 0)
+
+
+def physics_scenarios() -> List[dict]:
+    """The physics rig's scenarios (magnet, sensor, ADC chain; `diagnose-bench --physics`)."""
+    return list(_core.physics_scenarios())
+
+
+def simulate_physics(name: str, samples: int = 4096, seed: int = 1, index: int = 0) -> dict:
+    """Case `index` of physics scenario `name` as diagnose-bench --physics draws it with `seed`:
+    {"sim", "real", "holdout"} recordings of the physics rig, and the scenario's truth."""
+    d = dict(_core.simulate_physics(name, int(samples), int(seed), int(index)))
+    for k in ("sim", "real", "holdout"):
+        d[k] = Recording._from_core(d[k])
+    return d
+
+
+def calibrate(recording: Recording, **options: Any) -> RegisterImage:
+    """Fits and quantizes a register image, as `anglecore calibrate`: every option of the command
+    by its name with '-' -> '_' (correction, degree, regions, xcenter, iterations, coef_frac,
+    angle_w, in_w, in_scale, periodicity, fourier, fourier_iterations, fourier_guard,
+    zero_offset ("auto" or degrees), zero_word). The image's .report is the command's JSON."""
+    _check_recording(recording)
+    opts = dict(options)
+    if "zero_offset" in opts and not isinstance(opts["zero_offset"], str):
+        opts["zero_offset"] = repr(float(opts["zero_offset"]))
+    call = ", ".join(f"{k}={v!r}" for k, v in options.items())
+    img, report = _core.calibrate(recording._core(), opts, "recording",
+                                  f"python anglecore.calibrate({call})")
+    return RegisterImage(img, report)
+
+
+@dataclass
+class Estimate:
+    """estimate()'s result: per-sample arrays and the `estimate --json` object (.report)."""
+    angle: np.ndarray                 # rad, reference frame, [0, 2 pi)
+    region: np.ndarray                # uint8
+    flags: np.ndarray                 # uint8: bit 0 ovf, 1 los, 2 dos
+    error: Optional[np.ndarray]       # deg, angle - p theta_ref wrapped (None without theta_ref)
+    uncorrected: Optional[np.ndarray]  # rad, the chain without correction (None when not asked)
+    uncorrected_error: Optional[np.ndarray]
+    report: dict
+
+    @property
+    def error_deg(self) -> Optional[dict]:
+        return self.report.get("error_deg")
+
+    @property
+    def uncorrected_error_deg(self) -> Optional[dict]:
+        return self.report.get("uncorrected_error_deg")
+
+    @property
+    def flagged_samples(self) -> int:
+        return self.report["flagged_samples"]
+
+    @property
+    def zero_offset(self) -> dict:
+        return self.report["zero_offset"]
+
+
+def _check_recording(recording: Any) -> None:
+    if not isinstance(recording, Recording):
+        raise TypeError(f"expected an anglecore.Recording, got {type(recording).__name__}")
+
+
+def estimate(image: RegisterImage, recording: Recording, engine: str = "fixed",
+             periodicity: Optional[int] = None, uncorrected: bool = True) -> Estimate:
+    """Runs an engine over a recording, as `anglecore estimate --engine ENGINE`.
+
+    fixed: the bit-accurate batch path straight on the recording's arrays (no copy; the GIL is
+    released); uncorrected=True also runs the per-sample model for the uncorrected angle (the
+    command's uncorrected_error_deg); False skips it (the fast path). float: the double model."""
+    if not isinstance(image, RegisterImage):
+        raise TypeError(f"expected an anglecore.RegisterImage, got {type(image).__name__}")
+    _check_recording(recording)
+    if engine in ("rtl", "rtl-serial"):
+        raise NotImplementedError(
+            f"engine '{engine}': the RTL engine runs in the CMake build only "
+            f"(build/anglecore estimate --engine {engine}); this package has no Verilator build")
+    if engine not in ("float", "fixed"):
+        raise ValueError(f"--engine: '{engine}' is not one of float, fixed, rtl, rtl-serial")
+    p = int(periodicity) if periodicity else recording.periodicity
+    theta = recording.columns.get("theta_ref")
+    unc = unc_err = err = None
+    if engine == "fixed":
+        arrays = [recording.columns[n] for n in recording.channel_names]
+        angle, flags, region, err = _core.estimate_fixed_batch(
+            image._img, recording.channels, arrays, theta, p)
+        if uncorrected:
+            unc = _core.estimate_series(image._img, recording._core(), "fixed")[1]
+    else:
+        angle, unc, region, flags = _core.estimate_series(image._img, recording._core(), "float")
+        if theta is not None:
+            err = _core.angle_error_deg(angle, theta, p)
+    if unc is not None and theta is not None:
+        unc_err = _core.angle_error_deg(unc, theta, p)
+    report = _core.estimate_report(image._img, engine, len(recording), err, unc_err,
+                                   int(np.count_nonzero(flags)))
+    return Estimate(angle, region, flags, err, unc, unc_err, report)
+
+
+def harmonics(spec: Any, grid: int = 0) -> dict:
+    """Kuntz's predicted vs exact angle-error harmonics (`anglecore harmonics --json`) of a
+    signal spec: a dict {p, A0, B0, Ap, Bp, delta_p, terms: [...]} or a JSON file path."""
+    if isinstance(spec, os.PathLike):
+        spec = os.fspath(spec)
+    return _core.harmonics(spec, int(grid))
+
+
+def diagnose(sim: Recording, real: Recording, holdout: Optional[Recording] = None,
+             order: Optional[int] = None) -> dict:
+    """The sim-to-real gap diagnosis (`anglecore diagnose --json`) as a dict."""
+    _check_recording(sim)
+    _check_recording(real)
+    if holdout is not None:
+        _check_recording(holdout)
+    return _core.diagnose(sim._core(), real._core(),
+                          None if holdout is None else holdout._core(), int(order or 0))
