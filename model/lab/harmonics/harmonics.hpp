@@ -46,8 +46,10 @@ struct SignalSpec {
 SignalSpec parse_signal_spec(const nlohmann::json& j);
 SignalSpec load_signal_spec(const std::string& path);
 // The highest periodicity and term order a spec may name: the analysis grid grows with 32 x the
-// highest predicted order (2 p + 2 n), so 1000 keeps it at 2^17 points.
-constexpr int kMaxOrder = 1000;
+// highest predicted order (2 p + 2 n) and the spectrum costs grid x orders: 256 keeps an analysis
+// under a second (p = 1000 took 8 s of CPU, a fuzzer's timeout). Sensor periodicities and
+// harmonic orders in practice are far below (the recordings' p is 1..64).
+constexpr int kMaxOrder = 256;
 // Throws InputError for: p or a term's n outside 1..kMaxOrder, non-finite values, Ap or Bp <= 0,
 // |delta_p| >= pi/2, a term with n = p (a main-harmonic mismatch must be given as Ap, Bp, delta_p),
 // negative term amplitudes, and a normalised spectrum outside the convergence domain (sum_amplitude
