@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "calibration/calibration.hpp"
+#include "calibration/self_calibration.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
@@ -17,7 +18,8 @@ namespace acore::cli {
 
 namespace {
 struct CalibrateArgs {
-  std::string in, out, json, correction = "poly", zero_offset = "auto";
+  std::string in, out, json, correction = "poly", zero_offset = "auto", reference = "theta_ref";
+  int selfcal_harmonics = 0;
   int degree = 3, regions = 4, iterations = 16, coef_f = 15, angle_w = 16, in_w = 16, p = 0;
   int fourier = 0, fourier_iterations = DatapathConfig{}.fourier_iterations;
   int fourier_guard = DatapathConfig{}.fourier_guard;
@@ -73,33 +75,60 @@ void run_calibrate(const CalibrateArgs& a) {
     cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
   }
   cfg.validate();
-  const FloatCoefficients fc = calibrate(rec, opt);
+  const bool self = a.reference == "none";
+  if (self && a.zero_offset != "auto")
+    throw InputError("--zero-offset: without a reference (--reference none) the zero is unknown");
+  SelfCalReport rep;
+  const FloatCoefficients fc =
+      self ? self_calibrate(rec, opt, &rep, a.selfcal_harmonics) : calibrate(rec, opt);
+  // The frame the fit is judged in: theta_ref when given (about the mean after a
+  // self-calibration), else the self-calibration's own estimated reference.
+  Recording judged = rec;
+  if (self && !rec.has_theta()) judged.theta_ref = rep.theta;
+  const bool about_mean = self;
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
   RegImage img =
       a.coef_f_given ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
   cfg = img.cfg;
   img.provenance.push_back("command=" + command_line());
   img.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
+  if (self) img.provenance.push_back("zero_reference=none");
   write_regimage(img, a.out);
 
   // Fit quality on the calibration recording itself, both engines.
-  const auto ef = angle_error_deg(run_float(rec, fc).angle, rec.theta_ref, opt.periodicity);
+  auto judge = [&](const std::vector<double>& angle) {
+    const auto e = angle_error_deg(angle, judged.theta_ref, opt.periodicity);
+    return error_stats(about_mean ? about_mean_deg(e) : e);
+  };
   const AngleSeries fixed = run_fixed(rec, img);
-  const auto ex = angle_error_deg(fixed.angle, rec.theta_ref, opt.periodicity);
-  const auto eu = angle_error_deg(fixed.uncorrected, rec.theta_ref, opt.periodicity);
-  const ErrorStats sf = error_stats(ef), sx = error_stats(ex), su = error_stats(eu);
+  const ErrorStats sf = judge(run_float(rec, fc).angle), sx = judge(fixed.angle),
+                   su = judge(fixed.uncorrected);
   std::cout << fmt::format("calibrated {} samples: {} words ({}), in_scale={}\n", rec.size(),
                            cfg.words(), cfg.describe(), in_scale);
   std::cout << fmt::format(
       "  zero offset {:+.4f} deg electrical (sensor angle - p theta_ref, {}), {}\n",
-      img.zero_offset * 180 / M_PI, opt.estimate_zero ? "estimated" : "given",
+      img.zero_offset * 180 / M_PI,
+      self ? "unknown without a reference: header zero_reference=none"
+           : (opt.estimate_zero ? "estimated" : "given"),
       cfg.zero_word ? fmt::format("in the ZERO word (address {}, code {})", cfg.addr_zero(),
                                   img.zero_position())
                     : "subtracted by `estimate` in software");
   std::cout << fmt::format(
-      "  on the calibration recording (reference frame): uncorrected RMS {:.3f} deg, "
+      "  on the calibration recording ({}): uncorrected RMS {:.3f} deg, "
       "corrected RMS {:.3f} (float) {:.3f} (fixed) deg\n",
+      !self ? "reference frame"
+            : (rec.has_theta() ? "theta_ref, about the mean; not used by the fit"
+                               : "against the self-calibration's own reference, about the mean"),
       su.rms, sf.rms, sx.rms);
+  if (self) {
+    std::cout << fmt::format(
+        "  self-calibration: {:.3f} turns, speed profile order {} (of {} separable), {} "
+        "harmonics, residual {:.4f} deg (noise {:.4f}), speed variation {:.2f} %, confidence "
+        "{:.2f}\n",
+        rep.turns, rep.profile_order, rep.max_separable_order, rep.harmonics, rep.residual_deg,
+        rep.noise_deg, rep.speed_variation_pct, rep.confidence);
+    for (const auto& s : rep.assumptions) std::cout << "    assumed: " << s << "\n";
+  }
   nlohmann::json j = {
       {"samples", rec.size()},
       {"words", cfg.words()},
@@ -124,6 +153,32 @@ void run_calibrate(const CalibrateArgs& a) {
         {"estimated", opt.estimate_zero}}},
       {"fit_error_deg",
        {{"float", stats_json(sf)}, {"fixed", stats_json(sx)}, {"uncorrected", stats_json(su)}}}};
+  j["reference"] = self ? "none" : "theta_ref";
+  if (self) {
+    j["zero_reference"] = "none";
+    j["fit_error_deg"]["about_mean"] = true;
+    j["fit_error_deg"]["against"] = rec.has_theta() ? "theta_ref" : "estimated_reference";
+    j["self_calibration"] = {
+        {"turns", rep.turns},
+        {"uniform_time", rep.uniform_time},
+        {"ellipse",
+         {{"offset", {rep.ellipse.offset[0], rep.ellipse.offset[1]}},
+          {"amplitude", {rep.ellipse.amp[0], rep.ellipse.amp[1]}},
+          {"phase_deg", rep.ellipse.delta * 180 / M_PI}}},
+        {"speed_profile",
+         {{"kind", "legendre_polynomial_in_t"},
+          {"order", rep.profile_order},
+          {"max_separable_order", rep.max_separable_order},
+          {"variation_pct", rep.speed_variation_pct}}},
+        {"harmonics", rep.harmonics},
+        {"residual_deg", rep.residual_deg},
+        {"noise_deg", rep.noise_deg},
+        {"error_rms_deg", rep.error_rms_deg},
+        {"halves_disagree_deg",
+         rep.consistency_deg >= 0 ? nlohmann::json(rep.consistency_deg) : nlohmann::json()},
+        {"confidence", rep.confidence},
+        {"assumptions", rep.assumptions}};
+  }
   write_json(a.json, j);
 }
 }  // namespace
@@ -132,7 +187,10 @@ void add_calibrate(CLI::App& app) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* c =
       app.add_subcommand("calibrate", "Fit and quantize the coefficients into a register image");
-  c->add_option("--in", args->in, "Calibration recording (CSV with theta_ref)")->required();
+  c->add_option("--in", args->in,
+                "Calibration recording (CSV with theta_ref; with --reference none: t or equally "
+                "spaced samples)")
+      ->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
   c->add_option(
        "--correction", args->correction,
@@ -188,6 +246,15 @@ void add_calibrate(CLI::App& app) {
       "Store the zero offset in one more register word (RTL ZERO=1, after every other word): the "
       "hardware outputs angle - zero, in the reference frame. Without it the image header records "
       "the offset and `estimate` subtracts it in software");
+  c->add_option(
+       "--reference", args->reference,
+       "theta_ref (default: fit against the recording's reference angle) or none "
+       "(self-calibration: the reference is estimated from the recording's own turns and times; "
+       "theta_ref, if present, is ignored by the fit; the zero offset is unknown)")
+      ->check(CLI::IsMember({"theta_ref", "none"}));
+  c->add_option("--selfcal-harmonics", args->selfcal_harmonics,
+                "--reference none: harmonics of the error model (default 0: automatic, 16)")
+      ->check(CLI::Range(0, 64));
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
     args->coef_f_given = c->count("--coef-frac") > 0;

@@ -87,8 +87,17 @@ void run_estimate(const EstimateArgs& a) {
   if (rec.has_theta()) {
     const int p = a.p ? a.p : recording_periodicity(rec, a.in);
     err = angle_error_deg(s.angle, rec.theta_ref, p);
+    // A self-calibrated image does not know the reference's zero: judge the errors about their
+    // mean (and say so).
+    const bool about_mean = img.zero_reference_unknown();
+    if (about_mean) err = about_mean_deg(err);
+    const auto eu = angle_error_deg(s.uncorrected, rec.theta_ref, p);
     const ErrorStats st = error_stats(err);
-    const ErrorStats su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
+    const ErrorStats su = error_stats(about_mean ? about_mean_deg(eu) : eu);
+    j["about_mean"] = about_mean;
+    if (about_mean)
+      std::cout << "the image's zero is unknown (zero_reference=none, a self-calibration): "
+                   "errors are about their mean\n";
     j["error_deg"] = stats_json(st);
     j["uncorrected_error_deg"] = stats_json(su);
     std::cout << fmt::format(

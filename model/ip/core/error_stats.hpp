@@ -16,5 +16,8 @@ double wrap_deg(double deg);
 std::vector<double> angle_error_deg(const std::vector<double>& est_rad,
                                     const std::vector<double>& ref_rad, int periodicity = 1);
 ErrorStats error_stats(const std::vector<double>& err_deg);
+// The errors about their circular mean, wrapped: what a calibration whose zero offset is unknown
+// (a self-calibration, image header zero_reference=none) can be judged by.
+std::vector<double> about_mean_deg(const std::vector<double>& err_deg);
 
 }  // namespace acore

@@ -175,7 +175,11 @@ nlohmann::json Scenario::to_json() const {
                      {"speed_rps", trajectory.speed_rps},
                      {"speed_end_rps", trajectory.speed_end_rps},
                      {"sweep_turns", trajectory.sweep_turns},
-                     {"cycles", trajectory.cycles}};
+                     {"cycles", trajectory.cycles},
+                     {"speed_ripple_pct", trajectory.speed.ripple_pct},
+                     {"speed_ripple_cycles", trajectory.speed.ripple_cycles},
+                     {"speed_drift_pct", trajectory.speed.drift_pct},
+                     {"speed_seed", trajectory.speed.seed}};
   j["temperature"] = {{"enabled", temperature.enabled},
                       {"start_C", temperature.start_C},
                       {"end_C", temperature.end_C}};
@@ -225,7 +229,8 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
     const json& t = j.at("trajectory");
     check_keys(t,
                {"kind", "sample_rate_hz", "theta0_rad", "turns", "speed_rps", "speed_end_rps",
-                "sweep_turns", "cycles"},
+                "sweep_turns", "cycles", "speed_ripple_pct", "speed_ripple_cycles",
+                "speed_drift_pct", "speed_seed"},
                where, "trajectory.");
     Trajectory& tr = s.trajectory;
     tr.kind = get_string(t, "kind", tr.kind, where, "trajectory.kind");
@@ -241,6 +246,18 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
         get_number(t, "speed_end_rps", tr.speed_end_rps, where, "trajectory.speed_end_rps");
     tr.sweep_turns = get_number(t, "sweep_turns", tr.sweep_turns, where, "trajectory.sweep_turns");
     tr.cycles = get_number(t, "cycles", tr.cycles, where, "trajectory.cycles");
+    SpeedVariation& sv = tr.speed;
+    sv.ripple_pct =
+        get_number(t, "speed_ripple_pct", sv.ripple_pct, where, "trajectory.speed_ripple_pct");
+    sv.ripple_cycles = get_number(t, "speed_ripple_cycles", sv.ripple_cycles, where,
+                                  "trajectory.speed_ripple_cycles");
+    sv.drift_pct =
+        get_number(t, "speed_drift_pct", sv.drift_pct, where, "trajectory.speed_drift_pct");
+    sv.seed = static_cast<uint64_t>(
+        get_int(t, "speed_seed", static_cast<int>(sv.seed), where, "trajectory.speed_seed"));
+    if (std::fabs(sv.ripple_pct) + std::fabs(sv.drift_pct) >= 100)
+      field_error(where, "trajectory.speed_ripple_pct",
+                  "ripple and slow change together must stay below 100 % (the shaft would stop)");
     if (tr.sample_rate_hz < 0)
       field_error(where, "trajectory.sample_rate_hz", "must be >= 0 (0: N per second)");
     if (tr.kind == "reversal" && tr.sweep_turns <= 0)
@@ -317,13 +334,19 @@ double TrajectoryModel::theta_at(double t) const {
     const double turns = u < period / 2 ? v0_ * u : tr_.sweep_turns - v0_ * (u - period / 2);
     return tr_.theta0_rad + 2 * kPi * turns;
   }
-  return tr_.theta0_rad + 2 * kPi * v0_ * t;
+  return tr_.theta0_rad + 2 * kPi * v0_ * t + varied(v0_ * t);
+}
+
+double TrajectoryModel::varied(double u) const {
+  if (!tr_.speed.active() || (tr_.kind != "turn" && tr_.kind != "constant")) return 0.0;
+  return speed_variation_angle(tr_.speed, u, v0_ * duration_);
 }
 
 double TrajectoryModel::theta_sample(size_t k) const {
   // The published figures use exactly this grid.
   if (tr_.kind == "turn")
-    return tr_.theta0_rad + 2 * kPi * static_cast<double>(k) / static_cast<double>(n_);
+    return tr_.theta0_rad + 2 * kPi * static_cast<double>(k) / static_cast<double>(n_) +
+           varied(static_cast<double>(k) / static_cast<double>(n_));
   return theta_at(time(k));
 }
 

@@ -34,6 +34,7 @@
 
 #include "core/recording.hpp"
 #include "sim/effects.hpp"
+#include "sim/speed_profile.hpp"
 
 namespace acore {
 
@@ -61,6 +62,9 @@ struct Trajectory {
   double speed_end_rps = 0;   // ramp: end speed (rev/s)
   double sweep_turns = 1;     // reversal: excursion before turning back (turns)
   double cycles = 1;          // reversal: back-and-forth cycles over the recording
+  // "turn" and "constant": a ripple and a slow change around the nominal speed (speed_profile.hpp);
+  // JSON fields speed_ripple_pct, speed_ripple_cycles, speed_drift_pct, speed_seed.
+  SpeedVariation speed;
 };
 
 // Temperature column: linear from start_C (first sample) to end_C (last sample).
@@ -99,6 +103,8 @@ class TrajectoryModel {
   double theta_sample(
       size_t k) const;  // the angle at sample k ("turn": exactly theta0 + 2 pi k / N)
   double direction_at(double t) const;  // +1 forward, -1 backward
+  // The angle the speed variation adds after u nominal turns ("turn", "constant"; else 0).
+  double varied(double u) const;
 
  private:
   Trajectory tr_;
