@@ -24,22 +24,59 @@ void legendre(double x, int m, double* out) {
   for (int j = 2; j <= m; ++j) out[j] = ((2 * j - 1) * x * out[j - 1] - (j - 1) * out[j - 2]) / j;
 }
 
-// The joint model: psi(t) = sum_j a_j P_j(tau) + sum_k alpha_k cos(k phi) + beta_k sin(k phi), the
-// harmonics at the current estimate phi of the true angle. Columns: profile first, then harmonics.
+// The joint model: psi(t) = sum_j a_j P_j(tau) + sum_f c_f cos(pi f (tau + 1)) + d_f sin(..)
+// + sum_k alpha_k cos(k phi) + beta_k sin(k phi), the harmonics at the current estimate phi of the
+// true angle; f: speed ripple tones in cycles over the recording. Columns: the profile (polynomial,
+// tones) first, then the harmonics.
 Eigen::MatrixXd design(const std::vector<double>& tau, const std::vector<double>& phi, int order,
-                       int harmonics) {
+                       int harmonics, const std::vector<double>& tones = {}) {
   const size_t n = tau.size();
-  Eigen::MatrixXd X(n, order + 1 + 2 * harmonics);
+  const int prof = order + 1 + 2 * static_cast<int>(tones.size());
+  Eigen::MatrixXd X(n, prof + 2 * harmonics);
   std::vector<double> p(static_cast<size_t>(order) + 1);
   for (size_t i = 0; i < n; ++i) {
     legendre(tau[i], order, p.data());
     for (int j = 0; j <= order; ++j) X(i, j) = p[static_cast<size_t>(j)];
+    for (size_t f = 0; f < tones.size(); ++f) {
+      const double a = M_PI * tones[f] * (tau[i] + 1);
+      X(i, order + 1 + 2 * static_cast<int>(f)) = std::cos(a);
+      X(i, order + 2 + 2 * static_cast<int>(f)) = std::sin(a);
+    }
     for (int k = 1; k <= harmonics; ++k) {
-      X(i, order + 2 * k - 1) = std::cos(k * phi[i]);
-      X(i, order + 2 * k) = std::sin(k * phi[i]);
+      X(i, prof + 2 * k - 2) = std::cos(k * phi[i]);
+      X(i, prof + 2 * k - 1) = std::sin(k * phi[i]);
     }
   }
   return X;
+}
+
+// The strongest sinusoid of r(tau) between 0.5 and f_max cycles over the recording (periodogram
+// on a grid of 0.25 cycles, refined to 0.01), and its power.
+double strongest_tone(const std::vector<double>& tau, const Eigen::VectorXd& r, double f_max,
+                      double* power) {
+  auto pw = [&](double f) {
+    double c = 0, s = 0;
+    for (size_t i = 0; i < tau.size(); ++i) {
+      const double a = M_PI * f * (tau[i] + 1);
+      c += r(static_cast<long>(i)) * std::cos(a);
+      s += r(static_cast<long>(i)) * std::sin(a);
+    }
+    return c * c + s * s;
+  };
+  double best_f = 0, best = -1;
+  for (double f = 0.5; f <= f_max; f += 0.25)
+    if (const double v = pw(f); v > best) {
+      best = v;
+      best_f = f;
+    }
+  const double centre = best_f;
+  for (double f = centre - 0.25; f <= centre + 0.25; f += 0.01)
+    if (const double v = pw(f); f > 0 && v > best) {
+      best = v;
+      best_f = f;
+    }
+  *power = best;
+  return best_f;
 }
 
 struct JointFit {
@@ -48,6 +85,7 @@ struct JointFit {
   double rss = 0;
 };
 
+// `order`: the profile's columns minus one (polynomial order + 2 per tone).
 JointFit solve_joint(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, int order) {
   JointFit f;
   f.coef = X.colPivHouseholderQr().solve(y);
@@ -156,6 +194,18 @@ EllipseFit fit_ellipse(const std::vector<double>& d13, const std::vector<double>
   el.offset[1] = mx + x0 * sx;
   el.amp[0] = 1 / std::sqrt(qc * c2);
   el.amp[1] = 1 / std::sqrt(qa * c2);
+  // The points must lie near the ellipse: the corrected radius about 1 (RMS deviation < 0.3).
+  double dev = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double c = (d24[i] - el.offset[1]) / el.amp[1];
+    const double s = ((d13[i] - el.offset[0]) / el.amp[0] - c * sd) / std::sqrt(c2);
+    dev += (std::hypot(s, c) - 1) * (std::hypot(s, c) - 1);
+  }
+  if (!(std::sqrt(dev / n) < 0.3))
+    throw InputError(fmt::format(
+        "self-calibration: the channels do not trace an ellipse (radius deviates by {:.2f} RMS "
+        "from the fitted one; is it a sensor pair?)",
+        std::sqrt(dev / n)));
   return el;
 }
 
@@ -224,40 +274,82 @@ SelfCalReport estimate_reference(const Recording& rec, const SelfCalOptions& opt
     }
   }
 
-  // The error model's harmonics: at most a quarter of the samples per turn, 16 by default.
-  const double per_turn = static_cast<double>(n) / rep.turns;
-  const int K =
-      opt.harmonics > 0 ? opt.harmonics : std::max(2, std::min(16, static_cast<int>(per_turn / 8)));
-  rep.harmonics = K;
   // The separable profile orders: the first harmonic must stay mostly outside the profile's span.
-  const int cap = opt.max_profile_order > 0
-                      ? opt.max_profile_order
-                      : std::min(40, static_cast<int>(std::floor(4 * rep.turns)) + 1);
+  const double per_turn = static_cast<double>(n) / rep.turns;
+  const int cap =
+      opt.max_profile_order > 0
+          ? opt.max_profile_order
+          : (rep.turns < 2 ? 1 : std::min(40, static_cast<int>(std::floor(4 * rep.turns)) + 1));
   int max_order = 1;
   for (int m = 2; m <= cap; ++m) {
-    if (profile_harmonic_overlap(tau, psi, m) > 0.9) break;
+    if (profile_harmonic_overlap(tau, psi, m) > 0.99) break;
     max_order = m;
   }
   rep.max_separable_order = max_order;
 
-  // Order by BIC on the first pass, then the fixed point in the angle at that order.
+  // The error model's harmonics K (at most an eighth of the samples per turn) at the richest
+  // profile, then the profile's order at that K, both by BIC on the first pass.
   const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(psi.data(), static_cast<long>(n));
   const double nn = static_cast<double>(n);
+  auto bic = [&](int m, int k) {
+    const JointFit f = solve_joint(design(tau, psi, m, k), y, m);
+    return nn * std::log(std::max(f.rss / nn, 1e-300)) + (m + 1 + 2 * k) * std::log(nn);
+  };
+  const int kmax = std::max(2, std::min(64, static_cast<int>(per_turn / 8)));
+  int K = opt.harmonics;
+  if (K <= 0) {
+    double best = 0;
+    for (int k = 4; k <= kmax || k == 4; k *= 2) {
+      const int kk = std::min(k, kmax);
+      const double b = bic(max_order, kk);
+      if (K == 0 || b < best) {
+        best = b;
+        K = kk;
+      }
+      if (kk == kmax) break;
+    }
+  }
+  rep.harmonics = K;
   int order = 1;
   double best_bic = 0;
   for (int m = 1; m <= max_order; ++m) {
-    const JointFit f = solve_joint(design(tau, psi, m, K), y, m);
-    const double bic = nn * std::log(std::max(f.rss / nn, 1e-300)) + (m + 1 + 2 * K) * std::log(nn);
-    if (m == 1 || bic < best_bic) {
-      best_bic = bic;
+    const double b = bic(m, K);
+    if (m == 1 || b < best_bic) {
+      best_bic = b;
       order = m;
     }
   }
   rep.profile_order = order;
+  // Speed ripple: tones in the residual that the polynomial cannot follow, kept while BIC gains
+  // (at most three; two or more turns, or a tone cannot be told from a harmonic).
+  std::vector<double> tones;
+  if (rep.turns >= 2) {
+    JointFit f = solve_joint(design(tau, psi, order, K), y, order);
+    double cur = nn * std::log(std::max(f.rss / nn, 1e-300)) + (order + 1 + 2 * K) * std::log(nn);
+    for (int t = 0; t < 3; ++t) {
+      const Eigen::Map<const Eigen::VectorXd> prof(f.profile.data(), static_cast<long>(n));
+      const Eigen::Map<const Eigen::VectorXd> err(f.error.data(), static_cast<long>(n));
+      const Eigen::VectorXd r = y - prof - err;
+      double power = 0;
+      const double fr = strongest_tone(tau, r, (K + 1) * rep.turns, &power);
+      std::vector<double> trial = tones;
+      trial.push_back(fr);
+      const int cols = order + 2 * static_cast<int>(trial.size());
+      const JointFit g = solve_joint(design(tau, psi, order, K, trial), y, cols);
+      const double b =
+          nn * std::log(std::max(g.rss / nn, 1e-300)) + (cols + 1 + 2 * K + 1) * std::log(nn);
+      if (!(b < cur - 10)) break;
+      cur = b;
+      tones = trial;
+      f = g;
+    }
+  }
+  rep.ripple_tones = tones;
+  const int prof_cols = order + 2 * static_cast<int>(tones.size());
   std::vector<double> phi = psi;
   JointFit fit;
   for (int pass = 0; pass < 3; ++pass) {
-    fit = solve_joint(design(tau, phi, order, K), y, order);
+    fit = solve_joint(design(tau, phi, order, K, tones), y, prof_cols);
     for (size_t i = 0; i < n; ++i) phi[i] = psi[i] - fit.error[i];
   }
 
@@ -283,20 +375,26 @@ SelfCalReport estimate_reference(const Recording& rec, const SelfCalOptions& opt
     }
     rep.speed_variation_pct = 100 * (vmax - vmin) / vmean;
   }
-  // Consistency: the periodic error fitted on each half of the recording (two turns or more).
+  // Consistency: the periodic error fitted again on each half of the recording alone, the speed
+  // profile of the whole fit held (two turns or more): an error that is the sensor's repeats, a
+  // speed variation the profile missed does not.
   if (rep.turns >= 2) {
     const size_t h = n / 2;
-    const std::vector<double> ta(tau.begin(), tau.begin() + h), tb(tau.begin() + h, tau.end());
-    const std::vector<double> pa(phi.begin(), phi.begin() + h), pb(phi.begin() + h, phi.end());
-    const int oh = std::max(1, order / 2);
-    auto half = [&](const std::vector<double>& tt, const std::vector<double>& pp, size_t from) {
-      std::vector<double> ts(tt.size());
-      for (size_t i = 0; i < tt.size(); ++i)
-        ts[i] = 2 * (tt[i] - tt.front()) / (tt.back() - tt.front()) - 1;
-      const Eigen::VectorXd yy = y.segment(static_cast<long>(from), static_cast<long>(tt.size()));
-      return solve_joint(design(ts, pp, oh, K), yy, oh).coef.tail(2 * K).eval();
+    auto half = [&](size_t from, size_t count) {
+      Eigen::MatrixXd X(count, 2 * K);
+      Eigen::VectorXd yy(count);
+      for (size_t i = 0; i < count; ++i) {
+        const size_t j = from + i;
+        for (int k = 1; k <= K; ++k) {
+          X(i, 2 * k - 2) = std::cos(k * phi[j]);
+          X(i, 2 * k - 1) = std::sin(k * phi[j]);
+        }
+        yy(i) = psi[j] - fit.profile[j];
+      }
+      // The constant is the profile's: remove each half's mean first.
+      return X.colPivHouseholderQr().solve((yy.array() - yy.mean()).matrix()).eval();
     };
-    const Eigen::VectorXd ca = half(ta, pa, 0), cb = half(tb, pb, h);
+    const Eigen::VectorXd ca = half(0, h), cb = half(h, n - h);
     rep.consistency_deg = (ca - cb).norm() / std::sqrt(2.0) * kDeg;
   }
   // Confidence: how much of the residual is noise, and how well the halves agree.
@@ -315,26 +413,59 @@ SelfCalReport estimate_reference(const Recording& rec, const SelfCalOptions& opt
       "the speed follows a polynomial of order {} in time over the recording (BIC among orders "
       "1..{}, the highest the recording separates from the error)",
       order, max_order));
+  if (!tones.empty()) {
+    std::string list;
+    for (double f : tones) list += fmt::format("{}{:.2f}", list.empty() ? "" : ", ", f / rep.turns);
+    rep.assumptions.push_back(
+        fmt::format("plus a speed ripple of {} cycles per turn (sinusoids in time)", list));
+  }
   if (rep.uniform_time)
     rep.assumptions.push_back("no t column: the samples are taken as equally spaced in time");
   if (rep.turns < 2)
     rep.assumptions.push_back(
         "less than two turns: a speed variation within the turn cannot be told from the "
-        "sensor's error and is taken as constant speed (profile order 1..2)");
+        "sensor's error: the speed is taken as constant (profile order 1), which one turn cannot "
+        "verify (a parabola in time is as well a sum of the angle's harmonics over one turn)");
   rep.assumptions.push_back(
       "the zero offset is unknown: the reference's zero is arbitrary (zero_reference none)");
 
   // Refusal: a speed variation the profile cannot follow and the recording cannot separate.
-  if (unexplained > 3 * std::max(rep.noise_deg, 0.01) && order == max_order &&
-      (rep.consistency_deg < 0 || rep.consistency_deg > 0.5 * rep.error_rms_deg))
+  // The halves' errors must agree to a quarter of the error, beyond what the noise explains (each
+  // half's 2K coefficients carry the noise over n / 2 samples).
+  const double noise_spread = 10 * rep.noise_deg * std::sqrt(4.0 * K / nn);
+  if (rep.consistency_deg >= 0 && rep.consistency_deg > 0.25 * rep.error_rms_deg + noise_spread)
     throw InputError(fmt::format(
         "self-calibration refused: a speed variation it cannot separate from the sensor's error "
-        "(the fit leaves {:.3f} deg RMS against a noise of {:.3f} deg at the highest separable "
-        "speed-profile order {}{}); record more turns at a steadier speed",
-        rep.residual_deg, rep.noise_deg, max_order,
+        "(the fit leaves {:.3f} deg RMS against a noise of {:.3f} deg, speed-profile order {} "
+        "of {} separable{}); record more turns at a steadier speed",
+        rep.residual_deg, rep.noise_deg, order, max_order,
         rep.consistency_deg >= 0
             ? fmt::format(", the two halves' errors differ by {:.3f} deg", rep.consistency_deg)
             : std::string()));
+
+  // A sensor's angle error comes with a distortion of its Lissajous figure of the same order (a
+  // harmonic of the field or of a channel moves the radius as much as the angle); a speed
+  // variation moves the angle along an undistorted figure. A periodic error far beyond what the
+  // figure's distortion allows is a speed variation taken for error.
+  {
+    double dev = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const double c = (d24[i] - rep.ellipse.offset[1]) / rep.ellipse.amp[1];
+      const double s = ((d13[i] - rep.ellipse.offset[0]) / rep.ellipse.amp[0] -
+                        c * std::sin(rep.ellipse.delta)) /
+                       std::cos(rep.ellipse.delta);
+      dev += (std::hypot(s, c) - 1) * (std::hypot(s, c) - 1);
+    }
+    rep.radius_rms = std::sqrt(dev / nn);
+    const double allowed = (5 * rep.radius_rms + 0.035) * kDeg;
+    if (rep.error_rms_deg > allowed)
+      throw InputError(fmt::format(
+          "self-calibration refused: a speed variation it cannot separate from the sensor's "
+          "error: the periodic error it would take ({:.2f} deg RMS) is far more than the "
+          "Lissajous figure's distortion allows (its radius deviates by {:.2f} % RMS: at most "
+          "{:.2f} deg); record more turns at a steadier speed",
+          rep.error_rms_deg, 100 * rep.radius_rms, allowed));
+  }
 
   rep.theta.resize(n);
   for (size_t i = 0; i < n; ++i) rep.theta[i] = sign * phi[i] / p;

@@ -46,15 +46,17 @@ EllipseFit fit_ellipse(const std::vector<double>& d13, const std::vector<double>
 // What the self-calibration assumed and how well it held (calibrate --json "self_calibration").
 struct SelfCalReport {
   EllipseFit ellipse;
-  bool uniform_time = false;       // no t column: samples taken as equally spaced
-  double turns = 0;                // electrical turns covered (one sample step counted at each end)
-  int profile_order = 0;           // order of the speed profile polynomial (1: constant speed)
-  int max_separable_order = 0;     // the highest order the recording can tell from the error
-  int harmonics = 0;               // K
-  double residual_deg = 0;         // RMS of the joint fit's residual, electrical deg
-  double noise_deg = 0;            // the angle noise estimated from second differences
-  double error_rms_deg = 0;        // RMS of the fitted periodic error (the sensor's)
-  double speed_variation_pct = 0;  // peak-to-peak of the fitted speed / its mean, percent
+  bool uniform_time = false;    // no t column: samples taken as equally spaced
+  double turns = 0;             // electrical turns covered (one sample step counted at each end)
+  int profile_order = 0;        // order of the speed profile polynomial (1: constant speed)
+  int max_separable_order = 0;  // the highest order the recording can tell from the error
+  int harmonics = 0;            // K
+  std::vector<double> ripple_tones;  // speed ripple tones found, cycles over the recording
+  double residual_deg = 0;           // RMS of the joint fit's residual, electrical deg
+  double noise_deg = 0;              // the angle noise estimated from second differences
+  double radius_rms = 0;             // RMS deviation of the ellipse-corrected radius from 1
+  double error_rms_deg = 0;          // RMS of the fitted periodic error (the sensor's)
+  double speed_variation_pct = 0;    // peak-to-peak of the fitted speed / its mean, percent
   double consistency_deg = -1;  // RMS difference of the error fitted on each half (-1: < 2 turns)
   double confidence = 0;        // 0..1 (see docs/calibration.md)
   std::vector<std::string> assumptions;  // one sentence each
