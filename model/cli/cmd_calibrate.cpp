@@ -32,14 +32,29 @@ void run_calibrate(const CalibrateArgs& a) {
                            cfg.words(), cfg.describe(), img.in_scale);
   std::cout << fmt::format(
       "  zero offset {:+.4f} deg electrical (sensor angle - p theta_ref, {}), {}\n",
-      img.zero_offset * 180 / M_PI, c.options.estimate_zero ? "estimated" : "given",
+      img.zero_offset * 180 / M_PI,
+      c.self ? "unknown without a reference: header zero_reference=none"
+             : (c.options.estimate_zero ? "estimated" : "given"),
       cfg.zero_word ? fmt::format("in the ZERO word (address {}, code {})", cfg.addr_zero(),
                                   img.zero_position())
                     : "subtracted by `estimate` in software");
   std::cout << fmt::format(
-      "  on the calibration recording (reference frame): uncorrected RMS {:.3f} deg, "
+      "  on the calibration recording ({}): uncorrected RMS {:.3f} deg, "
       "corrected RMS {:.3f} (float) {:.3f} (fixed) deg\n",
+      !c.self ? "reference frame"
+              : (rec.has_theta() ? "theta_ref, about the mean; not used by the fit"
+                                 : "against the self-calibration's own reference, about the mean"),
       c.fit_uncorrected.rms, c.fit_float.rms, c.fit_fixed.rms);
+  if (c.self) {
+    const SelfCalReport& rep = c.selfcal;
+    std::cout << fmt::format(
+        "  self-calibration: {:.3f} turns, speed profile order {} (of {} separable), {} "
+        "harmonics, residual {:.4f} deg (noise {:.4f}), speed variation {:.2f} %, confidence "
+        "{:.2f}\n",
+        rep.turns, rep.profile_order, rep.max_separable_order, rep.harmonics, rep.residual_deg,
+        rep.noise_deg, rep.speed_variation_pct, rep.confidence);
+    for (const auto& s : rep.assumptions) std::cout << "    assumed: " << s << "\n";
+  }
   write_json(a.json, c.report);
 }
 }  // namespace
@@ -48,7 +63,10 @@ void add_calibrate(CLI::App& app) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* c =
       app.add_subcommand("calibrate", "Fit and quantize the coefficients into a register image");
-  c->add_option("--in", args->in, "Calibration recording (CSV with theta_ref)")->required();
+  c->add_option("--in", args->in,
+                "Calibration recording (CSV with theta_ref; with --reference none: t or equally "
+                "spaced samples)")
+      ->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
   c->add_option(
        "--correction", args->spec.correction,
@@ -104,6 +122,15 @@ void add_calibrate(CLI::App& app) {
       "Store the zero offset in one more register word (RTL ZERO=1, after every other word): the "
       "hardware outputs angle - zero, in the reference frame. Without it the image header records "
       "the offset and `estimate` subtracts it in software");
+  c->add_option(
+       "--reference", args->spec.reference,
+       "theta_ref (default: fit against the recording's reference angle) or none "
+       "(self-calibration: the reference is estimated from the recording's own turns and times; "
+       "theta_ref, if present, is ignored by the fit; the zero offset is unknown)")
+      ->check(CLI::IsMember({"theta_ref", "none"}));
+  c->add_option("--selfcal-harmonics", args->spec.selfcal_harmonics,
+                "--reference none: harmonics of the error model (default 0: automatic, 16)")
+      ->check(CLI::Range(0, 64));
   c->add_option("--json", args->json, "Write results as JSON ('-' for stdout)");
   c->callback([args, c] {
     if (c->count("--coef-frac") > 0) args->spec.coef_frac = args->coef_f;

@@ -149,19 +149,28 @@ void run_estimate(const EstimateArgs& a) {
   if (a.track_bandwidth != 0 && !(fs > 0))
     throw InputError(a.in + ": --track-bandwidth needs the recording's t column (increasing)");
   const Tracked tr = track_series(s.angle, fs, p, img.cfg.angle_w, a);
-  nlohmann::json track;
+  nlohmann::json extra;  // the fields beyond estimate_json's
   if (fs > 0) {
     const double bw = track_bandwidth_hz(tr.code, fs);
     std::cout << fmt::format(
         "tracking observer: code {} = {:.1f} Hz bandwidth at {:.6g} samples/s{}\n", tr.code, bw, fs,
         a.track_bandwidth > 0 ? fmt::format(" (nearest to {:.1f} Hz)", a.track_bandwidth) : "");
-    track["track"] = {{"code", tr.code}, {"bandwidth_hz", bw}, {"sample_rate_hz", fs}};
+    extra["track"] = {{"code", tr.code}, {"bandwidth_hz", bw}, {"sample_rate_hz", fs}};
   }
   ErrorStats st, su;
   if (rec.has_theta()) {
     err = angle_error_deg(s.angle, rec.theta_ref, p);
+    // A self-calibrated image does not know the reference's zero: judge the errors about their
+    // mean (and say so).
+    const bool about_mean = img.zero_reference_unknown();
+    if (about_mean) err = about_mean_deg(err);
+    const auto eu = angle_error_deg(s.uncorrected, rec.theta_ref, p);
     st = error_stats(err);
-    su = error_stats(angle_error_deg(s.uncorrected, rec.theta_ref, p));
+    su = error_stats(about_mean ? about_mean_deg(eu) : eu);
+    extra["about_mean"] = about_mean;
+    if (about_mean)
+      std::cout << "the image's zero is unknown (zero_reference=none, a self-calibration): "
+                   "errors are about their mean\n";
     std::cout << fmt::format(
         "{} engine, {} samples: error RMS {:.4f} deg, max {:.4f} deg, mean {:+.4f} deg "
         "(uncorrected {:.3f} / {:.3f} / {:+.3f})\n",
@@ -175,7 +184,7 @@ void run_estimate(const EstimateArgs& a) {
       std::vector<double> dv(rec.size());
       for (size_t i = 0; i < rec.size(); ++i) dv[i] = tr.rpm[i] - tref.rpm[i];
       const ErrorStats sv = error_stats(dv);
-      track["velocity_error_rpm"] = stats_json(sv);
+      extra["velocity_error_rpm"] = stats_json(sv);
       std::cout << fmt::format("velocity error RMS {:.4f} rpm, max {:.4f} rpm, mean {:+.4f} rpm\n",
                                sv.rms, sv.max_abs, sv.mean);
     }
@@ -188,7 +197,7 @@ void run_estimate(const EstimateArgs& a) {
   nlohmann::json j =
       estimate_json(engine, rec.size(), a.fold, img, s.zero_offset, s.zero_word,
                     rec.has_theta() ? &st : nullptr, rec.has_theta() ? &su : nullptr, flagged);
-  j.update(track);
+  j.update(extra);
   if (!a.out.empty()) write_angles(a.out, rec, s, err, tr);
   write_json(a.json, j);
 }

@@ -31,6 +31,7 @@ struct SimulateArgs {
   std::string profile;
   double speed_rpm = 0, speed_end_rpm = 0, sample_rate = 0, ripple = 0, ripple_hz = 0, step_at = 0,
          sweep_turns = 1;
+  double turns = 0, speed_ripple = 0, speed_drift = 0;  // 0: the scenario's own trajectory
 };
 
 // The scenario's trajectory replaced by the speed profile of the command line (mechanical rpm).
@@ -112,6 +113,23 @@ void run_simulate(const SimulateArgs& a) {
   Scenario s = a.config.empty() ? builtin_scenario(a.scenario) : load_scenario(a.config);
   if (a.channels != 0) s = with_channels(s, a.channels);
   if (!a.profile.empty()) s.trajectory = profile_trajectory(a, s.trajectory);
+  if (a.turns > 0) {
+    s.trajectory.kind = "constant";
+    s.trajectory.turns = a.turns;
+    s.trajectory.speed_rps = 0;
+  }
+  if (a.speed_ripple > 0 || a.speed_drift > 0) {
+    if (s.trajectory.kind != "turn" && s.trajectory.kind != "constant")
+      throw InputError(
+          "simulate: --speed-ripple/--speed-drift need a 'turn' or 'constant' "
+          "trajectory, the scenario's is '" +
+          s.trajectory.kind + "'");
+    if (a.speed_ripple + a.speed_drift >= 100)
+      throw InputError("simulate: --speed-ripple + --speed-drift must stay below 100 %");
+    s.trajectory.speed.ripple_pct = a.speed_ripple;
+    s.trajectory.speed.drift_pct = a.speed_drift;
+    s.trajectory.speed.seed = a.seed;
+  }
   if (!a.dump_config.empty()) write_json(a.dump_config, s.to_json());
   if (a.out.empty()) return;
 
@@ -163,6 +181,17 @@ void add_simulate(CLI::App& app) {
   c->add_option("--channels", args->channels,
                 "Override the channel count: 4 (c1..c4) or 2 (sin, cos)")
       ->check(CLI::IsMember({2, 4}));
+  c->add_option("--turns", args->turns,
+                "Turns at a constant nominal speed over the recording (a 'constant' trajectory; "
+                "default: the scenario's, one turn)")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--speed-ripple", args->speed_ripple,
+                "Speed ripple, percent of the nominal speed (sinusoidal, 3.7 cycles per turn)")
+      ->check(CLI::Range(0.0, 99.0));
+  c->add_option("--speed-drift", args->speed_drift,
+                "Random slow speed change, peak percent of the nominal speed (shape drawn from "
+                "--seed)")
+      ->check(CLI::Range(0.0, 99.0));
   c->add_flag("--list", args->list, "List the built-in scenarios and exit");
   c->add_option("--json", args->json, "Write a summary as JSON ('-' for stdout)");
   c->add_option("--dump-config", args->dump_config,

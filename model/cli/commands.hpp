@@ -10,6 +10,7 @@ namespace acore::cli {
 void add_demo(CLI::App& app);
 void add_simulate(CLI::App& app);
 void add_calibrate(CLI::App& app);
+void add_selfcal_bench(CLI::App& app);
 void add_estimate(CLI::App& app);
 void add_diagnose(CLI::App& app);
 void add_diagnose_bench(CLI::App& app);

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   acore::cli::add_demo(app);
   acore::cli::add_simulate(app);
   acore::cli::add_calibrate(app);
+  acore::cli::add_selfcal_bench(app);
   acore::cli::add_estimate(app);
   acore::cli::add_diagnose(app);
   acore::cli::add_diagnose_bench(app);

@@ -49,6 +49,8 @@ OPTION_SETS = [
       "in_scale": 2048.0, "periodicity": 1},
      ["--correction", "none", "--fourier", 4, "--fourier-iterations", 10, "--fourier-guard", 3,
       "--in-scale", 2048, "--periodicity", 1]),
+    # The self-calibration: theta_ref is in the file but not used by the fit.
+    ({"reference": "none", "selfcal_harmonics": 8}, ["--reference", "none", "--selfcal-harmonics", 8]),
 ]
 
 

@@ -53,6 +53,11 @@ void CalibrateSpec::validate() const {
   if (correction == "poly2d" && degree > 3)
     throw InputError(fmt::format("--degree {}: poly2d takes a total degree of 1..3", degree));
   if (xcenter && regions != 8) throw InputError("--xcenter needs --regions 8");
+  if (reference != "theta_ref" && reference != "none")
+    throw InputError("--reference " + reference + ": not one of theta_ref, none");
+  check_range("--selfcal-harmonics", selfcal_harmonics, 0, 64);
+  if (reference == "none" && zero_offset != "auto")
+    throw InputError("--zero-offset: without a reference (--reference none) the zero is unknown");
 }
 
 CalibrateOutcome calibrate_recording(const Recording& rec, const CalibrateSpec& a,
@@ -89,23 +94,30 @@ CalibrateOutcome calibrate_recording(const Recording& rec, const CalibrateSpec& 
     cfg.acc_int = std::max(cfg.acc_int, cfg.reg_w - cfg.coef_f + 1);
   }
   cfg.validate();
-  const FloatCoefficients fc = calibrate(rec, opt);
+  out.self = a.reference == "none";
+  const FloatCoefficients fc =
+      out.self ? self_calibrate(rec, opt, &out.selfcal, a.selfcal_harmonics) : calibrate(rec, opt);
   out.fc = fc;
+  // The frame the fit is judged in: theta_ref when given (about the mean after a
+  // self-calibration), else the self-calibration's own estimated reference.
+  const std::vector<double>& ref = out.self && !rec.has_theta() ? out.selfcal.theta : rec.theta_ref;
   const double in_scale = a.in_scale > 0 ? a.in_scale : choose_in_scale(rec, cfg.in_w);
   out.image = a.coef_frac ? quantize(fc, cfg, in_scale) : quantize_auto_range(fc, cfg, in_scale);
   const RegImage& img = out.image;
   cfg = img.cfg;
   out.image.provenance.push_back("command=" + command);
   out.image.provenance.push_back(fmt::format("periodicity={}", opt.periodicity));
+  if (out.self) out.image.provenance.push_back("zero_reference=none");
 
   // Fit quality on the calibration recording itself, both engines.
-  const auto ef = angle_error_deg(run_float(rec, fc).angle, rec.theta_ref, opt.periodicity);
+  auto judge = [&](const std::vector<double>& angle) {
+    const auto e = angle_error_deg(angle, ref, opt.periodicity);
+    return error_stats(out.self ? about_mean_deg(e) : e);
+  };
   const AngleSeries fixed = run_fixed(rec, img);
-  const auto ex = angle_error_deg(fixed.angle, rec.theta_ref, opt.periodicity);
-  const auto eu = angle_error_deg(fixed.uncorrected, rec.theta_ref, opt.periodicity);
-  out.fit_float = error_stats(ef);
-  out.fit_fixed = error_stats(ex);
-  out.fit_uncorrected = error_stats(eu);
+  out.fit_float = judge(run_float(rec, fc).angle);
+  out.fit_fixed = judge(fixed.angle);
+  out.fit_uncorrected = judge(fixed.uncorrected);
   out.report = {{"samples", rec.size()},
                 {"words", cfg.words()},
                 {"correction", correction_name(cfg.correction)},
@@ -131,6 +143,33 @@ CalibrateOutcome calibrate_recording(const Recording& rec, const CalibrateSpec& 
                  {{"float", stats_json(out.fit_float)},
                   {"fixed", stats_json(out.fit_fixed)},
                   {"uncorrected", stats_json(out.fit_uncorrected)}}}};
+  out.report["reference"] = out.self ? "none" : "theta_ref";
+  if (out.self) {
+    const SelfCalReport& rep = out.selfcal;
+    out.report["zero_reference"] = "none";
+    out.report["fit_error_deg"]["about_mean"] = true;
+    out.report["fit_error_deg"]["against"] = rec.has_theta() ? "theta_ref" : "estimated_reference";
+    out.report["self_calibration"] = {
+        {"turns", rep.turns},
+        {"uniform_time", rep.uniform_time},
+        {"ellipse",
+         {{"offset", {rep.ellipse.offset[0], rep.ellipse.offset[1]}},
+          {"amplitude", {rep.ellipse.amp[0], rep.ellipse.amp[1]}},
+          {"phase_deg", rep.ellipse.delta * 180 / M_PI}}},
+        {"speed_profile",
+         {{"kind", "legendre_polynomial_in_t"},
+          {"order", rep.profile_order},
+          {"max_separable_order", rep.max_separable_order},
+          {"variation_pct", rep.speed_variation_pct}}},
+        {"harmonics", rep.harmonics},
+        {"residual_deg", rep.residual_deg},
+        {"noise_deg", rep.noise_deg},
+        {"error_rms_deg", rep.error_rms_deg},
+        {"halves_disagree_deg",
+         rep.consistency_deg >= 0 ? nlohmann::json(rep.consistency_deg) : nlohmann::json()},
+        {"confidence", rep.confidence},
+        {"assumptions", rep.assumptions}};
+  }
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "calibration/calibration.hpp"
+#include "calibration/self_calibration.hpp"
 #include "core/error_stats.hpp"
 
 namespace acore {
@@ -30,8 +31,10 @@ struct CalibrateSpec {
   int fourier = 0;                  // harmonics K of the Fourier correction, 0..31
   int fourier_iterations = DatapathConfig{}.fourier_iterations;  // 4..24
   int fourier_guard = DatapathConfig{}.fourier_guard;            // 0..8
-  std::string zero_offset = "auto";  // "auto" or an electrical angle in degrees
-  bool zero_word = false;            // store the zero offset in one more register word
+  std::string zero_offset = "auto";     // "auto" or an electrical angle in degrees
+  bool zero_word = false;               // store the zero offset in one more register word
+  std::string reference = "theta_ref";  // theta_ref | none (self-calibration, no reference encoder)
+  int selfcal_harmonics = 0;            // --reference none: harmonics of the error model, 0 = auto
 
   // Throws InputError naming the option ("--degree 9: ...") for a value the command refuses.
   void validate() const;
@@ -42,6 +45,8 @@ struct CalibrateOutcome {
   FloatCoefficients fc;                              // the float coefficients behind it
   CalOptions options;                                // the fit's options
   ErrorStats fit_float, fit_fixed, fit_uncorrected;  // on the calibration recording itself
+  bool self = false;      // --reference none: fit errors are about their mean
+  SelfCalReport selfcal;  // what the self-calibration found and assumed (self only)
   nlohmann::json report;  // the `calibrate --json` object (docs/contracts.md)
 };
 

@@ -96,10 +96,10 @@ FloatCoefficients calibrate(const Recording& rec, const CalOptions& opt) {
   for (int c = 0; c < 2; ++c) {
     double sum = 0;
     for (double v : d[c]) sum += v;
-    fc.offset[c] = sum / n;
+    fc.offset[c] = opt.given_scaling ? opt.offset[c] : sum / n;
     double ss = 0;
     for (double v : d[c]) ss += (v - fc.offset[c]) * (v - fc.offset[c]);
-    fc.amp[c] = std::sqrt(2.0 * ss / n);
+    fc.amp[c] = opt.given_scaling ? opt.amp[c] : std::sqrt(2.0 * ss / n);
     if (!(fc.amp[c] > 0))
       throw InputError(fmt::format("calibration: curve {} has zero amplitude", c ? "c24" : "c13"));
   }

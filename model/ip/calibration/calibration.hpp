@@ -29,6 +29,10 @@ struct CalOptions {
   // fit against theta_ref itself, Eq. 6 as printed: the polynomials absorb any constant offset).
   bool estimate_zero = true;
   double zero_offset = 0;
+  // Scaling: false = Eq. 4 (mean and RMS amplitude of the recording); true = the offsets and
+  // amplitudes below (the self-calibration's ellipse fit, which a non-uniform speed does not bias).
+  bool given_scaling = false;
+  double offset[2] = {0, 0}, amp[2] = {1, 1};  // O13, O24; A13, A24
 };
 
 // The zero offset of scaled curves against a reference: the circular mean of

@@ -20,6 +20,18 @@ std::vector<double> angle_error_deg(const std::vector<double>& est, const std::v
   return e;
 }
 
+std::vector<double> about_mean_deg(const std::vector<double>& e) {
+  double c = 0, s = 0;
+  for (double v : e) {
+    c += std::cos(v * M_PI / 180);
+    s += std::sin(v * M_PI / 180);
+  }
+  const double mean = std::atan2(s, c) * 180 / M_PI;
+  std::vector<double> out(e.size());
+  for (size_t i = 0; i < e.size(); ++i) out[i] = wrap_deg(e[i] - mean);
+  return out;
+}
+
 ErrorStats error_stats(const std::vector<double>& e) { return error_stats(e.data(), e.size()); }
 
 ErrorStats error_stats(const double* e, size_t n) {

@@ -21,5 +21,8 @@ ErrorStats error_stats(const std::vector<double>& err_deg);
 ErrorStats error_stats(const double* err_deg, size_t n);
 // {"rms", "max_abs", "mean"}: the statistics as every JSON report writes them.
 nlohmann::json stats_json(const ErrorStats& s);
+// The errors about their circular mean, wrapped: what a calibration whose zero offset is unknown
+// (a self-calibration, image header zero_reference=none) can be judged by.
+std::vector<double> about_mean_deg(const std::vector<double>& err_deg);
 
 }  // namespace acore

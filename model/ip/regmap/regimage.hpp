@@ -41,6 +41,13 @@ struct RegImage {
   double software_zero_offset() const { return cfg.zero_word ? 0.0 : zero_offset; }
   // The offset the whole chain removes (rad, wrapped): the ZERO word's value, or zero_offset.
   double applied_zero_offset() const;
+  // Header key zero_reference=none (a self-calibration: the zero offset is unknown, errors against
+  // a reference are judged about their mean); absent: the image's zero is the reference's.
+  bool zero_reference_unknown() const {
+    for (const auto& p : provenance)
+      if (p == "zero_reference=none") return true;
+    return false;
+  }
   void set_signed(int addr, int64_t value);  // throws InputError when value does not fit REG_W
   void set_unsigned(int addr, int64_t value);
 };

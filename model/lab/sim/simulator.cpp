@@ -183,7 +183,11 @@ nlohmann::json Scenario::to_json() const {
                      {"speed_rps", trajectory.speed_rps},
                      {"speed_end_rps", trajectory.speed_end_rps},
                      {"sweep_turns", trajectory.sweep_turns},
-                     {"cycles", trajectory.cycles}};
+                     {"cycles", trajectory.cycles},
+                     {"speed_ripple_pct", trajectory.speed.ripple_pct},
+                     {"speed_ripple_cycles", trajectory.speed.ripple_cycles},
+                     {"speed_drift_pct", trajectory.speed.drift_pct},
+                     {"speed_seed", trajectory.speed.seed}};
   // The step and ripple fields only with their kinds (older dumps stay as they were).
   if (trajectory.kind == "step") j["trajectory"]["step_at_s"] = trajectory.step_at_s;
   if (trajectory.kind == "ripple") {
@@ -239,7 +243,8 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
     const json& t = j.at("trajectory");
     check_keys(t,
                {"kind", "sample_rate_hz", "theta0_rad", "turns", "speed_rps", "speed_end_rps",
-                "sweep_turns", "cycles", "step_at_s", "ripple", "ripple_hz"},
+                "sweep_turns", "cycles", "step_at_s", "ripple", "ripple_hz", "speed_ripple_pct",
+                "speed_ripple_cycles", "speed_drift_pct", "speed_seed"},
                where, "trajectory.");
     Trajectory& tr = s.trajectory;
     tr.kind = get_string(t, "kind", tr.kind, where, "trajectory.kind");
@@ -262,6 +267,18 @@ Scenario Scenario::from_json(const nlohmann::json& j, const std::string& where) 
       field_error(where, "trajectory.ripple", "must be in [0, 1)");
     if (tr.kind == "ripple" && !(tr.ripple_hz > 0))
       field_error(where, "trajectory.ripple_hz", "must be > 0");
+    SpeedVariation& sv = tr.speed;
+    sv.ripple_pct =
+        get_number(t, "speed_ripple_pct", sv.ripple_pct, where, "trajectory.speed_ripple_pct");
+    sv.ripple_cycles = get_number(t, "speed_ripple_cycles", sv.ripple_cycles, where,
+                                  "trajectory.speed_ripple_cycles");
+    sv.drift_pct =
+        get_number(t, "speed_drift_pct", sv.drift_pct, where, "trajectory.speed_drift_pct");
+    sv.seed = static_cast<uint64_t>(
+        get_int(t, "speed_seed", static_cast<int>(sv.seed), where, "trajectory.speed_seed"));
+    if (std::fabs(sv.ripple_pct) + std::fabs(sv.drift_pct) >= 100)
+      field_error(where, "trajectory.speed_ripple_pct",
+                  "ripple and slow change together must stay below 100 % (the shaft would stop)");
     if (tr.sample_rate_hz < 0)
       field_error(where, "trajectory.sample_rate_hz", "must be >= 0 (0: N per second)");
     if (tr.kind == "reversal" && tr.sweep_turns <= 0)
@@ -371,13 +388,21 @@ double trajectory_speed(const Trajectory& tr, double v0, double v1, double durat
 }
 
 double TrajectoryModel::theta_at(double t) const {
-  return trajectory_theta(tr_, v0_, v1_, duration_, t);
+  // The speed variation (a ripple and a slow change, "turn" and "constant" only) adds exactly 0
+  // when it is off.
+  return trajectory_theta(tr_, v0_, v1_, duration_, t) + varied(v0_ * t);
+}
+
+double TrajectoryModel::varied(double u) const {
+  if (!tr_.speed.active() || (tr_.kind != "turn" && tr_.kind != "constant")) return 0.0;
+  return speed_variation_angle(tr_.speed, u, v0_ * duration_);
 }
 
 double TrajectoryModel::theta_sample(size_t k) const {
   // The published figures use exactly this grid.
   if (tr_.kind == "turn")
-    return tr_.theta0_rad + 2 * kPi * static_cast<double>(k) / static_cast<double>(n_);
+    return tr_.theta0_rad + 2 * kPi * static_cast<double>(k) / static_cast<double>(n_) +
+           varied(static_cast<double>(k) / static_cast<double>(n_));
   return theta_at(time(k));
 }
 

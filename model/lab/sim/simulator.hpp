@@ -35,6 +35,7 @@
 
 #include "core/recording.hpp"
 #include "sim/effects.hpp"
+#include "sim/speed_profile.hpp"
 
 namespace acore {
 
@@ -69,6 +70,9 @@ struct Trajectory {
   double step_at_s = 0;       // step: time of the speed step (s; 0 = half the recording)
   double ripple = 0;          // ripple: relative speed ripple amplitude (>= 0, < 1)
   double ripple_hz = 0;       // ripple: ripple frequency (Hz, > 0)
+  // "turn" and "constant": a ripple and a slow change around the nominal speed (speed_profile.hpp);
+  // JSON fields speed_ripple_pct, speed_ripple_cycles, speed_drift_pct, speed_seed.
+  SpeedVariation speed;
 };
 
 // The mechanical angle (rad, unwrapped) at time t of a trajectory whose resolved speeds are v0, v1
@@ -114,6 +118,8 @@ class TrajectoryModel {
       size_t k) const;  // the angle at sample k ("turn": exactly theta0 + 2 pi k / N)
   double direction_at(double t) const;  // +1 forward, -1 backward
   double speed_at(double t) const;      // rev/s, signed
+  // The angle the speed variation adds after u nominal turns ("turn", "constant"; else 0).
+  double varied(double u) const;
 
  private:
   Trajectory tr_;
