@@ -34,7 +34,7 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr")
+FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr", "formal")
 SYNTH_FLOWS = ("generic", "xilinx", "ice40", "pnr")
 AREA_FLOWS = ("generic", "xilinx", "ice40")
 
