@@ -218,12 +218,14 @@ module acore_stream_formal #(
         for (i = 0; i < DPV_W; i = i + 1) ones = ones + tap_v[i];
       end
       wire [OCC_W-1:0] stored = tap_wptr - tap_rptr;
-      always @(posedge clk_i) begin
+      always @(*) begin
         if (!init_q && !rst_i) begin
           assert (inflight == ones + tap_out_vld + stored + out_valid_o);
           assert (tap_occ == inflight);
           assert (tap_cnt == ((since_q >= FOLD) ? FOLD - 1 : since_q - 1));
-          if (tap_rdy) assert (tap_cnt == FOLD - 1 && inflight < CAP);
+          if (tap_rdy) assert (tap_cnt == FOLD - 1);
+          if (tap_rdy) assert (inflight < CAP);
+          if (tap_rdy) assert (in_ready_o);
         end
       end
     end

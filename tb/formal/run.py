@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """Formal proofs of AngleCore's handshakes with Yosys and yosys-smtbmc (z3), no SymbiYosys.
 
-usage: run.py CONFIG [--mode bmc|prove] [--depth N] [--mutant NAME] [--workdir DIR]
+usage: run.py CONFIG [--mode auto|bmc|prove] [--depth N] [--mutant NAME] [--workdir DIR]
        run.py --list            the registry lines with the formal flow, and the planted bugs
 
 CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
@@ -12,6 +12,8 @@ rtl_constants), never from a second table.
 
   bmc    bounded model check from reset for --depth clocks (default: the harness's BMC depth).
   prove  k-induction of depth --depth (default: the harness's), after a BMC of the same depth.
+  auto   (default) prove where the harness has an induction depth that closes, else bmc; a mutant:
+         bmc (a counterexample is a trace from reset).
 
 --mutant NAME runs on a copy of the RTL with one planted bug (MUTANTS below) and expects the solver
 to find a counterexample: exit 0 when it does (the property can fail), 1 when the bug goes unseen.
@@ -133,17 +135,19 @@ def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, 
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
         s.append(f"cutpoint -undef @cut_{m}" if False else f"cutpoint @cut_{m}")
-    s.append("flatten")
+    # (opt_clean first: it merges the aliases of a tap wire, which connect -set would otherwise cut.)
+    s += ["flatten", "opt_clean"]
     for w, src in taps:
         s.append(f"connect -set {w} {src}")
-    s += ["opt_clean", "async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]
+    # A tap left undriven would be a free value: check stops on it.
+    s += ["opt_clean", "check -assert", "async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]
     return "\n".join(s) + "\n"
 
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("config", nargs="?")
-    ap.add_argument("--mode", choices=("bmc", "prove"), default="bmc")
+    ap.add_argument("--mode", choices=("auto", "bmc", "prove"), default="auto")
     ap.add_argument("--depth", type=int)
     ap.add_argument("--mutant")
     ap.add_argument("--workdir")
@@ -198,6 +202,8 @@ def main(argv):
     except registry.RegistryError as e:
         print(f"run.py: {e}", file=sys.stderr)
         return 2
+    if a.mode == "auto":
+        a.mode = "bmc" if prove_depth is None or a.mutant else "prove"
     if a.mode == "prove" and prove_depth is None and a.depth is None:
         print(f"run.py: {a.config}: no induction depth known to close (use bmc, or --depth)", file=sys.stderr)
         return 2
