@@ -189,7 +189,7 @@ def main(argv):
         if a.config == "fifo":
             line_module, line_params = "acore_fold_fifo", []
             harness, top, hparams, cut, taps, bmc_depth, prove_depth = \
-                "acore_fifo_formal.sv", "acore_fifo_formal", {}, [], [], 24, 12
+                "acore_fifo_formal.sv", "acore_fifo_formal", {}, [], [], 24, None
         else:
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
@@ -219,25 +219,32 @@ def main(argv):
     if r.returncode != 0:
         print(f"run.py: yosys failed (log {work}/yosys.log):\n{r.stderr[-3000:]}", file=sys.stderr)
         return 2
-    cmd = ["yosys-smtbmc", "-s", "z3", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")]
+    # prove: the base case (a BMC of depth k from reset) and the induction step (k-induction); a
+    # proof needs both. yosys-smtbmc -i runs the step alone.
+    runs = [("bmc", ["-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")])]
     if a.mode == "prove":
-        cmd.append("-i")
-    cmd.append(smt2)
-    with open(os.path.join(work, "smtbmc.log"), "w") as log:
-        r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        log.write(r.stdout)
+        runs.append(("induction", ["-i", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace_induction.vcd")]))
+    status, out = "PASSED", ""
+    for what, opts in runs:
+        r = subprocess.run(["yosys-smtbmc", "-s", "z3", *opts, smt2], stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True)
+        open(os.path.join(work, f"smtbmc_{what}.log"), "w").write(r.stdout)
+        out += r.stdout
+        st = re.findall(r"Status: (\w+)", r.stdout)
+        status = st[-1] if st else "ERROR"
+        if status != "PASSED":
+            status = f"{status} ({what})" if status == "FAILED" else status
+            break
     dt = time.time() - t0
-    status = re.findall(r"Status: (\w+)", r.stdout)
-    status = status[-1] if status else "ERROR"
-    fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", r.stdout)))
+    fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
     what = f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {a.mode} depth {depth}: {status} " \
            f"({dt:.1f} s; {work})"
     print(what + (f"\n  failed: {' '.join(fails)}" if fails else ""))
-    if status not in ("PASSED", "FAILED"):
-        print(r.stdout[-3000:], file=sys.stderr)
+    if not status.startswith(("PASSED", "FAILED")):
+        print(out[-3000:], file=sys.stderr)
         return 2
     if a.mutant:
-        return 0 if status == "FAILED" else 1
+        return 0 if status.startswith("FAILED") else 1
     return 0 if status == "PASSED" else 1
 
 
