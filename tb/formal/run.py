@@ -160,7 +160,9 @@ def main(argv):
         for l in registry.select(ROOT, flows=["formal"]):
             print(l)
         for n, m in MUTANTS.items():
-            print(f"mutant {n}: {m[0]}: {m[4]}")
+            # CTest label: a top's planted bug shows after the pipeline fills (a BMC of about
+            # LATENCY clocks, long on a loaded machine); the FIFO's within a few clocks.
+            print(f"mutant {n}: {m[0]}: {'formal' if m[0] == 'fifo' else 'long'}: {m[4]}")
         return 0
     if not a.config:
         print("run.py: a CONFIG is needed (run.py --list)", file=sys.stderr)
@@ -189,7 +191,7 @@ def main(argv):
         if a.config == "fifo":
             line_module, line_params = "acore_fold_fifo", []
             harness, top, hparams, cut, taps, bmc_depth, prove_depth = \
-                "acore_fifo_formal.sv", "acore_fifo_formal", {}, [], [], 24, None
+                "acore_fifo_formal.sv", "acore_fifo_formal", {}, [], [], 14, None
         else:
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
