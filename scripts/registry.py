@@ -39,7 +39,7 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr", "pnr_up5k")
+FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr", "pnr_up5k", "formal")
 SYNTH_FLOWS = ("generic", "xilinx", "ice40", "pnr", "pnr_up5k")
 PLACE_FLOWS = ("pnr", "pnr_up5k")
 AREA_FLOWS = ("generic", "xilinx", "ice40")

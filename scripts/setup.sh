@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Install every Debian package AngleCore needs, only when something is missing, then the pinned
+# Install every Debian package AngleCore needs (z3: the SMT solver of the formal proofs, driven by
+# yosys-smtbmc, which the yosys package ships; tb/formal/run.py), only when something is missing, then the pinned
 # PyPI packages into the project's virtual environment .venv/: FuseSoC and edalize (rtl/anglecore.core;
 # tb/fusesoc.sh runs its targets) and magpylib (the independent field model that the CTest
 # physics_field_vs_magpylib checks model/physics_magnet.cpp against), and the Python package anglecore
@@ -12,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
   cmake ninja-build g++ make pkg-config git clang-format
-  verilator iverilog yosys nextpnr-ice40 fpga-icestorm
+  verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev zlib1g-dev
   python3-matplotlib python3-numpy python3-venv python3-dev ccache

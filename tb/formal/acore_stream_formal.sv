@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: MIT
+// acore_stream_formal: the formal harness of the estimator's streaming contract (yosys-smtbmc,
+// driven by tb/formal/run.py). It wraps acore_top (SERIAL = 0, pipelined or folded by FOLD) or
+// acore_serial_top (SERIAL = 1) with their parameters set by the driver (chparam), drives every
+// input freely (reset high in the first clock) and checks the ports against the modules' headers:
+//
+//   reset     in_ready_o is low while rst_i is high; out_valid_o is low the clock after a reset.
+//   count     inputs taken = outputs given + in flight: an output is given only while a sample is in
+//             flight (nothing duplicated or invented) and at most CAP samples are in flight.
+//   lost      a sample in flight leaves within BOUND clocks in which the output is not held
+//             (out_valid_o && !out_ready_i): nothing is lost.
+//   latency   a sample taken into an empty core comes out exactly LATENCY clocks later, not before.
+//   hold      while out_valid_o && !out_ready_i, out_valid_o stays high and every output is stable.
+//   spacing   (FOLD > 1) two samples are taken at least FOLD clocks apart.
+//   pipe      (FOLD = 1) the reference pipeline: valid bits that shift on !(out_valid && !out_ready)
+//             give out_valid_o and in_ready_o exactly, and the top's own valid bits equal them (the
+//             tap below: the invariant that lets k-induction close).
+// Order: the pipelined top moves every sample on one enable and the folded top on a fixed schedule
+// into a FIFO, so with counts exact an output is the oldest sample in flight; the FIFO's order is
+// proved on its own (acore_fifo_formal.sv, a tagged word).
+`default_nettype none
+
+module acore_stream_formal #(
+  parameter integer SERIAL = 0,
+  parameter integer FOLD = 1,
+  parameter integer LATENCY = 8,
+  parameter integer CAP = 8,
+  parameter integer BOUND = 8,
+  parameter integer ADDR_W = 6,
+  parameter integer REG_W = 18,
+  parameter integer IN_W = 16,
+  parameter integer ANGLE_W = 16,
+  parameter integer RG_W = 2,
+  parameter integer MAG_W = 20,
+  // 1: the timer properties (lost, latency), closed by a bound of LATENCY + 8 clocks; 0: left out
+  // (k-induction: there the reference invariants below imply them).
+  parameter integer TIMERS = 1,
+  // Folded: the datapath's valid bits (acore_fold_datapath.v's v_q), LATENCY - 3 of them (the
+  // output register's valid bit, the FIFO's write and read clocks follow).
+  parameter integer DPV_W = 1,
+  // Folded: the credit counter's width and the FIFO's pointer width.
+  parameter integer OCC_W = 9
+) (
+  input wire               clk_i,
+  input wire               rst_i,
+  input wire [ADDR_W-1:0]  reg_addr_i,
+  input wire [REG_W-1:0]   reg_wdata_i,
+  input wire               reg_we_i,
+  input wire [MAG_W-1:0]   mag_lo_i,
+  input wire [MAG_W-1:0]   mag_hi_i,
+  input wire               in_valid_i,
+  input wire [IN_W-1:0]    c1_i,
+  input wire [IN_W-1:0]    c2_i,
+  input wire [IN_W-1:0]    c3_i,
+  input wire [IN_W-1:0]    c4_i,
+  input wire               out_ready_i
+);
+  wire               in_ready_o, out_valid_o, ovf_o, los_o, dos_o;
+  wire [ANGLE_W-1:0] angle_o;
+  wire [RG_W-1:0]    region_o;
+  wire [REG_W-1:0]   reg_rdata_o;
+
+  generate
+    if (SERIAL != 0) begin : g_serial
+      acore_serial_top dut (
+        .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
+        .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i),
+        .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
+        .c4_i(c4_i), .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle_o),
+        .region_o(region_o), .ovf_o(ovf_o), .los_o(los_o), .dos_o(dos_o));
+    end else begin : g_top
+      acore_top dut (
+        .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
+        .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i),
+        .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
+        .c4_i(c4_i), .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle_o),
+        .region_o(region_o), .ovf_o(ovf_o), .los_o(los_o), .dos_o(dos_o));
+    end
+  endgenerate
+
+  // Reset in the first clock (the flops' power-up values are free).
+  reg init_q = 1'b1;
+  always @(posedge clk_i) init_q <= 1'b0;
+  always @(*) if (init_q) assume (rst_i);
+
+  wire accept  = in_valid_i && in_ready_o;
+  wire deliver = out_valid_o && out_ready_i;
+  wire held    = out_valid_o && !out_ready_i;
+
+  // ---- count: inputs taken and outputs given since the last reset ----
+  localparam integer CW = 12;
+  reg [CW-1:0] taken_q, given_q;
+  wire [CW-1:0] inflight = taken_q - given_q;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      taken_q <= 0;
+      given_q <= 0;
+    end else begin
+      taken_q <= taken_q + accept;
+      given_q <= given_q + deliver;
+    end
+  end
+
+  // ---- lost: clocks a sample has been in flight with the output free and nothing given ----
+  reg [CW-1:0] wait_q;
+  always @(posedge clk_i) begin
+    if (rst_i || deliver || inflight == 0 || held) wait_q <= 0;
+    else wait_q <= wait_q + 1'b1;
+  end
+
+  // ---- latency: a sample taken into an empty core; host writes may delay the serial core's ----
+  reg [CW-1:0] lat_q;      // clocks since that sample was taken (0: none watched)
+  reg          lat_we_q;   // a host write since
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      lat_q <= 0;
+      lat_we_q <= 1'b0;
+    end else if (lat_q == 0) begin
+      if (accept && inflight == 0) lat_q <= 1;
+      lat_we_q <= 1'b0;
+    end else begin
+      lat_q <= (lat_q == LATENCY || deliver) ? 0 : lat_q + 1'b1;
+      lat_we_q <= lat_we_q | reg_we_i;
+    end
+  end
+
+  // ---- spacing (FOLD > 1): clocks since the last sample taken ----
+  reg [CW-1:0] since_q;
+  always @(posedge clk_i) begin
+    if (rst_i) since_q <= FOLD;
+    else if (accept) since_q <= 1;
+    else if (since_q < FOLD) since_q <= since_q + 1'b1;
+  end
+
+  // ---- hold: the outputs of the clock before ----
+  reg               past_held_q = 1'b0;
+  reg               past_rst_q = 1'b0;
+  reg [ANGLE_W-1:0] past_angle_q;
+  reg [RG_W-1:0]    past_region_q;
+  reg [2:0]         past_flags_q;
+  always @(posedge clk_i) begin
+    past_held_q   <= held && !rst_i;
+    past_rst_q    <= rst_i;
+    past_angle_q  <= angle_o;
+    past_region_q <= region_o;
+    past_flags_q  <= {ovf_o, los_o, dos_o};
+  end
+
+  always @(posedge clk_i) begin
+    if (!init_q) begin
+      // reset
+      if (rst_i) assert (!in_ready_o);
+      if (past_rst_q) assert (!out_valid_o);
+      // count
+      if (!rst_i && deliver) assert (inflight != 0);
+      if (!rst_i) assert (inflight <= CAP);
+      if (TIMERS != 0) begin
+        // lost
+        if (!rst_i) assert (wait_q <= BOUND);
+        // latency
+        if (!rst_i && lat_q != 0 && lat_q < LATENCY) assert (!out_valid_o);
+        if (!rst_i && lat_q == LATENCY && !(SERIAL != 0 && lat_we_q)) assert (out_valid_o);
+      end
+      // hold
+      if (past_held_q && !rst_i) begin
+        assert (out_valid_o);
+        assert (angle_o == past_angle_q && region_o == past_region_q &&
+                {ovf_o, los_o, dos_o} == past_flags_q);
+      end
+      // spacing
+      if (FOLD > 1 && accept) assert (since_q >= FOLD);
+    end
+  end
+
+  // ---- pipe (FOLD = 1): the reference pipeline and the top's valid bits (tap_vld, connected to
+  // the top's vld_q by the driver after flattening) ----
+  generate
+    if (SERIAL == 0 && FOLD == 1) begin : g_ref
+      reg  [LATENCY-1:0] ref_q;
+      wire [LATENCY-1:0] tap_vld;
+      wire ref_en = !(ref_q[LATENCY-1] && !out_ready_i);
+      always @(posedge clk_i) begin
+        if (rst_i) ref_q <= 0;
+        else if (ref_en) ref_q <= {ref_q[LATENCY-2:0], accept};
+      end
+      integer i;
+      reg [CW-1:0] ones;
+      always @(*) begin
+        ones = 0;
+        for (i = 0; i < LATENCY; i = i + 1) ones = ones + ref_q[i];
+      end
+      always @(posedge clk_i) begin
+        if (!init_q) begin
+          assert (out_valid_o == ref_q[LATENCY-1]);
+          assert (in_ready_o == (!rst_i && ref_en));
+          assert (tap_vld == ref_q);
+          if (!rst_i) assert (inflight == ones);
+        end
+      end
+    end
+  endgenerate
+
+  // ---- folded (FOLD > 1): where every sample in flight is (taps, connected by the driver to the
+  // top's credit counter and ready flop, the datapath's valid bits, the output register's valid bit
+  // and the FIFO's pointers): in flight = in the datapath + in the output register + stored in the
+  // FIFO + on the output port; the credit counter counts them; in_ready_o only when FOLD clocks
+  // have passed. These make k-induction close. ----
+  generate
+    if (SERIAL == 0 && FOLD > 1) begin : g_fold_ref
+      wire [DPV_W-1:0] tap_v;
+      wire             tap_out_vld, tap_rdy;
+      wire [OCC_W-1:0] tap_occ, tap_wptr, tap_rptr;
+      wire [$clog2(FOLD)-1:0] tap_cnt;
+      integer i;
+      reg [CW-1:0] ones;
+      always @(*) begin
+        ones = 0;
+        for (i = 0; i < DPV_W; i = i + 1) ones = ones + tap_v[i];
+      end
+      wire [OCC_W-1:0] stored = tap_wptr - tap_rptr;
+      always @(*) begin
+        if (!init_q && !rst_i) begin
+          assert (inflight == ones + tap_out_vld + stored + out_valid_o);
+          assert (tap_occ == inflight);
+          assert (tap_cnt == ((since_q >= FOLD) ? FOLD - 1 : since_q - 1));
+          if (tap_rdy) assert (tap_cnt == FOLD - 1);
+          if (tap_rdy) assert (inflight < CAP);
+          if (tap_rdy) assert (in_ready_o);
+        end
+      end
+    end
+  endgenerate
+endmodule

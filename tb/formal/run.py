@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Formal proofs of AngleCore's handshakes with Yosys and yosys-smtbmc (z3), no SymbiYosys.
+
+usage: run.py CONFIG [--mode auto|bmc|prove] [--depth N] [--mutant NAME] [--workdir DIR]
+       run.py --list            the registry lines with the formal flow, and the planted bugs
+
+CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
+folded top's output FIFO alone). The harness (tb/formal/*.sv) wraps the line's module with the
+line's parameters; its bounds come from the elaborated RTL (LATENCY, CAPACITY: registry.py's
+rtl_constants), never from a second table.
+
+  bmc    bounded model check from reset for --depth clocks (default: the harness's BMC depth).
+  prove  k-induction of depth --depth (default: the harness's), after a BMC of the same depth.
+  auto   (default) prove where the harness has an induction depth that closes, else bmc; a mutant:
+         bmc (a counterexample is a trace from reset).
+
+--mutant NAME runs on a copy of the RTL with one planted bug (MUTANTS below) and expects the solver
+to find a counterexample: exit 0 when it does (the property can fail), 1 when the bug goes unseen.
+
+Abstraction: the arithmetic (every stage instance of the datapath: pre-filter, scalers, region
+select, correction, CORDIC, Fourier, delay lines, register files) is cut (Yosys `cutpoint`: its outputs
+become free values each clock). The properties are about the valid/ready control and the output
+registers, which are kept, so any behaviour of the cut values is covered.
+Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import registry  # noqa: E402
+
+HERE = os.path.join(ROOT, "tb", "formal")
+
+# Stage modules whose instances are cut (outputs free each clock). The FIFO, the valid bits and the
+# output registers of the tops, and all of the serial core and of the shell's control, stay.
+CUT_TOP = ["acore_coef_regfile", "acore_prefilter", "acore_scaler", "acore_region_select",
+           "acore_poly_correct", "acore_poly2d_correct", "acore_cordic", "acore_fourier_correct",
+           "acore_delay", "acore_fold_regs", "acore_fold_scaler", "acore_fold_poly",
+           "acore_fold_cordic", "acore_ram_delay"]
+
+# Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks). Each must make the
+# solver find a counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
+MUTANTS = {
+    # FOLD = 1: a sample offered while the output is held is taken, but the pipeline does not move:
+    # it is lost (overwritten).
+    "top_ready_ignores_stall": ("default", "acore_top.v",
+                                r"assign in_ready_o = en & ~rst_i;", "assign in_ready_o = ~rst_i;",
+                                "count/pipe: a sample taken during a stall is lost"),
+    # FOLD = 1: the valid pipeline keeps shifting while the output is held: the held sample is
+    # replaced (dropped) and the output changes under a stall.
+    "top_shift_in_stall": ("default", "acore_top.v",
+                           r"else if \(en\) vld_q <= \{vld_q\[LATENCY-2:0\], in_valid_i\};",
+                           "else vld_q <= {vld_q[LATENCY-2:0], in_valid_i & en};",
+                           "hold/count: the held output is dropped"),
+    # FOLD = 1: in_ready_o high during reset.
+    "top_ready_in_reset": ("default", "acore_top.v",
+                           r"assign in_ready_o = en & ~rst_i;", "assign in_ready_o = en;",
+                           "reset: in_ready_o high in reset"),
+    # Folded: the FIFO's output register loads while the held word waits (ready ignored).
+    "fold_fifo_ignores_ready": ("fold2", "acore_fold_fifo.v",
+                                r"wire load = !empty && \(!valid_o \|\| ready_i\);",
+                                "wire load = !empty;",
+                                "hold/count: a held word is overwritten (lost)"),
+    # Folded: the credit check dropped: samples closer than FOLD clocks.
+    "fold_no_spacing": ("fold4", "acore_top.v",
+                        r"rdy_q <= \(cnt_d == CNT_FULL\) && \(occ_d < OCC_MAX\);",
+                        "rdy_q <= (occ_d < OCC_MAX);",
+                        "spacing: two samples less than FOLD clocks apart"),
+    # Folded: the output register's valid bit not reset: a sample of before the reset comes out.
+    "fold_valid_not_reset": ("fold8", "acore_top.v",
+                             r"if \(rst_i\) out_vld_q <= 1'b0;\n\s*else out_vld_q <= dp_valid;",
+                             "out_vld_q <= dp_valid;",
+                             "count/reset: an output from before the reset"),
+    # FIFO: the read pointer advances twice on a load: a word is skipped (reordered/lost).
+    "fifo_skip_word": ("fifo", "acore_fold_fifo.v",
+                       r"if \(load\) rptr_q <= rptr_q \+ 1'b1;", "if (load) rptr_q <= rptr_q + 2'd1 + wr_i;",
+                       "order: the tagged word is not the word given"),
+}
+
+
+def rtl_files():
+    return [os.path.join(ROOT, "rtl", f) for f in registry.rtl_files(ROOT)]
+
+
+def stream_setup(line):
+    """(harness file, harness parameters, cut modules, taps, default depths) for a top's line."""
+    params = line.params
+    serial = line.module == "acore_serial_top"
+    c = registry.rtl_constants(ROOT, line.module, params)
+    shell = registry.rtl_constants(ROOT, "acore_apb", params + ([("SERIAL", 1)] if serial else []))
+    fold = 1 if serial else c["FOLD"]
+    lat = c["LATENCY"]
+    # Clocks a sample may wait with the output free: its latency (the serial core: two clocks more,
+    # a host write landing on each of its two scratch-word writes delays it by one).
+    bound = lat + 2 if serial else lat
+    h = {"SERIAL": int(serial), "FOLD": fold, "LATENCY": lat, "CAP": shell["CAPACITY"], "BOUND": bound,
+         "ADDR_W": c["ADDR_W"], "REG_W": c["REG_W"], "IN_W": c["IN_W"], "ANGLE_W": c["ANGLE_W"],
+         "RG_W": c["RG_W"], "MAG_W": c["MAG_W"]}
+    taps = []
+    if not serial and fold == 1:
+        taps.append(("g_ref.tap_vld", "g_top.dut.g_pipe.vld_q"))
+    if not serial and fold > 1:
+        h["DPV_W"] = lat - 3
+        h["OCC_W"] = (shell["CAPACITY"] - 1).bit_length() + 1
+        f = "g_top.dut.g_fold."
+        taps += [("g_fold_ref.tap_v", f + "u_dp.v_q"), ("g_fold_ref.tap_out_vld", f + "out_vld_q"),
+                 ("g_fold_ref.tap_rdy", f + "rdy_q"), ("g_fold_ref.tap_occ", f + "occ_q"),
+                 ("g_fold_ref.tap_cnt", f + "cnt_q"), ("g_fold_ref.tap_wptr", f + "u_fifo.wptr_q"),
+                 ("g_fold_ref.tap_rptr", f + "u_fifo.rptr_q")]
+    cut = [] if serial else CUT_TOP
+    # k-induction (TIMERS = 0) closes on acore_top at small depths with the taps' invariants; the
+    # serial core is bounded: LATENCY + 8 clocks past reset.
+    prove = None if serial else 4
+    return "acore_stream_formal.sv", "acore_stream_formal", h, cut, taps, lat + 9, prove
+
+
+def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2):
+    s = [f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(rtl_dir, os.path.basename(f))}" for f in rtl_files()
+         if f.endswith(".v")]
+    s.append(f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(HERE, harness)}")
+    if line_params:
+        s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in line_params) + f" {line_module}")
+    s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in hparams.items()) + f" {top}")
+    s.append(f"hierarchy -check -top {top}")
+    s.append("proc")
+    for m in cut:
+        # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
+        s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
+        s.append(f"cutpoint -undef @cut_{m}" if False else f"cutpoint @cut_{m}")
+    # (opt_clean first: it merges the aliases of a tap wire, which connect -set would otherwise cut.)
+    s += ["flatten", "opt_clean"]
+    for w, src in taps:
+        s.append(f"connect -set {w} {src}")
+    # A tap left undriven would be a free value: check stops on it.
+    s += ["opt_clean", "check -assert", "async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]
+    return "\n".join(s) + "\n"
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("config", nargs="?")
+    ap.add_argument("--mode", choices=("auto", "bmc", "prove"), default="auto")
+    ap.add_argument("--depth", type=int)
+    ap.add_argument("--mutant")
+    ap.add_argument("--workdir")
+    ap.add_argument("--list", action="store_true")
+    try:
+        a = ap.parse_args(argv)
+    except SystemExit as e:
+        return 0 if e.code == 0 else 2
+    if a.list:
+        for l in registry.select(ROOT, flows=["formal"]):
+            print(l)
+        for n, m in MUTANTS.items():
+            # CTest label: a top's planted bug shows after the pipeline fills (a BMC of about
+            # LATENCY clocks, long on a loaded machine); the FIFO's within a few clocks.
+            print(f"mutant {n}: {m[0]}: {'formal' if m[0] == 'fifo' else 'long'}: {m[4]}")
+        return 0
+    if not a.config:
+        print("run.py: a CONFIG is needed (run.py --list)", file=sys.stderr)
+        return 2
+    if a.mutant and a.mutant not in MUTANTS:
+        print(f"run.py: unknown mutant '{a.mutant}' (known: {', '.join(MUTANTS)})", file=sys.stderr)
+        return 2
+    work = a.workdir or tempfile.mkdtemp(prefix=f"acore_formal_{a.config}_")
+    os.makedirs(work, exist_ok=True)
+    rtl_dir = os.path.join(ROOT, "rtl")
+    if a.mutant:
+        _, fname, pat, rep, _ = MUTANTS[a.mutant]
+        mdir = os.path.join(work, "rtl")
+        shutil.rmtree(mdir, ignore_errors=True)
+        shutil.copytree(rtl_dir, mdir)
+        path = os.path.join(mdir, fname)
+        text = open(path).read()
+        new, n = re.subn(pat, rep, text)
+        if n != 1:
+            print(f"run.py: mutant {a.mutant}: pattern found {n} times in rtl/{fname} (expected once)",
+                  file=sys.stderr)
+            return 2
+        open(path, "w").write(new)
+        rtl_dir = mdir
+    try:
+        if a.config == "fifo":
+            line_module, line_params = "acore_fold_fifo", []
+            harness, top, hparams, cut, taps, bmc_depth, prove_depth = \
+                "acore_fifo_formal.sv", "acore_fifo_formal", {}, [], [], 14, None
+        else:
+            line = registry.get(ROOT, a.config)
+            if "formal" not in line.flows:
+                raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
+            line_module, line_params = line.module, line.params
+            if line.module in ("acore_top", "acore_serial_top"):
+                harness, top, hparams, cut, taps, bmc_depth, prove_depth = stream_setup(line)
+            else:
+                raise registry.RegistryError(f"{line.where}: no formal harness for module {line.module}")
+    except registry.RegistryError as e:
+        print(f"run.py: {e}", file=sys.stderr)
+        return 2
+    if a.mode == "auto":
+        a.mode = "bmc" if prove_depth is None or a.mutant else "prove"
+    if a.mode == "prove" and prove_depth is None and a.depth is None:
+        print(f"run.py: {a.config}: no induction depth known to close (use bmc, or --depth)", file=sys.stderr)
+        return 2
+    depth = a.depth or (prove_depth if a.mode == "prove" else bmc_depth)
+    if "TIMERS" in hparams or top == "acore_stream_formal":
+        hparams["TIMERS"] = 0 if a.mode == "prove" else 1
+    smt2 = os.path.join(work, "model.smt2")
+    ys = os.path.join(work, "model.ys")
+    open(ys, "w").write(yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2))
+    t0 = time.time()
+    r = subprocess.run(["yosys", "-q", "-l", os.path.join(work, "yosys.log"), "-s", ys], capture_output=True,
+                       text=True)
+    if r.returncode != 0:
+        print(f"run.py: yosys failed (log {work}/yosys.log):\n{r.stderr[-3000:]}", file=sys.stderr)
+        return 2
+    # prove: the base case (a BMC of depth k from reset) and the induction step (k-induction); a
+    # proof needs both. yosys-smtbmc -i runs the step alone.
+    runs = [("bmc", ["-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")])]
+    if a.mode == "prove":
+        runs.append(("induction", ["-i", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace_induction.vcd")]))
+    status, out = "PASSED", ""
+    for what, opts in runs:
+        r = subprocess.run(["yosys-smtbmc", "-s", "z3", *opts, smt2], stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True)
+        open(os.path.join(work, f"smtbmc_{what}.log"), "w").write(r.stdout)
+        out += r.stdout
+        st = re.findall(r"Status: (\w+)", r.stdout)
+        status = st[-1] if st else "ERROR"
+        if status != "PASSED":
+            status = f"{status} ({what})" if status == "FAILED" else status
+            break
+    dt = time.time() - t0
+    fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
+    what = f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {a.mode} depth {depth}: {status} " \
+           f"({dt:.1f} s; {work})"
+    print(what + (f"\n  failed: {' '.join(fails)}" if fails else ""))
+    if not status.startswith(("PASSED", "FAILED")):
+        print(out[-3000:], file=sys.stderr)
+        return 2
+    if a.mutant:
+        return 0 if status.startswith("FAILED") else 1
+    return 0 if status == "PASSED" else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
