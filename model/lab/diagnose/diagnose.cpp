@@ -331,8 +331,16 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   // gap^2, or at least 2 % more and half of what is left; the set is then refitted together
   // (backfitting). A general effect in the set is replaced by its special case when the set's BIC
   // prefers it. The set is named when it reaches explained_min.
-  if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
-      top->cand.delta_bic < -10) {
+  // The set starts from the effect that carries the most of the angle gap among those with
+  // evidence (dBIC < -10): the best by likelihood may owe it to what atan2 never sees (the common
+  // mode of a plate ring), and then makes the angle gap worse (a sensor ring off centre: its
+  // phase error fits the common mode, its gain mismatch the gap).
+  const RankedEffect* seed = top;
+  for (const auto& r : d.ranking)
+    if (seed && r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained > seed->explained)
+      seed = &r;
+  if (significant && opt.try_pairs && seed && seed->cand.rejected.empty() &&
+      seed->explained < 0.9 && seed->cand.delta_bic < -10) {
     const double nsig = static_cast<double>(real.size()) * (real.channels == 4 ? 4 : 2);
     struct SetScore {
       double explained, after_deg, bic;
@@ -351,8 +359,8 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         return c.cand.effect == e || generalizes(c.cand.effect, e) || generalizes(e, c.cand.effect);
       });
     };
-    std::vector<RankedEffect> chosen = {*top};
-    SetScore cur{top->explained, top->after_deg, 0};
+    std::vector<RankedEffect> chosen = {*seed};
+    SetScore cur{seed->explained, seed->after_deg, 0};
     while (static_cast<int>(chosen.size()) < opt.max_combined) {
       // The chosen set's prediction, once per step; each candidate is fitted and tried on top of it
       // (with the set's later field scalings on its angle change, as it will act in the set).

@@ -157,6 +157,22 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double e
 
 namespace {
 
+// Whether the speed changes enough over the recording for a time to differ from an angle: a
+// reversal (a tenth of the samples each way), or a spread of the speed (5th to 95th percentile) of
+// at least kSpeedSpread of its median magnitude. A drive at one constant speed with a little ripple
+// does not.
+constexpr double kSpeedSpread = 0.2;
+bool speed_changes(const FitProblem& fp) {
+  std::vector<double> w = fp.omega;
+  if (w.size() < 3) return false;
+  std::sort(w.begin(), w.end());
+  // Percentiles, not extremes: a wrapped reference jumps by a turn in one sample.
+  auto at = [&](double q) { return w[static_cast<size_t>(q * static_cast<double>(w.size() - 1))]; };
+  if (at(0.05) < 0 && at(0.95) > 0) return true;
+  const double mid = std::fabs(at(0.5));
+  return at(0.95) - at(0.05) >= kSpeedSpread * mid;
+}
+
 // A fitted effect's parameters; its prediction comes from predict_effect(), the one place that
 // applies an effect, so fitting and carrying the effect to a holdout cannot disagree.
 struct Fitted {
@@ -785,6 +801,10 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
     f = fit_harmonic(fp, base);
   } else if (effect == "eccentricity") {
     f = fit_eccentricity(fp, base, field_scale);
+  } else if (effect == "channel_skew" && !speed_changes(fp)) {
+    // At one speed a sampling time is an angle: common to both channels a zero offset, between
+    // them a phase error. Only speed changes tell a skew from those simpler effects.
+    f.applicable = false;
   } else if (effect == "channel_skew") {
     // Channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their common part
     // included: a multiplexer's slots count from the time stamp).
