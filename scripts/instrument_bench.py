@@ -14,6 +14,8 @@ designer's nominal model at one constant speed, in the same units.
     instrument_bench.py generate DIR [--per-case N] [--seed S] [--only NAME,...]
     instrument_bench.py score DIR --anglecore BUILD/anglecore [--jobs 2] [--min-top1 0.95]
                                     [--min-shrink 0.8]
+    instrument_bench.py check --anglecore BUILD/anglecore [--only ...]   (generate into a temporary
+                                    folder and score: every verdict must be right; the CTest)
 
 `score` runs `anglecore diagnose --sim --real --holdout --json -` on each case and reports top-1
 (the first named effect, or the verdict, is one the case accepts) and the median holdout shrink
@@ -111,7 +113,11 @@ def trajectory(rng, kind, n):
     t = np.arange(n) * dur / n
     if kind == "constant":
         turns = rng.uniform(2, 5)
-        theta = rng.uniform(0, 2 * math.pi) + 2 * math.pi * turns * t / dur
+        # a drive at one speed: its ripple (+-0.5..2 %, a few times per second) is all that changes
+        ripple, f = rng.uniform(0.005, 0.02), rng.uniform(2, 7)
+        w = 2 * math.pi * turns / dur
+        theta = (rng.uniform(0, 2 * math.pi) + w * t
+                 + w * ripple * (1 - np.cos(2 * math.pi * f * t)) / (2 * math.pi * f))
     else:
         # speed w(t) = w0 + w1 cos(pi t / dur): from w0 + w1 to w0 - w1, through zero when |w0| < w1
         w1 = 2 * math.pi * rng.uniform(5, 8)
@@ -377,10 +383,22 @@ def main():
     s.add_argument("--min-top1", type=float, default=0.95)
     s.add_argument("--min-shrink", type=float, default=0.8)
     s.add_argument("--verbose", action="store_true")
+    c = sub.add_parser("check")
+    c.add_argument("--anglecore", required=True)
+    c.add_argument("--only", default="nominal,encoder_zero,plate_offset,adc,skew_constant,skew_diff_constant")
+    c.add_argument("--seed", type=int, default=1)
+    c.add_argument("--jobs", type=int, default=2)
     a = ap.parse_args()
     if a.cmd == "generate":
         generate(a)
         return 0
+    if a.cmd == "check":
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            a.dir, a.per_case = d, 1
+            generate(a)
+            a.min_top1, a.min_shrink, a.verbose = 1.0, 0.8, True
+            return score(a)
     return score(a)
 
 
