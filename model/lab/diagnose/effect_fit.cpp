@@ -518,19 +518,19 @@ Fitted fit_quantization(const FitProblem& fp) {
     sn += std::sin(ph);
   }
   double origin = step * std::atan2(sn, cs) / (2 * M_PI);
-  // Step and origin refined together by least squares on the levels' indices, so that the
-  // printing's rounding of the values averages out instead of adding up over many levels.
+  // Step and origin refined together by least squares on the levels' indices, each value weighted
+  // by its printing resolution (1/rho^2: significant digits print large values more coarsely), so
+  // that the printing's rounding averages out instead of adding up over many levels.
   if (!print_lattice && all.size() >= 3) {
-    double sk = 0, skk = 0, sx = 0, skx = 0;
-    const double n = static_cast<double>(all.size());
+    double sw = 0, sk = 0, skk = 0, sx = 0, skx = 0;
     for (double x : all) {
-      const double k = std::nearbyint((x - origin) / step);
-      sk += k, skk += k * k, sx += x, skx += k * x;
+      const double k = std::nearbyint((x - origin) / step), w = 1 / sq(prec.resolution(x));
+      sw += w, sk += w * k, skk += w * k * k, sx += w * x, skx += w * k * x;
     }
-    const double det = n * skk - sk * sk;
+    const double det = sw * skk - sk * sk;
     if (det > 0) {
-      step = (n * skx - sk * sx) / det;
-      origin = (sx - step * sk) / n;
+      step = (sw * skx - sk * sx) / det;
+      origin = (sx - step * sk) / sw;
     }
   }
   size_t on = 0, informative = 0, total = 0;
@@ -541,7 +541,7 @@ Fitted fit_quantization(const FitProblem& fp) {
       // Half a unit of the last printed digit, with a margin for the step's own error.
       const double tol = print_lattice
                              ? 1e-6 + 1e-12 * std::fabs(u)
-                             : 0.6 * prec.resolution(x) / step + 1e-6 + 1e-12 * std::fabs(u);
+                             : 0.75 * prec.resolution(x) / step + 1e-6 + 1e-12 * std::fabs(u);
       ++total;
       lo = std::min(lo, x - origin);
       hi = std::max(hi, x - origin);
