@@ -293,6 +293,20 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     }
     std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(pick),
                 d.ranking.begin() + static_cast<std::ptrdiff_t>(pick) + 1);
+    // A general effect first (gain_mismatch, channel_skew) owes its lead to what atan2 never sees
+    // when its special case (amplitude, common_delay) carries as much of the angle gap: a plate
+    // ring's common mode, e.g. the constant field a run-out adds to every plate. Name the special
+    // case then; the general one stays in the ranking, and is no ambiguity (generalizes()).
+    const std::string simple = special_case(d.ranking.front().cand.effect);
+    for (size_t k = 1; k < d.ranking.size() && !simple.empty(); ++k) {
+      const RankedEffect& r = d.ranking[k];
+      if (r.cand.effect == simple && r.cand.rejected.empty() && carries(r) &&
+          r.explained >= d.ranking.front().explained - 0.01) {
+        std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(k),
+                    d.ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+        break;
+      }
+    }
   }
 
   // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
@@ -339,6 +353,11 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   for (const auto& r : d.ranking)
     if (seed && r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained > seed->explained)
       seed = &r;
+  // Its special case when that carries as much (see the ranking above).
+  for (const auto& r : d.ranking)
+    if (seed && r.cand.effect == special_case(seed->cand.effect) && r.cand.rejected.empty() &&
+        r.cand.delta_bic < -10 && r.explained >= seed->explained - 0.01)
+      seed = &r;
   if (significant && opt.try_pairs && seed && seed->cand.rejected.empty() &&
       seed->explained < 0.9 && seed->cand.delta_bic < -10) {
     const double nsig = static_cast<double>(real.size()) * (real.channels == 4 ? 4 : 2);
@@ -359,6 +378,7 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         return c.cand.effect == e || generalizes(c.cand.effect, e) || generalizes(e, c.cand.effect);
       });
     };
+    const bool one_speed = !speed_changes(fp);
     std::vector<RankedEffect> chosen = {*seed};
     SetScore cur{seed->explained, seed->after_deg, 0};
     while (static_cast<int>(chosen.size()) < opt.max_combined) {
@@ -384,7 +404,17 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         const double gain = t.explained - cur.explained;
         const bool enough =
             gain >= 0.1 || (gain >= 0.02 && 1 - t.explained <= 0.5 * (1 - cur.explained));
-        if (enough && (!pick || r.explained > pick->explained)) pick = r;
+        // At one speed a delay or hysteresis is a constant angle: the zero offset explaining as
+        // much is the simpler name, whichever was tried first.
+        auto shift_like = [](const RankedEffect& x) {
+          return x.cand.effect == "common_delay" || x.cand.effect == "hysteresis";
+        };
+        bool better = !pick || r.explained > pick->explained;
+        if (pick && one_speed && r.cand.effect == "zero_offset" && shift_like(*pick))
+          better = r.explained >= pick->explained - 0.01;
+        if (pick && one_speed && pick->cand.effect == "zero_offset" && shift_like(r))
+          better = r.explained > pick->explained + 0.01;
+        if (enough && better) pick = r;
       }
       if (!pick) break;
       chosen.push_back(*pick);

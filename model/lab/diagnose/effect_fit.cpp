@@ -95,6 +95,21 @@ double field_part(const FitProblem& fp, const Recording& pred, int c, size_t i) 
 
 const std::vector<std::string>& fittable_effects() { return effect_names(); }
 
+namespace {
+constexpr double kSpeedSpread = 0.2;  // a fifth (effect_fit.hpp, speed_changes)
+}  // namespace
+
+bool speed_changes(const FitProblem& fp) {
+  std::vector<double> w = fp.omega;
+  if (w.size() < 3) return false;
+  std::sort(w.begin(), w.end());
+  // Percentiles, not extremes: a wrapped reference jumps by a turn in one sample.
+  auto at = [&](double q) { return w[static_cast<size_t>(q * static_cast<double>(w.size() - 1))]; };
+  if (at(0.05) < 0 && at(0.95) > 0) return true;
+  const double mid = std::fabs(at(0.5));
+  return at(0.95) - at(0.05) >= kSpeedSpread * mid;
+}
+
 FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
   FitProblem fp;
   fp.model = &m;
@@ -156,22 +171,6 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double e
 }
 
 namespace {
-
-// Whether the speed changes enough over the recording for a time to differ from an angle: a
-// reversal (a tenth of the samples each way), or a spread of the speed (5th to 95th percentile) of
-// at least kSpeedSpread of its median magnitude. A drive at one constant speed with a little ripple
-// does not.
-constexpr double kSpeedSpread = 0.2;
-bool speed_changes(const FitProblem& fp) {
-  std::vector<double> w = fp.omega;
-  if (w.size() < 3) return false;
-  std::sort(w.begin(), w.end());
-  // Percentiles, not extremes: a wrapped reference jumps by a turn in one sample.
-  auto at = [&](double q) { return w[static_cast<size_t>(q * static_cast<double>(w.size() - 1))]; };
-  if (at(0.05) < 0 && at(0.95) > 0) return true;
-  const double mid = std::fabs(at(0.5));
-  return at(0.95) - at(0.05) >= kSpeedSpread * mid;
-}
 
 // A fitted effect's parameters; its prediction comes from predict_effect(), the one place that
 // applies an effect, so fitting and carrying the effect to a holdout cannot disagree.
