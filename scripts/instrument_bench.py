@@ -201,7 +201,9 @@ CASES = {
     "ring_shift": (["hall4"], ["gain_mismatch", "phase_error"], "ramp",
                    "the plate ring displaced 0.3..0.6 mm in its plane"),
     "air_gap": (["hall4", "axis2"], ["amplitude"], "ramp", "the magnet 0.3..0.6 mm further away"),
-    "nonlinearity": (["hall4", "axis2"], ["harmonic"], "ramp", "front end x - a x^3, a = 3..6 %"),
+    # x - a x^3 on a unit sine is (1 - 3a/4) sin t - (a/4) sin 3t: a 3rd harmonic and a common
+    # scale, both in the vocabulary (the angle the IP computes sees the scale through its regions)
+    "nonlinearity": (["hall4", "axis2"], ["harmonic", "amplitude"], "ramp", "front end x - a x^3, a = 3..6 %"),
     "adc": (["hall4", "axis2"], ["quantization"], "ramp",
             "an ADC of 7..9 bits over a range 1.05..1.4 x the peak (not a power of two)"),
     "excess_noise": (["hall4", "axis2"], ["excess_noise"], "ramp", "3..5 x the designer's noise"),
@@ -211,8 +213,11 @@ CASES = {
                       "every channel sampled 2..6 ms late at one constant speed"),
     "skew_diff_constant": (["axis2"], ["phase_error"], "constant",
                            "the sin channel sampled 1..3 ms after the cos one at one constant speed"),
-    "runout": (["hall4"], ["zero_offset"], "constant",
-               "the magnet 0.1..0.3 mm off the shaft axis (a constant angle and a 3rd field harmonic)"),
+    # The ring sees the magnet's centre move on a circle: the field's linear part adds the same
+    # constant to every plate (no angle), its cubic part a constant angle (zero_offset), and the
+    # plates' mean distance grows with e^2: the amplitude, the larger here (e/R = 0.05..0.2).
+    "runout": (["hall4"], ["amplitude", "zero_offset"], "constant",
+               "the magnet 0.1..0.3 mm off the shaft axis, one constant speed"),
     "saturation": (["hall4", "axis2"], ["saturation"], "ramp", "the front end clips at 80..92 % of the peak"),
 }
 
@@ -332,6 +337,7 @@ def score(args):
     correct = 0
     wrong = []
     for c, j in zip(cases, results):
+        c["truth"] = CASES[c["label"].split("/")[0]][1]  # this script's physics, not a stale copy
         if "error" in j:
             top1, named, shrink = "error", [], None
         else:
@@ -339,10 +345,9 @@ def score(args):
             top1 = named[0] if j["verdict"] == "explained" and named else j["verdict"]
             hb, ha = j["holdout"]["before_deg"], j["holdout"]["after_deg"]
             shrink = 1 - ha / hb if hb > 0 else 0.0
-        ok = top1 in c["truth"]
-        # run-out: the named set must not carry a spurious signal-domain offset
-        if ok and c["label"].startswith("runout") and "offset" in named:
-            ok = False
+        # top-1 among the effects the physics gives, and nothing named beside them (e.g. a
+        # spurious offset beside a run-out's amplitude and zero offset)
+        ok = top1 in c["truth"] and all(e in c["truth"] for e in named)
         correct += ok
         if c["truth"] != ["no_gap"] and shrink is not None:
             shrinks.append(shrink)
