@@ -182,6 +182,12 @@ std::string special_case(const std::string& general) {
   return "";
 }
 
+// The special case a general effect owes its lead over to the common mode of the channels alone
+// (empty: none): amplitude for gain_mismatch.
+std::string common_mode_special(const std::string& general) {
+  return general == "gain_mismatch" ? "amplitude" : "";
+}
+
 }  // namespace
 
 std::vector<std::string> Diagnosis::named() const {
@@ -293,11 +299,12 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     }
     std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(pick),
                 d.ranking.begin() + static_cast<std::ptrdiff_t>(pick) + 1);
-    // A general effect first (gain_mismatch, channel_skew) owes its lead to what atan2 never sees
-    // when its special case (amplitude, common_delay) carries as much of the angle gap: a plate
-    // ring's common mode, e.g. the constant field a run-out adds to every plate. Name the special
-    // case then; the general one stays in the ranking, and is no ambiguity (generalizes()).
-    const std::string simple = special_case(d.ranking.front().cand.effect);
+    // gain_mismatch first owes its lead to what atan2 never sees when amplitude carries as much of
+    // the angle gap: a plate ring's common mode, e.g. the field a run-out adds to every plate
+    // alike. Name amplitude then; gain_mismatch stays in the ranking, and is no ambiguity
+    // (generalizes()). (Not channel_skew for common_delay: the skews' differences are seen by
+    // atan2, however little they add to the share.)
+    const std::string simple = common_mode_special(d.ranking.front().cand.effect);
     for (size_t k = 1; k < d.ranking.size() && !simple.empty(); ++k) {
       const RankedEffect& r = d.ranking[k];
       if (r.cand.effect == simple && r.cand.rejected.empty() && carries(r) &&
@@ -353,10 +360,10 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   for (const auto& r : d.ranking)
     if (seed && r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained > seed->explained)
       seed = &r;
-  // Its special case when that carries as much (see the ranking above).
+  // amplitude for gain_mismatch when it carries as much (see the ranking above).
   for (const auto& r : d.ranking)
-    if (seed && r.cand.effect == special_case(seed->cand.effect) && r.cand.rejected.empty() &&
-        r.cand.delta_bic < -10 && r.explained >= seed->explained - 0.01)
+    if (seed && r.cand.effect == common_mode_special(seed->cand.effect) &&
+        r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained >= seed->explained - 0.01)
       seed = &r;
   if (significant && opt.try_pairs && seed && seed->cand.rejected.empty() &&
       seed->explained < 0.9 && seed->cand.delta_bic < -10) {
