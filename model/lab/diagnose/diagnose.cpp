@@ -17,6 +17,7 @@ namespace acore {
 namespace {
 
 constexpr size_t kMinSamples = 256;
+constexpr double kSeedMin = 0.1;  // see the combination's start in diagnose()
 
 int meta_periodicity(const Recording& r) {
   const auto it = r.meta.find("p");
@@ -352,17 +353,19 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   // gap^2, or at least 2 % more and half of what is left; the set is then refitted together
   // (backfitting). A general effect in the set is replaced by its special case when the set's BIC
   // prefers it. The set is named when it reaches explained_min.
-  // The set starts from the effect that carries the most of the angle gap among those with
-  // evidence (dBIC < -10): the best by likelihood may owe it to what atan2 never sees (the common
-  // mode of a plate ring), and then makes the angle gap worse (a sensor ring off centre: its
-  // phase error fits the common mode, its gain mismatch the gap).
+  // The set starts from the best effect, or, when that carries almost nothing of the angle gap
+  // (less than kSeedMin), from the one that carries the most among those with evidence (dBIC <
+  // -10): the best by likelihood may owe it to what atan2 never sees (the common mode of a plate
+  // ring, e.g. a run-out's offset on every plate, or a ring off centre whose one-plate phase error
+  // fits the common mode and makes the angle gap worse).
   const RankedEffect* seed = top;
   for (const auto& r : d.ranking)
-    if (seed && r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained > seed->explained)
+    if (seed && top->explained < kSeedMin && r.cand.rejected.empty() && r.cand.delta_bic < -10 &&
+        r.explained > seed->explained)
       seed = &r;
-  // amplitude for gain_mismatch when it carries as much (see the ranking above).
+  // Chosen so, amplitude for gain_mismatch when it carries as much (see the ranking above).
   for (const auto& r : d.ranking)
-    if (seed && r.cand.effect == common_mode_special(seed->cand.effect) &&
+    if (seed && seed != top && r.cand.effect == common_mode_special(seed->cand.effect) &&
         r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained >= seed->explained - 0.01)
       seed = &r;
   if (significant && opt.try_pairs && seed && seed->cand.rejected.empty() &&
