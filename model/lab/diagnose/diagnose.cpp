@@ -17,6 +17,7 @@ namespace acore {
 namespace {
 
 constexpr size_t kMinSamples = 256;
+constexpr double kSeedMin = 0.1;  // see the combination's start in diagnose()
 
 int meta_periodicity(const Recording& r) {
   const auto it = r.meta.find("p");
@@ -182,6 +183,12 @@ std::string special_case(const std::string& general) {
   return "";
 }
 
+// The special case a general effect owes its lead over to the common mode of the channels alone
+// (empty: none): amplitude for gain_mismatch.
+std::string common_mode_special(const std::string& general) {
+  return general == "gain_mismatch" ? "amplitude" : "";
+}
+
 }  // namespace
 
 std::vector<std::string> Diagnosis::named() const {
@@ -293,6 +300,21 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
     }
     std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(pick),
                 d.ranking.begin() + static_cast<std::ptrdiff_t>(pick) + 1);
+    // gain_mismatch first owes its lead to what atan2 never sees when amplitude carries as much of
+    // the angle gap: a plate ring's common mode, e.g. the field a run-out adds to every plate
+    // alike. Name amplitude then; gain_mismatch stays in the ranking, and is no ambiguity
+    // (generalizes()). (Not channel_skew for common_delay: the skews' differences are seen by
+    // atan2, however little they add to the share.)
+    const std::string simple = common_mode_special(d.ranking.front().cand.effect);
+    for (size_t k = 1; k < d.ranking.size() && !simple.empty(); ++k) {
+      const RankedEffect& r = d.ranking[k];
+      if (r.cand.effect == simple && r.cand.rejected.empty() && carries(r) &&
+          r.explained >= d.ranking.front().explained - 0.01) {
+        std::rotate(d.ranking.begin(), d.ranking.begin() + static_cast<std::ptrdiff_t>(k),
+                    d.ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+        break;
+      }
+    }
   }
 
   // Is there a gap at all? mean(g^2) against the noise term, with its sampling spread.
@@ -331,8 +353,23 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
   // gap^2, or at least 2 % more and half of what is left; the set is then refitted together
   // (backfitting). A general effect in the set is replaced by its special case when the set's BIC
   // prefers it. The set is named when it reaches explained_min.
-  if (significant && opt.try_pairs && top && top->cand.rejected.empty() && top->explained < 0.9 &&
-      top->cand.delta_bic < -10) {
+  // The set starts from the best effect, or, when that carries almost nothing of the angle gap
+  // (less than kSeedMin), from the one that carries the most among those with evidence (dBIC <
+  // -10): the best by likelihood may owe it to what atan2 never sees (the common mode of a plate
+  // ring, e.g. a run-out's offset on every plate, or a ring off centre whose one-plate phase error
+  // fits the common mode and makes the angle gap worse).
+  const RankedEffect* seed = top;
+  for (const auto& r : d.ranking)
+    if (seed && top->explained < kSeedMin && r.cand.rejected.empty() && r.cand.delta_bic < -10 &&
+        r.explained > seed->explained)
+      seed = &r;
+  // Chosen so, amplitude for gain_mismatch when it carries as much (see the ranking above).
+  for (const auto& r : d.ranking)
+    if (seed && seed != top && r.cand.effect == common_mode_special(seed->cand.effect) &&
+        r.cand.rejected.empty() && r.cand.delta_bic < -10 && r.explained >= seed->explained - 0.01)
+      seed = &r;
+  if (significant && opt.try_pairs && seed && seed->cand.rejected.empty() &&
+      seed->explained < 0.9 && seed->cand.delta_bic < -10) {
     const double nsig = static_cast<double>(real.size()) * (real.channels == 4 ? 4 : 2);
     struct SetScore {
       double explained, after_deg, bic;
@@ -351,8 +388,9 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         return c.cand.effect == e || generalizes(c.cand.effect, e) || generalizes(e, c.cand.effect);
       });
     };
-    std::vector<RankedEffect> chosen = {*top};
-    SetScore cur{top->explained, top->after_deg, 0};
+    const bool one_speed = !speed_changes(fp);
+    std::vector<RankedEffect> chosen = {*seed};
+    SetScore cur{seed->explained, seed->after_deg, 0};
     while (static_cast<int>(chosen.size()) < opt.max_combined) {
       // The chosen set's prediction, once per step; each candidate is fitted and tried on top of it
       // (with the set's later field scalings on its angle change, as it will act in the set).
@@ -376,7 +414,17 @@ Diagnosis diagnose(const Recording& sim, const Recording& real, const Recording*
         const double gain = t.explained - cur.explained;
         const bool enough =
             gain >= 0.1 || (gain >= 0.02 && 1 - t.explained <= 0.5 * (1 - cur.explained));
-        if (enough && (!pick || r.explained > pick->explained)) pick = r;
+        // At one speed a delay or hysteresis is a constant angle: the zero offset explaining as
+        // much is the simpler name, whichever was tried first.
+        auto shift_like = [](const RankedEffect& x) {
+          return x.cand.effect == "common_delay" || x.cand.effect == "hysteresis";
+        };
+        bool better = !pick || r.explained > pick->explained;
+        if (pick && one_speed && r.cand.effect == "zero_offset" && shift_like(*pick))
+          better = r.explained >= pick->explained - 0.01;
+        if (pick && one_speed && pick->cand.effect == "zero_offset" && shift_like(r))
+          better = r.explained > pick->explained + 0.01;
+        if (enough && better) pick = r;
       }
       if (!pick) break;
       chosen.push_back(*pick);

@@ -95,6 +95,21 @@ double field_part(const FitProblem& fp, const Recording& pred, int c, size_t i) 
 
 const std::vector<std::string>& fittable_effects() { return effect_names(); }
 
+namespace {
+constexpr double kSpeedSpread = 0.2;  // a fifth (effect_fit.hpp, speed_changes)
+}  // namespace
+
+bool speed_changes(const FitProblem& fp) {
+  std::vector<double> w = fp.omega;
+  if (w.size() < 3) return false;
+  std::sort(w.begin(), w.end());
+  // Percentiles, not extremes: a wrapped reference jumps by a turn in one sample.
+  auto at = [&](double q) { return w[static_cast<size_t>(q * static_cast<double>(w.size() - 1))]; };
+  if (at(0.05) < 0 && at(0.95) > 0) return true;
+  const double mid = std::fabs(at(0.5));
+  return at(0.95) - at(0.05) >= kSpeedSpread * mid;
+}
+
 FitProblem make_fit_problem(const GapModel& m, const Recording& real) {
   FitProblem fp;
   fp.model = &m;
@@ -419,20 +434,64 @@ Fitted fit_drift(const FitProblem& fp, const Recording& base) {
   return f;
 }
 
-// An ADC leaves every value of every channel on a lattice origin + k * step. The step is read from
-// the data (the smallest gap between distinct values, refined over wider spans so that a fine
-// lattice is resolved to full precision), not fitted to the residual; no lattice, no quantization.
+// The resolution a file was printed with. A value x written with d decimals satisfies
+// x 10^d = integer; with s significant digits, x 10^(s - 1 - floor(log10 |x|)) = integer. The
+// file's decimals D and digits S are the most any of its values needs (printing is the same for
+// every value), and the resolution of one value is the coarser of the two: 10^-D for fixed
+// decimals, 10^(e - S + 1) for significant digits. A value printed to full precision needs 17
+// digits and leaves a resolution of the double's own rounding.
+struct PrintPrecision {
+  int decimals = 0, digits = 1;
+  double resolution(double x) const {
+    const double fixed = std::pow(10.0, -decimals);
+    if (x == 0) return fixed;
+    const double e = std::floor(std::log10(std::fabs(x)));
+    return std::max(fixed, std::pow(10.0, e - digits + 1));
+  }
+};
+
+bool integral(double v) { return std::fabs(v - std::nearbyint(v)) <= 1e-6 + 4e-16 * std::fabs(v); }
+
+PrintPrecision print_precision(const std::vector<double>& values) {
+  PrintPrecision p;
+  for (double x : values) {
+    int d = 0;
+    while (d < 17 && !integral(x * std::pow(10.0, d))) ++d;
+    p.decimals = std::max(p.decimals, d);
+    if (x == 0) continue;
+    const double e = std::floor(std::log10(std::fabs(x)));
+    int s = 1;
+    while (s < 17 && !integral(x * std::pow(10.0, s - 1 - e))) ++s;
+    p.digits = std::max(p.digits, s);
+  }
+  return p;
+}
+
+// An ADC leaves every value of every channel on a lattice origin + k * step, up to the rounding of
+// the file's printing (print_precision). The step is read from the data (the smallest gap between
+// distinct values, refined over wider spans so that a fine lattice is resolved to full
+// precision), not fitted to the residual; nothing is assumed about the units or the ADC's range.
+// The lattice is tested within each value's printing resolution: a value counts as evidence only
+// where that resolution is well below a step (the printing could not put it on the lattice by
+// chance), and a lattice that is the printing's own (the step one unit of the last decimal) is a
+// quantization too, tested exactly. No lattice, no quantization.
 Fitted fit_quantization(const FitProblem& fp) {
   const Recording& r = *fp.real;
   Fitted f;
   f.k = 1;
   std::vector<double> all;
-  double peak = 0;
   for (int c = 0; c < r.channels; ++c)
-    for (double x : r.ch[c]) all.push_back(x), peak = std::max(peak, std::fabs(x));
+    for (double x : r.ch[c]) all.push_back(x);
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
-  const double tiny = 1e-12 * std::max(peak, 1e-300);
+  const PrintPrecision prec = print_precision(all);
+  double peak = 0, rho_max = 0;
+  for (double x : all) {
+    peak = std::max(peak, std::fabs(x));
+    rho_max = std::max(rho_max, prec.resolution(x));
+  }
+  // Distinct printed values closer than the printing's resolution could be one level.
+  const double tiny = std::max(1e-12 * std::max(peak, 1e-300), 0.5 * prec.resolution(0.0));
   double step = 0;
   for (size_t i = 1; i < all.size(); ++i)
     if (all[i] - all[i - 1] > tiny && (step == 0 || all[i] - all[i - 1] < step))
@@ -441,11 +500,15 @@ Fitted fit_quantization(const FitProblem& fp) {
     f.applicable = false;  // one value only: nothing to read a step from
     return f;
   }
-  for (size_t span = 1; span < all.size(); span *= 2) {
+  for (size_t span = 1; span < 2 * all.size(); span *= 2) {
     const double d = all[std::min(all.size() - 1, span)] - all[0];
     const double m = std::round(d / step);
     if (m >= 1) step = d / m;
   }
+  // The printing's own lattice (fixed decimals, one unit of the last one): exact.
+  const double unit = std::pow(10.0, -prec.decimals);
+  const bool print_lattice = std::fabs(step / unit - 1) < 1e-3;
+  if (print_lattice) step = unit;
   // Origin: the circular mean of the values' position within a step.
   double cs = 0, sn = 0;
   for (double x : all) {
@@ -453,23 +516,49 @@ Fitted fit_quantization(const FitProblem& fp) {
     cs += std::cos(ph);
     sn += std::sin(ph);
   }
-  const double origin = step * std::atan2(sn, cs) / (2 * M_PI);
-  size_t on = 0, total = 0;
+  double origin = step * std::atan2(sn, cs) / (2 * M_PI);
+  // Step and origin refined together by least squares on the levels' indices, each value weighted
+  // by its printing resolution (1/rho^2: significant digits print large values more coarsely), so
+  // that the printing's rounding averages out instead of adding up over many levels.
+  if (!print_lattice && all.size() >= 3) {
+    double sw = 0, sk = 0, skk = 0, sx = 0, skx = 0;
+    for (double x : all) {
+      const double k = std::nearbyint((x - origin) / step), w = 1 / sq(prec.resolution(x));
+      sw += w, sk += w * k, skk += w * k * k, sx += w * x, skx += w * k * x;
+    }
+    const double det = sw * skk - sk * sk;
+    if (det > 0) {
+      step = (sw * skx - sk * sx) / det;
+      origin = (sx - step * sk) / sw;
+    }
+  }
+  size_t on = 0, informative = 0, total = 0;
+  double lo = 0, hi = 0;
   for (int c = 0; c < r.channels; ++c)
     for (double x : r.ch[c]) {
       const double u = (x - origin) / step;
-      on += std::fabs(u - std::round(u)) <= 1e-6 + 1e-12 * std::fabs(u);
+      // Half a unit of the last printed digit, with a margin for the step's own error.
+      const double tol = print_lattice
+                             ? 1e-6 + 1e-12 * std::fabs(u)
+                             : 0.75 * prec.resolution(x) / step + 1e-6 + 1e-12 * std::fabs(u);
       ++total;
+      lo = std::min(lo, x - origin);
+      hi = std::max(hi, x - origin);
+      if (tol > 0.1) continue;  // printed too coarsely to tell this lattice from none
+      ++informative;
+      on += std::fabs(u - std::round(u)) <= tol;
     }
-  if (on < 0.99 * static_cast<double>(total)) {
+  if (informative < 0.5 * static_cast<double>(total) ||
+      on < 0.99 * static_cast<double>(informative)) {
     f.applicable = false;  // the values are not on a lattice: not quantized
     return f;
   }
-  // Full scale: the smallest power of two at or above the peak (an ADC range); bits from the step.
-  const double full_scale =
-      std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(std::max(peak, 1e-300)))));
-  f.params = {{"bits", std::round(std::log2(2.0 * full_scale / step))},
-              {"full_scale", full_scale},
+  // Bits: those the levels the recording spans need about the origin (the ADC's range is not
+  // assumed a power of two in any unit); the full scale is what they cover.
+  const double span_levels = 2 * std::max(std::fabs(lo), std::fabs(hi)) / step + 1;
+  const double bits = std::max(1.0, std::ceil(std::log2(span_levels)));
+  f.params = {{"bits", bits},
+              {"full_scale", 0.5 * step * std::ldexp(1.0, static_cast<int>(bits))},
               {"step", step},
               {"origin", origin}};
   return f;
@@ -711,6 +800,10 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
     f = fit_harmonic(fp, base);
   } else if (effect == "eccentricity") {
     f = fit_eccentricity(fp, base, field_scale);
+  } else if (effect == "channel_skew" && !speed_changes(fp)) {
+    // At one speed a sampling time is an angle: common to both channels a zero offset, between
+    // them a phase error. Only speed changes tell a skew from those simpler effects.
+    f.applicable = false;
   } else if (effect == "channel_skew") {
     // Channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their common part
     // included: a multiplexer's slots count from the time stamp).

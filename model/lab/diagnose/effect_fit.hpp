@@ -78,6 +78,13 @@ EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const st
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
                          double* extra_sigma, const std::vector<double>* field_scale = nullptr);
 
+// Whether the speed changes enough over the recording for a time to differ from an angle: a
+// reversal (a twentieth of the samples each way), or a spread of the speed (5th to 95th
+// percentile) of at least a fifth of its median magnitude. A drive at one constant speed with a
+// little ripple does not: there a sampling time common to every channel is a zero offset, and one
+// between channels a phase error (channel_skew is then not applicable).
+bool speed_changes(const FitProblem& fp);
+
 // The effect names fit_effect knows: effect_names() (without "unexplained").
 const std::vector<std::string>& fittable_effects();
 
