@@ -174,8 +174,8 @@ int run_long(const std::string& name, size_t total) {
   std::printf("long co-sim of %s (%s): %s, %zu samples\n", name.c_str(), build.module.c_str(),
               cfg.describe().c_str(), total);
   const auto t0 = std::chrono::steady_clock::now();
-  const RegImage paper = paper_image(cfg);
-  const auto corners = corner_codes(cfg.in_w);
+  const RegImage paper = cosim::config_paper_image(cfg);
+  const auto corners = cosim::corner_codes(cfg.in_w);
   const size_t block = 200000, n_paper = total / 5;
   size_t bad = 0, done = 0, blocks = 0;
   std::mt19937_64 rng(std::hash<std::string>{}(name) ^ 0x10e7);
