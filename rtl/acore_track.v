@@ -49,7 +49,8 @@ module acore_track #(
   parameter integer FRAC_W = 25,
   // Turn counter width (signed).
   parameter integer TURN_W = 16,
-  // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock).
+  // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock; a top
+  // taking CYCLES clocks a sample: acore_comp_latency(LATENCY, CYCLES) of rtl/acore_derived.vh).
   parameter integer COMP_LATENCY = 0,
   // LEAD register width and its fraction bits.
   parameter integer LEAD_W = 8,
