@@ -72,9 +72,13 @@ module acore_apb #(
   parameter integer CRC_W = (SERIAL != 0) ? 8 : 16,
   // APB byte address width (>= 11: registers below 0x100, the shadow window at 0x400).
   parameter integer APB_AW = 12,
-  // 1: the drive interfaces' configuration registers (ABZ_N .. UVW_OFFSET) and their outputs
+  // 1: the drive interfaces' configuration registers (ABZ_N .. TRK_POSITION) and their outputs
   // (rtl/acore_board.v); 0: those addresses are outside the map and the outputs hold their resets.
   parameter integer IFACE = 0,
+  // The tracking observer's bandwidth codes (TRK_BW accepts TRK_BW_MIN..TRK_BW_MAX; the board
+  // hands rtl/acore_track.v's own range, rtl/acore_derived.vh).
+  parameter integer TRK_BW_MIN = 2,
+  parameter integer TRK_BW_MAX = 12,
   // Reset values of the LOS/DOS window (MAG_W bits): the default never flags.
   parameter integer MAG_LO_RESET = 0,
   parameter integer MAG_HI_RESET = -1,
@@ -84,7 +88,8 @@ module acore_apb #(
   parameter integer TERMS = acore_terms(CORRECTION, DEGREE),
   parameter integer WORDS = acore_words(TERMS, REGIONS, K, FOURIER_K, ZERO),
   parameter integer ADDR_W = $clog2(WORDS),
-  parameter integer MAG_W = acore_mag_w(S_W)
+  parameter integer MAG_W = acore_mag_w(S_W),
+  parameter integer TRK_LOT_W = ANGLE_W - 1
 ) (
   input  wire               clk_i,
   // Synchronous, active high: the shell's control state and the top's (in_ready_o is low).
@@ -122,7 +127,13 @@ module acore_apb #(
   output wire [13:0]        abz_index_o,
   output wire [15:0]        abz_spacing_o,
   output wire [4:0]         uvw_pp_o,
-  output wire [ANGLE_W-1:0] uvw_offset_o
+  output wire [ANGLE_W-1:0] uvw_offset_o,
+  // The tracking observer's registers (IFACE = 1; rtl/acore_track.v) and what it reads back.
+  output wire [3:0]         trk_bw_o,
+  output wire [7:0]         trk_lead_o,
+  output wire [TRK_LOT_W-1:0] trk_lot_o,
+  input  wire [31:0]        trk_velocity_i,
+  input  wire [31:0]        trk_position_i
 );
 
 `include "acore_derived.vh"
@@ -177,6 +188,9 @@ module acore_apb #(
     APB_AW_must_be_11_to_32 ();
   acore_check #(.OK(IFACE == 0 || IFACE == 1), .VALUE(IFACE),
     .MSG("illegal parameter: IFACE must be 0 or 1")) IFACE_must_be_0_or_1 ();
+  acore_check #(.OK(TRK_BW_MIN >= 0 && TRK_BW_MIN <= TRK_BW_MAX && TRK_BW_MAX <= 15),
+    .VALUE(TRK_BW_MAX), .MSG("illegal parameter: TRK_BW_MIN..TRK_BW_MAX must lie in 0..15"))
+    TRK_BW_range_must_lie_in_0_to_15 ();
   acore_check #(.OK(CRC_W == 1 || CRC_W == 2 || CRC_W == 4 || CRC_W == 8 || CRC_W == 16 || CRC_W == 32),
     .VALUE(CRC_W), .MSG("illegal parameter: CRC_W must be 1, 2, 4, 8, 16 or 32"))
     CRC_W_must_divide_32 ();
@@ -263,9 +277,14 @@ module acore_apb #(
   localparam integer UVW_PP_MAX = 1 << (UVW_PP_POLE_PAIRS_W - 1);
   wire [ABZ_N_N_W-1:0] wr_n = pwdata_i[ABZ_N_N +: ABZ_N_N_W];
   wire [UVW_PP_POLE_PAIRS_W-1:0] wr_pp = pwdata_i[UVW_PP_POLE_PAIRS +: UVW_PP_POLE_PAIRS_W];
+  // The tracker's bandwidth code: TRK_BW_MIN..TRK_BW_MAX (the upper bits of the word must be 0 too:
+  // a code of 16 or more is not read as its low bits).
+  localparam [31:0] TRK_BW_LO = TRK_BW_MIN;
+  localparam [31:0] TRK_BW_HI = TRK_BW_MAX;
   wire range_err = (IFACE != 0) & in_regs & pwrite_i &
       (((ridx == R_ABZ_N) & ((wr_n == 0) | ({19'd0, wr_n} > ABZ_N_MAX))) |
-       ((ridx == R_UVW_PP) & ((wr_pp == 0) | ({27'd0, wr_pp} > UVW_PP_MAX))));
+       ((ridx == R_UVW_PP) & ((wr_pp == 0) | ({27'd0, wr_pp} > UVW_PP_MAX))) |
+       ((ridx == R_TRK_BW) & ((pwdata_i < TRK_BW_LO) | (pwdata_i > TRK_BW_HI))));
   wire err_d = (paddr_i[1:0] != 2'b00) | (pwrite_i & (pstrb_i != 4'hF)) | ~(reg_ok | in_win) | busy_err |
                range_err;
 
@@ -316,6 +335,12 @@ module acore_apb #(
       R_ABZ_SPACING: rd_d[ABZ_SPACING_SPACING +: ABZ_SPACING_SPACING_W] = abz_spacing_q;
       R_UVW_PP: rd_d[UVW_PP_POLE_PAIRS +: UVW_PP_POLE_PAIRS_W] = uvw_pp_q;
       R_UVW_OFFSET: rd_d[UVW_OFFSET_OFFSET +: UVW_OFFSET_OFFSET_W] = uvw_offset_q;
+      R_TRK_BW: rd_d[TRK_BW_BW +: TRK_BW_BW_W] = trk_bw_q;
+      R_TRK_LEAD: rd_d[TRK_LEAD_LEAD +: TRK_LEAD_LEAD_W] = trk_lead_q;
+      R_TRK_LOT: rd_d[TRK_LOT_THRESHOLD +: TRK_LOT_THRESHOLD_W] = trk_lot_q;
+      R_TRK_VELOCITY: rd_d[TRK_VELOCITY_VELOCITY +: TRK_VELOCITY_VELOCITY_W] =
+          (IFACE != 0) ? trk_velocity_i : 32'd0;
+      R_TRK_POSITION: rd_d = (IFACE != 0) ? trk_position_i : 32'd0;
       default: rd_d = 32'd0;
     endcase
   end
@@ -330,6 +355,7 @@ module acore_apb #(
   wire ok_reg_wr = ok_wr & in_regs;
   reg err_q, win_q, w_ctrl_q, w_status_q, w_mag_lo_q, w_mag_hi_q, w_crc_q, w_win_q;
   reg w_abz_n_q, w_abz_index_q, w_abz_spacing_q, w_uvw_pp_q, w_uvw_offset_q;
+  reg w_trk_bw_q, w_trk_lead_q, w_trk_lot_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
     if (setup) begin
@@ -347,6 +373,9 @@ module acore_apb #(
       w_abz_spacing_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_ABZ_SPACING);
       w_uvw_pp_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_UVW_PP) & ~range_err;
       w_uvw_offset_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_UVW_OFFSET);
+      w_trk_bw_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_TRK_BW) & ~range_err;
+      w_trk_lead_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_TRK_LEAD);
+      w_trk_lot_q <= (IFACE != 0) & ok_reg_wr & (ridx == R_TRK_LOT);
     end
   end
   wire [REG_W-1:0] sh_rdata;
@@ -366,6 +395,9 @@ module acore_apb #(
   reg [ABZ_SPACING_SPACING_W-1:0] abz_spacing_q;
   reg [UVW_PP_POLE_PAIRS_W-1:0] uvw_pp_q;
   reg [UVW_OFFSET_OFFSET_W-1:0] uvw_offset_q;
+  reg [TRK_BW_BW_W-1:0] trk_bw_q;
+  reg [TRK_LEAD_LEAD_W-1:0] trk_lead_q;
+  reg [TRK_LOT_THRESHOLD_W-1:0] trk_lot_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       abz_n_q <= ABZ_N_RESET[ABZ_N_N +: ABZ_N_N_W];
@@ -373,12 +405,18 @@ module acore_apb #(
       abz_spacing_q <= ABZ_SPACING_RESET[ABZ_SPACING_SPACING +: ABZ_SPACING_SPACING_W];
       uvw_pp_q <= UVW_PP_RESET[UVW_PP_POLE_PAIRS +: UVW_PP_POLE_PAIRS_W];
       uvw_offset_q <= {UVW_OFFSET_OFFSET_W{1'b0}};
+      trk_bw_q <= TRK_BW_RESET[TRK_BW_BW +: TRK_BW_BW_W];
+      trk_lead_q <= TRK_LEAD_RESET[TRK_LEAD_LEAD +: TRK_LEAD_LEAD_W];
+      trk_lot_q <= TRK_LOT_RESET[TRK_LOT_THRESHOLD +: TRK_LOT_THRESHOLD_W];
     end else if (access) begin
       if (w_abz_n_q) abz_n_q <= wr_n;
       if (w_abz_index_q) abz_index_q <= pwdata_i[ABZ_INDEX_POS +: ABZ_INDEX_POS_W];
       if (w_abz_spacing_q) abz_spacing_q <= pwdata_i[ABZ_SPACING_SPACING +: ABZ_SPACING_SPACING_W];
       if (w_uvw_pp_q) uvw_pp_q <= wr_pp;
       if (w_uvw_offset_q) uvw_offset_q <= pwdata_i[UVW_OFFSET_OFFSET +: UVW_OFFSET_OFFSET_W];
+      if (w_trk_bw_q) trk_bw_q <= pwdata_i[TRK_BW_BW +: TRK_BW_BW_W];
+      if (w_trk_lead_q) trk_lead_q <= pwdata_i[TRK_LEAD_LEAD +: TRK_LEAD_LEAD_W];
+      if (w_trk_lot_q) trk_lot_q <= pwdata_i[TRK_LOT_THRESHOLD +: TRK_LOT_THRESHOLD_W];
     end
   end
   assign abz_n_o = abz_n_q;
@@ -386,6 +424,9 @@ module acore_apb #(
   assign abz_spacing_o = abz_spacing_q;
   assign uvw_pp_o = uvw_pp_q;
   assign uvw_offset_o = uvw_offset_q;
+  assign trk_bw_o = trk_bw_q;
+  assign trk_lead_o = trk_lead_q;
+  assign trk_lot_o = trk_lot_q;
 
   localparam [MAG_W-1:0] MAG_LO_R = MAG_LO_RESET[MAG_W-1:0];
   localparam [MAG_W-1:0] MAG_HI_R = MAG_HI_RESET[MAG_W-1:0];

@@ -26,11 +26,17 @@ localparam [5:0] R_ABZ_INDEX = 6'h19;
 localparam [5:0] R_ABZ_SPACING = 6'h1A;
 localparam [5:0] R_UVW_PP = 6'h1B;
 localparam [5:0] R_UVW_OFFSET = 6'h1C;
+localparam [5:0] R_TRK_BW = 6'h1D;
+localparam [5:0] R_TRK_LEAD = 6'h1E;
+localparam [5:0] R_TRK_LOT = 6'h1F;
+localparam [5:0] R_TRK_VELOCITY = 6'h20;
+localparam [5:0] R_TRK_POSITION = 6'h21;
 // The registers the decode answers, one bit per word index: read only, and writable.
 // (The registers of a 'when PARAM' group only when that parameter is nonzero.)
-localparam [63:0] REGS_RO = 64'h00000000001E041F;
+localparam [63:0] REGS_RO = 64'h00000000001E041F |
+    ((IFACE) != 0 ? 64'h0000000300000000 : 64'h0);
 localparam [63:0] REGS_WR = 64'h0000000000013300 |
-    ((IFACE) != 0 ? 64'h000000001F000000 : 64'h0);
+    ((IFACE) != 0 ? 64'h00000000FF000000 : 64'h0);
 // COEF: 256 words from byte 0x400 (word index 256).
 localparam integer COEF_BASE = 1024;
 localparam integer COEF_WORDS = 256;
@@ -82,6 +88,12 @@ localparam integer ABZ_INDEX_POS = 0, ABZ_INDEX_POS_W = 14;
 localparam integer ABZ_SPACING_SPACING = 0, ABZ_SPACING_SPACING_W = 16;
 localparam integer UVW_PP_POLE_PAIRS = 0, UVW_PP_POLE_PAIRS_W = 5;
 localparam integer UVW_OFFSET_OFFSET = 0, UVW_OFFSET_OFFSET_W = ANGLE_W;
+localparam integer TRK_BW_BW = 0, TRK_BW_BW_W = 4;
+localparam integer TRK_LEAD_LEAD = 0, TRK_LEAD_LEAD_W = 8;
+localparam integer TRK_LOT_THRESHOLD = 0, TRK_LOT_THRESHOLD_W = TRK_LOT_W;
+localparam integer TRK_VELOCITY_VELOCITY = 0, TRK_VELOCITY_VELOCITY_W = 32;
+localparam integer TRK_POSITION_TURNS = 16, TRK_POSITION_TURNS_W = 16;
+localparam integer TRK_POSITION_ANGLE = 0, TRK_POSITION_ANGLE_W = 16;
 localparam integer COEF_WORD = 0, COEF_WORD_W = REG_W;
 // Reset values of the writable registers (fields with a constant reset).
 localparam [31:0] CTRL_RESET = 32'h00000008;
@@ -91,6 +103,9 @@ localparam [31:0] ABZ_INDEX_RESET = 32'h00000000;
 localparam [31:0] ABZ_SPACING_RESET = 32'h00000001;
 localparam [31:0] UVW_PP_RESET = 32'h00000001;
 localparam [31:0] UVW_OFFSET_RESET = 32'h00000000;
+localparam [31:0] TRK_BW_RESET = 32'h00000006;
+localparam [31:0] TRK_LEAD_RESET = 32'h00000000;
+localparam [31:0] TRK_LOT_RESET = 32'h00001000;
 // The registers of constants (the CONFIG registers read the build's parameters).
 localparam [31:0] ID_VALUE =
     (32'h4143 << ID_MAGIC) |

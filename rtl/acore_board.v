@@ -1,22 +1,34 @@
 // SPDX-License-Identifier: MIT
 // acore_board: what a motor-drive board uses. The estimator in its APB register shell
 // (rtl/acore_apb.v with IFACE = 1: the datapath, folded or serial, its coefficient bank, and the
-// interfaces' configuration registers) feeding the drive interfaces on its angle stream:
+// interfaces' and the observer's registers) feeding the tracking observer, whose compensated angle
+// drives the interfaces:
 //
-//   c1..c4 --> acore_apb (estimator) --angle--+--> acore_abz        A, B, Z
-//                 ^ APB (config, status)      +--> acore_uvw        U, V, W
-//                                             +--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
+//   c1..c4 --> acore_apb --angle--> acore_track --compensated angle--+--> acore_abz   A, B, Z
+//                 ^ APB    |            |  velocity, turns, angle     +--> acore_uvw   U, V, W
+//                 |        |            +--> TRK_VELOCITY, TRK_POSITION (APB)
+//                 |        +--angle (ANGLEUNC)--+--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
+//                 |        compensated (ANGLECOM), loss of tracking --+
 //
-// The output stream is always taken (out_ready high): the interfaces accept every sample, and the
-// angle is also on pins (angle_o, out_valid_o) for a logic analyser or a second consumer.
+// The observer (rtl/acore_track.v) takes every sample of the estimator (its in_ready is the
+// estimator's out_ready; it is high whenever the estimator can deliver, so the estimator never
+// stalls) and its outputs are always taken. The estimator's angle is also on pins (angle_o,
+// out_valid_o) for a logic analyser or a second consumer, the observer's on trk_*_o.
 //
-// THE TRACKER'S PLACE. The tracking observer with latency compensation (rtl/acore_track.v) is not
-// part of this top yet. Until it is wired in, the signals of the block marked "tracker" below stand
-// for it: the compensated angle is the estimator's angle (the SPI's ANGLECOM reads the same as
-// ANGLEUNC), and loss of tracking is 0 (DIAAGC.LF reads 1). The block's four wires are the ports
-// the tracker takes and gives: trk_valid/trk_angle (compensated angle stream, ANGLE_W bits),
-// trk_lot (loss of tracking); ABZ and UVW then take the compensated angle. The estimator has no
-// magnitude output, so MAG and DIAAGC's AGC read 0.
+// WHICH ANGLE FEEDS THE DRIVE. ABZ and UVW take the compensated angle: the tracked angle
+// extrapolated by its velocity over the estimator's latency (COMP_LATENCY whole samples) plus the
+// LEAD register, the angle at the output instant rather than at the sample instant. A drive
+// commutates and counts on the angle now, and the uncompensated angle lags it by LATENCY clocks
+// (at 60 krpm one sample of the serial core at 50 MHz, 221 kS/s, is 1.6 degrees of mechanical
+// angle, times the pole pairs electrically); the AS5047P feeds its ABI and UVW from the DAEC-compensated angle for the
+// same reason. The compensated angle is the observer's filtered angle, so ABZ also sees less noise
+// than the raw estimate (its one-LSB hysteresis handles the rest).
+//
+// SPI (AS5047P registers): ANGLECOM = the compensated angle, ANGLEUNC = the estimator's angle,
+// DIAAGC.LF = not loss of tracking (the AS5047P's LF: 1 when the angle is valid, its loop
+// settled; here 0 while the observer's error of the last sample exceeds TRK_LOT), MAGL/MAGH/COF =
+// the estimator's los/dos/ovf. The estimator has no magnitude output, so MAG and DIAAGC's AGC
+// read 0.
 `resetall
 `default_nettype none
 
@@ -35,7 +47,10 @@ module acore_board #(
   parameter integer IN_W = 16,
   parameter integer REG_W = 18,
   parameter integer S_W = 18,
-  parameter integer RG_W = $clog2(REGIONS)
+  parameter integer RG_W = $clog2(REGIONS),
+  // The observer's fraction bits below the angle (rtl/acore_track.v's FRAC_W): its velocity word
+  // has ANGLE_W + TRK_FRAC_W bits, of which TRK_VELOCITY reads the upper 32.
+  parameter integer TRK_FRAC_W = 25
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -62,6 +77,14 @@ module acore_board #(
   output wire [ANGLE_W-1:0] angle_o,
   output wire               los_o,
   output wire               dos_o,
+  // The observer's stream, observed (rtl/acore_track.v's outputs: tracked and compensated angle,
+  // velocity in 2^-(ANGLE_W+TRK_FRAC_W) turns a sample, signed turn count, loss of tracking).
+  output wire               trk_valid_o,
+  output wire [ANGLE_W-1:0] trk_angle_o,
+  output wire [ANGLE_W-1:0] trk_angle_comp_o,
+  output wire [ANGLE_W+TRK_FRAC_W-1:0] trk_velocity_o,
+  output wire [15:0]        trk_turns_o,
+  output wire               trk_lot_o,
   // ABZ, UVW, SPI.
   output wire               a_o,
   output wire               b_o,
@@ -85,6 +108,24 @@ module acore_board #(
   localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO) :
       acore_top_cycles(FOLD);
 
+  // The observer: a 16-bit turn count (TRK_POSITION's upper half), LEAD of 8 bits with 4 fraction
+  // bits (TRK_LEAD's field); the loop over two clocks when the estimator delivers a sample every
+  // CYCLES >= 2 clocks (a shorter clock period, nothing lost), and the estimator's LATENCY in whole
+  // samples compensated.
+  localparam integer TRK_TURN_W = 16;
+  localparam integer TRK_LEAD_W = 8;
+  localparam integer TRK_LEAD_F = 4;
+  localparam integer TRK_LOOP_CLOCKS = (CYCLES >= 2) ? 2 : 1;
+  localparam integer COMP_LATENCY = acore_comp_latency(LATENCY, CYCLES);
+  localparam integer TRK_P_W = ANGLE_W + TRK_FRAC_W;
+
+  acore_check #(.OK(ANGLE_W >= 16), .VALUE(ANGLE_W),
+    .MSG("illegal parameter: ANGLE_W must be >= 16 (TRK_POSITION reads its upper 16 bits)"))
+    ANGLE_W_must_be_at_least_16 ();
+  acore_check #(.OK(ANGLE_W + TRK_FRAC_W >= 32), .VALUE(ANGLE_W + TRK_FRAC_W),
+    .MSG("illegal parameter: ANGLE_W+TRK_FRAC_W must be >= 32 (TRK_VELOCITY reads 32 bits)"))
+    ANGLE_W_plus_TRK_FRAC_W_must_be_at_least_32 ();
+
   // ---- the estimator and its register shell ----
   wire est_valid, est_ovf, est_los, est_dos, est_tag;
   wire [ANGLE_W-1:0] est_angle;
@@ -94,19 +135,26 @@ module acore_board #(
   wire [15:0] abz_spacing;
   wire [4:0] uvw_pp;
   wire [ANGLE_W-1:0] uvw_offset;
+  wire [3:0] trk_bw;
+  wire [TRK_LEAD_W-1:0] trk_lead;
+  wire [ANGLE_W-2:0] trk_lot_thr;
+  wire [31:0] trk_velocity_reg, trk_position_reg;
+  wire trk_ready;
   acore_apb #(
     .SERIAL(SERIAL), .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .FOLD(FOLD),
     .ZERO(ZERO), .INIT_FILE(INIT_FILE), .ANGLE_W(ANGLE_W), .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W),
-    .IFACE(1)
+    .IFACE(1), .TRK_BW_MIN(acore_track_k_min()), .TRK_BW_MAX(acore_track_k_max(TRK_FRAC_W))
   ) u_shell (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i), .penable_i(penable_i), .pwrite_i(pwrite_i),
     .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i), .prdata_o(prdata_o),
     .pready_o(pready_o), .pslverr_o(pslverr_o), .irq_o(irq_o), .in_valid_i(in_valid_i),
     .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
-    .out_valid_o(est_valid), .out_ready_i(1'b1), .angle_o(est_angle), .region_o(est_region),
+    .out_valid_o(est_valid), .out_ready_i(trk_ready), .angle_o(est_angle), .region_o(est_region),
     .ovf_o(est_ovf), .los_o(est_los), .dos_o(est_dos), .out_tag_o(est_tag),
     .abz_n_o(abz_n), .abz_index_o(abz_index), .abz_spacing_o(abz_spacing), .uvw_pp_o(uvw_pp),
-    .uvw_offset_o(uvw_offset));
+    .uvw_offset_o(uvw_offset), .trk_bw_o(trk_bw), .trk_lead_o(trk_lead), .trk_lot_o(trk_lot_thr),
+    .trk_velocity_i(trk_velocity_reg), .trk_position_i(trk_position_reg));
+  wire est_take = est_valid & trk_ready;
   assign out_valid_o = est_valid;
   assign angle_o = est_angle;
   assign los_o = est_los;
@@ -119,7 +167,7 @@ module acore_board #(
       los_q <= 1'b0;
       dos_q <= 1'b0;
       ovf_q <= 1'b0;
-    end else if (est_valid) begin
+    end else if (est_take) begin
       los_q <= est_los;
       dos_q <= est_dos;
       ovf_q <= est_ovf;
@@ -127,16 +175,39 @@ module acore_board #(
   end
   // The uncompensated angle last delivered (ANGLEUNC).
   reg [ANGLE_W-1:0] unc_q;
-  always @(posedge clk_i) if (est_valid) unc_q <= est_angle;
+  always @(posedge clk_i) if (est_take) unc_q <= est_angle;
 
-  // ==== tracker (rtl/acore_track.v goes here) =====================================================
-  // Until the tracker is wired: the compensated stream is the estimator's, no loss of tracking.
-  wire trk_valid = est_valid;
-  wire [ANGLE_W-1:0] trk_angle = est_angle;
-  wire trk_lot = 1'b0;
+  // ---- the tracking observer ----
+  wire trk_valid, trk_lot;
+  wire [ANGLE_W-1:0] trk_tracked, trk_angle;  // tracked; compensated (the drive's angle)
+  wire [TRK_P_W-1:0] trk_velocity;
+  wire [TRK_TURN_W-1:0] trk_turns;
+  acore_track #(
+    .ANGLE_W(ANGLE_W), .FRAC_W(TRK_FRAC_W), .TURN_W(TRK_TURN_W), .COMP_LATENCY(COMP_LATENCY),
+    .LEAD_W(TRK_LEAD_W), .LEAD_F(TRK_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS)
+  ) u_track (
+    .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(est_valid), .in_ready_o(trk_ready),
+    .in_angle_i(est_angle), .bw_i(trk_bw), .lead_i(trk_lead), .lot_thr_i(trk_lot_thr),
+    .out_valid_o(trk_valid), .out_ready_i(1'b1), .out_angle_o(trk_tracked),
+    .out_angle_comp_o(trk_angle), .out_velocity_o(trk_velocity), .out_turns_o(trk_turns),
+    .out_lot_o(trk_lot));
+  // The observer's outputs hold between its samples: the APB reads them as they are.
+  assign trk_velocity_reg = trk_velocity[TRK_P_W-1 -: 32];
+  assign trk_position_reg = {trk_turns, trk_tracked[ANGLE_W-1 -: 16]};
+  assign trk_valid_o = trk_valid;
+  assign trk_angle_o = trk_tracked;
+  assign trk_angle_comp_o = trk_angle;
+  assign trk_velocity_o = trk_velocity;
+  assign trk_turns_o = trk_turns;
+  assign trk_lot_o = trk_lot;
+  // The compensated angle and the loss of tracking last delivered (ANGLECOM, DIAAGC.LF).
   reg [ANGLE_W-1:0] com_q;
+  reg lot_q;
+  always @(posedge clk_i) begin
+    if (rst_i) lot_q <= 1'b0;
+    else if (trk_valid) lot_q <= trk_lot;
+  end
   always @(posedge clk_i) if (trk_valid) com_q <= trk_angle;
-  // ================================================================================================
 
   // ---- the interfaces ----
   wire [13:0] abz_count;
@@ -155,7 +226,7 @@ module acore_board #(
   acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2)) u_spi (
     .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
     .miso_oe_o(miso_oe_o), .angle_unc_i(unc_q), .angle_com_i(com_q), .mag_i(14'd0), .agc_i(8'd0),
-    .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(trk_lot), .frame_o(spi_frame),
+    .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(lot_q), .frame_o(spi_frame),
     .errfl_o(spi_errfl));
 
 endmodule

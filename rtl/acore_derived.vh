@@ -328,3 +328,24 @@ endfunction
 function integer acore_serial_capacity();
   acore_serial_capacity = 2;
 endfunction
+
+// ---- the tracking observer (rtl/acore_track.v) ----
+
+// Its bandwidth codes: gains 2^-k and 2^-(2k+1) of an error with FRAC_W fraction bits; the
+// integral gain's shift 2k + 1 stays below FRAC_W, so the slowest code still moves the velocity.
+function integer acore_track_k_min();
+  acore_track_k_min = 2;
+endfunction
+function integer acore_track_k_max(input integer f_frac_w);
+  acore_track_k_max = (f_frac_w - 1) / 2;
+endfunction
+// Clocks from a sample taken to its result (the loop, the v * D partial sums, the output register).
+function integer acore_track_latency(input integer f_loop_clocks);
+  acore_track_latency = 2 + f_loop_clocks;
+endfunction
+// The latency the observer compensates (COMP_LATENCY), in whole samples: a top's LATENCY in clocks
+// over its clocks per sample at full rate, rounded down (the rest of a sample, and the observer's
+// own clocks, are the LEAD register's: LEAD is unsigned, so the whole part must not overshoot).
+function integer acore_comp_latency(input integer f_latency, input integer f_cycles);
+  acore_comp_latency = f_latency / f_cycles;
+endfunction

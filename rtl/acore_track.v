@@ -49,7 +49,8 @@ module acore_track #(
   parameter integer FRAC_W = 25,
   // Turn counter width (signed).
   parameter integer TURN_W = 16,
-  // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock).
+  // The latency compensated in whole samples (the estimator's LATENCY at one sample a clock; a top
+  // taking CYCLES clocks a sample: acore_comp_latency(LATENCY, CYCLES) of rtl/acore_derived.vh).
   parameter integer COMP_LATENCY = 0,
   // LEAD register width and its fraction bits.
   parameter integer LEAD_W = 8,
@@ -78,14 +79,16 @@ module acore_track #(
   output reg                       out_lot_o
 );
 
+`include "acore_derived.vh"
+
   // The block's own pipeline, as the other modules state it: LATENCY clocks from a sample taken to
   // its result on the output (no stall), CYCLES clocks a sample at full rate.
-  localparam integer LATENCY = 2 + LOOP_CLOCKS;
+  localparam integer LATENCY = acore_track_latency(LOOP_CLOCKS);
   localparam integer CYCLES = LOOP_CLOCKS;
   localparam integer P_W = ANGLE_W + FRAC_W;
   localparam integer X_W = TURN_W + P_W;
-  localparam integer K_MIN = 2;
-  localparam integer K_MAX = (FRAC_W - 1) / 2;
+  localparam integer K_MIN = acore_track_k_min();
+  localparam integer K_MAX = acore_track_k_max(FRAC_W);
   // D = COMP_LATENCY + lead / 2^LEAD_F in LEAD_F fraction bits: D_W bits hold its largest value.
   localparam integer D_W = LEAD_W + 10;
   localparam integer M_W = P_W + LEAD_F;

@@ -228,6 +228,51 @@ constexpr uint32_t kUvwOffset = 0x070;
 // is 0: sector 0 starts there.
 constexpr int kUvwOffsetOffsetShift = 0;
 
+// TRK_BW (RW, when IFACE != 0): Tracking observer: the loop bandwidth.
+constexpr uint32_t kTrkBw = 0x074;
+// BW [3:0] (RW): The bandwidth code k, TRK_BW_MIN..TRK_BW_MAX (2..12 on the board): gains 2^-k and
+// 2^-(2k+1), natural frequency 2^-(k+1/2) rad a sample, damping 1/sqrt(2); a write of another
+// value is an error.
+constexpr int kTrkBwBwShift = 0;
+constexpr uint32_t kTrkBwBwMask = 0xFu;
+constexpr uint32_t kTrkBwReset = 0x6u;
+// The bits that read back.
+constexpr uint32_t kTrkBwReadMask = 0xFu;
+
+// TRK_LEAD (RW, when IFACE != 0): Tracking observer: the lead added to the compensated latency.
+constexpr uint32_t kTrkLead = 0x078;
+// LEAD [7:0] (RW): LEAD in samples, 4 fraction bits (0..15.9375): ANGLECOM, ABZ and UVW take the
+// angle extrapolated over the estimator's latency in whole samples plus LEAD.
+constexpr int kTrkLeadLeadShift = 0;
+constexpr uint32_t kTrkLeadLeadMask = 0xFFu;
+constexpr uint32_t kTrkLeadReset = 0x0u;
+// The bits that read back.
+constexpr uint32_t kTrkLeadReadMask = 0xFFu;
+
+// TRK_LOT (RW, when IFACE != 0): Tracking observer: the loss-of-tracking threshold.
+constexpr uint32_t kTrkLot = 0x07C;
+// THRESHOLD [TRK_LOT_W-1:0] (RW): Loss of tracking when |angle - prediction| of a sample exceeds
+// this many angle LSBs (TRK_LOT_W = ANGLE_W - 1 bits; 4096: 1/16 turn at ANGLE_W = 16); DIAAGC.LF
+// of the SPI port reads 0 then.
+constexpr int kTrkLotThresholdShift = 0;
+
+// TRK_VELOCITY (RO, when IFACE != 0): Tracking observer: the velocity.
+constexpr uint32_t kTrkVelocity = 0x080;
+// VELOCITY [31:0] (RO): The tracked velocity, signed, the observer's velocity word's upper 32
+// bits: 2^-32 turns a sample (the board's 41-bit word).
+constexpr int kTrkVelocityVelocityShift = 0;
+constexpr uint32_t kTrkVelocityVelocityMask = 0xFFFFFFFFu;
+
+// TRK_POSITION (RO, when IFACE != 0): Tracking observer: the multi-turn position.
+constexpr uint32_t kTrkPosition = 0x084;
+// TURNS [31:16] (RO): The signed turn count of the tracked angle (wraps at 16 bits).
+constexpr int kTrkPositionTurnsShift = 16;
+constexpr uint32_t kTrkPositionTurnsMask = 0xFFFF0000u;
+// ANGLE [15:0] (RO): The tracked angle (ANGLE_W = 16 bits: one turn = 2^16), read with its turn
+// count in one transfer.
+constexpr int kTrkPositionAngleShift = 0;
+constexpr uint32_t kTrkPositionAngleMask = 0xFFFFu;
+
 // COEF (256 words, word a at 0x400 + 4a): The shadow coefficient words: word a (a < WORDS) of the
 // register image at 0x400 + 4a.
 constexpr uint32_t kCoef = 0x400;
