@@ -149,7 +149,7 @@ void run_estimate(const EstimateArgs& a) {
   if (a.track_bandwidth != 0 && !(fs > 0))
     throw InputError(a.in + ": --track-bandwidth needs the recording's t column (increasing)");
   const Tracked tr = track_series(s.angle, fs, p, img.cfg.angle_w, a);
-  nlohmann::json extra;  // the fields beyond estimate_json's
+  nlohmann::json extra = nlohmann::json::object();  // the fields beyond estimate_json's
   if (fs > 0) {
     const double bw = track_bandwidth_hz(tr.code, fs);
     std::cout << fmt::format(
@@ -167,7 +167,6 @@ void run_estimate(const EstimateArgs& a) {
     const auto eu = angle_error_deg(s.uncorrected, rec.theta_ref, p);
     st = error_stats(err);
     su = error_stats(about_mean ? about_mean_deg(eu) : eu);
-    extra["about_mean"] = about_mean;
     if (about_mean)
       std::cout << "the image's zero is unknown (zero_reference=none, a self-calibration): "
                    "errors are about their mean\n";

@@ -286,6 +286,11 @@ def estimate(image: RegisterImage, recording: Recording, engine: str = "fixed",
             err = _core.angle_error_deg(angle, theta, p)
     if unc is not None and theta is not None:
         unc_err = _core.angle_error_deg(unc, theta, p)
+    # A self-calibrated image does not know the reference's zero: errors about their mean, as
+    # the command reports them.
+    if _core.zero_reference_unknown(image._img):
+        err = None if err is None else _core.about_mean_deg(err)
+        unc_err = None if unc_err is None else _core.about_mean_deg(unc_err)
     report = _core.estimate_report(image._img, engine, len(recording), err, unc_err,
                                    int(np.count_nonzero(flags)))
     return Estimate(angle, region, flags, err, unc, unc_err, report)

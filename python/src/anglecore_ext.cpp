@@ -423,6 +423,13 @@ NB_MODULE(_core, m) {
         return to_numpy(angle_error_deg(e, r, p));
       },
       "est"_a.noconvert(), "ref"_a.noconvert(), "periodicity"_a);
+  m.def(
+      "about_mean_deg",
+      [](InArray err) {
+        return to_numpy(about_mean_deg(std::vector<double>(err.data(), err.data() + err.shape(0))));
+      },
+      "err"_a.noconvert());
+  m.def("zero_reference_unknown", [](const RegImage& img) { return img.zero_reference_unknown(); });
   m.def("harmonics", &harmonics_py, "spec"_a, "grid"_a = 0);
   m.def("diagnose", &diagnose_py, "sim"_a, "real"_a, "holdout"_a.none(), "order"_a = 0);
 }

@@ -133,7 +133,11 @@ nlohmann::json estimate_json(Engine engine, size_t samples, int fold, const RegI
                       {"deg", zero_offset * 180 / M_PI},
                       {"code", angle_code(zero_offset, img.cfg.angle_w)},
                       {"applied_by", zero_word ? "zero_word" : "software"}};
-  if (error) j["error_deg"] = stats_json(*error);
+  if (error) {
+    j["error_deg"] = stats_json(*error);
+    // A self-calibrated image (zero_reference=none) is judged about the errors' mean.
+    j["about_mean"] = img.zero_reference_unknown();
+  }
   if (uncorrected) j["uncorrected_error_deg"] = stats_json(*uncorrected);
   j["flagged_samples"] = flagged;
   return j;
