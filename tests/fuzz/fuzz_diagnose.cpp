@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "core/recording.hpp"
 #include "diagnose/diagnose.hpp"
+#include "fuzz_target.hpp"
 
 namespace {
 
@@ -58,17 +59,5 @@ bool accepts(const std::string& text) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  accepts(std::string(reinterpret_cast<const char*>(data), size));
-  return 0;
-}
-
-#ifdef ACORE_FUZZ_STANDALONE
-#include "standalone_driver.hpp"
-
-int main(int argc, char** argv) {
-  return acore::fuzz::standalone_main(
-      argc, argv,
-      {"fuzz_diagnose", "0123456789.-+eE,#=% \nt,theta_ref,c1,c2,c3,c4,sin,cos,temp", accepts});
-}
-#endif
+ACORE_FUZZ_TARGET("fuzz_diagnose", "0123456789.-+eE,#=% \nt,theta_ref,c1,c2,c3,c4,sin,cos,temp",
+                  accepts)

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "fuzz_target.hpp"
 #include "harmonics/harmonics.hpp"
 
 namespace {
@@ -34,17 +35,5 @@ bool accepts(const std::string& text) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  accepts(std::string(reinterpret_cast<const char*>(data), size));
-  return 0;
-}
-
-#ifdef ACORE_FUZZ_STANDALONE
-#include "standalone_driver.hpp"
-
-int main(int argc, char** argv) {
-  return acore::fuzz::standalone_main(
-      argc, argv,
-      {"fuzz_harmonics_spec", "0123456789.-+eE{}[]:,\" pA0B0ApBpdelta_ptermsnthetapsi", accepts});
-}
-#endif
+ACORE_FUZZ_TARGET("fuzz_harmonics_spec", "0123456789.-+eE{}[]:,\" pA0B0ApBpdelta_ptermsnthetapsi",
+                  accepts)

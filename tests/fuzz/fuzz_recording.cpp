@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "core/recording.hpp"
+#include "fuzz_target.hpp"
 
 namespace {
 
@@ -36,17 +37,5 @@ bool accepts(const std::string& text) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  accepts(std::string(reinterpret_cast<const char*>(data), size));
-  return 0;
-}
-
-#ifdef ACORE_FUZZ_STANDALONE
-#include "standalone_driver.hpp"
-
-int main(int argc, char** argv) {
-  return acore::fuzz::standalone_main(
-      argc, argv,
-      {"fuzz_recording", "0123456789.-+eE,#= \r\nabcinfnantheta_refc1c2c3c4sincostemp", accepts});
-}
-#endif
+ACORE_FUZZ_TARGET("fuzz_recording", "0123456789.-+eE,#= \r\nabcinfnantheta_refc1c2c3c4sincostemp",
+                  accepts)

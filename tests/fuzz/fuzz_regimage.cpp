@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "engine/fixed_model.hpp"
+#include "fuzz_target.hpp"
 #include "regmap/regimage.hpp"
 
 namespace {
@@ -41,20 +42,8 @@ bool accepts(const std::string& text) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  accepts(std::string(reinterpret_cast<const char*>(data), size));
-  return 0;
-}
-
-#ifdef ACORE_FUZZ_STANDALONE
-#include "standalone_driver.hpp"
-
-int main(int argc, char** argv) {
-  return acore::fuzz::standalone_main(
-      argc, argv,
-      {"fuzz_regimage",
-       "0123456789abcdefx/:= \n-+.eacore:correctionfourier_kdegreeregionsxcenterzero_wordzero_"
-       "offset_radcodecrc32in_scalepoly2dnone",
-       accepts});
-}
-#endif
+ACORE_FUZZ_TARGET(
+    "fuzz_regimage",
+    "0123456789abcdefx/:= \n-+.eacore:correctionfourier_kdegreeregionsxcenterzero_wordzero_"
+    "offset_radcodecrc32in_scalepoly2dnone",
+    accepts)

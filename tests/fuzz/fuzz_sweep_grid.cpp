@@ -12,6 +12,7 @@
 
 #include "core/datapath_config.hpp"
 #include "core/errors.hpp"
+#include "fuzz_target.hpp"
 #include "sweep/design_space.hpp"
 
 namespace {
@@ -33,18 +34,6 @@ bool accepts(const std::string& text) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  accepts(std::string(reinterpret_cast<const char*>(data), size));
-  return 0;
-}
-
-#ifdef ACORE_FUZZ_STANDALONE
-#include "standalone_driver.hpp"
-
-int main(int argc, char** argv) {
-  return acore::fuzz::standalone_main(
-      argc, argv,
-      {"fuzz_sweep_grid",
-       "0123456789-[]{}:,\" DEGREEREGIONSXCENTERCORRECTIONFOURIER_KFOLDIN_WREG_WCOEF_FK", accepts});
-}
-#endif
+ACORE_FUZZ_TARGET("fuzz_sweep_grid",
+                  "0123456789-[]{}:,\" DEGREEREGIONSXCENTERCORRECTIONFOURIER_KFOLDIN_WREG_WCOEF_FK",
+                  accepts)
