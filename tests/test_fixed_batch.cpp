@@ -25,6 +25,26 @@ void expect_same(const FixedModel& m, const std::vector<ChannelCodes>& codes) {
   }
 }
 
+// Every word random, the two offsets within +-2000 (so the scaled curves are not all saturated).
+RegImage random_image(const DatapathConfig& cfg, std::mt19937_64& rng) {
+  RegImage img;
+  img.cfg = cfg;
+  img.words.assign(cfg.words(), 0);
+  std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
+  for (auto& w : img.words) w = word(rng);
+  img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
+  img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
+  return img;
+}
+
+// n inputs, each channel uniform over the IN_W-bit range.
+std::vector<ChannelCodes> random_codes(size_t n, int in_w, std::mt19937_64& rng) {
+  std::uniform_int_distribution<int32_t> code(-(1 << (in_w - 1)), (1 << (in_w - 1)) - 1);
+  std::vector<ChannelCodes> codes(n);
+  for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
+  return codes;
+}
+
 TEST(FixedBatch, MatchesStepOnThePaperScenario) {
   const Recording rec = test::paper_recording(20000);
   const RegImage img =
@@ -41,16 +61,8 @@ TEST(FixedBatch, MatchesStepOnRandomImagesAndInputsIncludingSaturation) {
       DatapathConfig cfg;
       cfg.degree = degree;
       cfg.regions = regions;
-      RegImage img;
-      img.cfg = cfg;
-      img.words.assign(cfg.words(), 0);
-      std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
-      for (auto& w : img.words) w = word(rng);
-      img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
-      img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
-      std::uniform_int_distribution<int32_t> code(-32768, 32767);
-      std::vector<ChannelCodes> codes(3000);
-      for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
+      const RegImage img = random_image(cfg, rng);
+      std::vector<ChannelCodes> codes = random_codes(3000, cfg.in_w, rng);
       codes.push_back({32767, 32767, -32768, -32768});
       codes.push_back({0, 0, 0, 0});
       const FixedModel m(img);
@@ -69,17 +81,9 @@ TEST(FixedBatch, MatchesStepAtOtherWidths) {
         "CORDIC_G=5 K=12 Z_W=18 ANGLE_W=14", "IN_W=12 REG_W=14 COEF_F=12 Z_W=16",
         "ACC_G=7 ACC_I=7 COEF_F=12 DEGREE=5 REGIONS=8"}) {
     const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
-    RegImage img;
-    img.cfg = cfg;
-    img.words.assign(cfg.words(), 0);
-    std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
-    for (auto& w : img.words) w = word(rng);
-    img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
-    img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
+    const RegImage img = random_image(cfg, rng);
     const int32_t lo = -(1 << (cfg.in_w - 1)), hi = (1 << (cfg.in_w - 1)) - 1;
-    std::uniform_int_distribution<int32_t> code(lo, hi);
-    std::vector<ChannelCodes> codes(5000);
-    for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
+    std::vector<ChannelCodes> codes = random_codes(5000, cfg.in_w, rng);
     codes.push_back({hi, hi, lo, lo});
     codes.push_back({lo, lo, hi, hi});
     codes.push_back({0, 0, 0, 0});
@@ -104,17 +108,8 @@ TEST(FixedBatch, MatchesStepInTheOtherCorrectionModes) {
     cfg.degree = md.degree;
     cfg.regions = md.regions;
     cfg.xcenter = md.xcenter;
-    RegImage img;
-    img.cfg = cfg;
-    img.words.assign(cfg.words(), 0);
-    std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
-    for (auto& w : img.words) w = word(rng);
-    img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
-    img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
-    std::uniform_int_distribution<int32_t> code(-32768, 32767);
-    std::vector<ChannelCodes> codes(2000);
-    for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
-    expect_same(FixedModel(img), codes);
+    const RegImage img = random_image(cfg, rng);  // drawn before the inputs, in this order
+    expect_same(FixedModel(img), random_codes(2000, cfg.in_w, rng));
   }
 }
 
@@ -125,17 +120,8 @@ TEST(FixedBatch, MatchesStepWithTheZeroWord) {
   for (const char* p :
        {"ZERO=1", "CORRECTION=2 FOURIER_K=4 ZERO=1", "CORRECTION=1 ZERO=1", "ANGLE_W=12 ZERO=1"}) {
     const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
-    RegImage img;
-    img.cfg = cfg;
-    img.words.assign(cfg.words(), 0);
-    std::uniform_int_distribution<uint64_t> word(0, (uint64_t{1} << cfg.reg_w) - 1);
-    for (auto& w : img.words) w = word(rng);
-    img.set_signed(cfg.addr_offset(0), static_cast<int64_t>(word(rng) % 4000) - 2000);
-    img.set_signed(cfg.addr_offset(1), static_cast<int64_t>(word(rng) % 4000) - 2000);
-    std::uniform_int_distribution<int32_t> code(-32768, 32767);
-    std::vector<ChannelCodes> codes(2000);
-    for (auto& c : codes) c = {code(rng), code(rng), code(rng), code(rng)};
-    expect_same(FixedModel(img), codes);
+    const RegImage img = random_image(cfg, rng);  // drawn before the inputs, in this order
+    expect_same(FixedModel(img), random_codes(2000, cfg.in_w, rng));
   }
 }
 

@@ -159,15 +159,12 @@ void run_estimate(const EstimateArgs& a) {
   }
   ErrorStats st, su;
   if (rec.has_theta()) {
-    err = angle_error_deg(s.angle, rec.theta_ref, p);
-    // A self-calibrated image does not know the reference's zero: judge the errors about their
-    // mean (and say so).
-    const bool about_mean = img.zero_reference_unknown();
-    if (about_mean) err = about_mean_deg(err);
-    const auto eu = angle_error_deg(s.uncorrected, rec.theta_ref, p);
+    err = judged_error_deg(img, s.angle, rec.theta_ref, p);
     st = error_stats(err);
-    su = error_stats(about_mean ? about_mean_deg(eu) : eu);
-    if (about_mean)
+    su = error_stats(judged_error_deg(img, s.uncorrected, rec.theta_ref, p));
+    // A self-calibrated image does not know the reference's zero: the errors are about their
+    // mean (say so).
+    if (img.zero_reference_unknown())
       std::cout << "the image's zero is unknown (zero_reference=none, a self-calibration): "
                    "errors are about their mean\n";
     std::cout << fmt::format(

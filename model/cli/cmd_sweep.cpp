@@ -29,10 +29,8 @@ struct SweepArgs {
   bool quick = false, list = false;
 };
 
-nlohmann::json read_grid(const std::string& path) { return read_json_file(path, "sweep grid"); }
-
 void run_sweep(const SweepArgs& a) {
-  const nlohmann::json grid = !a.grid.empty() ? read_grid(a.grid)
+  const nlohmann::json grid = !a.grid.empty() ? read_json_file(a.grid, "sweep grid")
                               : a.quick       ? quick_sweep_grid()
                                               : default_sweep_grid();
   const std::vector<std::string> points = expand_grid(grid);

@@ -111,8 +111,7 @@ CalibrateOutcome calibrate_recording(const Recording& rec, const CalibrateSpec& 
 
   // Fit quality on the calibration recording itself, both engines.
   auto judge = [&](const std::vector<double>& angle) {
-    const auto e = angle_error_deg(angle, ref, opt.periodicity);
-    return error_stats(out.self ? about_mean_deg(e) : e);
+    return error_stats(judged_error_deg(img, angle, ref, opt.periodicity));
   };
   const AngleSeries fixed = run_fixed(rec, img);
   out.fit_float = judge(run_float(rec, fc).angle);

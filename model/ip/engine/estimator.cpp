@@ -124,6 +124,12 @@ void run_fixed_batch(const RegImage& img, const ChannelColumns& in, int periodic
   }
 }
 
+std::vector<double> judged_error_deg(const RegImage& img, const std::vector<double>& angle_rad,
+                                     const std::vector<double>& theta_ref, int periodicity) {
+  const std::vector<double> e = angle_error_deg(angle_rad, theta_ref, periodicity);
+  return img.zero_reference_unknown() ? about_mean_deg(e) : e;
+}
+
 nlohmann::json estimate_json(Engine engine, size_t samples, int fold, const RegImage& img,
                              double zero_offset, bool zero_word, const ErrorStats* error,
                              const ErrorStats* uncorrected, size_t flagged) {

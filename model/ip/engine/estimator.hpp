@@ -48,6 +48,11 @@ struct ChannelColumns {
   const double* theta_ref = nullptr;
   size_t n = 0;
 };
+// The error an image is judged by: angle_error_deg against the reference, about its own mean when
+// the image's zero is unknown (zero_reference=none, a self-calibration).
+std::vector<double> judged_error_deg(const RegImage& img, const std::vector<double>& angle_rad,
+                                     const std::vector<double>& theta_ref, int periodicity);
+
 // Caller-owned outputs of n samples each; error_deg is written only when it and theta_ref are set.
 struct BatchAngles {
   double* angle = nullptr;  // as AngleSeries::angle of run_fixed, bit for bit
