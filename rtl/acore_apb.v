@@ -25,7 +25,7 @@
 // waits for the samples in flight, and those wait for the output's out_ready_i: a wait state could
 // hold the bus for ever. A driver polls STATUS.BUSY or enables the DONE interrupt.
 //
-// Register map: docs/register-shell.md, generated with tb/shell_regs.hpp and the localparams this
+// Register map: docs/register-shell.md, generated with tb/shell/shell_regs.hpp and the localparams this
 // module includes (rtl/acore_apb_regs.vh) from one description, rtl/acore_apb_regs.txt:
 // identification and configuration at 0x000..0x010, CTRL, STATUS, IRQ at 0x020..0x028, MAG_LO/HI,
 // the CRC registers and the scrubber's count, and the shadow coefficient words at 0x400 + 4a.

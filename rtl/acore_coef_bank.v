@@ -26,7 +26,7 @@
 // image, the one its tag (bank_o when it leaves) names. Busy time from the clock of commit_i:
 // max(7 + P + WORDS 32/CRC_W, drain) + WORDS + 2 + SETTLE clocks (P = 1 when CRC_W >= 16 splits
 // the CRC's fold over two clocks, else 0; drain = clocks until the one after the last accepted
-// sample has left the top; tb/test_apb_shell.cpp checks this form).
+// sample has left the top; tb/shell/test_apb_shell.cpp checks this form).
 //
 // The top's host port belongs to the commit while it streams and to the scrubber otherwise; the
 // host never drives it (the shell's register map has no window on the active words). The shadow's

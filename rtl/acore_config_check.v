@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // acore_config_check: the datapath configuration's rules at elaboration, the same rules and limits
-// as the bit-accurate model's DatapathConfig::validate() (model/datapath_config.cpp), one
+// as the bit-accurate model's DatapathConfig::validate() (model/ip/core/datapath_config.cpp), one
 // acore_check per rule, named after it. Both tops instantiate it with their parameters (the serial
 // core has no CORRECTION, XCENTER, Fourier or FOLD parameters: it passes the defaults), so an illegal
 // configuration stops Verilator, Icarus and Yosys with the rule's message before any stage is
-// built, and the RTL accepts exactly what the model accepts (tb/param_checks.py checks both ways
+// built, and the RTL accepts exactly what the model accepts (tb/lint/param_checks.py checks both ways
 // on random configurations).
 `resetall
 `default_nettype none

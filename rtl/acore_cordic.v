@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_cordic: stage 5, pipelined CORDIC arctangent in vectoring mode over the full circle
-// (model/cordic.cpp, bit for bit). angle = atan2(y, x), one turn = 2^ANGLE_W.
+// (model/ip/stages/cordic.cpp, bit for bit). angle = atan2(y, x), one turn = 2^ANGLE_W.
 //
 //   NORM=1: x, y <<= L, L = IN_W-2 - msb(|x| | |y|) when positive
 //   X = x << G, Y = y << G                               XY_W = IN_W + 2 + G bits
@@ -88,7 +88,7 @@ module acore_cordic #(
   // YW(i) = min(XY_W, XY_W + 2 - i) signed bits (a 2x margin over the bound, which also covers the
   // truncation of at most one LSB per stage). Each stage computes only YW(i+1) bits of Y (the adds
   // are exact modulo 2^YW and the true value fits) and stores them sign-extended; synthesis merges
-  // the duplicated sign flops. tests/test_cordic16.cpp checks the margin on sweeps of both configs.
+  // the duplicated sign flops. tb/blocks/test_cordic16.cpp checks the margin on sweeps of both configs.
   reg [XY_W-2:0] x_q [0:K];
   reg [XY_W-1:0] y_q [0:K-1];
   reg [Z_W-1:0]  z_q [0:K];

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_cordic_rotate: pipelined rotation-mode CORDIC (model/cordic_rotate.cpp, bit for bit): turns
+// acore_cordic_rotate: pipelined rotation-mode CORDIC (model/ip/stages/cordic_rotate.cpp, bit for bit): turns
 // (x, y) clockwise by the angle z and returns X_M, the building block of the Fourier correction.
 //
 //   stage i = 0..M-1, s = (z_i < 0):                       (1 clock each, one adder per word)
@@ -10,7 +10,7 @@
 //
 // z (one turn = 2^Z_W) enters on Z_W-2 signed bits, |z| < 2^(Z_W-3) (1/8 turn). Entering stage i,
 // |z_i| <= sum_{j>=i} atan(2^-j) < 2^(1-i) rad, so stage i keeps z on ZW(i) = min(Z_W-2, Z_W-i) bits
-// (1.5x above the bound, tests/test_fourier_correct.cpp checks it for every start angle); a stage
+// (1.5x above the bound, tests/ip/stages/test_fourier_correct.cpp checks it for every start angle); a stage
 // computes only the ZW(i+1) bits the next one reads. Words that are not arctangents make z wrap
 // there, as in the model. X and Y never overflow for |x|, |y| < 2^(XY_W-3): the vector grows by
 // at most sqrt 2 G_M < 2.33 (the caller sizes XY_W; see acore_fourier_correct.v).

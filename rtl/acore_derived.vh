@@ -8,7 +8,7 @@
 // Arguments are named f_<parameter>: no module names a signal or genvar f_*.
 //
 // Constant products are written with `*` (and ceilings with `/`): they are evaluated at
-// elaboration. The datapath itself multiplies on adders and shifters only; tb/no_multiplier.py
+// elaboration. The datapath itself multiplies on adders and shifters only; tb/lint/no_multiplier.py
 // proves it on every registered build's netlist (no $mul, $macc, $div, $mod or $pow cell).
 
 // ---- widths ----

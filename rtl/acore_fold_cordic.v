@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_fold_cordic: stage 5 for the folded top (FOLD = N > 1), acore_cordic's contract (NORM = 0,
-// model/cordic.cpp, bit for bit) on U = ceil(K / N) stage units instead of K stages: unit u does
+// model/ip/stages/cordic.cpp, bit for bit) on U = ceil(K / N) stage units instead of K stages: unit u does
 // iterations uN .. uN + N - 1 on consecutive clocks, so a vector can enter every N clocks.
 //
 //   pre-rotation: X < 0 -> (X, Y) = (-X, -Y), Z = half a turn        (1 clock)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // acore_fold_datapath: the estimator of acore_top folded N = FOLD times (FOLD = 2, 4, 8): a sample
 // every N clocks or more, each piece of hardware used N times per sample, the same contract bit
-// for bit (model/fixed_model.cpp). The two curves share one scaler and one Horner chain: each
+// for bit (model/ip/engine/fixed_model.cpp). The two curves share one scaler and one Horner chain: each
 // sample becomes two items (c13, then c24 N/2 clocks later), and the multipliers are folded
 // F = N/2 times (acore_fold_mul). The CORDIC has K/N stage units (acore_fold_cordic).
 //

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_fold_mul: the adder/shifter multiplier of model/fixed_point.hpp shift_add_mul(), folded
+// acore_fold_mul: the adder/shifter multiplier of model/ip/core/fixed_point.hpp shift_add_mul(), folded
 // over F clocks, plus an addend:
 //   p = init + sum over bits j of b of  b[j] w_j floor(a 2^(j - RSHIFT))      (w_j = -1 for the
 //   top bit of a signed b, else 1), every partial product floored on its own, as the contract says.

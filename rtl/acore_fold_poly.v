@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_fold_poly: stage 4 for the folded top (FOLD > 1), the contract of acore_poly_correct
-// (model/poly_correct.cpp) on one Horner chain shared by both curves:
+// (model/ip/stages/poly_correct.cpp) on one Horner chain shared by both curves:
 //   acc_n = a_n << ACC_G;  acc_j = saturate(shift_add_mul(acc_{j+1}, u, S_W signed, U_SH) +
 //   (a_j << ACC_G), ACC_W);  y = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W)
 // with u = x (XCENTER = 0) or x -+ 3/8 (XCENTER = 1, U_SH = S_F - 1), as acore_poly_correct.

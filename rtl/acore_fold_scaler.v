@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_fold_scaler: stage 2 for the folded top (FOLD > 1), the same contract as acore_scaler
-// (model/scaler.cpp) on one multiplier shared by both curves. Each curve is an item: d, O and R of
+// (model/ip/stages/scaler.cpp) on one multiplier shared by both curves. Each curve is an item: d, O and R of
 // that curve at start_i; the items of a sample come FOLD/2 clocks apart, so the multiplier is
 // folded F = FOLD/2 times (acore_fold_mul):
 //   t = d - O                                 exact, max(D_W, REG_W) + 1 bits

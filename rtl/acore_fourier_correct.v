@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_fourier_correct: stage 6 (optional), the angle-domain Fourier correction after the CORDIC
-// (model/fourier_correct.cpp, bit for bit):
+// (model/ip/stages/fourier_correct.cpp, bit for bit):
 //
 //   angle_o = angle_i - Delta(angle_i),  Delta = a_0 + sum_{k=1..K} (a_k cos k theta + b_k sin k theta)
 //

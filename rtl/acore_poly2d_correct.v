@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_poly2d_correct: stage 4 in CORRECTION = 1 (poly2d), 2-D polynomial correction of one curve
-// (model/poly2d_correct.cpp, bit for bit): y = s - P_region(u, v), P of total degree DEGREE <= 3 in
+// (model/ip/stages/poly2d_correct.cpp, bit for bit): y = s - P_region(u, v), P of total degree DEGREE <= 3 in
 //   u = x                                   (XCENTER = 0)  multiplier shift U_SH = S_F
 //   u = x - (x >= 0 ? 3/8 : -3/8)           (XCENTER = 1)  U_SH = S_F - 1, i.e. read as 2 u
 //   v = y_other - (y_other >= 0 ? 1 : -1)   V_SH = S_F - 2, i.e. read as 4 v

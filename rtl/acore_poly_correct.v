@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_poly_correct: stage 4, polynomial correction of one curve (paper Eq. 6,
-// model/poly_correct.cpp): y = s - P_region(x), Horner's scheme on the adder/shifter multiplier,
+// model/ip/stages/poly_correct.cpp): y = s - P_region(x), Horner's scheme on the adder/shifter multiplier,
 // unrolled into DEGREE pipelined steps so one sample enters per clock:
 //   acc_n = a_n << ACC_G                                                ACC_F = COEF_F + ACC_G
 //   acc_j = saturate(shift_add_mul(acc_{j+1}, u, S_W signed, U_SH) + (a_j << ACC_G), ACC_W)

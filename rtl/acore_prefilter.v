@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_prefilter: stage 1 (paper Eq. 3, model/prefilter.hpp). Opposite sensors are subtracted,
+// acore_prefilter: stage 1 (paper Eq. 3, model/ip/stages/prefilter.hpp). Opposite sensors are subtracted,
 // which cancels the common-mode "temporal variation":
 //   d13 = c1 - c3,  d24 = c2 - c4        D_W = IN_W + 1 bits, exact (no rounding, no overflow)
 // Two-channel sensors feed c1 = sin, c2 = cos, c3 = c4 = 0. Latency LATENCY = 1 clock.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_region_select: stage 3, domain selection (model/region_select.hpp). The most linear curve
+// acore_region_select: stage 3, domain selection (model/ip/stages/region_select.hpp). The most linear curve
 // is the one nearer its zero crossing (smaller magnitude); it becomes the polynomial argument x:
 //
 //   |s13| <= |s24|, s24 >= 0 -> region 0 (around   0 deg), x = s13

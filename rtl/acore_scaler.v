@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_scaler: stage 2, scaling of one curve (paper Eq. 5 read as (c - O) / A; model/scaler.cpp):
+// acore_scaler: stage 2, scaling of one curve (paper Eq. 5 read as (c - O) / A; model/ip/stages/scaler.cpp):
 //   t = d - O                                     exact, max(D_W, REG_W) + 1 bits
 //   p = shift_add_mul(t, R, REG_W unsigned, R_SHIFT - SCALE_G)     S_F + SCALE_G fraction bits
 //   s = saturate(round_shr(p, SCALE_G), S_W)      round half up, Q2.16 by default

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // acore_serial_top: the AngleCore estimator on one adder, one shifter, an accumulator and two
 // temporary registers (the paper's "simplest hardware platform"), bit for bit the chain of
-// rtl/acore_top.v and model/fixed_model.cpp (pre-filter, scaling, domain selection, Horner
+// rtl/acore_top.v and model/ip/engine/fixed_model.cpp (pre-filter, scaling, domain selection, Horner
 // correction, CORDIC, status flags, with ZERO = 1 the zero position subtracted), one sample every
 // CYCLES clocks.
 //

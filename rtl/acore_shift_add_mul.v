@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_shift_add_mul: the adder/shifter multiplier of model/fixed_point.hpp shift_add_mul():
+// acore_shift_add_mul: the adder/shifter multiplier of model/ip/core/fixed_point.hpp shift_add_mul():
 //   p = sum over bits j of b of  b[j] ? (a >>> (RSHIFT - j)) : 0      (a << (j - RSHIFT) if j > RSHIFT)
 // every partial product truncated (floor) on its own; with B_SIGNED the top bit of b weighs
 // -2^(B_W-1), so its partial product is subtracted. No multiplier: B_W partial products (AND

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_top: the AngleCore estimator, one sample per clock (model/fixed_model.cpp, bit for bit), or
+// acore_top: the AngleCore estimator, one sample per clock (model/ip/engine/fixed_model.cpp, bit for bit), or
 // with FOLD = 2, 4, 8 one sample every FOLD clocks on folded hardware (acore_fold_datapath.v).
 //
 //   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> [- zero] -> angle, flags

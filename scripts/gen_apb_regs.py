@@ -9,7 +9,7 @@ Generated (paths relative to ROOT, or to OUT when given):
   rtl/acore_apb_regs.vh     localparams of rtl/acore_apb.v (included inside it): word indices,
                             field positions and widths, the decode's register sets, reset values,
                             the constant registers' values
-  tb/shell_regs.hpp         C++ constants of the shell's driver and tests (acore::shell)
+  tb/shell/shell_regs.hpp         C++ constants of the shell's driver and tests (acore::shell)
   docs/register-shell.md    the register table (addresses, fields, bits, access, reset, meaning)
 
 --check exits 1, printing a diff, when a file under ROOT differs from what the description gives
@@ -24,7 +24,7 @@ import textwrap
 
 SOURCE = "rtl/acore_apb_regs.txt"
 COMMAND = "python3 scripts/gen_apb_regs.py"
-OUTPUTS = ("rtl/acore_apb_regs.vh", "tb/shell_regs.hpp", "docs/register-shell.md")
+OUTPUTS = ("rtl/acore_apb_regs.vh", "tb/shell/shell_regs.hpp", "docs/register-shell.md")
 ACCESS = {"RO": "read only", "RW": "read/write", "W1C": "write 1 to clear", "W1": "write 1 to act, reads 0"}
 
 
@@ -253,7 +253,7 @@ def gen_hpp(space, regs, notes):
     out = ["// SPDX-License-Identifier: MIT\n",
            header("//", PROVENANCE + [
                "The register map of the APB shell (rtl/acore_apb.v, docs/register-shell.md): byte",
-               "addresses and bit fields, for the driver (tb/shell_driver.*) and the tests. A one-bit field",
+               "addresses and bit fields, for the driver (tb/shell/shell_driver.*) and the tests. A one-bit field",
                "is its mask; a wider one has <Field>Shift and <Field>Mask (in place; a width set by a",
                "parameter has a shift only)."]),
            "#pragma once\n#include <cstdint>\n\nnamespace acore::shell {\n\n",
@@ -339,7 +339,7 @@ def gen_md(space, regs, notes):
 def generate(root):
     space, regs, notes = parse(os.path.join(root, SOURCE))
     return {"rtl/acore_apb_regs.vh": gen_vh(space, regs, notes),
-            "tb/shell_regs.hpp": gen_hpp(space, regs, notes),
+            "tb/shell/shell_regs.hpp": gen_hpp(space, regs, notes),
             "docs/register-shell.md": gen_md(space, regs, notes)}
 
 

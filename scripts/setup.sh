@@ -3,8 +3,8 @@
 # Install every Debian package AngleCore needs (z3: the SMT solver of the formal proofs, driven by
 # yosys-smtbmc, which the yosys package ships; tb/formal/run.py), only when something is missing, then the pinned
 # PyPI packages into the project's virtual environment .venv/: FuseSoC and edalize (rtl/anglecore.core;
-# tb/fusesoc.sh runs its targets) and magpylib (the independent field model that the CTest
-# physics_field_vs_magpylib checks model/physics_magnet.cpp against), and the Python package anglecore
+# tb/fusesoc/fusesoc.sh runs its targets) and magpylib (the independent field model that the CTest
+# physics_field_vs_magpylib checks model/lab/physics/physics_magnet.cpp against), and the Python package anglecore
 # (docs/python.md), built from this repository by `pip install .` with its pinned build requirements
 # (scikit-build-core, nanobind) and tested with pytest (python/tests, CTest label python).
 # Idempotent and quiet when all is there; uses sudo when not root.

@@ -223,7 +223,7 @@ if c16s:
           f"({lc16s[0] if lc16s else '-'} LCs) |")
     print(f"| word-serial CORDIC: samples/s on HX8K | >= 3e6 | "
           f"{f'{f16s:.1f} MHz / {k16s} clk = {f16s * 1e6 / k16s:.3g}' if f16s and k16s else '-'} |")
-print("\nAccuracy: the C++ model (bit-exact to both RTL CORDICs, tb/test_cordic16.cpp checks them) over every "
+print("\nAccuracy: the C++ model (bit-exact to both RTL CORDICs, tb/blocks/test_cordic16.cpp checks them) over every "
       "input of the 16-bit square: `ACORE_C16_FULL=1 ACORE_CORDIC16_REPORT=synth/reports/"
       "cordic16_accuracy.txt build/tb/test_cordic16 --gtest_filter=*Accuracy*`; "
       "X/Y \"uses\" is the peak fraction of the RTL register range reached (no overflow: < 1).")

@@ -14,7 +14,7 @@
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "rtl_engine.hpp"
+#include "rtlsim/rtl_engine.hpp"
 
 namespace acore::cli {
 

@@ -22,7 +22,7 @@
 #include "sim/simulator.hpp"
 #include "sweep/design_space.hpp"
 #ifdef ACORE_WITH_RTL
-#include "rtl_engine.hpp"
+#include "rtlsim/rtl_engine.hpp"
 #endif
 
 namespace acore::cli {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `anglecore diagnose-bench`: the blind self-benchmark of the gap diagnosis
-// (model/diagnose_bench.hpp).
+// (model/lab/diagnose/diagnose_bench.hpp).
 #include <fmt/format.h>
 
 #include <algorithm>

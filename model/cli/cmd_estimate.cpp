@@ -19,7 +19,7 @@
 #include "engine/estimator.hpp"
 #include "stages/tracker.hpp"
 #ifdef ACORE_WITH_RTL
-#include "rtl_engine.hpp"
+#include "rtlsim/rtl_engine.hpp"
 #endif
 
 namespace acore::cli {

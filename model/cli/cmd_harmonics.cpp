@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `anglecore harmonics`: Kuntz's predicted vs exact angle-error harmonics of a signal spec
-// (model/harmonics.hpp, docs/contracts.md, command line), with an optional plot folder
+// (model/lab/harmonics/harmonics.hpp, docs/contracts.md, command line), with an optional plot folder
 // (scripts/plot_harmonics.py).
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `anglecore simulate`: a sensor recording from a built-in scenario or a scenario JSON file
-// (model/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected angle
+// (model/lab/sim/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected angle
 // error.
 #include <fmt/format.h>
 
@@ -172,7 +172,7 @@ void add_simulate(CLI::App& app) {
       "Simulate a sensor recording (docs/contracts.md, recording file CSV) from a scenario");
   auto* sc = c->add_option("--scenario", args->scenario, "Built-in scenario (see --list)");
   auto* cf = c->add_option("--config", args->config,
-                           "Scenario JSON file (model/simulator.hpp documents the fields)");
+                           "Scenario JSON file (model/lab/sim/simulator.hpp documents the fields)");
   sc->excludes(cf);
   c->add_option("--samples", args->samples, "Number of samples (default 4096)")
       ->check(CLI::Range(1, 100000000));

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The gap diagnosis of a 50,000-sample recording with a 50,000-sample holdout (target: < 10 s on
-// one core), on recordings of the blind self-benchmark (model/diagnose_bench.hpp):
+// one core), on recordings of the blind self-benchmark (model/lab/diagnose/diagnose_bench.hpp):
 //   build/tests/bench/bench_diagnose
 // BM_Diagnose/<case>: one effect the diagnosis names (a single fit), one outside the vocabulary
 // (every effect fitted, then every other tried on top of the best), and shaft run-out (zero offset,

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // An independent, test-only generator of the paper's default scenario (docs/contracts.md, paper
-// scenario), written from the table and not from model/simulator.cpp, so tests compare two
+// scenario), written from the table and not from model/lab/sim/simulator.cpp, so tests compare two
 // implementations.
 #pragma once
 #include <cmath>

@@ -44,7 +44,7 @@ struct DatapathConfig {
   int cordic_guard = 3;  // CORDIC_G: guard fraction bits of the CORDIC x/y registers
   int z_w = 20;          // Z_W: CORDIC angle accumulator width, one turn = 2^Z_W
   int angle_w = 16;      // ANGLE_W: output angle width, unsigned, one turn = 2^ANGLE_W
-  // --- angle-domain Fourier correction after the CORDIC (model/fourier_correct.hpp) ---
+  // --- angle-domain Fourier correction after the CORDIC (model/ip/stages/fourier_correct.hpp) ---
   // angle_out = theta - Delta(theta), Delta = a_0 + sum_k a_k cos k theta + b_k sin k theta.
   int fourier_k = 0;            // FOURIER_K: harmonics K; 0 = stage off (no words, no header keys)
   int fourier_iterations = 12;  // FOURIER_M: rotation-CORDIC stages per harmonic (<= iterations)

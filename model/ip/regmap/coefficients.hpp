@@ -32,7 +32,7 @@ struct FloatCoefficients {
   double& coef(int r, int c, int t) { return poly[(r * 2 + c) * terms() + t]; }
   double coef(int r, int c, int t) const { return poly[(r * 2 + c) * terms() + t]; }
   // Angle-domain Fourier correction after the CORDIC: [a_0, a_1, b_1, ..., a_K, b_K] in radians of
-  // electrical angle, in the estimated angle (model/fourier_correct.hpp); empty = off.
+  // electrical angle, in the estimated angle (model/ip/stages/fourier_correct.hpp); empty = off.
   std::vector<double> fourier;
   int fourier_k() const { return fourier.empty() ? 0 : static_cast<int>(fourier.size() / 2); }
   // Zero offset: sensor angle - p theta_ref (electrical, rad, [-pi, pi)). The corrected curves

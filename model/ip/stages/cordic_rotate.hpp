@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Rotation-mode CORDIC: turns a vector clockwise by a given angle, the building block of the
-// Fourier correction (model/fourier_correct.hpp). Mirrors rtl/acore_cordic_rotate.v:
+// Fourier correction (model/ip/stages/fourier_correct.hpp). Mirrors rtl/acore_cordic_rotate.v:
 //
 //   z_0 = z  (Z_W units, one turn = 2^Z_W, |z| <= 1/8 turn after the quadrant pre-rotation)
 //   stage i = 0..M-1:  d = (z_i >= 0)

@@ -6,7 +6,7 @@
 //   theta)
 //
 // theta is the CORDIC's angle (ANGLE_W = A bits, one turn = 2^A). Every harmonic has its own
-// rotation CORDIC (model/cordic_rotate.hpp), all in parallel; then one adder tree:
+// rotation CORDIC (model/ip/stages/cordic_rotate.hpp), all in parallel; then one adder tree:
 //
 //   u_k = (k theta) mod 2^A                        shift-add of theta, exact modulo a turn
 //   q   = u[A-1:A-2] + u[A-3] (mod 4), phi = sext(u[A-3:0])    u = q quarter turns + phi, |phi| <=

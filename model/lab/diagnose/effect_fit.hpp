@@ -30,7 +30,7 @@ struct EffectCandidate {
   double param(const std::string& name) const;  // throws std::out_of_range when absent
 
   std::string effect;  // vocabulary name (effect_names())
-  ParamList params;    // in the simulator's parametrization (model/effects.hpp)
+  ParamList params;    // in the simulator's parametrization (model/lab/sim/effects.hpp)
   int k = 0;           // number of fitted parameters
   double neg2logl = 0;
   double bic = 0;

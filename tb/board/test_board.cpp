@@ -1,0 +1,454 @@
+// SPDX-License-Identifier: MIT
+// The board top (rtl/acore_board.v, registry line board_serial: the serial core; the board is
+// simulated in that configuration only, the folded ones are linted and placed) end to end: the
+// interface and observer registers through APB (values read back, out-of-range N, pole pairs and
+// bandwidth codes refused with PSLVERR and no effect, the addresses outside the map of a plain
+// shell now mapped), then streams of channel codes through the estimator and the tracking
+// observer (rtl/acore_track.v):
+//   - every estimator output equals FixedModel, and every observer output (tracked and
+//     compensated angle, velocity, turn count, loss of tracking) equals the observer's model
+//     (model/ip/stages/tracker.cpp) run on the model's angles with the board's register values
+//     and COMP_LATENCY = the estimator's LATENCY over its CYCLES (read from CONFIG2), bit for bit;
+//   - the ABZ decoder's count equals the model's target of the compensated angle before every
+//     sample, UVW follows the compensated angle, and the SPI port's ANGLECOM, ANGLEUNC and
+//     DIAAGC.LF, and the APB's TRK_VELOCITY and TRK_POSITION, read the model's values.
+#include <gtest/gtest.h>
+#include <verilated.h>
+
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "Vboard_serial.h"
+#include "cosim/cosim_stimuli.hpp"
+#include "shell/shell_regs.hpp"
+#include "stages/interfaces.hpp"
+#include "stages/tracker.hpp"
+
+namespace acore {
+namespace {
+
+namespace sh = acore::shell;
+
+// The board's observer build (rtl/acore_board.v: TRK_FRAC_W = 25, a 16-bit turn count, an 8-bit
+// LEAD with 4 fraction bits at the default 16-bit angle); COMP_LATENCY is set from CONFIG2.
+TrackConfig board_track_config(int comp_latency) {
+  TrackConfig c;
+  c.angle_w = 16;
+  c.frac_w = 25;
+  c.turn_w = 16;
+  c.comp_latency = comp_latency;
+  c.lead_w = 8;
+  c.lead_f = 4;
+  return c;
+}
+
+int64_t sext(uint64_t x, int w) {
+  const uint64_t m = (uint64_t{1} << w) - 1;
+  x &= m;
+  return (x >> (w - 1)) & 1 ? static_cast<int64_t>(x | ~m) : static_cast<int64_t>(x);
+}
+
+struct Board {
+  std::unique_ptr<VerilatedContext> ctx;
+  std::unique_ptr<Vboard_serial> top;
+  uint64_t t = 0;
+  int last = 0;
+  int64_t pos = 0;  // x4 decoder
+  uint32_t angle = 0;
+  bool have_angle = false;
+  // Every output of the estimator and of the observer, as seen on the board's ports.
+  std::vector<FixedOutput> est;
+  std::vector<TrackOutput> trk;
+  // Called after each clock at which the observer delivered, before its angle reaches ABZ.
+  std::function<void(Board&)> on_trk;
+  Board() {
+    ctx = std::make_unique<VerilatedContext>();
+    ctx->randReset(2);
+    top = std::make_unique<Vboard_serial>(ctx.get());
+    // The inputs start random too (randReset(2)): idle bus, no sample, SPI idle.
+    top->psel_i = 0;
+    top->penable_i = 0;
+    top->pwrite_i = 0;
+    top->in_valid_i = 0;
+    top->sclk_i = 0;
+    top->mosi_i = 0;
+    top->csn_i = 1;
+    top->rst_i = 1;
+    tick();
+    tick();
+    top->rst_i = 0;
+    tick();
+  }
+  void tick() {
+    top->clk_i = 0;
+    top->eval();
+    top->clk_i = 1;
+    top->eval();
+    ++t;
+    if (top->out_valid_o) {
+      angle = top->angle_o;
+      have_angle = true;
+      est.push_back(FixedOutput{top->angle_o, 0,
+                                static_cast<uint8_t>((top->los_o ? 2 : 0) | (top->dos_o ? 4 : 0))});
+    }
+    if (top->trk_valid_o) {
+      TrackOutput o;
+      o.angle = top->trk_angle_o;
+      o.angle_comp = top->trk_angle_comp_o;
+      o.velocity = sext(top->trk_velocity_o, 41);
+      o.turns = sext(top->trk_turns_o, 16);
+      o.lot = top->trk_lot_o;
+      trk.push_back(o);
+    }
+    static const int gray[2][2] = {{0, 3}, {1, 2}};
+    const int g = gray[top->a_o][top->b_o];
+    const int d = (g - last + 4) % 4;
+    pos += d == 1 ? 1 : d == 3 ? -1 : 0;
+    EXPECT_NE(d, 2) << "lost count";
+    last = g;
+    if (top->trk_valid_o && on_trk) on_trk(*this);
+  }
+  // One APB transfer; returns PSLVERR, *rdata the read data.
+  bool apb(bool write, uint32_t addr, uint32_t wdata, uint32_t* rdata = nullptr) {
+    top->psel_i = 1;
+    top->penable_i = 0;
+    top->pwrite_i = write;
+    top->paddr_i = addr;
+    top->pwdata_i = wdata;
+    top->pstrb_i = 0xF;
+    tick();
+    top->penable_i = 1;
+    top->eval();
+    const bool err = top->pslverr_o;
+    if (rdata) *rdata = top->prdata_o;
+    tick();
+    top->psel_i = 0;
+    top->penable_i = 0;
+    return err;
+  }
+  uint16_t spi_frame(uint16_t mosi) {
+    top->csn_i = 0;
+    tick();
+    tick();
+    uint16_t miso = 0;
+    for (int i = 0; i < 16; ++i) {
+      top->sclk_i = 1;
+      top->mosi_i = (mosi >> (15 - i)) & 1;
+      tick();
+      tick();
+      miso = static_cast<uint16_t>((miso << 1) | top->miso_o);
+      top->sclk_i = 0;
+      tick();
+      tick();
+    }
+    top->csn_i = 1;
+    for (int i = 0; i < 8; ++i) tick();
+    return miso;
+  }
+};
+
+// Writes the identity image (no correction, the real arctangent table) through the shadow window
+// and commits it.
+void load_identity(Board& b) {
+  const RegImage img = cosim::identity_image(DatapathConfig{});
+  for (size_t a = 0; a < img.words.size(); ++a)
+    ASSERT_FALSE(
+        b.apb(true, sh::kCoef + 4 * static_cast<uint32_t>(a), static_cast<uint32_t>(img.words[a])));
+  ASSERT_FALSE(b.apb(true, sh::kCtrl, sh::kCtrlScrub | sh::kCtrlCommit));
+  uint32_t st = sh::kStatusBusy;
+  for (int i = 0; i < 100000 && (st & sh::kStatusBusy); ++i) b.apb(false, sh::kStatus, 0, &st);
+  ASSERT_FALSE(st & sh::kStatusBusy);
+}
+
+// A channel code of a unit component (two's complement, 8000 codes of the image's 8192 a unit):
+// the RTL's 16-bit word and the model's signed value.
+int32_t unit_code(double x) { return static_cast<int32_t>(std::lround(8000 * x)); }
+
+TEST(Board, InterfaceRegistersThroughApb) {
+  Board b;
+  uint32_t v = 0;
+  EXPECT_FALSE(b.apb(false, sh::kAbzN, 0, &v));
+  EXPECT_EQ(v, 1024u);
+  EXPECT_FALSE(b.apb(true, sh::kAbzN, 1000, nullptr));
+  EXPECT_TRUE(b.apb(true, sh::kAbzN, 0, nullptr));
+  EXPECT_TRUE(b.apb(true, sh::kAbzN, 4097, nullptr));
+  EXPECT_FALSE(b.apb(false, sh::kAbzN, 0, &v));
+  EXPECT_EQ(v, 1000u) << "a refused write has no effect";
+  EXPECT_FALSE(b.apb(true, sh::kAbzN, 4096, nullptr));
+  EXPECT_FALSE(b.apb(false, sh::kAbzN, 0, &v));
+  EXPECT_EQ(v, 4096u);
+  EXPECT_TRUE(b.apb(true, sh::kUvwPp, 17, nullptr));
+  EXPECT_TRUE(b.apb(true, sh::kUvwPp, 0, nullptr));
+  EXPECT_FALSE(b.apb(true, sh::kUvwPp, 16, nullptr));
+  EXPECT_FALSE(b.apb(false, sh::kUvwPp, 0, &v));
+  EXPECT_EQ(v, 16u);
+  for (uint32_t addr : {sh::kAbzIndex, sh::kAbzSpacing, sh::kUvwOffset, sh::kTrkLot}) {
+    EXPECT_FALSE(b.apb(true, addr, 0x1234, nullptr));
+    EXPECT_FALSE(b.apb(false, addr, 0, &v));
+    EXPECT_EQ(v, 0x1234u) << addr;
+  }
+  // The observer's registers: reset values, the bandwidth code's range (the model's: kMin ..
+  // k_max() of the board's FRAC_W), LEAD's 8 bits, the read-only velocity and position.
+  const TrackConfig tc = board_track_config(0);
+  EXPECT_FALSE(b.apb(false, sh::kTrkBw, 0, &v));
+  EXPECT_EQ(v, sh::kTrkBwReset);
+  EXPECT_EQ(static_cast<int>(v), TrackRegs{}.bw) << "the model's default code";
+  EXPECT_FALSE(b.apb(false, sh::kTrkLead, 0, &v));
+  EXPECT_EQ(v, 0u);
+  for (uint32_t bw = 0; bw <= 20; ++bw) {
+    const bool ok = static_cast<int>(bw) >= TrackConfig::kMin && static_cast<int>(bw) <= tc.k_max();
+    EXPECT_EQ(b.apb(true, sh::kTrkBw, bw, nullptr), !ok) << bw;
+    EXPECT_FALSE(b.apb(false, sh::kTrkBw, 0, &v));
+    if (ok) EXPECT_EQ(v, bw);
+  }
+  EXPECT_EQ(v, static_cast<uint32_t>(tc.k_max())) << "a refused write has no effect";
+  EXPECT_TRUE(b.apb(true, sh::kTrkBw, 0x10004, nullptr)) << "upper bits are not ignored";
+  EXPECT_FALSE(b.apb(true, sh::kTrkLead, 0xFF, nullptr));
+  EXPECT_FALSE(b.apb(false, sh::kTrkLead, 0, &v));
+  EXPECT_EQ(v, 0xFFu);
+  EXPECT_TRUE(b.apb(true, sh::kTrkVelocity, 1, nullptr)) << "read only";
+  EXPECT_TRUE(b.apb(true, sh::kTrkPosition, 1, nullptr)) << "read only";
+  EXPECT_FALSE(b.apb(false, sh::kTrkVelocity, 0, &v));
+  EXPECT_EQ(v, 0u) << "no sample yet";
+}
+
+// One co-sim run: the registers written, `n` samples of a rotating vector streamed at full rate
+// (speed w0 turns a sample for the first half, w1 after: a speed step), every output compared.
+struct RunResult {
+  size_t samples = 0, est_mismatches = 0, trk_mismatches = 0, abz_checks = 0, lot_samples = 0;
+};
+
+// write_regs false: the registers keep their reset values (bw, lead, lot_thr unused).
+RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, int n, double w0,
+                     double w1) {
+  RunResult res;
+  Board b;
+  load_identity(b);
+  if (::testing::Test::HasFatalFailure()) return res;
+  if (write_regs) {
+    EXPECT_FALSE(b.apb(true, sh::kTrkBw, static_cast<uint32_t>(bw)));
+    EXPECT_FALSE(b.apb(true, sh::kTrkLead, lead));
+    EXPECT_FALSE(b.apb(true, sh::kTrkLot, lot_thr));
+  }
+  uint32_t cfg2 = 0;
+  EXPECT_FALSE(b.apb(false, sh::kConfig2, 0, &cfg2));
+  const int latency =
+      static_cast<int>((cfg2 & sh::kConfig2LatencyMask) >> sh::kConfig2LatencyShift);
+  const int cycles = static_cast<int>((cfg2 & sh::kConfig2CyclesMask) >> sh::kConfig2CyclesShift);
+  EXPECT_GT(cycles, 1);
+  const TrackConfig tc = board_track_config(latency / cycles);
+  // The model runs with the register values the board reads back (written, or the reset values).
+  uint32_t rb_bw = 0, rb_lead = 0, rb_lot = 0;
+  EXPECT_FALSE(b.apb(false, sh::kTrkBw, 0, &rb_bw));
+  EXPECT_FALSE(b.apb(false, sh::kTrkLead, 0, &rb_lead));
+  EXPECT_FALSE(b.apb(false, sh::kTrkLot, 0, &rb_lot));
+  if (write_regs) {
+    EXPECT_EQ(rb_bw, static_cast<uint32_t>(bw));
+    EXPECT_EQ(rb_lead, lead);
+    EXPECT_EQ(rb_lot, lot_thr);
+  }
+  TrackRegs tr;
+  tr.bw = static_cast<int>(rb_bw);
+  tr.lead = rb_lead;
+  tr.lot_thr = rb_lot;
+
+  // The stimulus and the model's expectation: estimator, then observer.
+  std::vector<ChannelCodes> in;
+  double th = 0.1;
+  for (int i = 0; i < n; ++i) {
+    th += 2 * M_PI * (i < n / 2 ? w0 : w1);
+    in.push_back({unit_code(std::cos(th)), unit_code(std::sin(th)), unit_code(-std::cos(th)),
+                  unit_code(-std::sin(th))});
+  }
+  const FixedModel model(cosim::identity_image(DatapathConfig{}), StatusWindow{0, INT64_MAX});
+  std::vector<FixedOutput> est_model;
+  std::vector<uint32_t> angles;
+  for (const auto& c : in) {
+    FixedOutput o = to_output(model.step(c));
+    o.region = 0;  // the board shows the angle, los and dos (not the region, nor ovf)
+    o.flags &= 6;
+    est_model.push_back(o);
+    angles.push_back(est_model.back().angle);
+  }
+  const std::vector<TrackOutput> trk_model = track_codes(angles, tc, tr);
+
+  // ABZ (N = 1024 at reset: the count walks from 0 to each target): before the observer's next
+  // output reaches it, the decoder has caught up with the previous one's target.
+  const int64_t abz_n = 1024;
+  int64_t target = 0;
+  b.on_trk = [&](Board& bb) {
+    const int64_t wrapped = ((bb.pos % (4 * abz_n)) + 4 * abz_n) % (4 * abz_n);
+    EXPECT_EQ(wrapped, target) << "ABZ before output " << bb.trk.size() - 1;
+    ++res.abz_checks;
+    target = abz_target(bb.trk.back().angle_comp, 16, abz_n, target);
+  };
+  const auto check_reads = [&](size_t k) {  // after k samples, the stream paused
+    for (int i = 0; i < 600; ++i) b.tick();
+    EXPECT_EQ(b.trk.size(), k);
+    if (k == 0 || b.trk.size() != k) return;
+    const TrackOutput& m = trk_model[k - 1];
+    b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kAngleCom));
+    const uint16_t com = b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kAngleUnc));
+    const uint16_t unc = b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kDiaagc));
+    const uint16_t dia = b.spi_frame(as5047::kNop);
+    EXPECT_EQ(com & 0x3FFFu, m.angle_comp >> 2) << "ANGLECOM after " << k;
+    EXPECT_EQ(unc & 0x3FFFu, est_model[k - 1].angle >> 2) << "ANGLEUNC after " << k;
+    EXPECT_EQ((dia >> 8) & 1, m.lot ? 0 : 1) << "DIAAGC.LF after " << k;
+    uint32_t vel = 0, posn = 0;
+    EXPECT_FALSE(b.apb(false, sh::kTrkVelocity, 0, &vel));
+    EXPECT_FALSE(b.apb(false, sh::kTrkPosition, 0, &posn));
+    EXPECT_EQ(vel, static_cast<uint32_t>(static_cast<uint64_t>(m.velocity) >> 9)) << k;
+    EXPECT_EQ(posn, (static_cast<uint32_t>(m.turns & 0xFFFF) << 16) | m.angle) << k;
+    const UvwState s = uvw_state(m.angle_comp, 0, 16, 1);
+    EXPECT_EQ(b.top->u_o, s.u);
+    EXPECT_EQ(b.top->v_o, s.v);
+    EXPECT_EQ(b.top->w_o, s.w);
+  };
+  for (int i = 0; i < n; ++i) {
+    if (i == n / 2 || i == n / 4) check_reads(static_cast<size_t>(i));
+    const auto word = [](int32_t c) { return static_cast<uint32_t>(c) & 0xFFFF; };
+    b.top->c1_i = word(in[i][0]);
+    b.top->c2_i = word(in[i][1]);
+    b.top->c3_i = word(in[i][2]);
+    b.top->c4_i = word(in[i][3]);
+    b.top->in_valid_i = 1;
+    b.top->eval();
+    while (!b.top->in_ready_o) b.tick();
+    b.tick();
+    b.top->in_valid_i = 0;
+    // After the first sample the count walks from 0 (reset) to its target, up to 2N edges at one a
+    // clock: a pause, then every later target is caught up within a sample.
+    if (i == 0)
+      for (int j = 0; j < 3 * abz_n; ++j) b.tick();
+  }
+  check_reads(static_cast<size_t>(n));
+  for (int i = 0; i < 600; ++i) b.tick();
+
+  res.samples = in.size();
+  if (b.est.size() != est_model.size()) ++res.est_mismatches;
+  if (b.trk.size() != trk_model.size()) ++res.trk_mismatches;
+  for (size_t i = 0; i < std::min(b.est.size(), est_model.size()); ++i)
+    if (!(b.est[i] == est_model[i])) {
+      if (res.est_mismatches < 5)
+        ADD_FAILURE() << "estimator sample " << i << ": rtl " << b.est[i].angle << " model "
+                      << est_model[i].angle;
+      ++res.est_mismatches;
+    }
+  for (size_t i = 0; i < std::min(b.trk.size(), trk_model.size()); ++i) {
+    const TrackOutput &r = b.trk[i], &m = trk_model[i];
+    res.lot_samples += m.lot;
+    if (r.angle != m.angle || r.angle_comp != m.angle_comp || r.velocity != m.velocity ||
+        r.turns != m.turns || r.lot != m.lot) {
+      if (res.trk_mismatches < 5)
+        ADD_FAILURE() << "observer sample " << i << ": rtl angle " << r.angle << " comp "
+                      << r.angle_comp << " v " << r.velocity << " turns " << r.turns << " lot "
+                      << r.lot << "; model " << m.angle << " " << m.angle_comp << " " << m.velocity
+                      << " " << m.turns << " " << m.lot;
+      ++res.trk_mismatches;
+    }
+  }
+  // The decoder's count after the last catch-up.
+  const int64_t wrapped = ((b.pos % (4 * abz_n)) + 4 * abz_n) % (4 * abz_n);
+  EXPECT_EQ(wrapped, target) << "ABZ after the stream";
+  // The stream turned: the turn count moved with the angle.
+  EXPECT_GE(std::llabs(trk_model.back().turns), 1);
+  std::printf(
+      "board_serial co-sim: bw %d lead %u/16 lot %u COMP_LATENCY %d (LATENCY %d, CYCLES %d): "
+      "%zu samples, %zu estimator and %zu observer mismatches, %zu ABZ checks, %zu LOT "
+      "samples, last turns %lld\n",
+      tr.bw, tr.lead, tr.lot_thr, tc.comp_latency, latency, cycles, res.samples, res.est_mismatches,
+      res.trk_mismatches, res.abz_checks, res.lot_samples,
+      static_cast<long long>(trk_model.back().turns));
+  return res;
+}
+
+// Constant speed then a speed step (x3.5), with a narrow loop, a lead and a low LOT threshold
+// (the step raises LOT and it clears), and at the registers' reset values.
+TEST(Board, ObserverOnTheEstimatorEqualsTheModels) {
+  const RunResult a = run_stream(4, 0x25, 600, true, 3000, 0.003, 0.0105);
+  EXPECT_EQ(a.samples, 3000u);
+  EXPECT_EQ(a.est_mismatches, 0u);
+  EXPECT_EQ(a.trk_mismatches, 0u);
+  EXPECT_GT(a.lot_samples, 0u) << "the speed step raised loss of tracking";
+  EXPECT_GE(a.abz_checks, 3000u);
+  const RunResult r = run_stream(0, 0, 0, false, 2000, -0.004, 0.002);
+  EXPECT_EQ(r.samples, 2000u);
+  EXPECT_EQ(r.est_mismatches, 0u);
+  EXPECT_EQ(r.trk_mismatches, 0u);
+}
+
+// Large steps between samples, each followed by a long pause: ABZ catches up, UVW and SPI read the
+// observer's compensated angle, ANGLEUNC the estimator's.
+TEST(Board, InterfacesFollowTheCompensatedAngle) {
+  Board b;
+  const int64_t n = 1000;
+  const int pp = 7;
+  const uint32_t offset = 0x2345;
+  load_identity(b);
+  if (HasFatalFailure()) return;
+  ASSERT_FALSE(b.apb(true, sh::kAbzN, n, nullptr));
+  ASSERT_FALSE(b.apb(true, sh::kAbzIndex, 17, nullptr));
+  ASSERT_FALSE(b.apb(true, sh::kAbzSpacing, 2, nullptr));
+  ASSERT_FALSE(b.apb(true, sh::kUvwPp, pp, nullptr));
+  ASSERT_FALSE(b.apb(true, sh::kUvwOffset, offset, nullptr));
+  std::mt19937_64 rng(31);
+  int64_t target = 0;
+  int samples = 0;
+  std::set<uint32_t> angles;
+  for (int k = 0; k < 40; ++k) {
+    // Channel codes of a rotating vector (two's complement, 8000 codes of the image's 8192 a unit).
+    const double th = 0.37 * k;
+    const auto code = [](double x) {
+      return static_cast<uint32_t>(std::lround(8000 * x)) & 0xFFFF;
+    };
+    b.top->c1_i = code(std::cos(th));
+    b.top->c2_i = code(std::sin(th));
+    b.top->c3_i = code(-std::cos(th));
+    b.top->c4_i = code(-std::sin(th));
+    b.top->in_valid_i = 1;
+    while (!b.top->in_ready_o) b.tick();
+    b.tick();
+    b.top->in_valid_i = 0;
+    const bool had = b.have_angle;
+    b.have_angle = false;
+    for (int i = 0; i < 400 && !b.have_angle; ++i) b.tick();
+    ASSERT_TRUE(b.have_angle) << k << " " << had;
+    ++samples;
+    angles.insert(b.angle);
+    for (int i = 0; i < 3 * 4 * n + 100; ++i) b.tick();
+    ASSERT_EQ(b.trk.size(), static_cast<size_t>(samples));
+    const uint32_t com = b.trk.back().angle_comp;
+    target = abz_target(com, 16, n, target);
+    // The N write re-homed the count at the first angle, without edges: the drive homes its
+    // decoder once, as after power-up (here to the model's count; an SPI read would give it).
+    if (k == 0) b.pos = target;
+    const int64_t wrapped = ((b.pos % (4 * n)) + 4 * n) % (4 * n);
+    ASSERT_EQ(wrapped, target) << "sample " << k << " angle " << com;
+    const UvwState s = uvw_state(com, offset, 16, pp);
+    EXPECT_EQ(b.top->u_o, s.u);
+    EXPECT_EQ(b.top->v_o, s.v);
+    EXPECT_EQ(b.top->w_o, s.w);
+    // ODrive's read: 0xFFFF twice, the second answer is ANGLECOM = the angle's upper 14 bits.
+    b.spi_frame(0xFFFF);
+    const uint16_t raw = b.spi_frame(as5047::with_even_parity(0x7FFE));  // then ANGLEUNC
+    EXPECT_TRUE(as5047::parity_even(raw));
+    EXPECT_FALSE((raw >> 14) & 1);
+    EXPECT_EQ(raw & 0x3FFFu, com >> 2);
+    const uint16_t unc = b.spi_frame(as5047::with_even_parity(0x7FFC));  // then DIAAGC
+    EXPECT_EQ(unc & 0x3FFFu, b.angle >> 2) << "ANGLEUNC: the estimator's angle";
+    const uint16_t diag = b.spi_frame(0x0000);
+    EXPECT_EQ((diag >> 8) & 1, b.trk.back().lot ? 0 : 1) << "LF: not loss of tracking";
+  }
+  EXPECT_EQ(samples, 40);
+  EXPECT_GT(angles.size(), 30u) << "the estimator's angle moved";
+}
+
+}  // namespace
+}  // namespace acore
