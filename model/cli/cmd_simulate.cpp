@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `anglecore simulate`: a sensor recording from a built-in scenario or a scenario JSON file
-// (model/lab/sim/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected angle
-// error.
+// (model/lab/sim/simulator.hpp, docs/contracts.md, command line), with a summary of the uncorrected
+// angle error.
 #include <fmt/format.h>
 
 #include <cmath>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The plugin side of rtl_plugin.hpp: the interfaces implemented once, as templates over any
 // Verilated class V (their port types depend on the build's widths). Each plugin's generated
-// source (model/rtlsim/CMakeLists.txt) includes this header and its Verilated class, and instantiates
-// ACORE_RTL_PLUGIN once. Only plugins include this file (and verilated.h).
+// source (model/rtlsim/CMakeLists.txt) includes this header and its Verilated class, and
+// instantiates ACORE_RTL_PLUGIN once. Only plugins include this file (and verilated.h).
 #pragma once
 #include <verilated.h>
 #include <verilated_fst_c.h>

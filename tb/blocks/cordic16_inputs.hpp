@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The input set of the 16-bit CORDIC tests (tb/blocks/test_cordic16.cpp: the pipelined and the word-serial CORDIC), in
-// a fixed order: the square of IN_W-bit codes with a stride, every short vector, the edges.
+// The input set of the 16-bit CORDIC tests (tb/blocks/test_cordic16.cpp: the pipelined and the
+// word-serial CORDIC), in a fixed order: the square of IN_W-bit codes with a stride, every short
+// vector, the edges.
 #pragma once
 #include <functional>
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The 16-bit stand-alone CORDIC (the registry line cordic16: 16-bit x/y, 16-bit angle, full circle,
 // NORM=1):
-//  1. the Verilated RTL equals the C++ model (model/ip/stages/cordic.cpp) bit for bit on a sweep of the input
+//  1. the Verilated RTL equals the C++ model (model/ip/stages/cordic.cpp) bit for bit on a sweep of
+//  the input
 //     square plus its edges and every short vector;
 //  2. the model's angle error against double-precision atan2 of the integer inputs, in output
 //     LSBs (one turn = 2^16): at most 0.5 RMS and 1 max over a dense sweep (every 6th code in x and

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The folded shift-add multiplier (rtl/acore_fold_mul.v) alone, against the contract's
-// fx::shift_add_mul (model/ip/core/fixed_point.hpp, every partial product floored on its own) plus the
-// addend, in the four parameter sets Verilated by tb/CMakeLists.txt: the Horner step folded over 2
-// and over 4 clocks (signed b), the scaler's product over 4 clocks (unsigned b), and a product
-// whose right shift exceeds b's width (operand register loaded with a floored copy of a). Products
-// start every F clocks or with random gaps, with random, extreme and zero operands; each result
-// must appear exactly LATENCY clocks after its start (the module's formula), from a random initial
-// state.
+// fx::shift_add_mul (model/ip/core/fixed_point.hpp, every partial product floored on its own) plus
+// the addend, in the four parameter sets Verilated by tb/CMakeLists.txt: the Horner step folded
+// over 2 and over 4 clocks (signed b), the scaler's product over 4 clocks (unsigned b), and a
+// product whose right shift exceeds b's width (operand register loaded with a floored copy of a).
+// Products start every F clocks or with random gaps, with random, extreme and zero operands; each
+// result must appear exactly LATENCY clocks after its start (the module's formula), from a random
+// initial state.
 #include <gtest/gtest.h>
 #include <verilated.h>
 

@@ -130,7 +130,8 @@ size_t long_stall(const RtlBuild& build, const RegImage& img, const std::vector<
 int run(const std::string& name, size_t samples) {
   const RtlBuild& build = rtl_build_named(name);
   if (build.top == RtlTop::kShell)
-    throw InputError("'" + name + "' is a build of the register shell (tb/shell/test_apb_shell.cpp)");
+    throw InputError("'" + name +
+                     "' is a build of the register shell (tb/shell/test_apb_shell.cpp)");
   const DatapathConfig& cfg = build.cfg;
   cfg.validate();
   const int latency = build.plugin().latency, cycles = build.plugin().cycles;
@@ -168,7 +169,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 int run_long(const std::string& name, size_t total) {
   const RtlBuild& build = rtl_build_named(name);
   if (build.top == RtlTop::kShell)
-    throw InputError("'" + name + "' is a build of the register shell (tb/shell/test_apb_shell.cpp)");
+    throw InputError("'" + name +
+                     "' is a build of the register shell (tb/shell/test_apb_shell.cpp)");
   const DatapathConfig& cfg = build.cfg;
   cfg.validate();
   std::printf("long co-sim of %s (%s): %s, %zu samples\n", name.c_str(), build.module.c_str(),

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// GoogleTest form of cosim::compare (tb/cosim/cosim_stimuli.hpp): counts the mismatches, fails the test
-// on the first one with its description, and prints the tally.
+// GoogleTest form of cosim::compare (tb/cosim/cosim_stimuli.hpp): counts the mismatches, fails the
+// test on the first one with its description, and prints the tally.
 #pragma once
 #include <gtest/gtest.h>
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What every co-sim program shares (tb/cosim/test_cosim.cpp, tb/cosim/cosim_config.cpp,
-// tb/shell/test_apb_shell.cpp, tb/board/test_board.cpp): the output comparison against the bit-accurate model, random and paper
-// input codes, and the identity register image. Header-only, test code.
+// tb/shell/test_apb_shell.cpp, tb/board/test_board.cpp): the output comparison against the
+// bit-accurate model, random and paper input codes, and the identity register image. Header-only,
+// test code.
 #pragma once
 #include <cmath>
 #include <cstdio>

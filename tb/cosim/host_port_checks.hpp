@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The host port and reset contract that both tops share (docs/rtl.md "Port timing": host port,
 // reset), as measurements on the one RtlHarness (for rtl/acore_top.v at any FOLD and for
-// rtl/acore_serial_top.v). tb/cosim/test_cosim.cpp asserts the same numbers on every build of both, so
-// the two tops cannot drift apart. Header-only, test code.
+// rtl/acore_serial_top.v). tb/cosim/test_cosim.cpp asserts the same numbers on every build of both,
+// so the two tops cannot drift apart. Header-only, test code.
 #pragma once
 #include <cstdint>
 #include <random>

@@ -19,9 +19,9 @@
 #include "calibration/calibration.hpp"
 #include "core/errors.hpp"
 #include "cosim/cosim_expect.hpp"
+#include "cosim/host_port_checks.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "cosim/host_port_checks.hpp"
 #include "rtlsim/rtl_engine.hpp"
 #include "support/paper_signals.hpp"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The model's side of the parameter rules, for tb/lint/param_checks.py: reads RTL parameter override
-// sets from stdin, one per line ("DEGREE=8 K=30", the syntax of rtl/configs.txt; empty = the
-// defaults), applies each to the default configuration (DatapathConfig::with_rtl_params) and
+// The model's side of the parameter rules, for tb/lint/param_checks.py: reads RTL parameter
+// override sets from stdin, one per line ("DEGREE=8 K=30", the syntax of rtl/configs.txt; empty =
+// the defaults), applies each to the default configuration (DatapathConfig::with_rtl_params) and
 // prints one line per set: "legal" or "illegal: <validate()'s message>".
 //   acore_validate_params < sets.txt
 // Exit 0 when every line was judged, 2 on bad usage or a malformed set (unknown parameter, not an

@@ -10,10 +10,10 @@ namespace acore {
 namespace {
 
 // Where the wrapped top sits in the shell's hierarchy (its public LATENCY and CYCLES), and its
-// active coefficient words (public through model/rtlsim/shell_public.vlt): mem_q of the serial core's RAM or
-// of the pipelined top's register file; the folded top (FOLD > 1) keeps its words in several
-// memory copies (acore_fold_regs.v), and the upset goes into the one its host port reads back
-// (rb_mem_q), the copy the scrubber checks.
+// active coefficient words (public through model/rtlsim/shell_public.vlt): mem_q of the serial
+// core's RAM or of the pipelined top's register file; the folded top (FOLD > 1) keeps its words in
+// several memory copies (acore_fold_regs.v), and the upset goes into the one its host port reads
+// back (rb_mem_q), the copy the scrubber checks.
 std::string top_scope(const RtlBuild& b) {
   return b.serial ? "acore_apb.g_serial.u_top" : "acore_apb.g_pipe.u_top";
 }

@@ -115,9 +115,9 @@ class ShellDriver {
   const DatapathConfig& config() const;
   // A Verilator-public parameter of the wrapped top (LATENCY; CYCLES for the serial core).
   uint32_t top_param(const char* name) const;
-  // Backdoor into the top's active coefficient words (model/rtlsim/shell_public.vlt): an upset. The folded
-  // top keeps its words in several memory copies (acore_fold_regs.v); the upset goes into the one
-  // its host port reads back, the copy the scrubber checks.
+  // Backdoor into the top's active coefficient words (model/rtlsim/shell_public.vlt): an upset. The
+  // folded top keeps its words in several memory copies (acore_fold_regs.v); the upset goes into
+  // the one its host port reads back, the copy the scrubber checks.
   void flip_active_bit(int addr, int bit);
   uint64_t active_word(int addr) const;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The APB register shell (rtl/acore_apb.v) around both tops, the pipelined one also folded,
-// through one driver (tb/shell/shell_driver.hpp) and one suite parameterized over the registry's shell
-// builds (Shell/Shell.*/apb, .../apb_serial, .../apb_fold2, ...):
+// through one driver (tb/shell/shell_driver.hpp) and one suite parameterized over the registry's
+// shell builds (Shell/Shell.*/apb, .../apb_serial, .../apb_fold2, ...):
 //   - coefficient reloads every 1000 samples at full input rate under random output backpressure:
 //     every output equals the bit-accurate model under the image the test committed before the
 //     sample was taken, and carries that image's generation tag;

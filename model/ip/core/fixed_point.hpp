@@ -6,8 +6,8 @@
 //   shift_add_mul()  the adder/shifter multiplier: one conditional add of a shifted operand per
 //                    bit of the other operand, every partial product truncated (floor) on its own
 //
-// A coverage build (-DACORE_SAT_COVERAGE: tb/cosim/sat_coverage.cpp compiles its own copy of the model)
-// counts, for every call site of saturate(), the values below, inside and above its range.
+// A coverage build (-DACORE_SAT_COVERAGE: tb/cosim/sat_coverage.cpp compiles its own copy of the
+// model) counts, for every call site of saturate(), the values below, inside and above its range.
 #pragma once
 #include <cstdint>
 #ifdef ACORE_SAT_COVERAGE

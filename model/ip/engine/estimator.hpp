@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Runs an estimator engine over a whole recording: the common front of `estimate`, `demo` and
-// `diagnose`. The RTL engine lives in model/rtlsim/rtl_engine.hpp (the pipelined top, "rtl", and the serial
-// core, "rtl-serial") and returns the same FixedSample rows.
+// `diagnose`. The RTL engine lives in model/rtlsim/rtl_engine.hpp (the pipelined top, "rtl", and
+// the serial core, "rtl-serial") and returns the same FixedSample rows.
 #pragma once
 #include <array>
 #include <cstdint>

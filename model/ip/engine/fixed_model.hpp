@@ -54,8 +54,8 @@ class FixedModel {
   FixedSample step(const ChannelCodes& c) const;
   // The same chain over many samples at once (engine/fixed_batch.cpp): structure-of-arrays loops
   // and explicit SIMD vectors, bit-identical to step() in the RTL-visible outputs
-  // (tests/ip/engine/test_fixed_batch.cpp). Falls back to step() for configurations wider than 32 bits; the
-  // Fourier stage (it only reads the angle) runs per sample after the vectorized chain.
+  // (tests/ip/engine/test_fixed_batch.cpp). Falls back to step() for configurations wider than 32
+  // bits; the Fourier stage (it only reads the angle) runs per sample after the vectorized chain.
   void run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const;
   bool batch_fits_int32() const;
   const RegImage& image() const { return img_; }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The Fourier correction after the CORDIC (model/ip/stages/fourier_correct.hpp): the bit-accurate stage
-// against a double evaluation of the same series, the calibration against a known distortion, and
-// the accuracy it reaches on the noise-free paper scenario.
+// The Fourier correction after the CORDIC (model/ip/stages/fourier_correct.hpp): the bit-accurate
+// stage against a double evaluation of the same series, the calibration against a known distortion,
+// and the accuracy it reaches on the noise-free paper scenario.
 #include <gtest/gtest.h>
 
 #include <cmath>

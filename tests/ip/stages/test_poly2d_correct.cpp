@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The correction modes beyond the paper's (model/ip/stages/poly2d_correct.*, XCENTER in poly_correct.*,
-// CORRECTION = none, the CORDIC width presets): against a brute-force double evaluation, against
-// the 1-D mode they must reduce to, and against the accuracy an independent double-precision study
-// reached on the noise-free paper scenario (2-D cubics, 4 regions, 100 words: 0.009 deg RMS,
-// 0.061 deg max).
+// The correction modes beyond the paper's (model/ip/stages/poly2d_correct.*, XCENTER in
+// poly_correct.*, CORRECTION = none, the CORDIC width presets): against a brute-force double
+// evaluation, against the 1-D mode they must reduce to, and against the accuracy an independent
+// double-precision study reached on the noise-free paper scenario (2-D cubics, 4 regions, 100
+// words: 0.009 deg RMS, 0.061 deg max).
 #include <gtest/gtest.h>
 
 #include <cmath>
