@@ -21,7 +21,7 @@ NAME = r"[a-z][a-z0-9_]*"
 CAPACITY = ("logic_cells", "luts", "ffs", "bram_blocks", "bram_bits", "dsp", "user_io")
 FLOW_FIELDS = {"default_device": str, "freq_mhz": int, "seed": int, "yosys": str}
 FAMILY_FIELDS = {"title": str, "synth": str, "options": list, "cells": dict, "columns": list}
-PNR_FIELDS = {"pnr": str, "pnr_output": list, "constrained": list, "unconstrained": list,
+PNR_FIELDS = {"netlist": list, "pnr": str, "pnr_output": list, "constrained": list, "unconstrained": list,
               "constraint_comment": str, "constraint_pin": str, "pnr_cell": str, "pnr_cell_label": str,
               "pnr_bram": str, "pnr_dsp": str,
               "unconstrained_log": str, "measured_with": str}
@@ -48,8 +48,10 @@ class Family:
         for k in PNR_FIELDS:
             setattr(self, k, f.get(k))
 
-    def yosys_command(self, top):
-        return " ".join([self.synth] + self.options + ["-top", top])
+    def yosys_command(self, top, netlist=None):
+        """The Yosys synthesis command of the top (writing the netlist to place when given)."""
+        out = [a.format(file=netlist) for a in self.netlist] if netlist else []
+        return " ".join([self.synth] + self.options + ["-top", top] + out)
 
     def count(self, cells, classes):
         """Sum of the cells of these classes in a `registry.cells()` dict (None when it is None)."""

@@ -426,8 +426,9 @@ def synth_tasks(root, names=None, flows=None):
                           fam.yosys_command(d.top), params))
         for dev in placed:
             fam = dev.family
-            netlists.append(("yosys", fam.name, d.name, report(root, fam.name, d.name), netlist(root, d.name), d.top,
-                             d.source or "-", fam.yosys_command(d.top), params))
+            nl = netlist(root, d.name)
+            netlists.append(("yosys", fam.name, d.name, report(root, fam.name, d.name), nl, d.top,
+                             d.source or "-", fam.yosys_command(d.top, nl), params))
             places.append(("place", dev.name, d.name, report(root, dev.name, d.name), dev.short))
     return netlists + places + areas
 

@@ -113,7 +113,7 @@ def stage_result(work, full_json, module, ports):
     with open(ys, "w") as f:
         f.write(f"read_json {full_json}\nhierarchy -top {module}\nrename {module} acore_pnr_dut\n"
                 f"read_verilog -sv {work}/wrap.v\nhierarchy -top acore_pnr_wrap\n"
-                f"{fam.yosys_command('acore_pnr_wrap')}\nwrite_json {work}/wrap.json\n"
+                f"{fam.yosys_command('acore_pnr_wrap', f'{work}/wrap.json')}\n"
                 f"tee -o {work}/stat.txt stat\n")
     if run(["yosys", "-q", "-s", ys], os.path.join(work, "yosys.log")) != 0:
         return {"error": "yosys failed", "log": os.path.join(work, "yosys.log")}

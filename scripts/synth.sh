@@ -45,11 +45,12 @@ done <"$root/rtl/files.f"
 
 # The runs (scripts/registry.py synth-tasks), tab-separated: Yosys runs (family, design, report,
 # netlist to place or '-', top module, the synth/ file defining it or '-', the family's synthesis
-# command, the registry line's parameters, set on the top by chparam), netlists first; then the
+# command, writing that netlist, the registry line's parameters, set on the top by chparam),
+# netlists first; then the
 # placements (device, design, log, the device's short name).
 plan=$(registry synth-tasks ${only:+--names "$only"} ${flows:+--flows "$flows"}) || exit 2
 if [ -z "$plan" ]; then
-  echo "scripts/synth.sh: no synthesis flow (${flows:-any family or device of synth/devices.toml}) on ${only:-any registry line}" >&2
+  echo "scripts/synth.sh: no synthesis flow (${flows:-a family or device of the devices table}) on ${only:-any registry line}" >&2
   exit 2
 fi
 declare -A SCRIPT OUT NETLIST LOG SHORT
@@ -77,9 +78,7 @@ while IFS=$'\t' read -r kind target d out net top src synth params; do
   k=$target:$d
   OUT[$k]=$out
   NETLIST[$k]=$net
-  write=""
-  [ "$net" = - ] || write="write_json $net"
-  SCRIPT[$k]=$(sed -e "s|@TOP@|$top|g" -e "s|@SYNTH@|$synth|g" -e "s|@OUT@|$out|g" -e "s|@WRITE@|$write|g" \
+  SCRIPT[$k]=$(sed -e "s|@TOP@|$top|g" -e "s|@SYNTH@|$synth|g" -e "s|@OUT@|$out|g" \
     "$syn/synth.ys.in" | awk -v r="$reads" '{ if ($0 == "@READ@") print r; else print }')
   if [ "$net" = - ]; then tasks+=("run_yosys $target $d"); else netlists+=("run_yosys $target $d"); fi
 done <<<"$plan"

@@ -49,8 +49,7 @@ std::string cordic16_atan(const std::vector<std::string>& args) {
   const auto p = param_args(args);
   const char* names[] = {"IN_W", "G", "Z_W", "ANGLE_W", "K", "AT_W", "NORM", "SPLIT"};
   for (const char* n : names)
-    if (!p.count(n))
-      throw InputError(fmt::format("cordic16_atan: no parameter {} given", n));
+    if (!p.count(n)) throw InputError(fmt::format("cordic16_atan: no parameter {} given", n));
   const int k = p.at("K"), z_w = p.at("Z_W"), at_w = p.at("AT_W");
   const std::vector<int64_t> table = acore::cordic_atan_table(z_w, k);
   // The word's value in degrees as the register map reads an atan word (AT_W bits, Z_W a turn).

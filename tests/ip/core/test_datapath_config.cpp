@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // DatapathConfig::validate() rule by rule: each limit is legal on its edge and illegal one step
-// past it (the RTL's rtl/acore_config_check.v has the same rules; tb/lint/param_checks.py checks that
-// the two agree on random parameter sets), and every named configuration of rtl/configs.txt is
+// past it (the RTL's rtl/acore_config_check.v has the same rules; tb/lint/param_checks.py checks
+// that the two agree on random parameter sets), and every named configuration of rtl/configs.txt is
 // legal. The field table (config_fields()) against the top's parameters, describe() as it was
 // written by hand before the table, rtl_params() and with_rtl_params(), and operator==.
 #include <fmt/format.h>
