@@ -21,6 +21,7 @@
 
 #include "core/datapath_config.hpp"
 #include "core/errors.hpp"
+#include "registry_lines_generated.hpp"
 
 namespace acore {
 namespace {
@@ -91,17 +92,9 @@ TEST(DatapathConfig, EachRuleOnItsEdgeAndOnePast) {
 }
 
 // Every configuration of a datapath top in the registry: acore_top, acore_serial_top, and acore_apb
-// around either (its SERIAL parameter picks the top). The lines come from scripts/registry.py, the
-// registry's one reader, through the variables CMake includes (tests/CMakeLists.txt writes them as
-// registry_lines.inc).
-struct RegistryLine {
-  const char* name;
-  const char* module;
-  const char* params;
-};
-constexpr RegistryLine kRegistryLines[] = {
-#include "registry_lines.inc"
-};
+// around either (its SERIAL parameter picks the top). The lines (kRegistryLines) come from
+// scripts/registry.py, the registry's one reader, through the variables CMake includes
+// (tests/CMakeLists.txt writes them into the build tree).
 
 TEST(DatapathConfig, NamedConfigurationsAreLegal) {
   int n = 0;
