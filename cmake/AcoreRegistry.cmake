@@ -3,9 +3,10 @@
 # build (included by the top-level CMakeLists.txt): the RTL engine (model/rtlsim) generates its
 # table of builds from it and, with Verilator, one run-time module per build; tb/ adds the benches.
 #
-# ACORE_REG_NAMES lists every line's name; ACORE_REG_MODULE_<name>, ACORE_REG_FLOWS_<name> (a list)
-# and ACORE_REG_PARAMS_<name> (a list of PARAM=value) its fields. ACORE_RTL_FILES: the absolute
-# paths of rtl/files.f.
+# ACORE_REG_NAMES lists every line's name; ACORE_REG_MODULE_<name>, ACORE_REG_FLOWS_<name> (a list),
+# ACORE_REG_PARAMS_<name> (a list of PARAM=value) and ACORE_REG_TAGS_<name> (a list) its fields;
+# ACORE_REG_TAGGED_<tag> the names carrying a tag (the registry's header lists the tags).
+# ACORE_RTL_FILES: the absolute paths of rtl/files.f.
 file(STRINGS ${CMAKE_SOURCE_DIR}/rtl/files.f ACORE_RTL_FILES_REL REGEX "^[^#].*\\.v$")
 set(ACORE_RTL_FILES "")
 foreach(f ${ACORE_RTL_FILES_REL})
@@ -16,38 +17,24 @@ set(ACORE_RTL_VLT ${CMAKE_SOURCE_DIR}/rtl/verilator.vlt)
 # modules include rtl/acore_derived.vh (the derived quantities).
 set(ACORE_VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -I${CMAKE_SOURCE_DIR}/rtl)
 
-set(ACORE_REGISTRY ${CMAKE_SOURCE_DIR}/rtl/configs.txt)
-set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${ACORE_REGISTRY}
-                                                               ${CMAKE_SOURCE_DIR}/rtl/files.f)
-file(STRINGS ${ACORE_REGISTRY} ACORE_REG_LINES REGEX "^[a-z]")
-set(ACORE_REG_NAMES "")
-foreach(line ${ACORE_REG_LINES})
-  string(REGEX REPLACE "[ \t]+" ";" fields "${line}")
-  list(LENGTH fields n)
-  if(n LESS 3)
-    message(FATAL_ERROR "rtl/configs.txt: '${line}': expected name module flows [PARAM=value ...]")
-  endif()
-  list(GET fields 0 name)
-  list(GET fields 1 module)
-  list(GET fields 2 flows)
-  list(REMOVE_AT fields 0 1 2)
-  if(name IN_LIST ACORE_REG_NAMES)
-    message(FATAL_ERROR "rtl/configs.txt: '${name}' is listed twice")
-  endif()
-  foreach(p ${fields})
-    if(NOT p MATCHES "^[A-Z_][A-Z0-9_]*=[0-9]+$")
-      message(FATAL_ERROR "rtl/configs.txt: ${name}: '${p}' is not PARAM=value")
-    endif()
-  endforeach()
-  list(APPEND ACORE_REG_NAMES ${name})
-  set(ACORE_REG_MODULE_${name} ${module})
-  string(REPLACE "," ";" ACORE_REG_FLOWS_${name} "${flows}")
-  set(ACORE_REG_PARAMS_${name} ${fields})
-endforeach()
-list(GET ACORE_REG_NAMES 0 first)
-if(NOT first STREQUAL "default" OR NOT ACORE_REG_MODULE_default STREQUAL "acore_top")
-  message(FATAL_ERROR "rtl/configs.txt: the first line must be 'default acore_top ...'")
+# The registry is read by scripts/registry.py alone: at configure time it writes the variables
+# below into the build tree and CMake includes them. A malformed line (or a malformed devices table,
+# whose families and devices are the synthesis flows) stops the configuration with registry.py's
+# message (file, line and field); editing either file, or the reader, configures again.
+find_program(ACORE_PYTHON3 NAMES python3 REQUIRED)
+set(ACORE_REGISTRY_CMAKE ${CMAKE_BINARY_DIR}/acore_registry.cmake)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+  ${CMAKE_SOURCE_DIR}/rtl/configs.txt ${CMAKE_SOURCE_DIR}/rtl/files.f ${CMAKE_SOURCE_DIR}/synth/devices.toml
+  ${CMAKE_SOURCE_DIR}/scripts/registry.py ${CMAKE_SOURCE_DIR}/scripts/devices.py)
+execute_process(
+  COMMAND ${ACORE_PYTHON3} ${CMAKE_SOURCE_DIR}/scripts/registry.py --root ${CMAKE_SOURCE_DIR} cmake
+          ${ACORE_REGISTRY_CMAKE}
+  RESULT_VARIABLE _acore_registry_rc ERROR_VARIABLE _acore_registry_err)
+if(NOT _acore_registry_rc EQUAL 0)
+  string(STRIP "${_acore_registry_err}" _acore_registry_err)
+  message(FATAL_ERROR "${_acore_registry_err}")
 endif()
+include(${ACORE_REGISTRY_CMAKE})
 
 # -G arguments of a registry line.
 function(acore_gargs out name)

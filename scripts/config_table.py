@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Configuration table: every acore_top and acore_serial_top line of the build registry
-rtl/configs.txt with its register words, LATENCY, clocks per sample, iCE40 LUT4, HX8K logic cells,
-Fmax and samples/s, written as Markdown.
+rtl/configs.txt with its register words, LATENCY, clocks per sample, and on the default device of
+synth/devices.toml (the iCE40 HX8K) its family's LUTs, the device's logic cells, Fmax and samples/s,
+written as Markdown.
 
 usage: scripts/config_table.py [--root DIR] [--measure] [--out FILE]
   --out      default synth/reports/config_table.md ("-" = stdout)
@@ -13,9 +14,10 @@ usage: scripts/config_table.py [--root DIR] [--measure] [--out FILE]
 Where each figure comes from (the table says it per row):
   words, LATENCY, CYCLES  the RTL itself: `verilator --xml-only` elaborates the top with the line's
                           parameters and the script reads the top's WORDS, LATENCY and CYCLES.
-  a line with reports     scripts/synth.sh reports of that line (its ice40 flow: ice40_<name>.txt,
-                          LUT4; its pnr flow: nextpnr_<name>_pnr.log, LCs and Fmax of the whole top
-                          or core in its pin wrapper). When the whole top does not fit the HX8K (the
+  a line with reports     scripts/synth.sh reports of that line (its family's flow, e.g. ice40:
+                          ice40_<name>.txt, LUT4; the device's flow, e.g. hx8k: nextpnr_<name>_pnr.log,
+                          LCs and Fmax of the whole top or core in its pin wrapper). When the whole
+                          top does not fit the device (the
                           default acore_top), its Fmax is bounded by its slowest stage placed alone:
                           the registry's placed lines of the modules it instantiates, at their
                           defaults (scripts/registry.py default_top_stages).
@@ -35,8 +37,9 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import devices  # noqa: E402
 import registry  # noqa: E402
-from registry import cells, pnr_result  # noqa: E402
+from registry import cells  # noqa: E402
 
 TOPS = ("acore_top", "acore_serial_top")
 
@@ -90,6 +93,10 @@ def main():
     sweep = sweep_rows(root)
 
     lines = []
+    table = registry.table(root)
+    dev = table.default
+    fam = dev.family
+    pnr_result = lambda log: registry.pnr_result(log, dev)  # noqa: E731
     rows = [l for l in registry.load(root) if l.module in TOPS]
     defaults = registry.rtl_parameters(root, "acore_top")
     stages = [registry.placed_design(root, l) for l in registry.default_top_stages(root)]
@@ -102,22 +109,25 @@ def main():
         cycles = k["CYCLES"]
         lut4 = lcs = fmax = None
         bound = False
-        ice40 = registry.report(root, "ice40", name)
-        log = registry.report(root, "pnr", registry.placed_design(root, line))
-        if os.path.exists(ice40):
-            lut4 = (cells(ice40) or {}).get("SB_LUT4")
-            how = [f"LUT4 `{os.path.basename(ice40)}`"]
+        area = registry.report(root, fam.name, name)
+        log = registry.report(root, dev.name, registry.placed_design(root, line))
+        lut = next(label for label, count in fam.columns if "lut" in count)
+        if os.path.exists(area):
+            lut4 = fam.count(cells(area) or {"total": 0}, ["lut"]) or None
+            how = [f"{lut} `{os.path.basename(area)}`"]
             if os.path.exists(log):
                 fmax, lc, _ = pnr_result(log)
                 lcs = f"{lc[0]}/{lc[1]}" if lc else None
                 whole = "core" if serial else "top"
-                pins = ", PCF" if registry.pnr_used_pcf(log) else ""
+                fmt_name = os.path.splitext(dev.constraints)[1][1:].upper()
+                pins = f", {fmt_name}" if registry.pnr_constrained(log, dev) else ""
+                lcs_name = fam.pnr_cell_label
                 if fmax:
-                    how.append(f"LCs, Fmax `{os.path.basename(log)}` (whole {whole} placed and routed{pins})")
+                    how.append(f"{lcs_name}, Fmax `{os.path.basename(log)}` (whole {whole} placed and routed{pins})")
                 else:
-                    how.append(f"LCs `{os.path.basename(log)}` (does not fit the HX8K)")
+                    how.append(f"{lcs_name} `{os.path.basename(log)}` (does not fit the {dev.short})")
             if fmax is None and not serial and not params:
-                fs = [pnr_result(registry.report(root, "pnr", d))[0] for d in stages]
+                fs = [pnr_result(registry.report(root, dev.name, d))[0] for d in stages]
                 fmax = min(f for f in fs if f) if any(fs) else None
                 bound = True
                 how.append("Fmax = slowest stage placed alone (≤)")
@@ -137,7 +147,7 @@ def main():
             m = measured.get(key)
             if m:
                 lut4, fmax = m.get("lut4"), m.get("fmax_mhz")
-                lcs = f"{m['lcs']}/7680" if m.get("lcs") else None
+                lcs = f"{m['lcs']}/{dev.capacity['logic_cells']}" if m.get("lcs") else None
                 how = ("measured, `scripts/config_table.py --measure` (`stage_fmax.py --whole`: whole core placed "
                        "and routed, generated wrapper, pins unconstrained)")
             else:
@@ -148,7 +158,7 @@ def main():
                 lut4 = int(r["lut4"])
                 fmax = float(r["fmax_mhz"]) if r.get("fmax_mhz") else None
                 bound = True
-                how = (f"measured, design-space sweep (`design_space.csv` row {r['index']}): LUT4 of the whole "
+                how = (f"measured, design-space sweep (`design_space.csv` row {r['index']}): {lut} of the whole "
                        "top; Fmax = slowest stage placed alone (≤); not placed whole")
             else:
                 how = "not measured (no report has this configuration; a whole-top synthesis takes minutes)"
@@ -168,11 +178,12 @@ def main():
             "`rtl/configs.txt` (pipelined `acore_top`, one sample per clock, or folded to one sample every FOLD "
             "clocks; the serial core `acore_serial_top`, one sample every CYCLES clocks). Words, LATENCY and "
             "CYCLES are the RTL's own constants (`verilator --xml-only` with the configuration's parameters); "
-            "area and clock come from the reports named in the last column (Yosys 0.23 `synth_ice40`, nextpnr-ice40 0.4 on an HX8K ct256, seed 1). samples/s = Fmax / "
+            f"area and clock come from the reports named in the last column ({table.flow['yosys']} `{fam.synth}`, "
+            f"{fam.measured_with} on {devices.article(dev.short)} {dev.package}, seed {table.seed}). samples/s = Fmax / "
             "clocks per sample. \"≤\": the pipelined top was not placed whole, its clock is bounded by its "
             "slowest stage placed alone (routing congestion of the whole design not included).", "",
-            "| configuration | top and parameters | words | LATENCY (clk) | clk/sample | iCE40 LUT4 | HX8K LCs | "
-            "Fmax (MHz) | samples/s | source |",
+            f"| configuration | top and parameters | words | LATENCY (clk) | clk/sample | {fam.title} {lut} | "
+            f"{dev.short} {fam.pnr_cell_label} | Fmax (MHz) | samples/s | source |",
             "|---|---|---|---|---|---|---|---|---|---|"] + lines
     text = "\n".join(text) + "\n"
     if out_path == "-":

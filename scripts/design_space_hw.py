@@ -7,14 +7,16 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
   DIR    the sweep directory: reads DIR/accuracy-<i>-of-<N>.jsonl (SHARD = "i/N"), writes
          DIR/hw-<i>-of-<N>.jsonl, one line per distinct configuration ("final_params"):
            {"final_params", "lut4", "dff", "carry", "bram", "fmax_mhz", "slowest", "stages": [...]}
-         lut4/dff/carry/bram: Yosys synth_ice40 of the whole acore_top with those parameters;
-         fmax_mhz: the slowest stage placed and routed alone on an HX8K (scripts/stage_fmax.py), the
+         lut4/dff/carry/bram: Yosys synthesis of the whole acore_top with those parameters for the
+         default device's family of synth/devices.toml (synth_ice40: its lut, ff, carry and bram
+         cell classes); fmax_mhz: the slowest stage placed and routed alone on the default device,
+         an HX8K (scripts/stage_fmax.py), the
          register file's host read-back port excluded (reported in "stages"); for a folded top
          (FOLD > 1, made to fit) the whole top placed and routed in the same kind of pin wrapper
          ("whole": {"lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}, "slowest": "acore_top").
          Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage, FOLD 1)
          also get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
-         same parameters, placed and routed whole (it fits an HX8K); cycles = its CYCLES localparam
+         same parameters, placed and routed whole (it fits the HX8K); cycles = its CYCLES localparam
          as Verilator elaborates it (scripts/registry.py rtl_constants).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
@@ -23,7 +25,6 @@ import concurrent.futures
 import hashlib
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -31,36 +32,36 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-import registry  # noqa: E402  (the RTL's parameters and constants, elaborated)
+import registry  # noqa: E402  (the RTL's parameters and constants, elaborated; the devices table)
 
 
 def rtl_files(root):
-    with open(os.path.join(root, "rtl", "files.f")) as f:
-        return [os.path.join(root, "rtl", l.strip()) for l in f if l.strip().endswith(".v") and not l.startswith("#")]
+    return [os.path.join(root, "rtl", f) for f in registry.rtl_files(root)]
 
 
 def synth_area(root, params):
+    fam = registry.device(root).family
     chp = " ".join(f"-chparam {k} {v}" for k, v in (p.split("=", 1) for p in params.split()))
     with tempfile.TemporaryDirectory(prefix="acore_area_") as tmp:
         stat = os.path.join(tmp, "stat.txt")
         r = subprocess.run(["yosys", "-q", "-l", os.path.join(tmp, "log"), "-p",
                             f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top {chp}; "
-                            f"synth_ice40 -top acore_top; tee -q -o {stat} stat"],
+                            f"{fam.yosys_command('acore_top')}; tee -q -o {stat} stat"],
                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         if r.returncode != 0 or not os.path.exists(stat):
-            raise RuntimeError("yosys synth_ice40 failed for " + params)
-        text = open(stat).read()
-    count = lambda pat: sum(int(n) for n in re.findall(pat + r"\s+(\d+)", text))
-    return {"lut4": count(r"SB_LUT4"), "dff": count(r"SB_DFF\w*"), "carry": count(r"SB_CARRY"),
-            "bram": count(r"SB_RAM40_4K\w*")}
+            raise RuntimeError(f"yosys {fam.synth} failed for " + params)
+        c = registry.cells(stat)
+    return {"lut4": fam.count(c, ["lut"]), "dff": fam.count(c, ["ff"]), "carry": fam.count(c, ["carry"]),
+            "bram": fam.count(c, ["bram"])}
 
 
 def measure(root, cache, params):
-    key = hashlib.sha1((params + "|" + "".join(open(f).read() for f in rtl_files(root))).encode()).hexdigest()[:16]
+    dev = registry.device(root).name
+    key = hashlib.sha1((params + "|" + dev + "|" + "".join(open(f).read() for f in rtl_files(root))).encode()).hexdigest()[:16]
     path = os.path.join(cache, f"top-{key}.json")
     if os.path.exists(path):
         return json.load(open(path))
-    res = {"final_params": params}
+    res = {"final_params": params, "device": dev}
     res.update(synth_area(root, params))
     p = dict(kv.split("=", 1) for kv in params.split())
     if int(p.get("FOLD", 1)) > 1:

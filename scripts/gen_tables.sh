@@ -10,7 +10,10 @@ gen=$1
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${2:-$root}
 mkdir -p "$out/synth" "$out/docs/reports"
-(cd "$root" && "$gen" cordic16_atan rtl/configs.txt) >"$out/synth/acore_cordic16_atan.vh"
+# The cordic16 line's parameters from the registry's one reader, on the generator's command line.
+c16=$(python3 "$root/scripts/registry.py" --root "$root" params cordic16) || exit 2
+# shellcheck disable=SC2086
+(cd "$root" && "$gen" cordic16_atan $c16) >"$out/synth/acore_cordic16_atan.vh"
 {
   echo "# The coefficient register map"
   echo

@@ -1,36 +1,49 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""The build registry rtl/configs.txt (`name module flows [PARAM=value ...]`), read by every script
-through this one parser, and the rules that turn a registry line into builds and report names.
+"""The build registry rtl/configs.txt (`name module flows [tags=T,...] [PARAM=value ...]`), read by
+every script and by CMake through this one parser (CMake includes what `registry.py cmake` writes at
+configure time), and the rules that turn a registry line into builds and report names. The synthesis
+flows are the families and devices of synth/devices.toml (scripts/devices.py reads it).
 
-usage: registry.py lines [--flow F[,F...]] [--module M] [--names N[,N...]]
+usage: registry.py lines [--flow F[,F...]] [--module M] [--names N[,N...]] [--tag T]
          the registry lines with any of the flows (all lines without --flow), in file order, one per
-         line: "name module flows [PARAM=value ...]" (flows comma-separated, '-' for none)
+         line: "name module flows [PARAM=value ...]" (flows comma-separated, '-' for none; tags not
+         shown)
+       registry.py params NAME
+         the line's parameters, "PARAM=value ..." (empty for none)
+       registry.py cmake OUT
+         writes OUT, the CMake file cmake/AcoreRegistry.cmake includes: ACORE_REG_NAMES, and per
+         line ACORE_REG_MODULE_<name>, ACORE_REG_FLOWS_<name>, ACORE_REG_PARAMS_<name> (PARAM=value),
+         ACORE_REG_TAGS_<name>; per tag ACORE_REG_TAGGED_<tag> (the names carrying it)
        registry.py synth [--names N[,N...]] [--flows F[,F...]]
          the designs scripts/synth.sh builds, one per line: "design top source flows [PARAM=value ...]"
-         (source: the synth/ file defining top, '-' for a module of rtl/files.f; flows
-         comma-separated)
-       registry.py pcf-covers NETLIST_JSON PCF
-         exit 0 when the PCF places every port of the netlist's top module, 1 when it does not
-Exit 2 on a malformed registry line (file, line and field named) or an unknown name.
+         (source: the synth/ file defining top, '-' for a module of rtl/files.f; flows: the families
+         and devices of synth/devices.toml it is synthesized for or placed on, comma-separated)
+       registry.py synth-tasks [--names N[,N...]] [--flows F[,F...]]
+         scripts/synth.sh's runs of those designs, tab-separated, one per line:
+           yosys FAMILY DESIGN REPORT NETLIST TOP SOURCE SYNTH_COMMAND PARAMS   (NETLIST '-': area only)
+           place DEVICE DESIGN LOG SHORT_NAME
+         (exit 2 when a device's place-and-route program is not installed)
+       registry.py pnr-command DEVICE DESIGN
+         the place-and-route command of the design's netlist (synth/build/DESIGN.json), one word per
+         line; the device's first constraint file placing every port of the netlist, else none
+Exit 2 on a malformed registry line (file, line and field named), a malformed devices table or an
+unknown name.
 
 Synthesis rules (scripts/synth.sh; the registry's header states them for its readers):
-  generic, xilinx, ice40  the line's module with the line's parameters: design <name>, reports
-                          synth/reports/<flow>_<name>.txt.
-  pnr                     the module in its pin wrapper <module>_pinwrap (a module of synth/*.v, given
-                          the line's parameters), synthesized for iCE40 and placed and routed on an
-                          HX8K: design <name>_pnr, reports ice40_<name>_pnr.txt, nextpnr_<name>_pnr.log.
-                          A module without a pin wrapper is placed as it is (its ports must fit the
-                          package): its ice40 netlist is placed, log nextpnr_<name>.log.
-                          Pins: synth/acore_hx8k_ct256.pcf when it places every port of the placed
-                          design (the whole tops), unconstrained otherwise.
-  pnr_up5k                the module in its SG48 wrapper <module>_sg48wrap (a module of synth/*.v with
-                          few enough pins for the UP5K's 48-pin package, given the line's parameters),
-                          synthesized for iCE40 and placed and routed on an iCE40 UP5K (sg48, pins
-                          unconstrained): design <name>_up5k, reports ice40_<name>_up5k.txt,
-                          nextpnr_<name>_up5k.log.
+  FAMILY (generic, ice40, xilinx, ...)  the line's module with the line's parameters: design <name>,
+                          report synth/reports/<family>_<name>.txt.
+  DEVICE (hx8k, up5k, ...)  the module in the device's pin wrapper (its `wrapper`, e.g.
+                          <module>_pinwrap, a module of synth/*.v given the line's parameters),
+                          synthesized for the device's family and placed and routed on it: design
+                          <name><suffix>, reports <family>_<name><suffix>.txt, nextpnr_<name><suffix>.log.
+                          A module without that wrapper is placed as it is (an error where the device
+                          requires its wrapper): design <name><bare_suffix>. Pins: the device's first
+                          constraint file that places every port of the placed design, unconstrained
+                          otherwise.
 """
 import functools
+import glob
 import json
 import os
 import re
@@ -39,10 +52,21 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-FLOWS = ("sim", "lint", "icarus", "generic", "xilinx", "ice40", "pnr", "pnr_up5k", "formal")
-SYNTH_FLOWS = ("generic", "xilinx", "ice40", "pnr", "pnr_up5k")
-PLACE_FLOWS = ("pnr", "pnr_up5k")
-AREA_FLOWS = ("generic", "xilinx", "ice40")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import devices  # noqa: E402  (synth/devices.toml)
+
+# The flows that are not synthesis (those are the families and devices of synth/devices.toml).
+BASE_FLOWS = ("sim", "lint", "icarus", "formal")
+# The tags a line may carry (rtl/configs.txt's header says the same): what CMake and the scripts
+# select builds by, instead of their names. A tag test_<bench> links the line's Verilated build into
+# the stand-alone bench tb/*/test_<bench>.cpp.
+TAGS = {
+    "demo": "sim",        # built with the anglecore command: `anglecore demo`'s RTL rows, tb/bench
+    "fast-sim": "sim",    # Verilated with -O3 (the long regressions run it)
+    "long-cosim": "sim",  # a 10^7-sample co-sim of its own, CTest cosim_long.<name> (configuration Long)
+    "long-proof": "formal",  # its formal proof runs long: CTest configuration Long, label long
+}
+BENCH_TAG = r"test_[a-z0-9_]+"
 
 
 class RegistryError(Exception):
@@ -50,10 +74,12 @@ class RegistryError(Exception):
 
 
 class Line:
-    """One registry line: name, module, flows (tuple), params (list of (NAME, int) in line order)."""
+    """One registry line: name, module, flows (tuple, canonical names), params (list of (NAME, int)
+    in line order), tags (tuple)."""
 
-    def __init__(self, where, name, module, flows, params):
+    def __init__(self, where, name, module, flows, params, tags=()):
         self.where, self.name, self.module, self.flows, self.params = where, name, module, flows, params
+        self.tags = tags
 
     def param_text(self):
         return " ".join(f"{k}={v}" for k, v in self.params)
@@ -66,10 +92,41 @@ def registry_path(root):
     return os.path.join(root, "rtl", "configs.txt")
 
 
+def table(root):
+    """The devices table (a RegistryError when it is malformed)."""
+    try:
+        return devices.load(root)
+    except devices.DevicesError as e:
+        raise RegistryError(str(e))
+
+
+def flow_names(root):
+    """Every flow name a registry line may carry (aliases included)."""
+    return list(BASE_FLOWS) + table(root).flows()
+
+
+def _tag_ok(root, where, tag, fl):
+    if tag in TAGS:
+        need = TAGS[tag]
+    elif re.fullmatch(BENCH_TAG, tag):
+        if not glob.glob(os.path.join(root, "tb", "*", tag + ".cpp")):
+            raise RegistryError(f"{where}: tags: '{tag}': no bench tb/*/{tag}.cpp (a test_<bench> tag links "
+                                "the line's Verilated build into that bench)")
+        need = "sim"
+    else:
+        raise RegistryError(f"{where}: tags: '{tag}' is not a tag (known: {', '.join(TAGS)}, and test_<bench> "
+                            "for a bench tb/*/test_<bench>.cpp)")
+    if need not in fl:
+        raise RegistryError(f"{where}: tags: '{tag}' needs the {need} flow")
+
+
 @functools.lru_cache(maxsize=None)
 def _load(root):
     path = registry_path(root)
     rel = os.path.relpath(path, root)
+    t = table(root)
+    known = flow_names(root)
+    suffixes = sorted({s for d in t.devices.values() for s in (d.suffix, d.bare_suffix) if s})
     lines, seen = [], {}
     try:
         text = open(path).read()
@@ -81,32 +138,52 @@ def _load(root):
         where = f"{rel}:{n}"
         f = raw.split()
         if raw[0].isspace() or len(f) < 3:
-            raise RegistryError(f"{where}: expected 'name module flows [PARAM=value ...]' starting in column 1")
-        name, module, flows = f[0], f[1], f[2]
+            raise RegistryError(f"{where}: expected 'name module flows [tags=T,...] [PARAM=value ...]' starting "
+                                "in column 1")
+        name, module, flow_text = f[0], f[1], f[2]
         if not re.fullmatch(r"[a-z][a-z0-9_]*", name):
             raise RegistryError(f"{where}: name '{name}': lower case letters, digits and '_', starting with a letter")
-        if name.endswith("_pnr") or name.endswith("_up5k"):
-            raise RegistryError(f"{where}: name '{name}': '_pnr' and '_up5k' are the suffixes of the placed "
-                                "designs' reports")
+        for s in suffixes:
+            if name.endswith(s):
+                raise RegistryError(f"{where}: name '{name}': '{s}' ends the placed designs' report names "
+                                    f"(synth/devices.toml suffixes: {', '.join(suffixes)})")
         if name in seen:
             raise RegistryError(f"{where}: name '{name}': already on line {seen[name]}")
         seen[name] = n
         if not re.fullmatch(r"[a-z][a-z0-9_]*", module):
             raise RegistryError(f"{where}: module '{module}' is not a Verilog module name")
-        fl = () if flows == "-" else tuple(flows.split(","))
+        fl = [] if flow_text == "-" else flow_text.split(",")
         for x in fl:
-            if x not in FLOWS:
-                raise RegistryError(f"{where}: flows: '{x}' is not a flow (known: {', '.join(FLOWS)}; '-' for none)")
+            if x not in known:
+                raise RegistryError(f"{where}: flows: '{x}' is not a flow (known: {', '.join(known)}; '-' for none)")
+        fl = [t.canonical(x) for x in fl]
+        for x in set(fl):
+            if fl.count(x) > 1:
+                raise RegistryError(f"{where}: flows: '{x}' named twice (aliases included)")
+        rest, tags = f[3:], []
+        if rest and rest[0].startswith("tags="):
+            tags = rest[0][5:].split(",")
+            rest = rest[1:]
+            for x in tags:
+                _tag_ok(root, where, x, fl)
+                if tags.count(x) > 1:
+                    raise RegistryError(f"{where}: tags: '{x}' named twice")
         params, pn = [], set()
-        for t in f[3:]:
-            m = re.fullmatch(r"([A-Z][A-Z0-9_]*)=(-?\d+)", t)
+        for tok in rest:
+            if tok.startswith("tags="):
+                raise RegistryError(f"{where}: tags: 'tags=...' comes right after the flows")
+            m = re.fullmatch(r"([A-Z][A-Z0-9_]*)=(-?\d+)", tok)
             if not m:
-                raise RegistryError(f"{where}: parameter '{t}' is not PARAM=integer")
+                raise RegistryError(f"{where}: parameter '{tok}' is not PARAM=integer")
             if m.group(1) in pn:
                 raise RegistryError(f"{where}: parameter {m.group(1)} set twice")
             pn.add(m.group(1))
             params.append((m.group(1), int(m.group(2))))
-        lines.append(Line(where, name, module, fl, params))
+        lines.append(Line(where, name, module, tuple(fl), params, tuple(tags)))
+    if not lines or lines[0].name != "default" or lines[0].module != "acore_top" or lines[0].params:
+        where = lines[0].where if lines else rel
+        raise RegistryError(f"{where}: the first line must be 'default acore_top FLOWS' (no parameters: the "
+                            "model's and the RTL's defaults)")
     return tuple(lines)
 
 
@@ -115,22 +192,46 @@ def load(root):
     return list(_load(os.path.abspath(root)))
 
 
-def select(root, flows=None, module=None, names=None):
-    """The lines with any of the flows (any line when None), of that module, among those names (in
-    file order; RegistryError on an unknown name)."""
+def select(root, flows=None, module=None, names=None, tag=None):
+    """The lines with any of the flows (any line when None; aliases allowed), of that module, among
+    those names, with that tag (in file order; RegistryError on an unknown name or flow)."""
     lines = load(root)
     if names:
         known = {l.name for l in lines}
         for n in names:
             if n not in known:
                 raise RegistryError(f"unknown configuration '{n}' (rtl/configs.txt names: {', '.join(sorted(known))})")
+    if flows:
+        t = table(root)
+        for f in flows:
+            if f not in BASE_FLOWS and t.target(f) is None:
+                raise RegistryError(f"'{f}' is not a flow (known: {', '.join(flow_names(root))})")
+        flows = {t.canonical(f) for f in flows}
     return [l for l in lines
-            if (not flows or set(flows) & set(l.flows)) and (not module or l.module == module)
-            and (not names or l.name in names)]
+            if (not flows or flows & set(l.flows)) and (not module or l.module == module)
+            and (not names or l.name in names) and (not tag or tag in l.tags)]
 
 
 def get(root, name):
     return select(root, names=[name])[0]
+
+
+def cmake_text(root):
+    """The CMake file `registry.py cmake` writes (see the usage)."""
+    lines = load(root)
+    q = lambda items: '"' + ";".join(items) + '"'
+    out = ["# Generated by scripts/registry.py from rtl/configs.txt at configure time: do not edit.",
+           f"set(ACORE_REG_NAMES {q(l.name for l in lines)})"]
+    tagged = {t: [] for t in TAGS}
+    for l in lines:
+        out += [f"set(ACORE_REG_MODULE_{l.name} {l.module})",
+                f"set(ACORE_REG_FLOWS_{l.name} {q(l.flows)})",
+                f"set(ACORE_REG_PARAMS_{l.name} {q(f'{k}={v}' for k, v in l.params)})",
+                f"set(ACORE_REG_TAGS_{l.name} {q(l.tags)})"]
+        for t in l.tags:
+            tagged.setdefault(t, []).append(l.name)
+    out += [f"set(ACORE_REG_TAGGED_{t} {q(n)})" for t, n in tagged.items()]
+    return "\n".join(out) + "\n"
 
 
 # --- The RTL ------------------------------------------------------------------------------------
@@ -225,16 +326,29 @@ def module_parameter_names(path, module):
     return set(re.findall(r"\bparameter\s+(?:integer\s+|signed\s+|\[[^\]]*\]\s*)*(\w+)", body))
 
 
-def pin_wrapper(root, module):
-    """(wrapper module, its synth/ file) for the pnr flow, or (None, None): placed as it is."""
-    w = module + "_pinwrap"
+def device(root, flow=None):
+    """The Device a flow names (the default device when None)."""
+    t = table(root)
+    if flow is None:
+        return t.default
+    d = t.devices.get(t.canonical(flow))
+    if d is None:
+        raise RegistryError(f"'{flow}' is not a device of synth/devices.toml (devices: {', '.join(t.devices)})")
+    return d
+
+
+def pin_wrapper(root, module, flow=None):
+    """(wrapper module, its synth/ file) of the module on the device (default: the default device),
+    or (None, None): placed as it is."""
+    w = device(root, flow).wrapper_module(module)
     src = synth_source(root, w)
     return (w, src) if src else (None, None)
 
 
-def placed_design(root, line):
-    """The design name whose netlist the pnr flow places (its nextpnr_<design>.log)."""
-    return line.name + "_pnr" if pin_wrapper(root, line.module)[0] else line.name
+def placed_design(root, line, flow=None):
+    """The design name whose netlist the device's flow places (its nextpnr_<design>.log)."""
+    d = device(root, flow)
+    return line.name + (d.suffix if pin_wrapper(root, line.module, flow)[0] else d.bare_suffix)
 
 
 class Design:
@@ -244,34 +358,40 @@ class Design:
 
 def synth_designs(root, names=None, flows=None):
     """The designs of scripts/synth.sh for the registry lines with a synthesis flow (those names and
-    flows only, when given), in registry order."""
-    flows = flows or SYNTH_FLOWS
-    for f in flows:
-        if f not in SYNTH_FLOWS:
-            raise RegistryError(f"'{f}' is not a synthesis flow (known: {', '.join(SYNTH_FLOWS)})")
+    flows only, when given; aliases allowed), in registry order."""
+    t = table(root)
+    synth_flows = list(t.families) + list(t.devices)
+    want = []
+    for f in flows or synth_flows:
+        if t.target(f) is None:
+            raise RegistryError(f"'{f}' is not a synthesis flow (known: {', '.join(t.flows())})")
+        want.append(t.canonical(f))
     out = []
-    for l in select(root, flows=[f for f in SYNTH_FLOWS if f in flows], names=names):
-        area = [f for f in AREA_FLOWS if f in l.flows and f in flows]
-        pnr = "pnr" in l.flows and "pnr" in flows
+    for l in select(root, flows=[f for f in synth_flows if f in want], names=names):
+        area = [f for f in t.families if f in l.flows and f in want]
+        placed = [t.devices[f] for f in t.devices if f in l.flows and f in want]
         src = synth_source(root, l.module)
-        wrapper, wsrc = pin_wrapper(root, l.module) if pnr else (None, None)
         msrc = module_source(root, l.module)
         if not msrc:
             raise RegistryError(f"{l.where}: module {l.module}: defined neither in rtl/files.f nor in synth/*.v")
         check_params(root, l, l.module, msrc, "the line's module")
-        if area or (pnr and not wrapper):
-            out.append(Design(l.name, l.module, src, area + (["pnr"] if pnr and not wrapper else []), l.params))
-        if wrapper:
-            check_params(root, l, wrapper, wsrc, "its pin wrapper for the pnr flow")
-            out.append(Design(l.name + "_pnr", wrapper, wsrc, ["pnr"], l.params))
-        if "pnr_up5k" in l.flows and "pnr_up5k" in flows:
-            w5 = l.module + "_sg48wrap"
-            w5src = synth_source(root, w5)
-            if not w5src:
-                raise RegistryError(f"{l.where}: flow pnr_up5k: no module {w5} in synth/*.v (the UP5K's SG48 "
-                                    "package has 39 user pins: the design is placed in that wrapper)")
-            check_params(root, l, w5, w5src, "its SG48 wrapper for the pnr_up5k flow")
-            out.append(Design(l.name + "_up5k", w5, w5src, ["pnr_up5k"], l.params))
+        bare = [d for d in placed if not pin_wrapper(root, l.module, d.name)[0]]
+        for d in bare:
+            if d.wrapper_required:
+                raise RegistryError(f"{l.where}: flow {d.name}: no module {d.wrapper_module(l.module)} in synth/*.v "
+                                    f"(the {d.title} in {d.package} has {d.capacity['user_io']} user pins: the "
+                                    "design is placed in that wrapper)")
+        own = [d.name for d in bare if not d.bare_suffix]
+        if area or own:
+            out.append(Design(l.name, l.module, src, area + own, l.params))
+        for d in placed:
+            if d in bare:
+                if d.bare_suffix:
+                    out.append(Design(l.name + d.bare_suffix, l.module, src, [d.name], l.params))
+                continue
+            w, wsrc = pin_wrapper(root, l.module, d.name)
+            check_params(root, l, w, wsrc, f"its pin wrapper for the {d.name} flow")
+            out.append(Design(l.name + d.suffix, w, wsrc, [d.name], l.params))
     return out
 
 
@@ -285,29 +405,75 @@ def check_params(root, line, module, path, what):
                                 f"has no parameter {k} (it has: {', '.join(sorted(have)) or 'none'})")
 
 
-def pcf_covers(netlist, pcf):
-    """True when the PCF has a set_io for every port bit of the netlist's top module (Yosys JSON)."""
-    placed = set()
-    for line in open(pcf):
-        f = line.split("#", 1)[0].split()
-        if len(f) >= 3 and f[0] == "set_io":
-            placed.add(f[-2])
-    mods = json.load(open(netlist))["modules"]
+def synth_tasks(root, names=None, flows=None):
+    """scripts/synth.sh's runs (see the usage): Yosys runs, the netlists to place first, then the
+    placements (RegistryError when a device's program is missing)."""
+    t = table(root)
+    netlists, places, areas = [], [], []
+    for d in synth_designs(root, names, flows):
+        params = " ".join(f"{k}={v}" for k, v in d.params)
+        placed = [t.devices[f] for f in d.flows if f in t.devices]
+        for dev in placed:
+            why = dev.tool_missing()
+            if why:
+                raise RegistryError(f"{why}: cannot place {d.name} (scripts/synth.sh -f selects other flows)")
+        nl_families = {dev.family.name for dev in placed}
+        for f in d.flows:
+            fam = t.families.get(f)
+            if fam is None or f in nl_families:
+                continue
+            areas.append(("yosys", f, d.name, report(root, f, d.name), "-", d.top, d.source or "-",
+                          fam.yosys_command(d.top), params))
+        for dev in placed:
+            fam = dev.family
+            nl = netlist(root, d.name)
+            netlists.append(("yosys", fam.name, d.name, report(root, fam.name, d.name), nl, d.top,
+                             d.source or "-", fam.yosys_command(d.top, nl), params))
+            places.append(("place", dev.name, d.name, report(root, dev.name, d.name), dev.short))
+    return netlists + places + areas
+
+
+def netlist(root, design):
+    """The Yosys netlist of a placed design (synth/build/<design>.json, not committed)."""
+    return os.path.join(root, "synth", "build", design + ".json")
+
+
+def netlist_ports(path):
+    """Every port bit of the netlist's top module, as a constraint file names it (name, name[i])."""
+    mods = json.load(open(path))["modules"]
     top = next(m for m in mods.values() if int(m.get("attributes", {}).get("top", "0"), 2))
+    out = set()
     for name, p in top["ports"].items():
         n, off = len(p["bits"]), p.get("offset", 0)
-        for i in range(n):
-            if (name if n == 1 else f"{name}[{off + i}]") not in placed:
-                return False
-    return True
+        out |= {name} if n == 1 else {f"{name}[{off + i}]" for i in range(n)}
+    return out
+
+
+def pnr_command(root, flow, design):
+    """The place-and-route command (list of words) of the design's netlist on the device: pins from
+    the device's first constraint file (name order) that places every port, else unconstrained."""
+    dev = device(root, flow)
+    nl = netlist(root, design)
+    try:
+        ports = netlist_ports(nl)
+    except (OSError, ValueError, KeyError, StopIteration) as e:
+        raise RegistryError(f"{os.path.relpath(nl, root)}: not a Yosys netlist ({e})")
+    constraint = next((c for c in dev.constraint_files(root) if ports <= dev.constraint_ports(c)), None)
+    stem = os.path.join(root, "synth", "build", design)
+    t = table(root)
+    return dev.pnr_command(nl, stem, report(root, dev.name, design), constraint, t.freq, t.seed)
 
 
 # --- Reports (synth/reports/, written by scripts/synth.sh) -------------------------------------
 
 def report(root, flow, design):
-    """synth/reports/<flow>_<design>.txt (generic, xilinx, ice40) or nextpnr_<design>.log (pnr,
-    pnr_up5k)."""
-    name = f"nextpnr_{design}.log" if flow in PLACE_FLOWS else f"{flow}_{design}.txt"
+    """synth/reports/<family>_<design>.txt for a family (generic, ice40, xilinx, ...), or the
+    place-and-route log nextpnr_<design>.log for a device (hx8k, up5k, ...; aliases allowed)."""
+    t = table(root)
+    flow = t.canonical(flow)
+    if t.target(flow) is None:
+        raise RegistryError(f"'{flow}' is not a synthesis flow (known: {', '.join(t.flows())})")
+    name = f"nextpnr_{design}.log" if flow in t.devices else f"{flow}_{design}.txt"
     return os.path.join(root, "synth", "reports", name)
 
 
@@ -325,14 +491,14 @@ def cells(path):
     return out
 
 
-def pnr_result(path):
+def pnr_result(path, dev):
     """(Fmax MHz or None, (used, total) logic cells or None, why there is no Fmax: "not run",
-    "does not fit", "failed" or "") of a nextpnr-ice40 log."""
+    "does not fit", "failed" or "") of a nextpnr log of the device (a devices.Device)."""
     if not os.path.exists(path):
         return None, None, "not run"
     text = open(path).read()
     fmax = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
-    lc = re.findall(r"ICESTORM_LC:\s+(\d+)/\s*(\d+)", text)
+    lc = re.findall(r"%s:\s+(\d+)/\s*(\d+)" % re.escape(dev.family.pnr_cell), text)
     lc = (int(lc[-1][0]), int(lc[-1][1])) if lc else None
     if not fmax:
         why = "does not fit" if re.search(r"(Unable to place|utilisation|too many)", text, re.I) else "failed"
@@ -340,20 +506,35 @@ def pnr_result(path):
     return float(fmax[-1]), lc, ""
 
 
-def pnr_used_pcf(path):
-    """True when the nextpnr log's run had pin constraints."""
-    return os.path.exists(path) and "No PCF file specified" not in open(path).read()
+def pnr_constrained(path, dev):
+    """True when the log's run had a constraint file, False when not, None when the log does not say."""
+    if not dev.family.unconstrained_log or not os.path.exists(path):
+        return None
+    return re.search(dev.family.unconstrained_log, open(path).read()) is None
 
 
 def default_top_stages(root):
-    """The registry lines that bound the default acore_top's clock on the HX8K, which it does not
-    fit: the placed lines (pnr) without parameters of a module the default top instantiates (each
-    stage at its defaults is the top's)."""
+    """The registry lines that bound the default acore_top's clock on the default device, which it
+    does not fit: the lines placed there without parameters of a module the default top instantiates
+    (each stage at its defaults is the top's)."""
     subs = rtl_submodules(root, "acore_top")
-    return [l for l in load(root) if "pnr" in l.flows and not l.params and l.module in subs]
+    dev = device(root).name
+    return [l for l in load(root) if dev in l.flows and not l.params and l.module in subs]
 
 
 # --- Command line -------------------------------------------------------------------------------
+
+def write_if_changed(path, text):
+    """Writes the file unless it holds that text already (CMake then keeps its time stamp)."""
+    try:
+        if open(path).read() == text:
+            return
+    except OSError:
+        pass
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
 
 def main(argv):
     import argparse
@@ -365,12 +546,18 @@ def main(argv):
     a.add_argument("--flow", default="")
     a.add_argument("--module", default="")
     a.add_argument("--names", default="")
-    s = sub.add_parser("synth")
-    s.add_argument("--names", default="")
-    s.add_argument("--flows", default="")
-    p = sub.add_parser("pcf-covers")
-    p.add_argument("netlist")
-    p.add_argument("pcf")
+    a.add_argument("--tag", default="")
+    p = sub.add_parser("params")
+    p.add_argument("name")
+    c = sub.add_parser("cmake")
+    c.add_argument("out")
+    for cmd in ("synth", "synth-tasks"):
+        s = sub.add_parser(cmd)
+        s.add_argument("--names", default="")
+        s.add_argument("--flows", default="")
+    r = sub.add_parser("pnr-command")
+    r.add_argument("device")
+    r.add_argument("design")
     try:
         args = ap.parse_args(argv)
     except SystemExit as e:
@@ -378,17 +565,21 @@ def main(argv):
     split = lambda x: [v for v in x.split(",") if v]
     try:
         if args.cmd == "lines":
-            for l in select(args.root, split(args.flow), args.module or None, split(args.names)):
+            for l in select(args.root, split(args.flow), args.module or None, split(args.names), args.tag or None):
                 print(l)
+        elif args.cmd == "params":
+            print(get(args.root, args.name).param_text())
+        elif args.cmd == "cmake":
+            write_if_changed(args.out, cmake_text(args.root))
         elif args.cmd == "synth":
             for d in synth_designs(args.root, split(args.names), split(args.flows)):
                 params = " ".join(f"{k}={v}" for k, v in d.params)
                 print(" ".join(x for x in (d.name, d.top, d.source or "-", ",".join(d.flows), params) if x))
+        elif args.cmd == "synth-tasks":
+            for task in synth_tasks(args.root, split(args.names), split(args.flows)):
+                print("\t".join(task))
         else:
-            try:
-                return 0 if pcf_covers(args.netlist, args.pcf) else 1
-            except (OSError, ValueError, KeyError, StopIteration) as e:
-                raise RegistryError(f"pcf-covers {args.netlist} {args.pcf}: not a Yosys netlist and a PCF ({e})")
+            print("\n".join(pnr_command(args.root, args.device, args.design)))
     except RegistryError as e:
         print(f"registry: {e}", file=sys.stderr)
         return 2

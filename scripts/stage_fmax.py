@@ -2,23 +2,26 @@
 # SPDX-License-Identifier: MIT
 """Clock rate of each stage of rtl/acore_top.v in a given configuration, placed and routed alone.
 
-The pipelined top is larger than an iCE40 HX8K in most configurations, so its clock rate on that
-family is measured stage by stage (every register-to-register path of the top lies inside one stage
+The pipelined top is larger than an iCE40 HX8K in most configurations, so its clock rate there is
+measured stage by stage (every register-to-register path of the top lies inside one stage
 or is a hop between stage registers): Yosys elaborates the top with the configuration's parameters
 and writes the hierarchy; each direct child module (scaler, region select, polynomial correction,
 CORDIC, register file, delay lines, ...) is wrapped in a generated pin wrapper that loads every
 input bit through a shift register and captures every output bit into a shift register (so no logic
-is optimized away and the pin count stays at four), synthesized with synth_ice40 and placed and
-routed by nextpnr-ice40 on an HX8K (ct256, seed 1). Delay lines and the register file are skipped
+is optimized away and the pin count stays at four), synthesized for the device's family and placed
+and routed on the device: the default device of synth/devices.toml (iCE40 HX8K ct256: synth_ice40,
+nextpnr-ice40, its seed and target clock), or --device NAME. Delay lines and the register file are skipped
 (no datapath logic). Results are cached by the elaborated stage's own netlist text, so a sweep
 pays for each distinct stage once and an edit elsewhere in rtl/ keeps the cache.
 
-usage: stage_fmax.py ROOT CACHE_DIR [PARAM=VALUE ...]
+usage: stage_fmax.py [--device NAME] ROOT CACHE_DIR [PARAM=VALUE ...]
 prints one JSON object: {"stages": [{"module", "params_hash", "lut4", "lcs", "fmax_mhz", "fits"}],
                          "fmax_mhz": min over the stages that fit, "slowest": module}
-usage: stage_fmax.py --whole TOP ROOT CACHE_DIR [PARAM=VALUE ...]
+usage: stage_fmax.py [--device NAME] --whole TOP ROOT CACHE_DIR [PARAM=VALUE ...]
 places and routes the whole module TOP (e.g. acore_serial_top, which fits) in the same wrapper and
 prints {"module", "lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}.
+lut4, dff, bram: the family's lut, ff and bram cell classes (LUT4, DFF, BRAM on iCE40); lcs: the
+logic cells the device's place-and-route log counts. Every result names its "device".
 """
 import hashlib
 import json
@@ -28,12 +31,16 @@ import subprocess
 import sys
 import tempfile
 
-FREQ_MHZ = 150
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import registry  # noqa: E402  (the RTL file list and the devices table)
+from registry import cells  # noqa: E402
+
+DEVICE = None  # the devices.Device measured on (main() sets it)
+ROOT = None
 
 
 def rtl_files(root):
-    with open(os.path.join(root, "rtl", "files.f")) as f:
-        return [os.path.join(root, "rtl", l.strip()) for l in f if l.strip().endswith(".v") and not l.startswith("#")]
+    return [os.path.join(root, "rtl", f) for f in registry.rtl_files(root)]
 
 
 def sources_hash(root):
@@ -99,27 +106,26 @@ module acore_pnr_wrap (input wire clk_i, input wire sdi_i, input wire shift_i, i
 
 
 def stage_result(work, full_json, module, ports):
+    fam = DEVICE.family
     with open(os.path.join(work, "wrap.v"), "w") as f:
         f.write(wrapper(ports))
     ys = os.path.join(work, "stage.ys")
     with open(ys, "w") as f:
         f.write(f"read_json {full_json}\nhierarchy -top {module}\nrename {module} acore_pnr_dut\n"
                 f"read_verilog -sv {work}/wrap.v\nhierarchy -top acore_pnr_wrap\n"
-                f"synth_ice40 -top acore_pnr_wrap -json {work}/wrap.json\ntee -o {work}/stat.txt stat\n")
+                f"{fam.yosys_command('acore_pnr_wrap', f'{work}/wrap.json')}\n"
+                f"tee -o {work}/stat.txt stat\n")
     if run(["yosys", "-q", "-s", ys], os.path.join(work, "yosys.log")) != 0:
         return {"error": "yosys failed", "log": os.path.join(work, "yosys.log")}
-    stat = open(os.path.join(work, "stat.txt")).read()
-    count = lambda pat: sum(int(n) for n in re.findall(pat + r"\s+(\d+)", stat))
-    lut4 = count(r"SB_LUT4")
+    stat = cells(os.path.join(work, "stat.txt"))
     log = os.path.join(work, "nextpnr.log")
-    run(["nextpnr-ice40", "--hx8k", "--package", "ct256", "--json", f"{work}/wrap.json", "--freq", str(FREQ_MHZ),
-         "--pcf-allow-unconstrained", "--timing-allow-fail", "--seed", "1", "-l", log], log + ".out")
-    text = open(log).read() if os.path.exists(log) else ""
-    fm = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
-    lcs = re.search(r"ICESTORM_LC:\s+(\d+)/\s*(\d+)", text)
+    t = registry.table(ROOT)
+    run(DEVICE.pnr_command(f"{work}/wrap.json", f"{work}/wrap", log, None, t.freq, t.seed), log + ".out")
+    fmax, lc, _ = registry.pnr_result(log, DEVICE)
     # The wrapper's own shift registers are counted in dff (not in lut4: they pack with no LUT).
-    return {"lut4": lut4, "dff": count(r"SB_DFF\w*"), "bram": count(r"SB_RAM40_4K\w*"),
-            "lcs": int(lcs.group(1)) if lcs else None, "fits": bool(fm), "fmax_mhz": float(fm[-1]) if fm else None}
+    return {"device": DEVICE.name, "lut4": fam.count(stat, ["lut"]), "dff": fam.count(stat, ["ff"]),
+            "bram": fam.count(stat, ["bram"]), "lcs": lc[0] if lc else None, "fits": fmax is not None,
+            "fmax_mhz": fmax}
 
 
 def elaborate(root, top, params, full, log):
@@ -132,7 +138,7 @@ def elaborate(root, top, params, full, log):
 
 def whole(top, root, cache, params):
     os.makedirs(cache, exist_ok=True)
-    key = hashlib.sha1(f"{sources_hash(root)} {top} {params}".encode()).hexdigest()[:16]
+    key = hashlib.sha1(f"{sources_hash(root)} {top} {params} {DEVICE.name}".encode()).hexdigest()[:16]
     path = os.path.join(cache, f"{top}-{key}.json")
     if os.path.exists(path):
         return json.load(open(path))
@@ -148,15 +154,29 @@ def whole(top, root, cache, params):
 
 
 def main():
-    if len(sys.argv) > 2 and sys.argv[1] == "--whole":
-        if len(sys.argv) < 5:
-            sys.exit(__doc__)
-        print(json.dumps(whole(sys.argv[2], sys.argv[3], sys.argv[4], [a.split("=", 1) for a in sys.argv[5:]])))
-        return
-    if len(sys.argv) < 3:
+    global DEVICE, ROOT
+    args = sys.argv[1:]
+    device = None
+    if args[:1] == ["--device"] and len(args) > 1:
+        device, args = args[1], args[2:]
+    whole_top = None
+    if args[:1] == ["--whole"] and len(args) > 1:
+        whole_top, args = args[1], args[2:]
+    if len(args) < 2:
         sys.exit(__doc__)
-    root, cache = sys.argv[1], sys.argv[2]
-    params = [a.split("=", 1) for a in sys.argv[3:]]
+    ROOT = args[0]
+    try:
+        DEVICE = registry.device(ROOT, device)
+        why = DEVICE.tool_missing()
+        if why:
+            raise registry.RegistryError(why)
+    except registry.RegistryError as e:
+        sys.exit(f"stage_fmax.py: {e}")
+    if whole_top:
+        print(json.dumps(whole(whole_top, args[0], args[1], [a.split("=", 1) for a in args[2:]])))
+        return
+    root, cache = args[0], args[1]
+    params = [a.split("=", 1) for a in args[2:]]
     os.makedirs(cache, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="acore_fmax_") as tmp:
         full = os.path.join(tmp, "full.json")
@@ -169,7 +189,7 @@ def main():
         stages = []
         for mod in children:
             base = mod.split("\\")[-1] if mod.startswith("$paramod$") else mod.split("\\")[1] if mod.startswith("$paramod") else mod
-            key = hashlib.sha1(module_text(design, mod).encode()).hexdigest()[:16]
+            key = hashlib.sha1((module_text(design, mod) + DEVICE.name).encode()).hexdigest()[:16]
             path = os.path.join(cache, f"{base}-{key}.json")
             if os.path.exists(path):
                 res = json.load(open(path))

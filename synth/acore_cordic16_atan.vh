@@ -2,7 +2,7 @@
 // The stand-alone 16-bit CORDIC's parameters and arctangent table, for synth/acore_cordic16.v:
 // the `cordic16` line of rtl/configs.txt, and atan_i = round(atan(2^-i) / 2 pi * 2^Z_W) from
 // cordic_atan_table() of model/ip/stages/cordic.cpp. Written by (from the repository root)
-//   acore_gen_tables cordic16_atan rtl/configs.txt > synth/acore_cordic16_atan.vh
+//   acore_gen_tables cordic16_atan IN_W=16 G=4 Z_W=21 ANGLE_W=16 K=17 AT_W=20 NORM=1 SPLIT=1 > synth/acore_cordic16_atan.vh
 // (model/cli/gen_tables.cpp); do not edit: the CTest gen_tables_current compares it.
 localparam integer C16_IN_W = 16;
 localparam integer C16_G = 4;

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: MIT
 // acore_gen_tables: constant tables of the RTL written from the model, so that no second
 // implementation of them exists. Writes to standard output; run from the repository root:
-//   acore_gen_tables cordic16_atan rtl/configs.txt > synth/acore_cordic16_atan.vh
-// cordic16_atan: the stand-alone 16-bit CORDIC of synth/acore_cordic16.v, its parameters from the
-// `cordic16` line of the registry and its arctangent words from cordic_atan_table(). The CTest
-// gen_tables_current fails when a checked-in table differs from what this writes.
+//   acore_gen_tables cordic16_atan PARAM=value ... > synth/acore_cordic16_atan.vh
+// cordic16_atan: the stand-alone 16-bit CORDIC of synth/acore_cordic16.v, its parameters those of
+// the `cordic16` line of the registry (scripts/gen_tables.sh passes them, from scripts/registry.py)
+// and its arctangent words from cordic_atan_table(). The CTest gen_tables_current fails when a
+// checked-in table differs from what this writes.
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,43 +24,32 @@ namespace {
 
 using acore::InputError;
 
-// The PARAM=value columns of registry line `name` (rtl/configs.txt: name module flows params).
-std::map<std::string, int> registry_params(const std::string& path, const std::string& name) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the configuration registry");
-  std::string line;
-  for (int lineno = 1; std::getline(in, line); ++lineno) {
-    std::istringstream cols(line);
-    std::string n, module, flows, tok;
-    if (!(cols >> n) || n != name) continue;
-    cols >> module >> flows;
-    std::map<std::string, int> params;
-    while (cols >> tok) {
-      const auto eq = tok.find('=');
-      size_t used = 0;
-      int v = 0;
-      try {
-        v = std::stoi(tok.substr(eq == std::string::npos ? tok.size() : eq + 1), &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (eq == std::string::npos || eq == 0 || used == 0 || eq + 1 + used != tok.size())
-        throw InputError(fmt::format("{}:{}: '{}' is not PARAM=integer", path, lineno, tok));
-      params[tok.substr(0, eq)] = v;
+// PARAM=value arguments (the registry line's parameters, as scripts/registry.py prints them).
+std::map<std::string, int> param_args(const std::vector<std::string>& args) {
+  std::map<std::string, int> params;
+  for (const std::string& tok : args) {
+    const auto eq = tok.find('=');
+    size_t used = 0;
+    int v = 0;
+    try {
+      v = std::stoi(tok.substr(eq == std::string::npos ? tok.size() : eq + 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
     }
-    return params;
+    if (eq == std::string::npos || eq == 0 || used == 0 || eq + 1 + used != tok.size())
+      throw InputError(fmt::format("'{}' is not PARAM=integer", tok));
+    params[tok.substr(0, eq)] = v;
   }
-  throw InputError(fmt::format("{}: no configuration '{}'", path, name));
+  return params;
 }
 
 // The C16_* localparams synth/acore_cordic16.v passes to acore_cordic, and C16_ATAN: K words of
 // AT_W bits, atan(2^-i) in the bits [i AT_W +: AT_W].
-std::string cordic16_atan(const std::string& registry) {
-  const auto p = registry_params(registry, "cordic16");
+std::string cordic16_atan(const std::vector<std::string>& args) {
+  const auto p = param_args(args);
   const char* names[] = {"IN_W", "G", "Z_W", "ANGLE_W", "K", "AT_W", "NORM", "SPLIT"};
   for (const char* n : names)
-    if (!p.count(n))
-      throw InputError(fmt::format("{}: configuration cordic16 has no parameter {}", registry, n));
+    if (!p.count(n)) throw InputError(fmt::format("cordic16_atan: no parameter {} given", n));
   const int k = p.at("K"), z_w = p.at("Z_W"), at_w = p.at("AT_W");
   const std::vector<int64_t> table = acore::cordic_atan_table(z_w, k);
   // The word's value in degrees as the register map reads an atan word (AT_W bits, Z_W a turn).
@@ -155,15 +143,16 @@ std::string register_map(const std::string& overrides) {
 int main(int argc, char** argv) {
   acore::cli::set_command_line(argc, argv);
   const std::string what = argc > 1 ? argv[1] : "";
-  if (!((what == "cordic16_atan" && argc == 3) || what == "register_map")) {
-    std::cerr << "usage: acore_gen_tables cordic16_atan REGISTRY   (REGISTRY: rtl/configs.txt)\n"
+  if (what != "cordic16_atan" && what != "register_map") {
+    std::cerr << "usage: acore_gen_tables cordic16_atan PARAM=value ...   (the registry line "
+                 "cordic16's)\n"
                  "       acore_gen_tables register_map [PARAM=value ...]\n"
                  "writes to standard output\n";
     return 2;
   }
   try {
     if (what == "cordic16_atan") {
-      std::cout << cordic16_atan(argv[2]);
+      std::cout << cordic16_atan(std::vector<std::string>(argv + 2, argv + argc));
     } else {
       std::string overrides;
       for (int i = 2; i < argc; ++i) overrides += std::string(" ") + argv[i];

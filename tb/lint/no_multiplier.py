@@ -16,12 +16,11 @@ a product cannot hide behind constant folding). A negative control first: a modu
 between two inputs must fail the same check, so the check cannot pass on a design it did not see.
 
 Exit 0 when every build passes, 1 when one holds such a cell (its cells are listed) or Yosys fails,
-2 on bad usage or a malformed registry line.
+2 on bad usage or a malformed registry line (scripts/registry.py reads the registry).
 """
 import argparse
 import concurrent.futures
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -32,36 +31,17 @@ MODULES = ("acore_top", "acore_serial_top", "acore_apb", "acore_cordic", "acore_
 CELLS = ("$mul", "$macc", "$div", "$mod", "$divfloor", "$modfloor", "$pow")
 
 
-class Usage(Exception):
-    pass
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import registry  # noqa: E402  (scripts/registry.py: the build registry's one reader)
 
 
 def rtl_files(root):
-    with open(os.path.join(root, "rtl", "files.f")) as f:
-        return [os.path.join(root, "rtl", l.strip()) for l in f
-                if l.strip().endswith(".v") and not l.startswith("#")]
+    return [os.path.join(root, "rtl", f) for f in registry.rtl_files(root)]
 
 
-def registry(root):
-    """(name, module, [(PARAM, value)]) of every line of rtl/configs.txt for MODULES."""
-    path = os.path.join(root, "rtl", "configs.txt")
-    builds = []
-    with open(path) as f:
-        for n, line in enumerate(f, 1):
-            if not re.match(r"[a-z]", line):
-                continue
-            fields = line.split()
-            if len(fields) < 3:
-                raise Usage(f"{path}:{n}: expected 'name module flows [PARAM=value ...]'")
-            name, module, params = fields[0], fields[1], []
-            for p in fields[3:]:
-                m = re.fullmatch(r"([A-Z_][A-Z0-9_]*)=(-?[0-9]+)", p)
-                if not m:
-                    raise Usage(f"{path}:{n}: parameter '{p}' is not PARAM=integer")
-                params.append((m.group(1), int(m.group(2))))
-            if module in MODULES:
-                builds.append((name, module, params))
-    return builds
+def builds(root):
+    """(name, module, [(PARAM, value)]) of every registry line for MODULES."""
+    return [(l.name, l.module, list(l.params)) for l in registry.load(root) if l.module in MODULES]
 
 
 def check(files, top, params, workdir):
@@ -86,18 +66,18 @@ def main():
     ap.add_argument("--jobs", type=int, default=1)
     args = ap.parse_args()
     try:
-        builds = registry(args.root)
-    except (Usage, OSError) as e:
+        todo = builds(args.root)
+    except registry.RegistryError as e:
         print(f"no_multiplier.py: {e}", file=sys.stderr)
         return 2
     if args.only:
         wanted = args.only.split(",")
-        unknown = [w for w in wanted if w not in {b[0] for b in builds}]
+        unknown = [w for w in wanted if w not in {b[0] for b in todo}]
         if unknown:
             print(f"no_multiplier.py: not in rtl/configs.txt for {', '.join(MODULES)}: "
                   f"{', '.join(unknown)}", file=sys.stderr)
             return 2
-        builds = [b for b in builds if b[0] in wanted]
+        todo = [b for b in todo if b[0] in wanted]
     files = rtl_files(args.root)
     fails = 0
     with tempfile.TemporaryDirectory(prefix="acore_nomul_") as tmp:
@@ -119,14 +99,14 @@ def main():
             return name, module, params, ok, msg, time.time() - t0
 
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
-            for name, module, params, ok, msg, dt in ex.map(one, builds):
+            for name, module, params, ok, msg, dt in ex.map(one, todo):
                 desc = f"{name} ({module}{''.join(f' {k}={v}' for k, v in params)})"
                 if ok:
                     print(f"ok   {desc}: no {'/'.join(CELLS)} cell ({dt:.1f} s)")
                 else:
                     fails += 1
                     print(f"FAIL {desc}:\n{msg}")
-    print(f"{len(builds) - fails} of {len(builds)} registered builds have no multiplier cell")
+    print(f"{len(todo) - fails} of {len(todo)} registered builds have no multiplier cell")
     return 1 if fails else 0
 
 
