@@ -22,14 +22,15 @@ import sys
 
 BOARD = "rtl/acore_board_regs.txt"
 SHELL = "rtl/acore_apb_regs.txt"
+NRANGE = r"^range  1 \d+$"  # ABZ_N.N's range (the first `range 1 ...` line of the board's)
 # (description, the line to change (a regex on it), its replacement ('' deletes it; a leading '+'
 # adds a line after it), what the error must say[, the line it must name when the fault shows at
 # another line: the later of two overlapping fields, the field of an attribute, the register of
 # its fields, the `irq` line])
 CASES = [
-    (BOARD, r"^range  1 4096$", "range  1 9000", "range 1..9000 of field N"),
-    (BOARD, r"^range  1 4096$", "range  5000 4096", "range 5000..4096 of field N: not within its 13 bits, or empty"),
-    (BOARD, r"^range  1 4096$", "range  2000 4096", "its reset 1024 is outside its range"),
+    (BOARD, NRANGE, "range  1 9000", "range 1..9000 of field N"),
+    (BOARD, NRANGE, "range  3000 2000", "range 3000..2000 of field N: not within its 13 bits, or empty"),
+    (BOARD, NRANGE, "range  2000 3000", "its reset 1024 is outside its range"),
     (BOARD, r"^field  12:0   N ", "field  12:0   n  RW   1024  x", "field name 'n'"),
     (BOARD, r"^field  4:0    POLE_PAIRS", "field  4:0    POLE_PAIRS    RX   1  x", "access 'RX'"),
     (BOARD, r"^field  31:16  TURNS", "field  31:15  TURNS  RO  -  x", "ANGLE (15:0) overlaps TURNS", r"^field  15:0   ANGLE"),
