@@ -247,7 +247,7 @@ def agree(args):
 
 
 def illegal(args):
-    rows = read_table(os.path.join(args.root, "tb", "illegal_params.txt"))
+    rows = read_table(os.path.join(args.root, "tb", "lint", "illegal_params.txt"))
     msgs = rule_messages(args.root)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:
         controls = list(ex.map(lambda t: check_legal(args.root, t), TOPS + SHELLS))
