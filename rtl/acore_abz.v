@@ -35,7 +35,7 @@
 module acore_abz #(
   // Bits of the angle: one turn = 2^ANGLE_W.
   parameter integer ANGLE_W = 16,
-  // Bits of the N input: N = 1 .. 2^(N_W-1) pulses a turn (13: up to 4096; at least 2).
+  // Bits of the N input: N = 1 .. 2^(N_W-1) pulses a turn (at least 2; the board's is ABZ_N.N's).
   parameter integer N_W = 13,
   // Bits of the minimum edge spacing (clocks).
   parameter integer SP_W = 16

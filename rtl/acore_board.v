@@ -1,14 +1,23 @@
 // SPDX-License-Identifier: MIT
 // acore_board: what a motor-drive board uses. The estimator in its APB register shell
-// (rtl/acore_apb.v with IFACE = 1: the datapath, folded or serial, its coefficient bank, and the
-// interfaces' and the observer's registers) feeding the tracking observer, whose compensated angle
-// drives the interfaces:
+// (rtl/acore_apb.v: the datapath, folded or serial, and its coefficient bank) feeding the tracking
+// observer, whose compensated angle drives the interfaces; the interfaces' and the observer's
+// registers are the board's own register block on the same APB bus:
 //
 //   c1..c4 --> acore_apb --angle--> acore_track --compensated angle--+--> acore_abz   A, B, Z
 //                 ^ APB    |            |  velocity, turns, angle     +--> acore_uvw   U, V, W
 //                 |        |            +--> TRK_VELOCITY, TRK_POSITION (APB)
 //                 |        +--angle (ANGLEUNC)--+--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
 //                 |        compensated (ANGLECOM), loss of tracking --+
+//   APB --+--> the board's registers (0x060..0x087, rtl/acore_board_regblock.v): ABZ_N .. TRK_POSITION
+//         +--> every other address: the shell
+//
+// THE REGISTERS. The board's registers are generated, with their widths, ranges and reset values,
+// from one description (rtl/acore_board_regs.txt, docs/register-board.md); the interfaces and the
+// observer take their widths from it (N_W, SP_W, PP_W, LEAD_W, LEAD_F, TURN_W). The board decodes
+// its own addresses and hands every other one to the shell, which knows nothing of the board: the
+// two blocks answer on one bus with the same timing (decode in the setup phase, zero wait states)
+// and the same error rules, as one slave would.
 //
 // The observer (rtl/acore_track.v) takes every sample of the estimator (its in_ready is the
 // estimator's out_ready; it is high whenever the estimator can deliver, so the estimator never
@@ -54,7 +63,7 @@ module acore_board #(
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
-  // APB4 slave (rtl/acore_apb.v; the interface registers at 0x060..0x070).
+  // APB4 slave (the shell's map, docs/register-shell.md, and the board's, docs/register-board.md).
   input  wire               psel_i,
   input  wire               penable_i,
   input  wire               pwrite_i,
@@ -108,52 +117,66 @@ module acore_board #(
   localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO) :
       acore_top_cycles(FOLD);
 
-  // The observer: a 16-bit turn count (TRK_POSITION's upper half), LEAD of 8 bits with 4 fraction
-  // bits (TRK_LEAD's field); the loop over two clocks when the estimator delivers a sample every
-  // CYCLES >= 2 clocks (a shorter clock period, nothing lost), and the estimator's LATENCY in whole
-  // samples compensated.
-  localparam integer TRK_TURN_W = 16;
-  localparam integer TRK_LEAD_W = 8;
-  localparam integer TRK_LEAD_F = 4;
+  // ---- the board's registers (generated from rtl/acore_board_regs.txt: field positions and
+  // widths <REG>_<FIELD>[_W], ranges, a wire rg_<reg>_<field> per port of the register block and its
+  // instance u_regs); what they read: the APB width, the loss-of-tracking threshold's width (the
+  // largest error is half a turn) and the bandwidth codes the observer takes (rtl/acore_derived.vh,
+  // the same as rtl/acore_track.v's K_MIN..K_MAX) ----
+  localparam integer APB_AW = 12;
+  localparam integer TRK_LOT_W = ANGLE_W - 1;
+  localparam integer TRK_BW_MIN = acore_track_k_min();
+  localparam integer TRK_BW_MAX = acore_track_k_max(TRK_FRAC_W);
+`include "acore_board_regs.vh"
+
+  // The observer: its turn count and LEAD as wide as their fields (TRK_POSITION.TURNS, TRK_LEAD);
+  // the loop over two clocks when the estimator delivers a sample every CYCLES >= 2 clocks (a
+  // shorter clock period, nothing lost), and the estimator's LATENCY in whole samples compensated.
+  localparam integer TRK_TURN_W = TRK_POSITION_TURNS_W;
   localparam integer TRK_LOOP_CLOCKS = (CYCLES >= 2) ? 2 : 1;
   localparam integer COMP_LATENCY = acore_comp_latency(LATENCY, CYCLES);
   localparam integer TRK_P_W = ANGLE_W + TRK_FRAC_W;
 
-  acore_check #(.OK(ANGLE_W >= 16), .VALUE(ANGLE_W),
+  acore_check #(.OK(ANGLE_W >= TRK_POSITION_ANGLE_W), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be >= 16 (TRK_POSITION reads its upper 16 bits)"))
     ANGLE_W_must_be_at_least_16 ();
-  acore_check #(.OK(ANGLE_W + TRK_FRAC_W >= 32), .VALUE(ANGLE_W + TRK_FRAC_W),
+  acore_check #(.OK(ANGLE_W + TRK_FRAC_W >= TRK_VELOCITY_VELOCITY_W), .VALUE(ANGLE_W + TRK_FRAC_W),
     .MSG("illegal parameter: ANGLE_W+TRK_FRAC_W must be >= 32 (TRK_VELOCITY reads 32 bits)"))
     ANGLE_W_plus_TRK_FRAC_W_must_be_at_least_32 ();
+  // The description's ranges are what the interfaces take (acore_abz.v and acore_uvw.v clamp N and
+  // the pole pairs to 1 .. 2^(W-1) of their input's width W): a write the board accepts reaches
+  // them unchanged.
+  acore_check #(.OK(ABZ_N_N_MIN == 1 && ABZ_N_N_MAX == (1 << (ABZ_N_N_W - 1))), .VALUE(ABZ_N_N_MAX),
+    .MSG("illegal description: ABZ_N.N's range must be 1..2^(its bits - 1), acore_abz's N"))
+    ABZ_N_range_must_match_acore_abz ();
+  acore_check #(.OK(UVW_PP_POLE_PAIRS_MIN == 1 && UVW_PP_POLE_PAIRS_MAX == (1 << (UVW_PP_POLE_PAIRS_W - 1))),
+    .VALUE(UVW_PP_POLE_PAIRS_MAX),
+    .MSG("illegal description: UVW_PP.POLE_PAIRS's range must be 1..2^(its bits - 1), acore_uvw's"))
+    UVW_PP_range_must_match_acore_uvw ();
+
+  // ---- the APB split: the board's addresses to its registers, every other one to the shell ----
+  // (Each block's PRDATA and PSLVERR are zero unless it answers the transfer; PREADY is always high.)
+  wire brd_sel = (paddr_i[APB_AW-1:8] == {(APB_AW-8){1'b0}}) & REGS_ALL[paddr_i[7:2]];
+  wire [31:0] sh_prdata;
+  wire sh_pslverr;
+  assign rg_psel = psel_i & brd_sel;
+  assign prdata_o = sh_prdata | rg_prdata;
+  assign pslverr_o = sh_pslverr | rg_pslverr;
 
   // ---- the estimator and its register shell ----
   wire est_valid, est_ovf, est_los, est_dos, est_tag;
   wire [ANGLE_W-1:0] est_angle;
   wire [RG_W-1:0] est_region;
-  wire [12:0] abz_n;
-  wire [13:0] abz_index;
-  wire [15:0] abz_spacing;
-  wire [4:0] uvw_pp;
-  wire [ANGLE_W-1:0] uvw_offset;
-  wire [3:0] trk_bw;
-  wire [TRK_LEAD_W-1:0] trk_lead;
-  wire [ANGLE_W-2:0] trk_lot_thr;
-  wire [31:0] trk_velocity_reg, trk_position_reg;
   wire trk_ready;
   acore_apb #(
     .SERIAL(SERIAL), .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .FOLD(FOLD),
-    .ZERO(ZERO), .INIT_FILE(INIT_FILE), .ANGLE_W(ANGLE_W), .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W),
-    .IFACE(1), .TRK_BW_MIN(acore_track_k_min()), .TRK_BW_MAX(acore_track_k_max(TRK_FRAC_W))
+    .ZERO(ZERO), .INIT_FILE(INIT_FILE), .ANGLE_W(ANGLE_W), .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W)
   ) u_shell (
-    .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i), .penable_i(penable_i), .pwrite_i(pwrite_i),
-    .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i), .prdata_o(prdata_o),
-    .pready_o(pready_o), .pslverr_o(pslverr_o), .irq_o(irq_o), .in_valid_i(in_valid_i),
-    .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
+    .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i & ~brd_sel), .penable_i(penable_i),
+    .pwrite_i(pwrite_i), .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i),
+    .prdata_o(sh_prdata), .pready_o(pready_o), .pslverr_o(sh_pslverr), .irq_o(irq_o),
+    .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
     .out_valid_o(est_valid), .out_ready_i(trk_ready), .angle_o(est_angle), .region_o(est_region),
-    .ovf_o(est_ovf), .los_o(est_los), .dos_o(est_dos), .out_tag_o(est_tag),
-    .abz_n_o(abz_n), .abz_index_o(abz_index), .abz_spacing_o(abz_spacing), .uvw_pp_o(uvw_pp),
-    .uvw_offset_o(uvw_offset), .trk_bw_o(trk_bw), .trk_lead_o(trk_lead), .trk_lot_o(trk_lot_thr),
-    .trk_velocity_i(trk_velocity_reg), .trk_position_i(trk_position_reg));
+    .ovf_o(est_ovf), .los_o(est_los), .dos_o(est_dos), .out_tag_o(est_tag));
   wire est_take = est_valid & trk_ready;
   assign out_valid_o = est_valid;
   assign angle_o = est_angle;
@@ -184,16 +207,18 @@ module acore_board #(
   wire [TRK_TURN_W-1:0] trk_turns;
   acore_track #(
     .ANGLE_W(ANGLE_W), .FRAC_W(TRK_FRAC_W), .TURN_W(TRK_TURN_W), .COMP_LATENCY(COMP_LATENCY),
-    .LEAD_W(TRK_LEAD_W), .LEAD_F(TRK_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS)
+    .LEAD_W(TRK_LEAD_LEAD_W), .LEAD_F(TRK_LEAD_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS)
   ) u_track (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(est_valid), .in_ready_o(trk_ready),
-    .in_angle_i(est_angle), .bw_i(trk_bw), .lead_i(trk_lead), .lot_thr_i(trk_lot_thr),
+    .in_angle_i(est_angle), .bw_i(rg_trk_bw_bw), .lead_i(rg_trk_lead_lead),
+    .lot_thr_i(rg_trk_lot_threshold),
     .out_valid_o(trk_valid), .out_ready_i(1'b1), .out_angle_o(trk_tracked),
     .out_angle_comp_o(trk_angle), .out_velocity_o(trk_velocity), .out_turns_o(trk_turns),
     .out_lot_o(trk_lot));
   // The observer's outputs hold between its samples: the APB reads them as they are.
-  assign trk_velocity_reg = trk_velocity[TRK_P_W-1 -: 32];
-  assign trk_position_reg = {trk_turns, trk_tracked[ANGLE_W-1 -: 16]};
+  assign rg_trk_velocity_velocity = trk_velocity[TRK_P_W-1 -: TRK_VELOCITY_VELOCITY_W];
+  assign rg_trk_position_turns = trk_turns;
+  assign rg_trk_position_angle = trk_tracked[ANGLE_W-1 -: TRK_POSITION_ANGLE_W];
   assign trk_valid_o = trk_valid;
   assign trk_angle_o = trk_tracked;
   assign trk_angle_comp_o = trk_angle;
@@ -210,17 +235,20 @@ module acore_board #(
   always @(posedge clk_i) if (trk_valid) com_q <= trk_angle;
 
   // ---- the interfaces ----
-  wire [13:0] abz_count;
+  // Their inputs as wide as their registers' fields (ABZ_INDEX.POS has one bit more than N: a
+  // count 0..4N-1).
+  wire [ABZ_N_N_W:0] abz_count;
   wire abz_settled;
-  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(13), .SP_W(16)) u_abz (
-    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle), .n_i(abz_n),
-    .index_i(abz_index), .spacing_i(abz_spacing), .a_o(a_o), .b_o(b_o), .z_o(z_o),
+  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W)) u_abz (
+    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle), .n_i(rg_abz_n_n),
+    .index_i(rg_abz_index_pos), .spacing_i(rg_abz_spacing_spacing), .a_o(a_o), .b_o(b_o), .z_o(z_o),
     .count_o(abz_count), .settled_o(abz_settled));
   wire [2:0] uvw_sector;
   wire uvw_valid;
-  acore_uvw #(.ANGLE_W(ANGLE_W), .PP_W(5)) u_uvw (
-    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle), .pp_i(uvw_pp),
-    .offset_i(uvw_offset), .u_o(u_o), .v_o(v_o), .w_o(w_o), .sector_o(uvw_sector), .valid_o(uvw_valid));
+  acore_uvw #(.ANGLE_W(ANGLE_W), .PP_W(UVW_PP_POLE_PAIRS_W)) u_uvw (
+    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle),
+    .pp_i(rg_uvw_pp_pole_pairs), .offset_i(rg_uvw_offset_offset), .u_o(u_o), .v_o(v_o), .w_o(w_o),
+    .sector_o(uvw_sector), .valid_o(uvw_valid));
   wire spi_frame;
   wire [2:0] spi_errfl;
   acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2)) u_spi (

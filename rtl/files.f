@@ -1,5 +1,6 @@
 acore_derived.vh
 acore_apb_regs.vh
+acore_board_regs.vh
 acore_check.v
 acore_config_check.v
 acore_delay.v
@@ -34,10 +35,12 @@ acore_sync_ram.v
 acore_crc32.v
 acore_coef_scrub.v
 acore_coef_bank.v
+acore_apb_regblock.v
 acore_apb.v
 acore_track.v
 acore_abz.v
 acore_uvw.v
 acore_spi_as5047.v
 acore_pwm.v
+acore_board_regblock.v
 acore_board.v

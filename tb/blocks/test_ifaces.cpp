@@ -271,10 +271,12 @@ TEST_P(Abz, MinimumSpacingHoldsAfterAJump) {
   EXPECT_EQ(b.dec.lost, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(PulsesPerTurn, Abz, ::testing::Values(1, 3, 1000, 1024, 4096, 7, 360));
+// N up to the block's largest, 2^(N_W-1).
+INSTANTIATE_TEST_SUITE_P(PulsesPerTurn, Abz,
+                         ::testing::Values(1, 3, 1000, 1024, 1 << (kAbzNW - 1), 7, 360));
 
 TEST(AbzRange, OutOfRangeNIsClamped) {
-  // N = 0 counts as 1, N above 2^(N_W-1) as 2^(N_W-1) (the register shell refuses both).
+  // N = 0 counts as 1, N above 2^(N_W-1) as 2^(N_W-1) (the board's registers refuse both).
   for (const auto& [n_in, n_eff] : std::vector<std::pair<int64_t, int64_t>>{
            {0, 1}, {(int64_t{1} << (kAbzNW - 1)) + 5, int64_t{1} << (kAbzNW - 1)}}) {
     AbzBench b(n_in, 0, 1, 7);
@@ -632,7 +634,8 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
 // the expectation now from model/ip/stages/interfaces.hpp).
 TEST(AbzCosim, CountMatchesTheModelTarget) {
   std::mt19937_64 rng(26);
-  for (int64_t n : {1, 3, 1000, 1024, 4096}) {
+  for (int64_t n :
+       {int64_t{1}, int64_t{3}, int64_t{1000}, int64_t{1024}, int64_t{1} << (kAbzNW - 1)}) {
     AbzBench b(n, 0, 1, rng());
     int64_t target = 0, mismatches = 0;
     for (int k = 0; k < 200; ++k) {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The board top (rtl/acore_board.v, registry line board_serial: the serial core; the board is
 // simulated in that configuration only, the folded ones are linted and placed) end to end: the
-// interface and observer registers through APB (values read back, out-of-range N, pole pairs and
-// bandwidth codes refused with PSLVERR and no effect, the addresses outside the map of a plain
-// shell now mapped), then streams of channel codes through the estimator and the tracking
-// observer (rtl/acore_track.v):
+// interface and observer registers (the board's own register block, stages/board_regs.hpp) through
+// APB beside the shell's (values read back, out-of-range N, pole pairs and bandwidth codes refused
+// with PSLVERR and no effect), then streams of channel codes through the estimator and the
+// tracking observer (rtl/acore_track.v):
 //   - every estimator output equals FixedModel, and every observer output (tracked and
 //     compensated angle, velocity, turn count, loss of tracking) equals the observer's model
 //     (model/ip/stages/tracker.cpp) run on the model's angles with the board's register values
@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <verilated.h>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -28,6 +29,7 @@
 #include "Vboard_serial.h"
 #include "cosim/cosim_stimuli.hpp"
 #include "shell/shell_regs.hpp"
+#include "stages/board_regs.hpp"
 #include "stages/interfaces.hpp"
 #include "stages/tracker.hpp"
 
@@ -35,17 +37,19 @@ namespace acore {
 namespace {
 
 namespace sh = acore::shell;
+namespace bd = acore::board;
 
-// The board's observer build (rtl/acore_board.v: TRK_FRAC_W = 25, a 16-bit turn count, an 8-bit
-// LEAD with 4 fraction bits at the default 16-bit angle); COMP_LATENCY is set from CONFIG2.
+// The board's observer build (rtl/acore_board.v: TRK_FRAC_W = 25, the turn count and LEAD as wide
+// as TRK_POSITION.TURNS and TRK_LEAD, at the default 16-bit angle); COMP_LATENCY is set from
+// CONFIG2.
 TrackConfig board_track_config(int comp_latency) {
   TrackConfig c;
   c.angle_w = 16;
   c.frac_w = 25;
-  c.turn_w = 16;
+  c.turn_w = bd::kTrkPositionTurnsBits;
   c.comp_latency = comp_latency;
-  c.lead_w = 8;
-  c.lead_f = 4;
+  c.lead_w = bd::kTrkLeadLeadBits;
+  c.lead_f = bd::kTrkLeadLeadFrac;
   return c;
 }
 
@@ -174,22 +178,25 @@ int32_t unit_code(double x) { return static_cast<int32_t>(std::lround(8000 * x))
 TEST(Board, InterfaceRegistersThroughApb) {
   Board b;
   uint32_t v = 0;
-  EXPECT_FALSE(b.apb(false, sh::kAbzN, 0, &v));
+  // The ranges of the description (the model's: stages/interfaces.hpp refuses the same values).
+  const uint32_t n_max = static_cast<uint32_t>(bd::kAbzNNMax),
+                 pp_max = static_cast<uint32_t>(bd::kUvwPpPolePairsMax);
+  EXPECT_FALSE(b.apb(false, bd::kAbzN, 0, &v));
   EXPECT_EQ(v, 1024u);
-  EXPECT_FALSE(b.apb(true, sh::kAbzN, 1000, nullptr));
-  EXPECT_TRUE(b.apb(true, sh::kAbzN, 0, nullptr));
-  EXPECT_TRUE(b.apb(true, sh::kAbzN, 4097, nullptr));
-  EXPECT_FALSE(b.apb(false, sh::kAbzN, 0, &v));
+  EXPECT_FALSE(b.apb(true, bd::kAbzN, 1000, nullptr));
+  EXPECT_TRUE(b.apb(true, bd::kAbzN, 0, nullptr));
+  EXPECT_TRUE(b.apb(true, bd::kAbzN, n_max + 1, nullptr));
+  EXPECT_FALSE(b.apb(false, bd::kAbzN, 0, &v));
   EXPECT_EQ(v, 1000u) << "a refused write has no effect";
-  EXPECT_FALSE(b.apb(true, sh::kAbzN, 4096, nullptr));
-  EXPECT_FALSE(b.apb(false, sh::kAbzN, 0, &v));
-  EXPECT_EQ(v, 4096u);
-  EXPECT_TRUE(b.apb(true, sh::kUvwPp, 17, nullptr));
-  EXPECT_TRUE(b.apb(true, sh::kUvwPp, 0, nullptr));
-  EXPECT_FALSE(b.apb(true, sh::kUvwPp, 16, nullptr));
-  EXPECT_FALSE(b.apb(false, sh::kUvwPp, 0, &v));
-  EXPECT_EQ(v, 16u);
-  for (uint32_t addr : {sh::kAbzIndex, sh::kAbzSpacing, sh::kUvwOffset, sh::kTrkLot}) {
+  EXPECT_FALSE(b.apb(true, bd::kAbzN, n_max, nullptr));
+  EXPECT_FALSE(b.apb(false, bd::kAbzN, 0, &v));
+  EXPECT_EQ(v, n_max);
+  EXPECT_TRUE(b.apb(true, bd::kUvwPp, pp_max + 1, nullptr));
+  EXPECT_TRUE(b.apb(true, bd::kUvwPp, 0, nullptr));
+  EXPECT_FALSE(b.apb(true, bd::kUvwPp, pp_max, nullptr));
+  EXPECT_FALSE(b.apb(false, bd::kUvwPp, 0, &v));
+  EXPECT_EQ(v, pp_max);
+  for (uint32_t addr : {bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwOffset, bd::kTrkLot}) {
     EXPECT_FALSE(b.apb(true, addr, 0x1234, nullptr));
     EXPECT_FALSE(b.apb(false, addr, 0, &v));
     EXPECT_EQ(v, 0x1234u) << addr;
@@ -197,26 +204,71 @@ TEST(Board, InterfaceRegistersThroughApb) {
   // The observer's registers: reset values, the bandwidth code's range (the model's: kMin ..
   // k_max() of the board's FRAC_W), LEAD's 8 bits, the read-only velocity and position.
   const TrackConfig tc = board_track_config(0);
-  EXPECT_FALSE(b.apb(false, sh::kTrkBw, 0, &v));
-  EXPECT_EQ(v, sh::kTrkBwReset);
+  EXPECT_FALSE(b.apb(false, bd::kTrkBw, 0, &v));
+  EXPECT_EQ(v, bd::kTrkBwReset);
   EXPECT_EQ(static_cast<int>(v), TrackRegs{}.bw) << "the model's default code";
-  EXPECT_FALSE(b.apb(false, sh::kTrkLead, 0, &v));
+  EXPECT_FALSE(b.apb(false, bd::kTrkLead, 0, &v));
   EXPECT_EQ(v, 0u);
   for (uint32_t bw = 0; bw <= 20; ++bw) {
     const bool ok = static_cast<int>(bw) >= TrackConfig::kMin && static_cast<int>(bw) <= tc.k_max();
-    EXPECT_EQ(b.apb(true, sh::kTrkBw, bw, nullptr), !ok) << bw;
-    EXPECT_FALSE(b.apb(false, sh::kTrkBw, 0, &v));
+    EXPECT_EQ(b.apb(true, bd::kTrkBw, bw, nullptr), !ok) << bw;
+    EXPECT_FALSE(b.apb(false, bd::kTrkBw, 0, &v));
     if (ok) EXPECT_EQ(v, bw);
   }
   EXPECT_EQ(v, static_cast<uint32_t>(tc.k_max())) << "a refused write has no effect";
-  EXPECT_TRUE(b.apb(true, sh::kTrkBw, 0x10004, nullptr)) << "upper bits are not ignored";
-  EXPECT_FALSE(b.apb(true, sh::kTrkLead, 0xFF, nullptr));
-  EXPECT_FALSE(b.apb(false, sh::kTrkLead, 0, &v));
+  EXPECT_TRUE(b.apb(true, bd::kTrkBw, 0x10004, nullptr)) << "upper bits are not ignored";
+  EXPECT_FALSE(b.apb(true, bd::kTrkLead, 0xFF, nullptr));
+  EXPECT_FALSE(b.apb(false, bd::kTrkLead, 0, &v));
   EXPECT_EQ(v, 0xFFu);
-  EXPECT_TRUE(b.apb(true, sh::kTrkVelocity, 1, nullptr)) << "read only";
-  EXPECT_TRUE(b.apb(true, sh::kTrkPosition, 1, nullptr)) << "read only";
-  EXPECT_FALSE(b.apb(false, sh::kTrkVelocity, 0, &v));
+  EXPECT_TRUE(b.apb(true, bd::kTrkVelocity, 1, nullptr)) << "read only";
+  EXPECT_TRUE(b.apb(true, bd::kTrkPosition, 1, nullptr)) << "read only";
+  EXPECT_FALSE(b.apb(false, bd::kTrkVelocity, 0, &v));
   EXPECT_EQ(v, 0u) << "no sample yet";
+}
+
+// The bus split: every word address of the 4 KiB space is answered by exactly one map, the shell's
+// (its registers and its shadow window) or the board's, with the shell's rules; an unaligned
+// address at a board register is an error as at a shell register.
+TEST(Board, EveryAddressIsAnsweredByOneMap) {
+  Board b;
+  const std::vector<uint32_t> shell = {
+      sh::kId,          sh::kConfig0,   sh::kConfig1, sh::kConfig2,  sh::kConfig3,
+      sh::kCtrl,        sh::kStatus,    sh::kIrq,     sh::kMagLo,    sh::kMagHi,
+      sh::kCrcExpected, sh::kCrcShadow, sh::kCrcRef,  sh::kCrcScrub, sh::kScrubPasses};
+  const std::vector<uint32_t> board = {
+      bd::kAbzN,  bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwPp,       bd::kUvwOffset,
+      bd::kTrkBw, bd::kTrkLead,  bd::kTrkLot,     bd::kTrkVelocity, bd::kTrkPosition};
+  uint32_t cfg1 = 0;
+  ASSERT_FALSE(b.apb(false, sh::kConfig1, 0, &cfg1));
+  const uint32_t words = (cfg1 & sh::kConfig1WordsMask) >> sh::kConfig1WordsShift;
+  size_t wrong = 0, nonzero_on_error = 0, answered = 0;
+  for (uint32_t addr = 0; addr < sh::kAddrSpace; addr += 4) {
+    const bool mapped = std::count(shell.begin(), shell.end(), addr) ||
+                        std::count(board.begin(), board.end(), addr) ||
+                        (addr >= sh::kCoef && addr < sh::kCoef + 4 * words);
+    uint32_t v = 0;
+    const bool err = b.apb(false, addr, 0, &v);
+    wrong += err == mapped;
+    nonzero_on_error += err && v != 0;
+    answered += !err;
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_EQ(nonzero_on_error, 0u);
+  EXPECT_EQ(answered, shell.size() + board.size() + words);
+  for (uint32_t off = 1; off < 4; ++off) {
+    EXPECT_TRUE(b.apb(false, bd::kAbzN + off, 0, nullptr)) << off;
+    EXPECT_TRUE(b.apb(true, bd::kAbzN + off, 7, nullptr)) << off;
+  }
+  uint32_t v = 0;
+  EXPECT_FALSE(b.apb(false, bd::kAbzN, 0, &v));
+  EXPECT_EQ(v, bd::kAbzNReset) << "an unaligned write has no effect";
+  // The shell's registers still work behind the split, back to back with the board's.
+  EXPECT_FALSE(b.apb(true, sh::kCrcExpected, 0x12345678, nullptr));
+  EXPECT_FALSE(b.apb(true, bd::kAbzSpacing, 0x4321, nullptr));
+  EXPECT_FALSE(b.apb(false, sh::kCrcExpected, 0, &v));
+  EXPECT_EQ(v, 0x12345678u);
+  EXPECT_FALSE(b.apb(false, bd::kAbzSpacing, 0, &v));
+  EXPECT_EQ(v, 0x4321u);
 }
 
 // One co-sim run: the registers written, `n` samples of a rotating vector streamed at full rate
@@ -233,9 +285,9 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
   load_identity(b);
   if (::testing::Test::HasFatalFailure()) return res;
   if (write_regs) {
-    EXPECT_FALSE(b.apb(true, sh::kTrkBw, static_cast<uint32_t>(bw)));
-    EXPECT_FALSE(b.apb(true, sh::kTrkLead, lead));
-    EXPECT_FALSE(b.apb(true, sh::kTrkLot, lot_thr));
+    EXPECT_FALSE(b.apb(true, bd::kTrkBw, static_cast<uint32_t>(bw)));
+    EXPECT_FALSE(b.apb(true, bd::kTrkLead, lead));
+    EXPECT_FALSE(b.apb(true, bd::kTrkLot, lot_thr));
   }
   uint32_t cfg2 = 0;
   EXPECT_FALSE(b.apb(false, sh::kConfig2, 0, &cfg2));
@@ -246,9 +298,9 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
   const TrackConfig tc = board_track_config(latency / cycles);
   // The model runs with the register values the board reads back (written, or the reset values).
   uint32_t rb_bw = 0, rb_lead = 0, rb_lot = 0;
-  EXPECT_FALSE(b.apb(false, sh::kTrkBw, 0, &rb_bw));
-  EXPECT_FALSE(b.apb(false, sh::kTrkLead, 0, &rb_lead));
-  EXPECT_FALSE(b.apb(false, sh::kTrkLot, 0, &rb_lot));
+  EXPECT_FALSE(b.apb(false, bd::kTrkBw, 0, &rb_bw));
+  EXPECT_FALSE(b.apb(false, bd::kTrkLead, 0, &rb_lead));
+  EXPECT_FALSE(b.apb(false, bd::kTrkLot, 0, &rb_lot));
   if (write_regs) {
     EXPECT_EQ(rb_bw, static_cast<uint32_t>(bw));
     EXPECT_EQ(rb_lead, lead);
@@ -302,8 +354,8 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     EXPECT_EQ(unc & 0x3FFFu, est_model[k - 1].angle >> 2) << "ANGLEUNC after " << k;
     EXPECT_EQ((dia >> 8) & 1, m.lot ? 0 : 1) << "DIAAGC.LF after " << k;
     uint32_t vel = 0, posn = 0;
-    EXPECT_FALSE(b.apb(false, sh::kTrkVelocity, 0, &vel));
-    EXPECT_FALSE(b.apb(false, sh::kTrkPosition, 0, &posn));
+    EXPECT_FALSE(b.apb(false, bd::kTrkVelocity, 0, &vel));
+    EXPECT_FALSE(b.apb(false, bd::kTrkPosition, 0, &posn));
     EXPECT_EQ(vel, static_cast<uint32_t>(static_cast<uint64_t>(m.velocity) >> 9)) << k;
     EXPECT_EQ(posn, (static_cast<uint32_t>(m.turns & 0xFFFF) << 16) | m.angle) << k;
     const UvwState s = uvw_state(m.angle_comp, 0, 16, 1);
@@ -393,11 +445,11 @@ TEST(Board, InterfacesFollowTheCompensatedAngle) {
   const uint32_t offset = 0x2345;
   load_identity(b);
   if (HasFatalFailure()) return;
-  ASSERT_FALSE(b.apb(true, sh::kAbzN, n, nullptr));
-  ASSERT_FALSE(b.apb(true, sh::kAbzIndex, 17, nullptr));
-  ASSERT_FALSE(b.apb(true, sh::kAbzSpacing, 2, nullptr));
-  ASSERT_FALSE(b.apb(true, sh::kUvwPp, pp, nullptr));
-  ASSERT_FALSE(b.apb(true, sh::kUvwOffset, offset, nullptr));
+  ASSERT_FALSE(b.apb(true, bd::kAbzN, n, nullptr));
+  ASSERT_FALSE(b.apb(true, bd::kAbzIndex, 17, nullptr));
+  ASSERT_FALSE(b.apb(true, bd::kAbzSpacing, 2, nullptr));
+  ASSERT_FALSE(b.apb(true, bd::kUvwPp, pp, nullptr));
+  ASSERT_FALSE(b.apb(true, bd::kUvwOffset, offset, nullptr));
   std::mt19937_64 rng(31);
   int64_t target = 0;
   int samples = 0;

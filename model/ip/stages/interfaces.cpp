@@ -9,9 +9,9 @@ namespace acore {
 
 namespace {
 void check_abz(int angle_w, int64_t n) {
-  if (n < 1 || n > kAbzMaxN)
-    throw InputError("ABZ: N must be 1.." + std::to_string(kAbzMaxN) + " pulses a turn, not " +
-                     std::to_string(n));
+  if (n < board::kAbzNNMin || n > board::kAbzNNMax)
+    throw InputError("ABZ: N must be " + std::to_string(board::kAbzNNMin) + ".." +
+                     std::to_string(board::kAbzNNMax) + " pulses a turn, not " + std::to_string(n));
   if (angle_w < 2 || angle_w > 32)
     throw InputError("ABZ: angle width must be 2..32, not " + std::to_string(angle_w));
 }
@@ -22,7 +22,7 @@ int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n) {
   const uint64_t a = angle & ((uint64_t{1} << angle_w) - 1);
   // (a N) >> (angle_w - 2): the RTL's shift-add product, then its upper bits.
   uint64_t p = 0;
-  for (int i = 0; i < 13; ++i)
+  for (int i = 0; i < board::kAbzNNBits; ++i)
     if ((static_cast<uint64_t>(n) >> i) & 1) p += a << i;
   return static_cast<int64_t>(p >> (angle_w - 2));
 }
@@ -31,7 +31,7 @@ int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_targ
   const int64_t lo = abz_count_of(angle, angle_w, n);
   const uint64_t a = angle & ((uint64_t{1} << angle_w) - 1);
   uint64_t p = 0;
-  for (int i = 0; i < 13; ++i)
+  for (int i = 0; i < board::kAbzNNBits; ++i)
     if ((static_cast<uint64_t>(n) >> i) & 1) p += a << i;
   int64_t hi = static_cast<int64_t>((p + static_cast<uint64_t>(n)) >> (angle_w - 2));
   if (hi == 4 * n) hi = 0;
@@ -61,15 +61,16 @@ int AbzCounter::step() {
 }
 
 UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs) {
-  if (pole_pairs < 1 || pole_pairs > kUvwMaxPolePairs)
-    throw InputError("UVW: pole pairs must be 1.." + std::to_string(kUvwMaxPolePairs) + ", not " +
+  if (pole_pairs < board::kUvwPpPolePairsMin || pole_pairs > board::kUvwPpPolePairsMax)
+    throw InputError("UVW: pole pairs must be " + std::to_string(board::kUvwPpPolePairsMin) + ".." +
+                     std::to_string(board::kUvwPpPolePairsMax) + ", not " +
                      std::to_string(pole_pairs));
   if (angle_w < 3 || angle_w > 32)
     throw InputError("UVW: angle width must be 3..32, not " + std::to_string(angle_w));
   const uint64_t mask = (uint64_t{1} << angle_w) - 1;
   const uint64_t d = (angle - offset) & mask;
   uint64_t e = 0;
-  for (int i = 0; i < 5; ++i)
+  for (int i = 0; i < board::kUvwPpPolePairsBits; ++i)
     if ((pole_pairs >> i) & 1) e += d << i;
   e &= mask;
   // Sector thresholds ceil(k 2^angle_w / 6), as the RTL's constants.

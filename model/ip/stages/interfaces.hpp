@@ -8,19 +8,22 @@
 //     signals;
 //   - the AS5047P-compatible SPI port at frame level: command in, the answer of the previous
 //     command out, ERRFL and the error flag.
-// Register values outside their ranges (N, pole pairs) are refused with InputError, as the APB
-// shell refuses the write (the RTL clamps what reaches it).
+// Register values outside their ranges (N, pole pairs: the board's registers ABZ_N and UVW_PP,
+// stages/board_regs.hpp, generated from their description rtl/acore_board_regs.txt) are refused
+// with InputError, as the board refuses the write (the RTL clamps what reaches it).
 #pragma once
 #include <cstdint>
+
+#include "stages/board_regs.hpp"
 
 namespace acore {
 
 // ---- ABZ
 // --------------------------------------------------------------------------------------------
-constexpr int64_t kAbzMaxN = 4096;  // pulses a turn (the shell's ABZ_N, 13 bits)
+// N, pulses a turn: board::kAbzNNMin .. board::kAbzNNMax (the board's ABZ_N.N, kAbzNNBits bits).
 
 // floor(angle 4N / 2^angle_w): the count of an angle (0 .. 4N-1). Throws InputError on N outside
-// 1 .. kAbzMaxN or an angle_w outside 2..32.
+// its range or an angle_w outside 2..32.
 int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n);
 // The target after a new angle given the previous target: the count of angle + 1 LSB (mod 4N)
 // when the previous target is that count (the one-LSB hysteresis band), the angle's count
@@ -50,14 +53,14 @@ class AbzCounter {
 
 // ---- UVW
 // --------------------------------------------------------------------------------------------
-constexpr int kUvwMaxPolePairs = 16;
+// Pole pairs: board::kUvwPpPolePairsMin .. board::kUvwPpPolePairsMax (the board's UVW_PP).
 
 struct UvwState {
   int sector;  // 0..5: floor(6 e / 2^angle_w)
   bool u, v, w;
 };
 // The electrical angle e = ((angle - offset) pole_pairs) mod 2^angle_w, its sector and U, V, W
-// (U in sectors 0-2, V in 2-4, W in 4, 5, 0). Throws InputError on pole_pairs outside 1..16.
+// (U in sectors 0-2, V in 2-4, W in 4, 5, 0). Throws InputError on pole_pairs outside their range.
 UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs);
 
 // ---- AS5047P SPI

@@ -15,16 +15,20 @@
 #include <string>
 #include <vector>
 
+#include "stages/board_regs.hpp"
+
 namespace acore {
 
-// The observer's build parameters (rtl/acore_track.v, same names).
+// The observer's build parameters (rtl/acore_track.v, same names); the defaults are the board's
+// (rtl/acore_board.v: its turn count and LEAD as wide as their registers' fields).
 struct TrackConfig {
-  int angle_w = 16;      // input/output angle width
-  int frac_w = 25;       // fraction bits below the input LSB
-  int turn_w = 16;       // turn counter width (signed); turn_w + angle_w + frac_w <= 64
-  int comp_latency = 0;  // COMP_LATENCY: whole samples compensated
-  int lead_w = 8;        // LEAD register width
-  int lead_f = 4;        // LEAD fraction bits
+  int angle_w = 16;                           // input/output angle width
+  int frac_w = 25;                            // fraction bits below the input LSB
+  int turn_w = board::kTrkPositionTurnsBits;  // turn counter width (signed): turn_w + angle_w +
+                                              // frac_w <= 64
+  int comp_latency = 0;                       // COMP_LATENCY: whole samples compensated
+  int lead_w = board::kTrkLeadLeadBits;       // LEAD register width
+  int lead_f = board::kTrkLeadLeadFrac;       // LEAD fraction bits
 
   int p_w() const { return angle_w + frac_w; }
   static constexpr int kMin = 2;                  // smallest bandwidth code
@@ -33,11 +37,12 @@ struct TrackConfig {
   void validate() const;
 };
 
-// The observer's registers.
+// The observer's registers; the defaults are the board's reset values (TRK_BW, TRK_LEAD, TRK_LOT).
 struct TrackRegs {
-  int bw = 6;                   // bandwidth code k (kMin..k_max())
-  uint32_t lead = 0;            // LEAD, unsigned, lead_f fraction bits (samples)
-  uint32_t lot_thr = 1u << 12;  // loss-of-tracking threshold, input angle LSBs (< 2^(angle_w-1))
+  int bw = static_cast<int>(board::kTrkBwReset);  // bandwidth code k (kMin..k_max())
+  uint32_t lead = board::kTrkLeadReset;           // LEAD, unsigned, lead_f fraction bits (samples)
+  // The loss-of-tracking threshold, input angle LSBs (< 2^(angle_w-1)).
+  uint32_t lot_thr = board::kTrkLotReset;
   // Throws InputError naming the register and its range.
   void validate(const TrackConfig& c) const;
 };

@@ -9,14 +9,20 @@
 #include <random>
 
 #include "core/errors.hpp"
+#include "stages/board_regs.hpp"
 #include "stages/interfaces.hpp"
 
 namespace acore {
 namespace {
 
+// The largest N and pole-pair count: the board's register ranges (rtl/acore_board_regs.txt).
+constexpr int64_t kNMax = board::kAbzNNMax;
+constexpr int kPpMax = static_cast<int>(board::kUvwPpPolePairsMax);
+
 TEST(AbzModel, CountIsTheFloorOfTheExactProduct) {
   std::mt19937_64 rng(1);
-  for (int64_t n : {1, 3, 7, 360, 1000, 1024, 4096}) {
+  for (int64_t n :
+       {int64_t{1}, int64_t{3}, int64_t{7}, int64_t{360}, int64_t{1000}, int64_t{1024}, kNMax}) {
     for (int w : {14, 16, 20}) {
       for (int k = 0; k < 2000; ++k) {
         const uint64_t a = rng() & ((uint64_t{1} << w) - 1);
@@ -32,7 +38,7 @@ TEST(AbzModel, CountIsTheFloorOfTheExactProduct) {
 
 TEST(AbzModel, HysteresisHoldsTheUpperCountOfTheBand) {
   const int w = 16;
-  for (int64_t n : {1, 1000, 4096}) {
+  for (int64_t n : {int64_t{1}, int64_t{1000}, kNMax}) {
     for (uint64_t a : {uint64_t{0}, uint64_t{12345}, uint64_t{65535}}) {
       const int64_t lo = abz_count_of(a, w, n);
       const int64_t hi = abz_count_of((a + 1) & 0xFFFF, w, n);
@@ -78,7 +84,7 @@ TEST(AbzModel, PinsAreGrayAndIndexOneCount) {
 TEST(UvwModel, SectorsAgainstSixtyDegreeBoundaries) {
   std::mt19937_64 rng(2);
   const int w = 16;
-  for (int pp = 1; pp <= 16; ++pp) {
+  for (int pp = 1; pp <= kPpMax; ++pp) {
     for (int k = 0; k < 3000; ++k) {
       const uint64_t a = rng() & 0xFFFF, off = rng() & 0xFFFF;
       // Electrical angle in 1/2^16 turn units, then degrees as a rational: deg = 360 e / 2^16.
@@ -102,14 +108,18 @@ TEST(UvwModel, SectorsAgainstSixtyDegreeBoundaries) {
 
 TEST(InterfaceModels, OutOfRangeValuesAreRefused) {
   EXPECT_THROW(abz_count_of(0, 16, 0), InputError);
-  EXPECT_THROW(abz_count_of(0, 16, 4097), InputError);
-  EXPECT_THROW(AbzCounter(5000, 1), InputError);
+  EXPECT_THROW(abz_count_of(0, 16, kNMax + 1), InputError);
+  EXPECT_NO_THROW(abz_count_of(0, 16, kNMax));
+  EXPECT_THROW(AbzCounter(kNMax + 1, 1), InputError);
   EXPECT_THROW(uvw_state(0, 0, 16, 0), InputError);
-  EXPECT_THROW(uvw_state(0, 0, 16, 17), InputError);
+  EXPECT_THROW(uvw_state(0, 0, 16, kPpMax + 1), InputError);
+  EXPECT_NO_THROW(uvw_state(0, 0, 16, kPpMax));
   try {
-    uvw_state(0, 0, 16, 17);
+    uvw_state(0, 0, 16, kPpMax + 1);
+    ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("pole pairs must be 1..16"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("pole pairs must be 1.." + std::to_string(kPpMax)),
+              std::string::npos);
   }
 }
 
