@@ -290,7 +290,7 @@ std::array<EffectSpec, kEffectCount> make_table() {
   {
     EffectSpec& r = row(t, EffectId::harmonic, "harmonic", "harm", D::signal);
     r.params = {{"order", 3, "", false, "n, an integer ≥ 1"},
-                {"amplitude", 0, kUnits, false, "a"},
+                {"amplitude", 0, kUnits, false, "a, the harmonic's amplitude"},
                 {"phase_rad", 0, "rad", false,
                  "ψ: channel X gets a·sin(n·(φ + position_X·π/2) + ψ), the same field harmonic "
                  "seen from each sensor's 90° position"}};
@@ -302,11 +302,12 @@ std::array<EffectSpec, kEffectCount> make_table() {
   }
   {
     EffectSpec& r = row(t, EffectId::eccentricity, "eccentricity", "ecc", D::field);
-    r.params = {{"epsilon_rad", 0, "rad, mechanical", false,
-                 "every channel sees the mechanical angle θ + ε·sin(θ − φ0)"},
-                {"phi0_rad", 0, "rad, mechanical", false, "φ0"},
-                {"am_depth", 0, "", false, "m, |m| < 1: the field part times 1 + m·cos(θ − φm)"},
-                {"am_phase_rad", 0, "rad, mechanical", false, "φm"}};
+    r.params = {
+        {"epsilon_rad", 0, "rad, mechanical", false,
+         "every channel sees the mechanical angle θ + ε·sin(θ − φ0)"},
+        {"phi0_rad", 0, "rad, mechanical", false, "φ0, the angle modulation's phase"},
+        {"am_depth", 0, "", false, "m, |m| < 1: the field part times 1 + m·cos(θ − φm)"},
+        {"am_phase_rad", 0, "rad, mechanical", false, "φm, the magnitude modulation's phase"}};
     r.apply = apply_eccentricity;
     r.check = check_eccentricity;
     r.field_factor = eccentricity_factor;
