@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `anglecore diagnose`: sim-to-real gap diagnosis (model/lab/diagnose/diagnose.hpp), with an optional report.
+// `anglecore diagnose`: sim-to-real gap diagnosis (model/lab/diagnose/diagnose.hpp), with an
+// optional report.
 #include <fmt/format.h>
 
 #include <cstdlib>

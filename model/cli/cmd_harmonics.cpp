@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `anglecore harmonics`: Kuntz's predicted vs exact angle-error harmonics of a signal spec
-// (model/lab/harmonics/harmonics.hpp, docs/contracts.md, command line), with an optional plot folder
-// (scripts/plot_harmonics.py).
+// (model/lab/harmonics/harmonics.hpp, docs/contracts.md, command line), with an optional plot
+// folder (scripts/plot_harmonics.py).
 #include <fmt/format.h>
 
 #include <cstdlib>

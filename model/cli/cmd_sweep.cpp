@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// `anglecore sweep`: the accuracy half of the design-space sweep (model/lab/sweep/design_space.hpp). Writes
-// one JSON line per point to DIR/accuracy-<i>-of-<N>.jsonl as points finish (a shard of a batch
-// job writes only its own file), and the grid to DIR/grid.json so the merge step
-// (scripts/design_space_report.py) can check that every shard ran the same grid.
+// `anglecore sweep`: the accuracy half of the design-space sweep
+// (model/lab/sweep/design_space.hpp). Writes one JSON line per point to
+// DIR/accuracy-<i>-of-<N>.jsonl as points finish (a shard of a batch job writes only its own file),
+// and the grid to DIR/grid.json so the merge step (scripts/design_space_report.py) can check that
+// every shard ran the same grid.
 #include <fmt/format.h>
 
 #include <atomic>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The cost of the physics scenarios (model/lab/physics/physics_*.hpp): one field evaluation of the magnet, and
-// the three recordings (sim, real, holdout) of a physics benchmark case at the default 20,000
-// samples each, beside what the diagnosis of that case costs (bench_diagnose):
+// The cost of the physics scenarios (model/lab/physics/physics_*.hpp): one field evaluation of the
+// magnet, and the three recordings (sim, real, holdout) of a physics benchmark case at the default
+// 20,000 samples each, beside what the diagnosis of that case costs (bench_diagnose):
 //   build/tests/bench/bench_physics
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>

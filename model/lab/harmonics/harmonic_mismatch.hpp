@@ -4,8 +4,8 @@
 // they cause, at mechanical orders 0, p, 2p, 3p, 4p (radians).
 //
 // Every row was checked numerically against the second-order Taylor series (Eq. 26, evaluated by
-// harmonics.hpp) and the exact DFT (tests/lab/harmonics/test_harmonics.cpp, Table1*). Two printed rows disagree
-// with Eq. 26 and are implemented corrected:
+// harmonics.hpp) and the exact DFT (tests/lab/harmonics/test_harmonics.cpp, Table1*). Two printed
+// rows disagree with Eq. 26 and are implemented corrected:
 //   - "Offset, amplitude", H_2p: the printed "... - A_n^2 - 2 A_n" must read "... - A_n^2 + 2 A_n";
 //   - "Offset, amplitude, phase", H_0: the printed (3 - A_n + B_n) must read (3 - A_n - B_n), as in
 //     the "Amplitude, phase" row (an offset does not change H_0 at second order).

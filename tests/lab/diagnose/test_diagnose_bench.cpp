@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The blind self-benchmark (model/lab/diagnose/diagnose_bench.hpp): its draws stay in the documented ranges and
-// carry exactly one effect, and a fixed-seed small run (4 recordings per effect, 6000 samples)
-// meets the targets: top-1 >= 90 %, median holdout shrink >= 70 %, every scored parameter
-// within 20 %, no confident wrong answer on recordings without an effect or with one outside the
-// vocabulary. The truth is the drawn effect, never what the diagnosis computes.
+// The blind self-benchmark (model/lab/diagnose/diagnose_bench.hpp): its draws stay in the
+// documented ranges and carry exactly one effect, and a fixed-seed small run (4 recordings per
+// effect, 6000 samples) meets the targets: top-1 >= 90 %, median holdout shrink >= 70 %,
+// every scored parameter within 20 %, no confident wrong answer on recordings without an effect or
+// with one outside the vocabulary. The truth is the drawn effect, never what the diagnosis
+// computes.
 #include <gtest/gtest.h>
 
 #include <algorithm>

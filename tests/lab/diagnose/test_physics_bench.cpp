@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The physics benchmark (model/lab/diagnose/physics_bench.hpp): its draws perturb exactly what each scenario
-// says, within the documented ranges, blind; and a fixed-seed run of the diagnosis over every
-// scenario meets the physics benchmark's targets (docs/diagnosis.md "Physics benchmark" lists what
-// fails and why). The truth is decided by the physics (and tested in test_physics_rig.cpp), never
-// by what the diagnosis computes.
+// The physics benchmark (model/lab/diagnose/physics_bench.hpp): its draws perturb exactly what each
+// scenario says, within the documented ranges, blind; and a fixed-seed run of the diagnosis over
+// every scenario meets the physics benchmark's targets (docs/diagnosis.md "Physics benchmark" lists
+// what fails and why). The truth is decided by the physics (and tested in test_physics_rig.cpp),
+// never by what the diagnosis computes.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Kuntz's harmonic analysis (model/lab/harmonics/harmonics.hpp, harmonic_mismatch.hpp, harmonic_spectrum.hpp,
-// harmonic_attribution.hpp): the paper's Eq. 33 example, the bounds on random spectra, Table 1,
-// measured spectra, attribution and bad specs.
+// Kuntz's harmonic analysis (model/lab/harmonics/harmonics.hpp, harmonic_mismatch.hpp,
+// harmonic_spectrum.hpp, harmonic_attribution.hpp): the paper's Eq. 33 example, the bounds on
+// random spectra, Table 1, measured spectra, attribution and bad specs.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// CTest `physics_field_vs_magpylib`: the surface-charge field of model/lab/physics/physics_magnet.cpp against
-// magpylib's cylinder (an independent implementation: an analytic solution in elliptic integrals),
-// through scripts/magpylib_field.py in the virtual environment scripts/setup.sh makes.
+// CTest `physics_field_vs_magpylib`: the surface-charge field of
+// model/lab/physics/physics_magnet.cpp against magpylib's cylinder (an independent implementation:
+// an analytic solution in elliptic integrals), through scripts/magpylib_field.py in the virtual
+// environment scripts/setup.sh makes.
 //
 // 40 random magnets (radius 2..5 mm, height 1.5..4 mm, Br 1.0..1.4 T), 100 observers each where the
 // scenarios put sensing elements: below the magnet at an air gap of 0.5..2.5 mm, up to 2 mm off
