@@ -63,8 +63,7 @@ bool pairs_move(int channels, G&& gain, O&& offset) {
          std::fabs(0.5 * (gain(0) + gain(2)) - 0.5 * (gain(1) + gain(3))) >= kVisible;
 }
 
-// ---- Each effect's draw (the ranges of diagnose_bench.hpp): its parameters, no-op ones left out
-// ----
+// ---- Each effect's draw: the ranges of diagnose_bench.hpp, no-op parameters left out ----
 
 ParamList draw_offset(Draw& d, const BenchCase& c) {
   const int nch = c.channels;
@@ -267,8 +266,7 @@ void apply_outside(const BenchCase& c, Recording& r) {
 
 double rel(double fitted, double truth) { return std::fabs(fitted - truth) / std::fabs(truth); }
 
-// ---- Each effect's score: the parameters of a correctly named effect, as documented in the
-// header ----
+// ---- Each effect's score: a correctly named effect's parameters (diagnose_bench.hpp) ----
 
 struct Scoring {
   const BenchCase& c;
