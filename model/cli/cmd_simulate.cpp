@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
+#include "sim/effect_table.hpp"
 #include "sim/simulator.hpp"
 
 namespace acore::cli {
@@ -26,7 +27,7 @@ struct SimulateArgs {
   size_t samples = 4096;
   uint64_t seed = 1;
   int channels = 0;  // 0: the scenario's own
-  bool list = false;
+  bool list = false, list_effects = false;
   // A speed profile replacing the scenario's trajectory (--profile; empty: the scenario's own).
   std::string profile;
   double speed_rpm = 0, speed_end_rpm = 0, sample_rate = 0, ripple = 0, ripple_hz = 0, step_at = 0,
@@ -94,7 +95,44 @@ std::vector<double> uncorrected_error_deg(const Recording& r, int p) {
   return e;
 }
 
+// The effect table (model/lab/sim/effect_table.hpp): what a scenario's "effects" may hold, with
+// every parameter's no-op default; --json adds what the diagnosis does with each (docs/diagnosis.md
+// "Effect vocabulary" is generated from it by scripts/effect_vocabulary.py).
+void list_effects(const SimulateArgs& a) {
+  std::ostream& out = a.json == "-" ? std::cerr : std::cout;
+  nlohmann::json effects = nlohmann::json::array();
+  for (const EffectSpec& e : effect_table()) {
+    const bool field = e.domain == EffectDomain::field;
+    out << fmt::format("{:<14} {}-domain: {}\n", e.name, field ? "field" : "signal", e.meaning);
+    nlohmann::json params = nlohmann::json::array();
+    for (const EffectParamSpec& p : e.params) {
+      const std::string name = p.per_channel ? p.name + "X" : p.name;
+      out << fmt::format("  {:<15} {:<6} {:<18} {}\n", name, fmt::format("{:g}", p.no_op),
+                         p.unit.empty() ? "-" : p.unit, p.what);
+      params.push_back({{"name", name},
+                        {"default", p.no_op},
+                        {"unit", p.unit},
+                        {"per_channel", p.per_channel},
+                        {"what", p.what}});
+    }
+    effects.push_back({{"name", e.name},
+                       {"domain", field ? "field" : "signal"},
+                       {"meaning", e.meaning},
+                       {"widened", e.widened},
+                       {"status", e.status},
+                       {"fit", effect_fit_text(e.fit)},
+                       {"fit_note", e.fit_note},
+                       {"params", params}});
+  }
+  out << "X: a channel, c1..c4 (four channels) or sin, cos (two)\n";
+  if (!a.json.empty()) write_json(a.json, {{"effects", effects}});
+}
+
 void run_simulate(const SimulateArgs& a) {
+  if (a.list_effects) {
+    list_effects(a);
+    return;
+  }
   if (a.list) {
     nlohmann::json names = nlohmann::json::array();
     for (const auto& n : builtin_scenario_names()) {
@@ -193,6 +231,9 @@ void add_simulate(CLI::App& app) {
                 "--seed)")
       ->check(CLI::Range(0.0, 99.0));
   c->add_flag("--list", args->list, "List the built-in scenarios and exit");
+  c->add_flag("--list-effects", args->list_effects,
+              "List the effects a scenario's \"effects\" may hold, with their parameters and "
+              "no-op defaults, and exit");
   c->add_option("--json", args->json, "Write a summary as JSON ('-' for stdout)");
   c->add_option("--dump-config", args->dump_config,
                 "Write the scenario as JSON (a starting point for --config)");

@@ -16,6 +16,7 @@
 
 #include "core/errors.hpp"
 #include "diagnose/diagnose.hpp"
+#include "sim/effect_table.hpp"
 
 namespace acore {
 
@@ -62,96 +63,134 @@ bool pairs_move(int channels, G&& gain, O&& offset) {
          std::fabs(0.5 * (gain(0) + gain(2)) - 0.5 * (gain(1) + gain(3))) >= kVisible;
 }
 
-Effect draw_effect(Draw& d, const BenchCase& c) {
+// ---- Each effect's draw: the ranges of diagnose_bench.hpp, no-op parameters left out ----
+
+ParamList draw_offset(Draw& d, const BenchCase& c) {
   const int nch = c.channels;
   auto name = [&](int ch) { return effect_channel_name(nch, ch); };
-  const std::string& e = c.truth;
   ParamList p;
-  if (e == "offset") {
-    std::vector<double> o(4, 0.0);
-    do {
-      const auto s = d.subset(nch);
-      for (int ch = 0; ch < nch; ++ch) o[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
-    } while (!pairs_move(
-        nch, [](int) { return 0.0; }, [&](int ch) { return o[ch]; }));
-    for (int ch = 0; ch < nch; ++ch)
-      if (o[ch] != 0) p.push_back({"offset_" + name(ch), o[ch]});
-  } else if (e == "gain_mismatch") {
-    std::vector<double> g(4, 0.0);
-    do {
-      const auto s = d.subset(nch);
-      for (int ch = 0; ch < nch; ++ch) g[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
-    } while (!pairs_move(
-        nch, [&](int ch) { return g[ch]; }, [](int) { return 0.0; }));
-    for (int ch = 0; ch < nch; ++ch)
-      if (g[ch] != 0) p.push_back({"gain_" + name(ch), 1.0 + g[ch]});
-  } else if (e == "phase_error") {
-    // The sine pair, the cosine pair or (four channels) one plate.
-    const double delta = d.sign() * d.u(0.5, 5) * kDeg;
-    const int target = d.i(0, nch == 4 ? 5 : 1);
-    p = {{target == 0   ? "delta_rad"
-          : target == 1 ? "delta_cos_rad"
-                        : "phase_" + name(target - 2),
-          delta}};
-  } else if (e == "zero_offset") {
-    p = {{"zero_rad", d.sign() * d.u(0.2, 3) * kDeg}};
-  } else if (e == "amplitude") {
-    p = {{"scale", 1 + d.sign() * d.u(kAmplitudeMin, kAmplitudeMax)}};
-  } else if (e == "harmonic") {
-    const int order = nch == 4 ? 2 * d.i(1, 3) + 1 : d.i(2, 5);
-    p = {{"order", order}, {"amplitude", d.u(0.01, 0.05)}, {"phase_rad", d.u(-kPi, kPi)}};
-  } else if (e == "eccentricity") {
-    // Magnitude modulation up to 1.5 eps, its phase within 90 degrees of phi0 (the other half-plane
-    // is what an offset does to a two-channel sensor, see effects.hpp).
-    const double eps = d.u(0.2, 2) * kDeg, phi0 = d.u(-kPi, kPi);
-    p = {{"epsilon_rad", eps},
-         {"phi0_rad", phi0},
-         {"am_depth", eps * d.u(0, 1.5)},
-         {"am_phase_rad", std::remainder(phi0 + d.u(-kPi / 2, kPi / 2), 2 * kPi)}};
-  } else if (e == "channel_skew") {
-    // A multiplexed ADC: the channels in a random slot order, tau apart; 360 v tau degrees is the
-    // angle between neighbouring slots at the top speed.
-    const double tau = d.u(0.2, 3) / (360.0 * top_speed(c.real_traj));
-    std::vector<int> slot(static_cast<size_t>(nch));
-    for (int k = 0; k < nch; ++k) slot[static_cast<size_t>(k)] = k;
-    for (int k = nch - 1; k > 0; --k)
-      std::swap(slot[static_cast<size_t>(k)], slot[static_cast<size_t>(d.i(0, k))]);
-    for (int ch = 0; ch < nch; ++ch)
-      if (slot[static_cast<size_t>(ch)] != 0)
-        p.push_back({"tau_" + name(ch), slot[static_cast<size_t>(ch)] * tau});
-  } else if (e == "common_delay") {
-    // The angle the effect moves at the top speed: 360 v tau degrees.
-    p = {{"tau_s", d.u(0.2, 3) / (360.0 * top_speed(c.real_traj))}};
-  } else if (e == "drift") {
-    std::vector<double> ko(4, 0.0), kg(4, 0.0);
-    do {
-      const auto s = d.subset(nch);
-      for (int ch = 0; ch < nch; ++ch) {
-        ko[ch] = kg[ch] = 0;
-        if (!s[ch]) continue;
-        const int what = d.i(0, 2);  // 0: offset, 1: gain, 2: both
-        if (what != 1) ko[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
-        if (what != 0) kg[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
-      }
-    } while (!pairs_move(
-        nch, [&](int ch) { return kg[ch] * kDriftSpanC; },
-        [&](int ch) { return ko[ch] * kDriftSpanC; }));
+  std::vector<double> o(4, 0.0);
+  do {
+    const auto s = d.subset(nch);
+    for (int ch = 0; ch < nch; ++ch) o[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
+  } while (!pairs_move(
+      nch, [](int) { return 0.0; }, [&](int ch) { return o[ch]; }));
+  for (int ch = 0; ch < nch; ++ch)
+    if (o[ch] != 0) p.push_back({"offset_" + name(ch), o[ch]});
+  return p;
+}
+
+ParamList draw_gain_mismatch(Draw& d, const BenchCase& c) {
+  const int nch = c.channels;
+  auto name = [&](int ch) { return effect_channel_name(nch, ch); };
+  ParamList p;
+  std::vector<double> g(4, 0.0);
+  do {
+    const auto s = d.subset(nch);
+    for (int ch = 0; ch < nch; ++ch) g[ch] = s[ch] ? d.sign() * d.u(0.01, 0.05) : 0.0;
+  } while (!pairs_move(
+      nch, [&](int ch) { return g[ch]; }, [](int) { return 0.0; }));
+  for (int ch = 0; ch < nch; ++ch)
+    if (g[ch] != 0) p.push_back({"gain_" + name(ch), 1.0 + g[ch]});
+  return p;
+}
+
+ParamList draw_phase_error(Draw& d, const BenchCase& c) {
+  const int nch = c.channels;
+  auto name = [&](int ch) { return effect_channel_name(nch, ch); };
+  // The sine pair, the cosine pair or (four channels) one plate.
+  const double delta = d.sign() * d.u(0.5, 5) * kDeg;
+  const int target = d.i(0, nch == 4 ? 5 : 1);
+  return {{target == 0   ? "delta_rad"
+           : target == 1 ? "delta_cos_rad"
+                         : "phase_" + name(target - 2),
+           delta}};
+}
+
+ParamList draw_zero_offset(Draw& d, const BenchCase&) {
+  return {{"zero_rad", d.sign() * d.u(0.2, 3) * kDeg}};
+}
+
+ParamList draw_amplitude(Draw& d, const BenchCase&) {
+  return {{"scale", 1 + d.sign() * d.u(kAmplitudeMin, kAmplitudeMax)}};
+}
+
+ParamList draw_harmonic(Draw& d, const BenchCase& c) {
+  const int nch = c.channels;
+  const int order = nch == 4 ? 2 * d.i(1, 3) + 1 : d.i(2, 5);
+  return {{"order", order}, {"amplitude", d.u(0.01, 0.05)}, {"phase_rad", d.u(-kPi, kPi)}};
+}
+
+ParamList draw_eccentricity(Draw& d, const BenchCase&) {
+  // Magnitude modulation up to 1.5 eps, its phase within 90 degrees of phi0 (the other half-plane
+  // is what an offset does to a two-channel sensor, see effects.hpp).
+  const double eps = d.u(0.2, 2) * kDeg, phi0 = d.u(-kPi, kPi);
+  return {{"epsilon_rad", eps},
+          {"phi0_rad", phi0},
+          {"am_depth", eps * d.u(0, 1.5)},
+          {"am_phase_rad", std::remainder(phi0 + d.u(-kPi / 2, kPi / 2), 2 * kPi)}};
+}
+
+ParamList draw_channel_skew(Draw& d, const BenchCase& c) {
+  const int nch = c.channels;
+  auto name = [&](int ch) { return effect_channel_name(nch, ch); };
+  ParamList p;
+  // A multiplexed ADC: the channels in a random slot order, tau apart; 360 v tau degrees is the
+  // angle between neighbouring slots at the top speed.
+  const double tau = d.u(0.2, 3) / (360.0 * top_speed(c.real_traj));
+  std::vector<int> slot(static_cast<size_t>(nch));
+  for (int k = 0; k < nch; ++k) slot[static_cast<size_t>(k)] = k;
+  for (int k = nch - 1; k > 0; --k)
+    std::swap(slot[static_cast<size_t>(k)], slot[static_cast<size_t>(d.i(0, k))]);
+  for (int ch = 0; ch < nch; ++ch)
+    if (slot[static_cast<size_t>(ch)] != 0)
+      p.push_back({"tau_" + name(ch), slot[static_cast<size_t>(ch)] * tau});
+  return p;
+}
+
+ParamList draw_common_delay(Draw& d, const BenchCase& c) {
+  // The angle the effect moves at the top speed: 360 v tau degrees.
+  return {{"tau_s", d.u(0.2, 3) / (360.0 * top_speed(c.real_traj))}};
+}
+
+ParamList draw_drift(Draw& d, const BenchCase& c) {
+  const int nch = c.channels;
+  auto name = [&](int ch) { return effect_channel_name(nch, ch); };
+  ParamList p;
+  std::vector<double> ko(4, 0.0), kg(4, 0.0);
+  do {
+    const auto s = d.subset(nch);
     for (int ch = 0; ch < nch; ++ch) {
-      if (ko[ch] != 0) p.push_back({"offset_per_C_" + name(ch), ko[ch]});
-      if (kg[ch] != 0) p.push_back({"gain_per_C_" + name(ch), kg[ch]});
+      ko[ch] = kg[ch] = 0;
+      if (!s[ch]) continue;
+      const int what = d.i(0, 2);  // 0: offset, 1: gain, 2: both
+      if (what != 1) ko[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
+      if (what != 0) kg[ch] = d.sign() * d.u(0.01, 0.05) / kDriftSpanC;
     }
-  } else if (e == "quantization") {
-    p = {{"bits", d.i(6, 10)}, {"full_scale", c.peak * d.u(1.05, 1.5)}};
-  } else if (e == "saturation") {
-    p = {{"level", c.peak * d.u(0.80, 0.95)}};
-  } else if (e == "excess_noise") {
-    p = {{"sigma", c.model.sigma_indep * d.u(2, 5)}};
-  } else if (e == "hysteresis") {
-    p = {{"h_rad", d.sign() * d.u(0.1, 1) * kDeg}};
-  } else {
-    throw InputError("diagnose-bench: unknown effect '" + e + "'");
+  } while (!pairs_move(
+      nch, [&](int ch) { return kg[ch] * kDriftSpanC; },
+      [&](int ch) { return ko[ch] * kDriftSpanC; }));
+  for (int ch = 0; ch < nch; ++ch) {
+    if (ko[ch] != 0) p.push_back({"offset_per_C_" + name(ch), ko[ch]});
+    if (kg[ch] != 0) p.push_back({"gain_per_C_" + name(ch), kg[ch]});
   }
-  return make_effect(e, p, nch);
+  return p;
+}
+
+ParamList draw_quantization(Draw& d, const BenchCase& c) {
+  return {{"bits", d.i(6, 10)}, {"full_scale", c.peak * d.u(1.05, 1.5)}};
+}
+
+ParamList draw_saturation(Draw& d, const BenchCase& c) {
+  return {{"level", c.peak * d.u(0.80, 0.95)}};
+}
+
+ParamList draw_excess_noise(Draw& d, const BenchCase& c) {
+  return {{"sigma", c.model.sigma_indep * d.u(2, 5)}};
+}
+
+ParamList draw_hysteresis(Draw& d, const BenchCase&) {
+  return {{"h_rad", d.sign() * d.u(0.1, 1) * kDeg}};
 }
 
 ParamList draw_outside(Draw& d, const BenchCase& c) {
@@ -227,72 +266,139 @@ void apply_outside(const BenchCase& c, Recording& r) {
 
 double rel(double fitted, double truth) { return std::fabs(fitted - truth) / std::fabs(truth); }
 
-// The scored parameters of a correctly named effect (see the header).
-std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
-  std::vector<BenchParam> out;
-  const Effect& e = c.effect;
-  auto add = [&](const std::string& name, double truth, double fitted) {
-    out.push_back({name, truth, fitted, rel(fitted, truth)});
-  };
-  auto given = [&](const std::string& name) {
-    for (const auto& [k, v] : e.params)
-      if (k == name) return v;
-    return 0.0;
-  };
-  const ParamList defaults = effect_defaults(e.effect, c.channels);
-  auto drawn = [&](const std::string& name) {
-    for (const auto& [k, v] : defaults)
-      if (k == name) return given(name) != v;
+// ---- Each effect's score: a correctly named effect's parameters (diagnose_bench.hpp) ----
+
+struct Scoring {
+  const BenchCase& c;
+  const EffectCandidate& cand;
+  std::vector<BenchParam>& out;
+
+  const Effect& truth() const { return c.effect; }
+  void add(const std::string& name, double t, double fitted) const {
+    out.push_back({name, t, fitted, rel(fitted, t)});
+  }
+  // Whether the draw set this parameter (not left at its no-op default).
+  bool drawn(const std::string& name) const {
+    double given = 0.0;
+    for (const auto& [k, v] : c.effect.params)
+      if (k == name) given = v;
+    for (const auto& [k, v] : effect_spec(c.effect.effect).defaults(c.channels))
+      if (k == name) return given != v;
     return false;
-  };
+  }
   // A vector of per-channel values, compared as a whole: |fitted - true| / |true|.
-  auto add_vector = [&](const std::string& name, const std::array<double, 4>& t,
-                        const std::array<double, 4>& f) {
+  void add_vector(const std::string& name, const std::array<double, 4>& t,
+                  const std::array<double, 4>& f) const {
     double dt = 0, nt = 0, nf = 0;
     for (size_t k = 0; k < 4; ++k)
       dt += (f[k] - t[k]) * (f[k] - t[k]), nt += t[k] * t[k], nf += f[k] * f[k];
     out.push_back({name, std::sqrt(nt), std::sqrt(nf), std::sqrt(dt / nt)});
-  };
-  // The fitted per-channel quantities (phase_error, channel_skew) as the simulator reads them.
-  auto fitted = [&] { return make_effect(e.effect, cand.params, c.channels); };
-  if (e.effect == "offset" || e.effect == "drift" || e.effect == "common_delay" ||
-      e.effect == "excess_noise" || e.effect == "hysteresis" || e.effect == "zero_offset") {
-    for (const auto& [k, v] : e.params)
-      if (drawn(k)) add(k, v, cand.param(k));
-  } else if (e.effect == "gain_mismatch") {
-    for (const auto& [k, v] : e.params)
-      if (drawn(k)) add(k + " - 1", v - 1, cand.param(k) - 1);
-  } else if (e.effect == "amplitude") {
-    add("scale - 1", e.param("scale") - 1, cand.param("scale") - 1);
-  } else if (e.effect == "phase_error") {
-    add_vector("phase per channel", phase_error_shifts(e, c.channels),
-               phase_error_shifts(fitted(), c.channels));
-  } else if (e.effect == "channel_skew") {
-    add_vector("time per channel", channel_skew_offsets(e, c.channels),
-               channel_skew_offsets(fitted(), c.channels));
-  } else if (e.effect == "harmonic") {
-    const std::complex<double> t = std::polar(e.param("amplitude"), e.param("phase_rad"));
-    const std::complex<double> f =
-        cand.param("order") == e.param("order")
-            ? std::polar(cand.param("amplitude"), cand.param("phase_rad"))
-            : std::complex<double>(0, 0);
-    out.push_back({fmt::format("order {} a e^(i psi)", e.param("order")), std::abs(t), std::abs(f),
-                   std::abs(f - t) / std::abs(t)});
-  } else if (e.effect == "eccentricity") {
-    // Angle and magnitude modulation together: the vector (eps e^(i phi0), m e^(i phi_m)).
-    const std::complex<double> ta = std::polar(e.param("epsilon_rad"), e.param("phi0_rad")),
-                               tm = std::polar(e.param("am_depth"), e.param("am_phase_rad"));
-    const std::complex<double> fa = std::polar(cand.param("epsilon_rad"), cand.param("phi0_rad")),
-                               fm = std::polar(cand.param("am_depth"), cand.param("am_phase_rad"));
-    const double nt = std::hypot(std::abs(ta), std::abs(tm));
-    out.push_back({"(eps e^(i phi0), m e^(i phi_m))", nt, std::hypot(std::abs(fa), std::abs(fm)),
-                   std::hypot(std::abs(fa - ta), std::abs(fm - tm)) / nt});
-  } else if (e.effect == "quantization") {
-    add("step", 2 * e.param("full_scale") / std::ldexp(1.0, static_cast<int>(e.param("bits"))),
-        cand.param("step"));
-  } else if (e.effect == "saturation") {
-    add("depth 1 - level/P", 1 - e.param("level") / c.peak, 1 - cand.param("level") / c.peak);
   }
+  // The fitted per-channel quantities (phase_error, channel_skew) as the simulator reads them.
+  Effect fitted() const { return make_effect(c.effect.effect, cand.params, c.channels); }
+};
+
+// Offsets, drift coefficients, a delay, sigma, h, z: each drawn parameter itself.
+void score_drawn(const Scoring& s) {
+  for (const auto& [k, v] : s.truth().params)
+    if (s.drawn(k)) s.add(k, v, s.cand.param(k));
+}
+
+// Gains and the amplitude's scale: the mismatch, each drawn factor minus 1.
+void score_factor_minus_one(const Scoring& s) {
+  for (const auto& [k, v] : s.truth().params)
+    if (s.drawn(k)) s.add(k + " - 1", v - 1, s.cand.param(k) - 1);
+}
+
+void score_phase_error(const Scoring& s) {
+  s.add_vector("phase per channel", phase_error_shifts(s.truth(), s.c.channels),
+               phase_error_shifts(s.fitted(), s.c.channels));
+}
+
+void score_channel_skew(const Scoring& s) {
+  s.add_vector("time per channel", channel_skew_offsets(s.truth(), s.c.channels),
+               channel_skew_offsets(s.fitted(), s.c.channels));
+}
+
+void score_harmonic(const Scoring& s) {
+  const Effect& e = s.truth();
+  const EffectCandidate& cand = s.cand;
+  const std::complex<double> t = std::polar(e.param("amplitude"), e.param("phase_rad"));
+  const std::complex<double> f = cand.param("order") == e.param("order")
+                                     ? std::polar(cand.param("amplitude"), cand.param("phase_rad"))
+                                     : std::complex<double>(0, 0);
+  s.out.push_back({fmt::format("order {} a e^(i psi)", e.param("order")), std::abs(t), std::abs(f),
+                   std::abs(f - t) / std::abs(t)});
+}
+
+// Angle and magnitude modulation together: the vector (eps e^(i phi0), m e^(i phi_m)).
+void score_eccentricity(const Scoring& s) {
+  const Effect& e = s.truth();
+  const EffectCandidate& cand = s.cand;
+  const std::complex<double> ta = std::polar(e.param("epsilon_rad"), e.param("phi0_rad")),
+                             tm = std::polar(e.param("am_depth"), e.param("am_phase_rad"));
+  const std::complex<double> fa = std::polar(cand.param("epsilon_rad"), cand.param("phi0_rad")),
+                             fm = std::polar(cand.param("am_depth"), cand.param("am_phase_rad"));
+  const double nt = std::hypot(std::abs(ta), std::abs(tm));
+  s.out.push_back({"(eps e^(i phi0), m e^(i phi_m))", nt, std::hypot(std::abs(fa), std::abs(fm)),
+                   std::hypot(std::abs(fa - ta), std::abs(fm - tm)) / nt});
+}
+
+void score_quantization(const Scoring& s) {
+  const Effect& e = s.truth();
+  s.add("step", 2 * e.param("full_scale") / std::ldexp(1.0, static_cast<int>(e.param("bits"))),
+        s.cand.param("step"));
+}
+
+void score_saturation(const Scoring& s) {
+  s.add("depth 1 - level/P", 1 - s.truth().param("level") / s.c.peak,
+        1 - s.cand.param("level") / s.c.peak);
+}
+
+// ---- The bench table: one row per row of the effect table (effect_table.hpp), same order ----
+
+struct BenchEffect {
+  EffectId id;
+  ParamList (*draw)(Draw&, const BenchCase&);
+  void (*score)(const Scoring&);
+};
+
+const std::array<BenchEffect, kEffectCount> kBenchEffects = {{
+    {EffectId::offset, draw_offset, score_drawn},
+    {EffectId::gain_mismatch, draw_gain_mismatch, score_factor_minus_one},
+    {EffectId::phase_error, draw_phase_error, score_phase_error},
+    {EffectId::harmonic, draw_harmonic, score_harmonic},
+    {EffectId::eccentricity, draw_eccentricity, score_eccentricity},
+    {EffectId::channel_skew, draw_channel_skew, score_channel_skew},
+    {EffectId::common_delay, draw_common_delay, score_drawn},
+    {EffectId::drift, draw_drift, score_drawn},
+    {EffectId::quantization, draw_quantization, score_quantization},
+    {EffectId::saturation, draw_saturation, score_saturation},
+    {EffectId::excess_noise, draw_excess_noise, score_drawn},
+    {EffectId::hysteresis, draw_hysteresis, score_drawn},
+    {EffectId::zero_offset, draw_zero_offset, score_drawn},
+    {EffectId::amplitude, draw_amplitude, score_factor_minus_one},
+}};
+
+// The bench row of an effect name; throws InputError for an unknown one.
+const BenchEffect& bench_effect(const std::string& e) {
+  const EffectSpec* spec = find_effect(e);
+  if (!spec) throw InputError("diagnose-bench: unknown effect '" + e + "'");
+  const BenchEffect& b = kBenchEffects[static_cast<size_t>(spec->id)];
+  if (b.id != spec->id)
+    throw std::logic_error(
+        "diagnose-bench: the bench table is not in the effect table's order at " + e);
+  return b;
+}
+
+Effect draw_effect(Draw& d, const BenchCase& c) {
+  return make_effect(c.truth, bench_effect(c.truth).draw(d, c), c.channels);
+}
+
+// The scored parameters of a correctly named effect (see the header).
+std::vector<BenchParam> score(const BenchCase& c, const EffectCandidate& cand) {
+  std::vector<BenchParam> out;
+  bench_effect(c.effect.effect).score(Scoring{c, cand, out});
   return out;
 }
 
@@ -601,13 +707,9 @@ bool BenchSummary::met() const { return missed().empty(); }
 
 namespace {
 std::string short_name(const std::string& s) {
+  if (const EffectSpec* e = find_effect(s)) return e->abbrev;
   static const std::vector<std::pair<std::string, std::string>> k = {
-      {"offset", "off"},         {"gain_mismatch", "gain"}, {"phase_error", "phase"},
-      {"harmonic", "harm"},      {"eccentricity", "ecc"},   {"channel_skew", "skew"},
-      {"common_delay", "delay"}, {"drift", "drift"},        {"quantization", "quant"},
-      {"saturation", "sat"},     {"excess_noise", "noise"}, {"hysteresis", "hyst"},
-      {"zero_offset", "zero"},   {"amplitude", "ampl"},     {"no_gap", "nogap"},
-      {"unexplained", "unexpl"}, {"none", "none"},          {"outside", "outside"}};
+      {"no_gap", "nogap"}, {"unexplained", "unexpl"}, {"none", "none"}, {"outside", "outside"}};
   for (const auto& [a, b] : k)
     if (a == s) return b;
   return s;

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "sim/effect_table.hpp"
 #include "sim/effects.hpp"
 
 namespace acore {
@@ -182,11 +183,14 @@ struct Fitted {
       rejected;  // why the effect's own assumptions fail on this recording (empty: they hold)
 };
 
-std::string chan_name(const Recording& r, int c) {
-  return r.channels == 4 ? fmt::format("c{}", c + 1) : (c ? "cos" : "sin");
-}
+std::string chan_name(const Recording& r, int c) { return effect_channel_name(r.channels, c); }
 
-Fitted fit_offset(const FitProblem& fp, const Recording& base) {
+// Every fit takes the same arguments (the fitter table below): the problem, the prediction it
+// fits on top of, the extra white noise that prediction carries, and the factor later field
+// scalings put on the angle change it causes (nullptr: 1).
+using FieldScale = const std::vector<double>*;
+
+Fitted fit_offset(const FitProblem& fp, const Recording& base, double, FieldScale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols;
   for (int c = 0; c < r.channels; ++c) {
@@ -201,7 +205,7 @@ Fitted fit_offset(const FitProblem& fp, const Recording& base) {
   return f;
 }
 
-Fitted fit_gain(const FitProblem& fp, const Recording& base) {
+Fitted fit_gain_mismatch(const FitProblem& fp, const Recording& base, double, FieldScale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols;
   for (int c = 0; c < r.channels; ++c) {
@@ -246,8 +250,7 @@ Fitted fit_angle_shift(const FitProblem& fp, const Recording& base,
 // electrical-angle difference atan2(d13, d24) (atan2(sin, cos)) of real minus base, over the
 // periodicity and the sense in which the electrical angle turns, and is refined by Gauss-Newton on
 // the exact shift (the same model(theta + z) - model(theta) predict_effect applies).
-Fitted fit_zero_offset(const FitProblem& fp, const Recording& base,
-                       const std::vector<double>* scale) {
+Fitted fit_zero_offset(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
   const Recording& r = *fp.real;
   const size_t n = r.size();
   auto elec = [&](const Recording& x, size_t i) {
@@ -294,7 +297,7 @@ Fitted fit_zero_offset(const FitProblem& fp, const Recording& base,
 bool sine_pair(const Recording& r, int c) { return r.channels == 4 ? (c == 0 || c == 2) : c == 0; }
 
 // amplitude: every channel's field part scaled by 1 + phi.
-Fitted fit_amplitude(const FitProblem& fp, const Recording& base) {
+Fitted fit_amplitude(const FitProblem& fp, const Recording& base, double, FieldScale) {
   const Recording& r = *fp.real;
   Column col(r.channels);
   for (int c = 0; c < r.channels; ++c) {
@@ -310,8 +313,7 @@ Fitted fit_amplitude(const FitProblem& fp, const Recording& base) {
 
 // eccentricity: theta + u sin(theta) - v cos(theta) (u = eps cos phi0, v = eps sin phi0) and the
 // field part times 1 + a cos(theta) + b sin(theta) (a = m cos phi_m, b = m sin phi_m).
-Fitted fit_eccentricity(const FitProblem& fp, const Recording& base,
-                        const std::vector<double>* scale) {
+Fitted fit_eccentricity(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols(4, Column(r.channels));
   for (int c = 0; c < r.channels; ++c) {
@@ -338,8 +340,7 @@ Fitted fit_eccentricity(const FitProblem& fp, const Recording& base,
 // phase_error: one group of channels sees the electrical angle + delta. The groups a placement or
 // orthogonality error moves: the sine pair, the cosine pair, or (four channels) one plate. The best
 // by likelihood is kept; the choice counts as a parameter (k = 2), as a harmonic's order does.
-Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
-                       const std::vector<double>* scale) {
+Fitted fit_phase_error(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   struct Group {
@@ -366,7 +367,7 @@ Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
     const double l = neg2_log_likelihood(fp, pred);
     if (l < best_l) {
       best_l = l;
-      best.params = effect_defaults("phase_error", r.channels);
+      best.params = effect_spec(EffectId::phase_error).defaults(r.channels);
       for (auto& kv : best.params)
         if (kv.first == g.param) kv.second = delta;
       best.k = 2;
@@ -375,7 +376,7 @@ Fitted fit_phase_error(const FitProblem& fp, const Recording& base,
   return best;
 }
 
-Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
+Fitted fit_harmonic(const FitProblem& fp, const Recording& base, double, FieldScale) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
   Fitted best;
@@ -413,7 +414,7 @@ Fitted fit_harmonic(const FitProblem& fp, const Recording& base) {
   return best;
 }
 
-Fitted fit_drift(const FitProblem& fp, const Recording& base) {
+Fitted fit_drift(const FitProblem& fp, const Recording& base, double, FieldScale) {
   const Recording& r = *fp.real;
   std::vector<Column> cols;
   for (int c = 0; c < r.channels; ++c) {
@@ -431,6 +432,34 @@ Fitted fit_drift(const FitProblem& fp, const Recording& base) {
     f.params.push_back({"gain_per_C_" + chan_name(r, c), phi(2 * c + 1)});
   }
   f.k = 2 * r.channels;
+  return f;
+}
+
+// channel_skew: channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their
+// common part included: a multiplexer's slots count from the time stamp).
+Fitted fit_channel_skew(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
+  const Recording& r = *fp.real;
+  std::vector<std::function<double(int, size_t)>> basis;
+  for (int k = 0; k < r.channels; ++k)
+    basis.push_back([&, k](int c, size_t i) { return c == k ? fp.omega[i] : 0.0; });
+  Fitted f = fit_angle_shift(fp, base, basis, scale);
+  ParamList taus;
+  for (int k = 0; k < r.channels; ++k)
+    taus.push_back({"tau_" + effect_channel_name(r.channels, k), f.params[k].second});
+  f.params = make_effect(effect_name(EffectId::channel_skew), taus, r.channels).params;
+  return f;
+}
+
+Fitted fit_common_delay(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
+  Fitted f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }}, scale);
+  f.params = {{"tau_s", f.params[0].second}};
+  return f;
+}
+
+Fitted fit_hysteresis(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
+  Fitted f = fit_angle_shift(fp, base,
+                             {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }}, scale);
+  f.params = {{"h_rad", f.params[0].second}};
   return f;
 }
 
@@ -475,7 +504,7 @@ PrintPrecision print_precision(const std::vector<double>& values) {
 // where that resolution is well below a step (the printing could not put it on the lattice by
 // chance), and a lattice that is the printing's own (the step one unit of the last decimal) is a
 // quantization too, tested exactly. No lattice, no quantization.
-Fitted fit_quantization(const FitProblem& fp) {
+Fitted fit_quantization(const FitProblem& fp, const Recording&, double, FieldScale) {
   const Recording& r = *fp.real;
   Fitted f;
   f.k = 1;
@@ -564,7 +593,7 @@ Fitted fit_quantization(const FitProblem& fp) {
   return f;
 }
 
-Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
+Fitted fit_saturation(const FitProblem& fp, const Recording& base, double, FieldScale) {
   const Recording& r = *fp.real;
   double peak_model = 0;
   for (int c = 0; c < r.channels; ++c)
@@ -599,7 +628,8 @@ Fitted fit_saturation(const FitProblem& fp, const Recording& base) {
 
 // Extra white noise sigma_e on each channel, on top of what `base` already carries (base_extra):
 // maximum likelihood over sigma_e by a ternary search (the likelihood is unimodal in sigma_e^2).
-Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base_extra) {
+Fitted fit_excess_noise(const FitProblem& fp, const Recording& base, double base_extra,
+                        FieldScale) {
   const Recording& r = *fp.real;
   const int S = nsignals(r);
   std::vector<double> rss(S, 0.0), lag1(S, 0.0);
@@ -683,6 +713,184 @@ void quantized_moments(double x, double sigma, double step, double origin, doubl
   var = step * step * std::max(0.0, m2 - m1 * m1);
 }
 
+// ---- Predictions: each effect added to `base` from a candidate's parameters alone ----
+
+// Channel c sees theta + delta(c, i): the model's change at the shifted angle, times the later
+// field scalings.
+void add_angle_shift(const FitProblem& fp, Recording& out, FieldScale field_scale,
+                     const std::function<double(int, size_t)>& delta) {
+  const Recording& r = *fp.real;
+  for (int c = 0; c < r.channels; ++c) {
+    const auto add = angle_shift(fp, c, [&](size_t i) { return delta(c, i); });
+    for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += scale_at(field_scale, i) * add[i];
+  }
+}
+
+// Every prediction takes the same arguments (the fitter table below): `out` starts as `base`;
+// *extra_sigma (when given) starts at 0 and receives the white noise the effect adds per channel.
+void predict_offset(const FitProblem& fp, const Recording&, const EffectCandidate& cand, FieldScale,
+                    Recording& out, double*) {
+  const Recording& r = *fp.real;
+  for (int c = 0; c < r.channels; ++c)
+    for (auto& v : out.ch[c]) v += cand.param("offset_" + chan_name(r, c));
+}
+
+void predict_gain_mismatch(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                           FieldScale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  for (int c = 0; c < r.channels; ++c)
+    for (auto& v : out.ch[c]) v *= cand.param("gain_" + chan_name(r, c));
+}
+
+void predict_phase_error(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                         FieldScale field_scale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  const std::array<double, 4> d =
+      phase_error_shifts(make_effect(cand.effect, cand.params, r.channels), r.channels);
+  add_angle_shift(fp, out, field_scale,
+                  [&](int c, size_t) { return d[static_cast<size_t>(c)] / p; });
+}
+
+void predict_zero_offset(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                         FieldScale field_scale, Recording& out, double*) {
+  const double z = cand.param("zero_rad");
+  add_angle_shift(fp, out, field_scale, [&](int, size_t) { return z; });
+}
+
+void predict_amplitude(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
+                       FieldScale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  const double k = cand.param("scale");
+  for (int c = 0; c < r.channels; ++c)
+    for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += (k - 1) * field_part(fp, base, c, i);
+}
+
+void predict_harmonic(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                      FieldScale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  const int p = fp.model->periodicity;
+  const int n = static_cast<int>(cand.param("order"));
+  const double amp = cand.param("amplitude"), ph = cand.param("phase_rad");
+  for (int c = 0; c < r.channels; ++c)
+    for (size_t i = 0; i < r.size(); ++i)
+      out.ch[c][i] += amp * std::sin(n * (p * r.theta_ref[i] + position(c) * M_PI / 2) + ph);
+}
+
+void predict_eccentricity(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                          FieldScale field_scale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  const double eps = cand.param("epsilon_rad"), phi0 = cand.param("phi0_rad");
+  const double m = cand.param("am_depth"), phim = cand.param("am_phase_rad");
+  add_angle_shift(fp, out, field_scale,
+                  [&](int, size_t i) { return eps * std::sin(r.theta_ref[i] - phi0); });
+  // The field part, at the shifted angle, times 1 + m cos(theta - phi_m).
+  if (m != 0)
+    for (int c = 0; c < r.channels; ++c)
+      for (size_t i = 0; i < r.size(); ++i)
+        out.ch[c][i] += m * std::cos(r.theta_ref[i] - phim) * field_part(fp, out, c, i);
+}
+
+void predict_channel_skew(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                          FieldScale field_scale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  const std::array<double, 4> tau =
+      channel_skew_offsets(make_effect(cand.effect, cand.params, r.channels), r.channels);
+  add_angle_shift(fp, out, field_scale,
+                  [&](int c, size_t i) { return fp.omega[i] * tau[static_cast<size_t>(c)]; });
+}
+
+void predict_common_delay(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                          FieldScale field_scale, Recording& out, double*) {
+  const double tau = cand.param("tau_s");
+  add_angle_shift(fp, out, field_scale, [&](int, size_t i) { return -fp.omega[i] * tau; });
+}
+
+void predict_hysteresis(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                        FieldScale field_scale, Recording& out, double*) {
+  const double h = cand.param("h_rad");
+  add_angle_shift(fp, out, field_scale, [&](int, size_t i) { return fp.omega[i] >= 0 ? h : -h; });
+}
+
+void predict_drift(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
+                   FieldScale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  if (fp.dtemp.empty()) return;
+  for (int c = 0; c < r.channels; ++c) {
+    const double ko = cand.param("offset_per_C_" + chan_name(r, c)),
+                 kg = cand.param("gain_per_C_" + chan_name(r, c));
+    for (size_t i = 0; i < r.size(); ++i)
+      out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
+  }
+}
+
+// The ADC sees the model plus the simulation's noise: predict its mean output, and carry the
+// variance it adds beyond that noise (zero far from a step edge, step^2/12 when dithered).
+void predict_quantization(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                          FieldScale, Recording& out, double* extra_sigma) {
+  const Recording& r = *fp.real;
+  const double step = cand.param("step"), origin = cand.param("origin");
+  double added = 0;
+  for (int c = 0; c < r.channels; ++c) {
+    const double sigma = fp.model->sensor.noise_sigma[c];
+    for (auto& v : out.ch[c]) {
+      double mean, var;
+      quantized_moments(v, sigma, step, origin, mean, var);
+      v = mean;
+      added += var - sigma * sigma;
+    }
+  }
+  if (extra_sigma)
+    *extra_sigma = std::sqrt(std::max(0.0, added / (r.channels * static_cast<double>(r.size()))));
+}
+
+void predict_saturation(const FitProblem& fp, const Recording&, const EffectCandidate& cand,
+                        FieldScale, Recording& out, double*) {
+  const Recording& r = *fp.real;
+  const double level = cand.param("level");
+  for (int c = 0; c < r.channels; ++c)
+    for (auto& v : out.ch[c]) v = std::clamp(v, -level, level);
+}
+
+void predict_excess_noise(const FitProblem&, const Recording&, const EffectCandidate& cand,
+                          FieldScale, Recording&, double* extra_sigma) {
+  if (extra_sigma) *extra_sigma = cand.param("sigma");
+}
+
+// ---- The fitter table: one row per row of the effect table (effect_table.hpp), same order ----
+
+struct EffectFitter {
+  EffectId id;
+  Fitted (*fit)(const FitProblem&, const Recording& base, double base_extra, FieldScale scale);
+  void (*predict)(const FitProblem&, const Recording& base, const EffectCandidate&,
+                  FieldScale field_scale, Recording& out, double* extra_sigma);
+};
+
+const std::array<EffectFitter, kEffectCount> kFitters = {{
+    {EffectId::offset, fit_offset, predict_offset},
+    {EffectId::gain_mismatch, fit_gain_mismatch, predict_gain_mismatch},
+    {EffectId::phase_error, fit_phase_error, predict_phase_error},
+    {EffectId::harmonic, fit_harmonic, predict_harmonic},
+    {EffectId::eccentricity, fit_eccentricity, predict_eccentricity},
+    {EffectId::channel_skew, fit_channel_skew, predict_channel_skew},
+    {EffectId::common_delay, fit_common_delay, predict_common_delay},
+    {EffectId::drift, fit_drift, predict_drift},
+    {EffectId::quantization, fit_quantization, predict_quantization},
+    {EffectId::saturation, fit_saturation, predict_saturation},
+    {EffectId::excess_noise, fit_excess_noise, predict_excess_noise},
+    {EffectId::hysteresis, fit_hysteresis, predict_hysteresis},
+    {EffectId::zero_offset, fit_zero_offset, predict_zero_offset},
+    {EffectId::amplitude, fit_amplitude, predict_amplitude},
+}};
+
+const EffectFitter& fitter_of(const EffectSpec& spec) {
+  const EffectFitter& f = kFitters[static_cast<size_t>(spec.id)];
+  if (f.id != spec.id)
+    throw std::logic_error("effect fit: the fitter table is not in the effect table's order at " +
+                           spec.name);
+  return f;
+}
+
 }  // namespace
 
 double EffectCandidate::param(const std::string& name) const {
@@ -693,148 +901,26 @@ double EffectCandidate::param(const std::string& name) const {
 
 Recording predict_effect(const FitProblem& fp, const Recording& base, const EffectCandidate& cand,
                          double* extra_sigma, const std::vector<double>* field_scale) {
-  const Recording& r = *fp.real;
-  const int p = fp.model->periodicity;
-  const std::string& e = cand.effect;
+  const EffectFitter& f = fitter_of(effect_spec(cand.effect));
   if (extra_sigma) *extra_sigma = 0;
   Recording out = base;
-  auto shift = [&](const std::function<double(int, size_t)>& delta) {
-    for (int c = 0; c < r.channels; ++c) {
-      const auto add = angle_shift(fp, c, [&](size_t i) { return delta(c, i); });
-      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += scale_at(field_scale, i) * add[i];
-    }
-  };
-  if (e == "offset") {
-    for (int c = 0; c < r.channels; ++c)
-      for (auto& v : out.ch[c]) v += cand.param("offset_" + chan_name(r, c));
-  } else if (e == "gain_mismatch") {
-    for (int c = 0; c < r.channels; ++c)
-      for (auto& v : out.ch[c]) v *= cand.param("gain_" + chan_name(r, c));
-  } else if (e == "phase_error") {
-    const std::array<double, 4> d =
-        phase_error_shifts(make_effect(e, cand.params, r.channels), r.channels);
-    shift([&](int c, size_t) { return d[static_cast<size_t>(c)] / p; });
-  } else if (e == "zero_offset") {
-    const double z = cand.param("zero_rad");
-    shift([&](int, size_t) { return z; });
-  } else if (e == "amplitude") {
-    const double k = cand.param("scale");
-    for (int c = 0; c < r.channels; ++c)
-      for (size_t i = 0; i < r.size(); ++i) out.ch[c][i] += (k - 1) * field_part(fp, base, c, i);
-  } else if (e == "harmonic") {
-    const int n = static_cast<int>(cand.param("order"));
-    const double amp = cand.param("amplitude"), ph = cand.param("phase_rad");
-    for (int c = 0; c < r.channels; ++c)
-      for (size_t i = 0; i < r.size(); ++i)
-        out.ch[c][i] += amp * std::sin(n * (p * r.theta_ref[i] + position(c) * M_PI / 2) + ph);
-  } else if (e == "eccentricity") {
-    const double eps = cand.param("epsilon_rad"), phi0 = cand.param("phi0_rad");
-    const double m = cand.param("am_depth"), phim = cand.param("am_phase_rad");
-    shift([&](int, size_t i) { return eps * std::sin(r.theta_ref[i] - phi0); });
-    // The field part, at the shifted angle, times 1 + m cos(theta - phi_m).
-    if (m != 0)
-      for (int c = 0; c < r.channels; ++c)
-        for (size_t i = 0; i < r.size(); ++i)
-          out.ch[c][i] += m * std::cos(r.theta_ref[i] - phim) * field_part(fp, out, c, i);
-  } else if (e == "channel_skew") {
-    const std::array<double, 4> tau =
-        channel_skew_offsets(make_effect(e, cand.params, r.channels), r.channels);
-    shift([&](int c, size_t i) { return fp.omega[i] * tau[static_cast<size_t>(c)]; });
-  } else if (e == "common_delay") {
-    const double tau = cand.param("tau_s");
-    shift([&](int, size_t i) { return -fp.omega[i] * tau; });
-  } else if (e == "hysteresis") {
-    const double h = cand.param("h_rad");
-    shift([&](int, size_t i) { return fp.omega[i] >= 0 ? h : -h; });
-  } else if (e == "drift") {
-    if (fp.dtemp.empty()) return out;
-    for (int c = 0; c < r.channels; ++c) {
-      const double ko = cand.param("offset_per_C_" + chan_name(r, c)),
-                   kg = cand.param("gain_per_C_" + chan_name(r, c));
-      for (size_t i = 0; i < r.size(); ++i)
-        out.ch[c][i] = base.ch[c][i] * (1.0 + kg * fp.dtemp[i]) + ko * fp.dtemp[i];
-    }
-  } else if (e == "quantization") {
-    // The ADC sees the model plus the simulation's noise: predict its mean output, and carry the
-    // variance it adds beyond that noise (zero far from a step edge, step^2/12 when dithered).
-    const double step = cand.param("step"), origin = cand.param("origin");
-    double added = 0;
-    for (int c = 0; c < r.channels; ++c) {
-      const double sigma = fp.model->sensor.noise_sigma[c];
-      for (auto& v : out.ch[c]) {
-        double mean, var;
-        quantized_moments(v, sigma, step, origin, mean, var);
-        v = mean;
-        added += var - sigma * sigma;
-      }
-    }
-    if (extra_sigma)
-      *extra_sigma = std::sqrt(std::max(0.0, added / (r.channels * static_cast<double>(r.size()))));
-  } else if (e == "saturation") {
-    const double level = cand.param("level");
-    for (int c = 0; c < r.channels; ++c)
-      for (auto& v : out.ch[c]) v = std::clamp(v, -level, level);
-  } else if (e == "excess_noise") {
-    if (extra_sigma) *extra_sigma = cand.param("sigma");
-  } else {
-    throw InputError("unknown effect '" + e + "'");
-  }
+  f.predict(fp, base, cand, field_scale, out, extra_sigma);
   return out;
 }
 
 EffectCandidate fit_effect(const FitProblem& fp, const Recording& base, const std::string& effect,
                            double base_extra, const std::vector<double>* field_scale) {
   const Recording& r = *fp.real;
+  const EffectSpec& spec = effect_spec(effect);
   Fitted f;
-  if (effect == "offset") {
-    f = fit_offset(fp, base);
-  } else if (effect == "gain_mismatch") {
-    f = fit_gain(fp, base);
-  } else if (effect == "phase_error") {
-    f = fit_phase_error(fp, base, field_scale);
-  } else if (effect == "zero_offset") {
-    f = fit_zero_offset(fp, base, field_scale);
-  } else if (effect == "amplitude") {
-    f = fit_amplitude(fp, base);
-  } else if (effect == "harmonic") {
-    f = fit_harmonic(fp, base);
-  } else if (effect == "eccentricity") {
-    f = fit_eccentricity(fp, base, field_scale);
-  } else if (effect == "channel_skew" && !speed_changes(fp)) {
-    // At one speed a sampling time is an angle: common to both channels a zero offset, between
-    // them a phase error. Only speed changes tell a skew from those simpler effects.
+  if (spec.needs_speed_change && !speed_changes(fp)) {
+    // At one speed a sampling time is an angle: common to every channel a zero offset, between
+    // them a phase error. Only speed changes tell the effect from those simpler ones.
     f.applicable = false;
-  } else if (effect == "channel_skew") {
-    // Channel k sampled at t + tau_k: theta + omega tau_k, one time per channel (their common part
-    // included: a multiplexer's slots count from the time stamp).
-    std::vector<std::function<double(int, size_t)>> basis;
-    for (int k = 0; k < r.channels; ++k)
-      basis.push_back([&, k](int c, size_t i) { return c == k ? fp.omega[i] : 0.0; });
-    f = fit_angle_shift(fp, base, basis, field_scale);
-    ParamList taus;
-    for (int k = 0; k < r.channels; ++k)
-      taus.push_back({"tau_" + effect_channel_name(r.channels, k), f.params[k].second});
-    f.params = make_effect(effect, taus, r.channels).params;
-  } else if (effect == "common_delay") {
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return -fp.omega[i]; }}, field_scale);
-    f.params = {{"tau_s", f.params[0].second}};
-  } else if (effect == "hysteresis") {
-    f = fit_angle_shift(fp, base, {[&](int, size_t i) { return fp.omega[i] >= 0 ? 1.0 : -1.0; }},
-                        field_scale);
-    f.params = {{"h_rad", f.params[0].second}};
-  } else if (effect == "drift") {
-    if (fp.dtemp.empty())
-      f.applicable = false;  // no temperature column: drift cannot be observed
-    else
-      f = fit_drift(fp, base);
-  } else if (effect == "quantization") {
-    f = fit_quantization(fp);
-  } else if (effect == "saturation") {
-    f = fit_saturation(fp, base);
-  } else if (effect == "excess_noise") {
-    f = fit_excess_noise(fp, base, base_extra);
+  } else if (spec.needs_temperature && fp.dtemp.empty()) {
+    f.applicable = false;  // no temperature column: the effect cannot be observed
   } else {
-    throw InputError("unknown effect '" + effect + "'");
+    f = fitter_of(spec).fit(fp, base, base_extra, field_scale);
   }
   EffectCandidate cand;
   cand.effect = effect;

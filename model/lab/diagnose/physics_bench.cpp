@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "diagnose/diagnose.hpp"
+#include "sim/effect_table.hpp"
 
 namespace acore {
 
@@ -247,50 +248,53 @@ void perturb(BenchDraw& d, PhysicsCase& c) {
 const std::vector<PhysicsScenario>& physics_scenarios() {
   static const std::vector<PhysicsScenario> k = [] {
     std::vector<PhysicsScenario> v;
+    // The truths are the effect table's names (or the verdict no_gap).
+    auto name = [](EffectId id) { return effect_name(id); };
     auto both = [&](const std::string& n, const std::string& truth, const std::string& why) {
       v.push_back({n, "hall4", truth, why});
       v.push_back({n, "tmr2", truth, why});
     };
     both("nominal", "no_gap", "the nominal rig: fresh noise, another trajectory and temperature");
-    v.push_back({"runout", "hall4", "zero_offset",
+    v.push_back({"runout", "hall4", name(EffectId::zero_offset),
                  "the ring moves on a circle off the magnet's axis: the linear part of Bz adds the "
                  "same offset to every plate, the cubic part turns the pairs by a constant angle "
                  "(and leaves a small 3rd spatial harmonic)"});
-    v.push_back({"runout", "tmr2", "zero_offset",
+    v.push_back({"runout", "tmr2", name(EffectId::zero_offset),
                  "the sensor is a fixed point of the magnet's frame: the field turns rigidly with "
                  "the shaft, off M by a constant angle (and smaller)"});
     v.push_back(
-        {"runout_offaxis", "tmr2", "eccentricity",
+        {"runout_offaxis", "tmr2", name(EffectId::eccentricity),
          "sensor off the axis (in sim too) plus run-out: the point the sensor sees moves "
          "once per turn in the magnet's frame: angle and amplitude modulated once per turn"});
-    both("sensor_shift", "gain_mismatch",
+    both("sensor_shift", name(EffectId::gain_mismatch),
          "package off axis along x or y: the field map stays symmetric about the shift, the two "
          "pairs keep their phases and differ in amplitude");
-    both("placement_c1", "phase_error",
+    both("placement_c1", name(EffectId::phase_error),
          "c1 moved on the ring (hall4) or the sin axis turned (tmr2): the sine pair's phase");
-    both("placement_c2", "phase_error",
+    both("placement_c2", name(EffectId::phase_error),
          "c2 moved on the ring (hall4) or the cos axis turned (tmr2): the cosine pair's phase");
-    both("plate_gain", "gain_mismatch", "one element's sensitivity");
-    both("nonlinearity", "harmonic",
+    both("plate_gain", name(EffectId::gain_mismatch), "one element's sensitivity");
+    both("nonlinearity", name(EffectId::harmonic),
          "x - a x^3 on every element: sin^3 = (3 sin - sin 3t) / 4, a 3rd harmonic seen alike "
          "from every element's position");
-    both("plate_offset", "offset", "one element's offset");
-    both("air_gap", "amplitude",
+    both("plate_offset", name(EffectId::offset), "one element's offset");
+    both("air_gap", name(EffectId::amplitude),
          "the magnet backs off: every element sees the field scaled alike (smaller), so the angle "
          "noise grows");
     both("stray_axial", "no_gap",
          "hall4: the same Bz on every plate cancels in c1 - c3; tmr2: in-plane elements do not "
          "see Bz");
     v.push_back({"stray_inplane", "hall4", "no_gap", "Hall plates measure Bz only"});
-    v.push_back(
-        {"stray_inplane", "tmr2", "offset", "a constant field adds a constant to sin, cos"});
-    both("rc_filter", "common_delay", "one RC on every channel: a lag omega tau");
-    both("rc_mismatch", "channel_skew",
+    v.push_back({"stray_inplane", "tmr2", name(EffectId::offset),
+                 "a constant field adds a constant to sin, cos"});
+    both("rc_filter", name(EffectId::common_delay), "one RC on every channel: a lag omega tau");
+    both("rc_mismatch", name(EffectId::channel_skew),
          "RCs around the modelled one: each channel lags by its own tau");
-    both("adc", "quantization", "an ADC of 8..10 bits");
-    both("mux", "channel_skew", "one ADC converts the channels in turn, in any slot order");
-    both("encoder_zero", "zero_offset", "the reference's zero is another angle");
-    both("temperature", "drift",
+    both("adc", name(EffectId::quantization), "an ADC of 8..10 bits");
+    both("mux", name(EffectId::channel_skew),
+         "one ADC converts the channels in turn, in any slot order");
+    both("encoder_zero", name(EffectId::zero_offset), "the reference's zero is another angle");
+    both("temperature", name(EffectId::drift),
          "the remanence and element offsets and sensitivities change with temperature");
     return v;
   }();

@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "core/json_input.hpp"
+#include "sim/effect_table.hpp"
 
 namespace acore {
 
@@ -446,9 +447,10 @@ Scenario builtin_scenario(const std::string& name) {
     s.sensor[1].offset = -0.018;
     s.sensor[1].amplitude = 1.035;
     s.sigma_indep = 0.002;
-    s.effects.push_back(make_effect("phase_error", {{"delta_rad", 0.3 * kPi / 180}}, 2));
     s.effects.push_back(
-        make_effect("harmonic", {{"order", 3}, {"amplitude", 0.015}, {"phase_rad", 0}}, 2));
+        make_effect(effect_name(EffectId::phase_error), {{"delta_rad", 0.3 * kPi / 180}}, 2));
+    s.effects.push_back(make_effect(effect_name(EffectId::harmonic),
+                                    {{"order", 3}, {"amplitude", 0.015}, {"phase_rad", 0}}, 2));
   } else {
     std::string list;
     for (const auto& n : builtin_scenario_names()) list += (list.empty() ? "" : ", ") + n;
@@ -494,9 +496,10 @@ Recording simulate(const Scenario& s, size_t samples, uint64_t seed) {
     rec.t[k] = traj.time(k);
     rec.theta_ref[k] = traj.theta_sample(k);
   }
-  bool has_drift = false;
-  for (const Effect& e : s.effects) has_drift = has_drift || e.effect == "drift";
-  if (s.temperature.enabled || has_drift) {
+  bool needs_temp = false;
+  for (const Effect& e : s.effects)
+    needs_temp = needs_temp || effect_spec(e.effect).needs_temperature;
+  if (s.temperature.enabled || needs_temp) {
     rec.temp.resize(samples);
     const double span = samples > 1 ? static_cast<double>(samples - 1) : 1.0;
     for (size_t k = 0; k < samples; ++k)

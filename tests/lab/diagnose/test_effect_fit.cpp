@@ -4,7 +4,8 @@
 // a closed form: the signals' noise from the channels' (sigma^2 +- 2 rho sigma sigma), the -2 log L
 // of a known residual, the offsets and gains recovered within their standard error, a zero offset
 // recovered in rad, the BIC favouring a real effect and rejecting a fitted noise, and the
-// prediction rebuilding the change from the parameters alone.
+// prediction rebuilding the change from the parameters alone; every effect of the table fitted in
+// the simulator's parameters and predicted as the simulator applies it (a second implementation).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 
 #include "core/errors.hpp"
 #include "diagnose/effect_fit.hpp"
+#include "sim/effect_table.hpp"
 #include "sim/effects.hpp"
 #include "support/paper_signals.hpp"
 
@@ -153,6 +155,98 @@ TEST(EffectFit, AZeroOffsetIsRecoveredInRadians) {
   // Standard error: sigma_d / (|d d13/d theta| sqrt N) ~ 0.014 / (2 sqrt 3000) = 1.3e-4 rad.
   EXPECT_NEAR(c.param("zero_rad"), z, 5e-4);
   EXPECT_LT(c.delta_bic, -1000);
+}
+
+// Parameters that change something, for every effect of the table (none left out).
+ParamList active(const std::string& e) {
+  if (e == "offset") return {{"offset_c2", 0.03}};
+  if (e == "gain_mismatch") return {{"gain_c3", 1.04}};
+  if (e == "phase_error") return {{"delta_cos_rad", 0.02}, {"phase_c1", -0.01}};
+  if (e == "harmonic") return {{"order", 5}, {"amplitude", 0.01}, {"phase_rad", 0.4}};
+  if (e == "eccentricity")
+    return {{"epsilon_rad", 0.01}, {"phi0_rad", 0.3}, {"am_depth", 0.02}, {"am_phase_rad", -1}};
+  if (e == "channel_skew") return {{"tau_s", 1e-4}, {"tau_c3", -2e-4}};
+  if (e == "common_delay") return {{"tau_s", 3e-4}};
+  if (e == "drift") return {{"gain_per_C_c2", 1e-3}, {"offset_per_C_c4", -2e-4}};
+  if (e == "quantization") return {{"bits", 8}, {"full_scale", 1.5}};
+  if (e == "saturation") return {{"level", 0.9}};
+  if (e == "excess_noise") return {{"sigma", 0.01}};
+  if (e == "hysteresis") return {{"h_rad", 0.01}};
+  if (e == "zero_offset") return {{"zero_rad", 0.05}};
+  if (e == "amplitude") return {{"scale", 0.9}};
+  ADD_FAILURE() << "no active parameters for the table's effect '" << e << "': add them here";
+  return {};
+}
+
+TEST(EffectFit, EveryEffectIsPredictedAsTheSimulatorAppliesIt) {
+  // One turn and a half at a constant speed, with a reversal at the end (hysteresis), t and temp.
+  Recording r;
+  r.channels = 4;
+  const double w = 2 * M_PI * 3;  // rad/s
+  for (int k = 0; k < 1200; ++k) {
+    const double t = 0.5e-3 * k;
+    r.t.push_back(t);
+    r.theta_ref.push_back(k < 1000 ? w * t : w * (2 * 0.5 - t));
+    r.temp.push_back(20 + 0.01 * k);
+  }
+  r = model().sensor.resample(r);
+  const FitProblem fp = make_fit_problem(model(), r);
+  auto theta_at = [&](double t) { return t <= 0.5 ? w * t : w * (1.0 - t); };
+  for (const EffectSpec& s : effect_table()) {
+    if (s.fit == EffectFit::lattice || s.fit == EffectFit::noise_variance) continue;  // random
+    if (s.needs_time) continue;  // below, away from the reversal
+    EffectCandidate cand;
+    cand.effect = s.name;
+    cand.params = make_effect(s.name, active(s.name), 4).params;
+    const Recording pred = predict_effect(fp, fp.predicted, cand, nullptr);
+    Recording sim = fp.predicted;
+    EffectContext ctx = make_effect_context(
+        sim, 1, [](int c, double phi) { return model().sensor.value(c, phi); }, theta_at, 1);
+    apply_effect(make_effect(s.name, active(s.name), 4), sim, ctx);
+    for (int c = 0; c < 4; ++c)
+      for (size_t i = 0; i < r.size(); ++i) {
+        if (i >= 998 && i <= 1002) continue;  // the turning point: a direction of its own
+        ASSERT_NEAR(pred.ch[c][i], sim.ch[c][i], 1e-9) << s.name << " c" << c + 1 << " " << i;
+      }
+  }
+  // Sampling times: the prediction's omega tau is the trajectory's angle change (a constant speed).
+  for (const EffectSpec& s : effect_table()) {
+    if (!s.needs_time) continue;
+    EffectCandidate cand;
+    cand.effect = s.name;
+    cand.params = make_effect(s.name, active(s.name), 4).params;
+    const Recording pred = predict_effect(fp, fp.predicted, cand, nullptr);
+    Recording sim = fp.predicted;
+    EffectContext ctx = make_effect_context(
+        sim, 1, [](int c, double phi) { return model().sensor.value(c, phi); }, theta_at, 1);
+    apply_effect(make_effect(s.name, active(s.name), 4), sim, ctx);
+    for (int c = 0; c < 4; ++c)
+      for (size_t i = 10; i < 990; ++i)
+        ASSERT_NEAR(pred.ch[c][i], sim.ch[c][i], 1e-9) << s.name << " c" << c + 1 << " " << i;
+  }
+}
+
+TEST(EffectFit, EveryEffectIsFittedInTheSimulatorsParameters) {
+  const Recording r = real(2000, 8, unchanged);
+  const FitProblem fp = make_fit_problem(model(), r);
+  ASSERT_TRUE(speed_changes(fp));
+  for (const std::string& e : effect_names()) {
+    const EffectCandidate c = fit_effect(fp, fp.predicted, e);
+    EXPECT_EQ(c.effect, e);
+    if (!c.applicable) {
+      // Only an ADC leaves a lattice to read; this recording has none.
+      EXPECT_EQ(effect_spec(e).fit, EffectFit::lattice) << e;
+      continue;
+    }
+    // Every parameter of the simulator's, so a fitted effect can go into a scenario's effects.
+    ParamList sim;
+    for (const auto& [name, value] : effect_defaults(e, 4)) {
+      (void)value;
+      sim.push_back({name, c.param(name)});
+    }
+    EXPECT_NO_THROW(make_effect(e, sim, 4)) << e;
+    EXPECT_GT(c.k, 0) << e;
+  }
 }
 
 TEST(EffectFit, NoiseAloneIsNoEvidenceAndNamesAreChecked) {
