@@ -12,6 +12,7 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "harmonics/harmonic_attribution.hpp"
 #include "harmonics/harmonics.hpp"
@@ -20,7 +21,7 @@ namespace acore::cli {
 
 namespace {
 
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
+constexpr double kDeg = kDegPerRad;
 
 struct HarmonicsArgs {
   std::string spec, json, plot;

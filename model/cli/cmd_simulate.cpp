@@ -11,6 +11,7 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "core/angle.hpp"
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
 #include "sim/effect_table.hpp"
@@ -19,8 +20,6 @@
 namespace acore::cli {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct SimulateArgs {
   std::string scenario, config, out, json, dump_config;

@@ -14,7 +14,6 @@ namespace acore {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 constexpr double kDeg = 180.0 / M_PI;
 
 // Legendre polynomials P_0..P_m at x in [-1, 1] (three-term recurrence: well conditioned).

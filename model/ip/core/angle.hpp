@@ -6,6 +6,12 @@
 
 namespace acore {
 
+// pi and what follows from it, written once for the model, the tools and the tests (the C++17
+// standard library has no std::numbers).
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kTwoPi = 2 * kPi;
+inline constexpr double kDegPerRad = 180 / kPi;
+
 // rad wrapped to [-pi, pi).
 double wrap_pi(double rad);
 // An angle in rad as an ANGLE_W-bit code, rounded, modulo a turn (the ZERO word's format).

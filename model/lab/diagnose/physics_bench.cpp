@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "diagnose/diagnose.hpp"
 #include "sim/effect_table.hpp"
@@ -15,7 +16,6 @@ namespace acore {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kDuration = 2.0;     // seconds per recording, as the effect bench
 constexpr double kDriftSpanC = 40.0;  // drift coefficients are drawn as a change over this span

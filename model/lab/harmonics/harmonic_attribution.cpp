@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "harmonics/harmonic_mismatch.hpp"
 
@@ -14,7 +15,7 @@ namespace acore {
 
 namespace {
 
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
+constexpr double kDeg = kDegPerRad;
 
 // The observed electrical amplitude (rad) at order k, or -1 when the spectrum does not reach k.
 struct Observed {
@@ -120,7 +121,7 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum,
     }
     if (k == 0) {
       // H_0 of the phase row, inverted by bisection (monotone for |delta| < pi/2 in this range).
-      double lo = 0, hi = 3.14159265358979323846 / 2;
+      double lo = 0, hi = kPi / 2;
       if (phase_row(hi).H0 >= h) {
         for (int i = 0; i < 100; ++i) {
           const double mid = 0.5 * (lo + hi);

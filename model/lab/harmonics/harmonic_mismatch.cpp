@@ -6,13 +6,12 @@
 
 #include <cmath>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 
 namespace acore {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
+namespace {}
 
 double MismatchHarmonics::at_multiple(int m) const {
   switch (m) {

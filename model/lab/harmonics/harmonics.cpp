@@ -10,6 +10,7 @@
 #include <fstream>
 #include <set>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "core/json_input.hpp"
 
@@ -17,7 +18,6 @@ namespace acore {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 
 double number_field(const nlohmann::json& j, const std::string& key, const std::string& where,

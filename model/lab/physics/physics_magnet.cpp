@@ -5,13 +5,12 @@
 
 #include <cmath>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 
 namespace acore {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // [F(u1) - F(u2)] / rho^2 with F(u) = u / sqrt(rho^2 + u^2), s = sqrt(rho^2 + u^2). When u1 and
 // u2 have one sign (the observer above or below the magnet), 1 - |u| / s = rho^2 / (s (s + |u|))

@@ -3,11 +3,11 @@
 
 #include <cmath>
 
+#include "core/angle.hpp"
+
 namespace acore {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
+namespace {}
 
 SensorLayout hall_ring(double radius_m, double sensitivity) {
   SensorLayout s;

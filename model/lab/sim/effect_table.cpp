@@ -8,13 +8,13 @@
 #include <functional>
 #include <stdexcept>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 
 namespace acore {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRefTempC = 25.0;  // drift reference temperature
 
 // ---- What the apply functions share ----

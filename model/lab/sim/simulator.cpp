@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "core/json_input.hpp"
 #include "sim/effect_table.hpp"
@@ -17,8 +18,6 @@
 namespace acore {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The trajectory kinds (simulator.hpp, Trajectory), for the messages and the JSON check.
 constexpr const char* kTrajectoryKinds = "turn, constant, ramp, reversal, step, ripple";

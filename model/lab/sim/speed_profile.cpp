@@ -4,10 +4,11 @@
 #include <cmath>
 #include <random>
 
+#include "core/angle.hpp"
+
 namespace acore {
 
 double speed_variation_angle(const SpeedVariation& sv, double u, double total_turns) {
-  constexpr double kTwoPi = 6.283185307179586;
   std::mt19937_64 rng(sv.seed);
   std::uniform_real_distribution<double> phase(0, kTwoPi), weight(0.2, 1.0);
   const double ripple_phase = phase(rng);

@@ -11,6 +11,7 @@
 
 #include "calibration/calibration.hpp"
 #include "calibration/self_calibration.hpp"
+#include "core/angle.hpp"
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
@@ -18,8 +19,6 @@
 
 namespace acore {
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586;
 
 Recording sim(const std::string& scenario, double turns, double ripple, double drift, uint64_t seed,
               size_t per_turn = 2048) {

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "core/recording.hpp"
 
@@ -186,7 +187,7 @@ TEST(Recording, MillionRowsParseInAboutASecond) {
   const size_t n = 1000000;
   for (size_t i = 0; i < n; ++i) {
     r.t.push_back(static_cast<double>(i) / n);
-    r.theta_ref.push_back(6.283185307179586 * static_cast<double>(i) / n);
+    r.theta_ref.push_back(kTwoPi * static_cast<double>(i) / n);
     for (size_t c = 0; c < 4; ++c) r.ch[c].push_back(g(rng));
   }
   const std::string text = format_recording(r);

@@ -8,6 +8,7 @@
 #include <random>
 #include <string>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "harmonics/harmonic_attribution.hpp"
 #include "harmonics/harmonic_mismatch.hpp"
@@ -17,7 +18,6 @@
 namespace acore {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 
 SignalSpec eq33() {

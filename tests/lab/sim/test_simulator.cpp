@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/angle.hpp"
 #include "core/errors.hpp"
 #include "sim/simulator.hpp"
 #include "support/paper_signals.hpp"
@@ -18,7 +19,6 @@
 namespace acore {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 
 struct Stats {

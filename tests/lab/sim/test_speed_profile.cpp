@@ -7,13 +7,12 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/angle.hpp"
 #include "sim/simulator.hpp"
 #include "sim/speed_profile.hpp"
 
 namespace acore {
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586;
 
 // The relative speed change v / v0 - 1 by central differences of the angle.
 double rel_speed(const SpeedVariation& sv, double u, double total) {
