@@ -134,7 +134,8 @@ std::vector<double> judged_error_deg(const RegImage& img, const std::vector<doub
 }
 
 std::vector<double> judged_error_deg(const RegImage& img, std::vector<double> error_deg) {
-  return img.zero_reference_unknown() ? about_mean_deg(error_deg) : error_deg;
+  if (img.zero_reference_unknown()) return about_mean_deg(error_deg);
+  return error_deg;  // moved, not copied (the Python package's fast path hands over its errors)
 }
 
 nlohmann::json estimate_json(Engine engine, size_t samples, int fold, const RegImage& img,
