@@ -6,16 +6,18 @@
 # ACORE_REG_NAMES lists every line's name; ACORE_REG_MODULE_<name>, ACORE_REG_FLOWS_<name> (a list),
 # ACORE_REG_PARAMS_<name> (a list of PARAM=value) and ACORE_REG_TAGS_<name> (a list) its fields;
 # ACORE_REG_TAGGED_<tag> the names carrying a tag (the registry's header lists the tags).
-# ACORE_RTL_FILES: the absolute paths of rtl/files.f.
-file(STRINGS ${CMAKE_SOURCE_DIR}/rtl/files.f ACORE_RTL_FILES_REL REGEX "^[^#].*\\.v$")
+# ACORE_RTL_FILES: the absolute paths of rtl/files.f. Paths from this file's folder: the Python
+# package's build (python/CMakeLists.txt) has python/ as its source folder.
+get_filename_component(ACORE_ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
+file(STRINGS ${ACORE_ROOT}/rtl/files.f ACORE_RTL_FILES_REL REGEX "^[^#].*\\.v$")
 set(ACORE_RTL_FILES "")
 foreach(f ${ACORE_RTL_FILES_REL})
-  list(APPEND ACORE_RTL_FILES ${CMAKE_SOURCE_DIR}/rtl/${f})
+  list(APPEND ACORE_RTL_FILES ${ACORE_ROOT}/rtl/${f})
 endforeach()
-set(ACORE_RTL_VLT ${CMAKE_SOURCE_DIR}/rtl/verilator.vlt)
+set(ACORE_RTL_VLT ${ACORE_ROOT}/rtl/verilator.vlt)
 # Random initial values (with randReset(2)) so the tests prove the outputs are valid-gated. The
 # modules include rtl/acore_derived.vh (the derived quantities).
-set(ACORE_VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -I${CMAKE_SOURCE_DIR}/rtl)
+set(ACORE_VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -I${ACORE_ROOT}/rtl)
 
 # The registry is read by scripts/registry.py alone: at configure time it writes the variables
 # below into the build tree and CMake includes them. A malformed line (or a malformed devices table,
@@ -24,10 +26,10 @@ set(ACORE_VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -I${CMAKE_SO
 find_program(ACORE_PYTHON3 NAMES python3 REQUIRED)
 set(ACORE_REGISTRY_CMAKE ${CMAKE_BINARY_DIR}/acore_registry.cmake)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-  ${CMAKE_SOURCE_DIR}/rtl/configs.txt ${CMAKE_SOURCE_DIR}/rtl/files.f ${CMAKE_SOURCE_DIR}/synth/devices.toml
-  ${CMAKE_SOURCE_DIR}/scripts/registry.py ${CMAKE_SOURCE_DIR}/scripts/devices.py)
+  ${ACORE_ROOT}/rtl/configs.txt ${ACORE_ROOT}/rtl/files.f ${ACORE_ROOT}/synth/devices.toml
+  ${ACORE_ROOT}/scripts/registry.py ${ACORE_ROOT}/scripts/devices.py)
 execute_process(
-  COMMAND ${ACORE_PYTHON3} ${CMAKE_SOURCE_DIR}/scripts/registry.py --root ${CMAKE_SOURCE_DIR} cmake
+  COMMAND ${ACORE_PYTHON3} ${ACORE_ROOT}/scripts/registry.py --root ${ACORE_ROOT} cmake
           ${ACORE_REGISTRY_CMAKE}
   RESULT_VARIABLE _acore_registry_rc ERROR_VARIABLE _acore_registry_err)
 if(NOT _acore_registry_rc EQUAL 0)

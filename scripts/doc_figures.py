@@ -463,7 +463,11 @@ RTL_ROW = re.compile(r"ours, corrected, (serial )?RTL")  # the demo's rows that 
 
 
 def without_rtl(lines):
-    return [l for l in lines if not RTL_ROW.search(l)]
+    """The recorded demo's lines as `demo --no-rtl` writes them: no RTL rows, and the report's
+    command line with the flag it ran with."""
+    recorded = "`anglecore " + " ".join(DEMO_COMMAND) + "`"
+    run = "`anglecore " + " ".join(DEMO_COMMAND + ["--no-rtl"]) + "`"
+    return [l.replace(recorded, run) for l in lines if not RTL_ROW.search(l)]
 
 
 def first_difference(a, b, path="$"):

@@ -54,4 +54,7 @@ fi
 
 # The package itself: built in build/python/ (kept, so a second run only relinks what changed, and
 # compiled through ccache), installed into .venv. No build isolation: the pinned requirements above.
-"$venv/bin/python" -m pip install -q --disable-pip-version-check --no-build-isolation "$root"
+# Its RTL engine finds the run-time modules of the repository's CMake build in build/rtl/ (or in
+# $ACORE_RTL_DIR): looked for at run time, so they may be built after this.
+"$venv/bin/python" -m pip install -q --disable-pip-version-check --no-build-isolation \
+  --config-settings=cmake.define.ACORE_RTL_PLUGIN_DIR="$root/build/rtl" "$root"

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `anglecore cosim`: the Verilated RTL against the bit-accurate model, sample by sample
 // (docs/contracts.md, command line).
-// --engine rtl (default) runs the pipelined top, rtl-serial the serial core. Built only with the
-// RTL (ACORE_WITH_RTL); exit 1 on any mismatch.
-#ifdef ACORE_WITH_RTL
+// --engine rtl (default) runs the pipelined top, rtl-serial the serial core; exit 1 on any
+// mismatch, 2 when the build's run-time module is not built (the message names the command).
 #include <fmt/format.h>
 
 #include <iostream>
@@ -14,7 +13,7 @@
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
-#include "rtlsim/rtl_engine.hpp"
+#include "rtlsim/run_engine.hpp"
 
 namespace acore::cli {
 
@@ -34,39 +33,35 @@ nlohmann::json sample_json(const FixedSample& s) {
 
 void run_cosim(const CosimArgs& a) {
   const Engine engine = parse_engine(a.engine);
-  if (engine != Engine::Rtl && engine != Engine::RtlSerial)
+  if (!is_rtl(engine))
     throw InputError("--engine: '" + a.engine + "' is not an RTL engine (rtl, rtl-serial)");
-  if (a.fold != 1 && engine != Engine::Rtl) throw InputError("--fold applies to --engine rtl only");
-  const RegImage img = read_regimage(a.regs);
-  const Recording rec = read_recording(a.in);
-  // c1 = sin, c2 = cos, c3 = c4 = 0 for two-channel recordings (FixedModel::to_code per value).
-  const std::vector<ChannelCodes> codes = to_codes(rec, img.in_scale, img.cfg.in_w);
-  RtlRunOptions opt;
+  EngineOptions opt;
   opt.trace = a.trace;
   opt.seed = a.seed;
   opt.backpressure = a.backpressure;
   opt.gaps = a.backpressure;
   opt.fold = a.fold;
-  opt.top = engine == Engine::Rtl ? RtlTop::kPipelined : RtlTop::kSerial;
-  const std::vector<FixedSample> rtl = run_rtl(img, codes, opt);
-  const FixedModel model(img);
+  check_engine_options(engine, opt);
+  const RegImage img = read_regimage(a.regs);
+  const Recording rec = read_recording(a.in);
+  const std::vector<FixedSample> rtl = run_engine(engine, rec, img, opt).rows;
+  const std::vector<FixedSample> model = run_engine(Engine::Fixed, rec, img).rows;
   size_t bad = 0;
   nlohmann::json first = nullptr;
-  for (size_t i = 0; i < codes.size(); ++i) {
-    const FixedSample m = model.step(codes[i]);
-    if (i < rtl.size() && rtl[i] == m) continue;
+  for (size_t i = 0; i < model.size(); ++i) {
+    if (i < rtl.size() && rtl[i] == model[i]) continue;
     if (bad++ == 0)
       first = {{"index", i},
                {"rtl", i < rtl.size() ? sample_json(rtl[i]) : nullptr},
-               {"model", sample_json(m)}};
+               {"model", sample_json(model[i])}};
   }
-  const nlohmann::json j = {{"samples", codes.size()},
+  const nlohmann::json j = {{"samples", model.size()},
                             {"mismatches", bad},
                             {"first_mismatch", first},
                             {"engine", engine_name(engine)},
                             {"fold", a.fold}};
   std::cout << fmt::format(
-      "cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", codes.size(), bad,
+      "cosim: {} samples, {} mismatches ({} vs bit-accurate model{})\n", model.size(), bad,
       engine == Engine::Rtl
           ? (a.fold > 1 ? fmt::format("RTL folded to {} clocks a sample", a.fold) : "RTL")
           : "serial RTL",
@@ -74,7 +69,7 @@ void run_cosim(const CosimArgs& a) {
   if (!a.trace.empty()) std::cout << "waveform: " << a.trace << "\n";
   write_json(a.json, j);
   if (bad)
-    throw CheckFailed(fmt::format("{} of {} samples differ; first at index {}", bad, codes.size(),
+    throw CheckFailed(fmt::format("{} of {} samples differ; first at index {}", bad, model.size(),
                                   first["index"].get<size_t>()));
 }
 }  // namespace
@@ -102,4 +97,3 @@ void add_cosim(CLI::App& app) {
 }
 
 }  // namespace acore::cli
-#endif

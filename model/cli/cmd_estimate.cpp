@@ -17,10 +17,8 @@
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
+#include "rtlsim/run_engine.hpp"
 #include "stages/tracker.hpp"
-#ifdef ACORE_WITH_RTL
-#include "rtlsim/rtl_engine.hpp"
-#endif
 
 namespace acore::cli {
 
@@ -110,36 +108,12 @@ void write_angles(const std::string& path, const Recording& rec, const AngleSeri
 
 void run_estimate(const EstimateArgs& a) {
   const Engine engine = parse_engine(a.engine);
-  if (a.fold != 1 && engine != Engine::Rtl) throw InputError("--fold applies to --engine rtl only");
+  EngineOptions opt;
+  opt.fold = a.fold;
+  check_engine_options(engine, opt);
   const RegImage img = read_regimage(a.regs);
   const Recording rec = read_recording(a.in);
-  AngleSeries s;
-  switch (engine) {
-    case Engine::Float:
-      s = run_float(rec, dequantize(img));
-      break;
-    case Engine::Fixed:
-      s = run_fixed(rec, img);
-      break;
-    case Engine::Rtl:
-    case Engine::RtlSerial:
-#ifdef ACORE_WITH_RTL
-    {
-      const auto codes = to_codes(rec, img.in_scale, img.cfg.in_w);
-      RtlRunOptions opt;
-      opt.fold = a.fold;
-      opt.top = engine == Engine::Rtl ? RtlTop::kPipelined : RtlTop::kSerial;
-      const auto rows = run_rtl(img, codes, opt);
-      s = series_from_fixed(rows, img);
-      // The RTL has no uncorrected output: take it from the bit-accurate model (same front end).
-      s.uncorrected = run_fixed(rec, img).uncorrected;
-      break;
-    }
-#else
-      throw InputError(std::string("--engine ") + engine_name(engine) +
-                       ": this anglecore was built without the RTL (ACORE_WITH_RTL=OFF)");
-#endif
-  }
+  const AngleSeries s = run_engine(engine, rec, img, opt).series;
   std::cout << fmt::format("zero offset {:+.4f} deg electrical, removed by {}\n",
                            s.zero_offset * 180 / M_PI,
                            s.zero_word ? "the ZERO word" : "estimate (software)");

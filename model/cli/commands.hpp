@@ -16,8 +16,6 @@ void add_diagnose(CLI::App& app);
 void add_diagnose_bench(CLI::App& app);
 void add_harmonics(CLI::App& app);
 void add_sweep(CLI::App& app);
-#ifdef ACORE_WITH_RTL
-void add_cosim(CLI::App& app);  // needs the Verilated RTL (model/rtlsim/rtl_engine.hpp)
-#endif
+void add_cosim(CLI::App& app);
 
 }  // namespace acore::cli

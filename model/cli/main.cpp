@@ -23,9 +23,7 @@ int main(int argc, char** argv) {
   acore::cli::add_diagnose_bench(app);
   acore::cli::add_harmonics(app);
   acore::cli::add_sweep(app);
-#ifdef ACORE_WITH_RTL
   acore::cli::add_cosim(app);
-#endif
   // With `--json -` standard output carries the JSON alone: the human-readable report goes to
   // stderr.
   if (acore::cli::json_to_stdout(argc, argv)) {

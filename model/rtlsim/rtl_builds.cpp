@@ -74,14 +74,46 @@ std::string program_dir() {
 
 bool exists(const std::string& path) { return access(path.c_str(), R_OK) == 0; }
 
+// The folder the modules are looked for in, and what chose it (for the error message).
+struct ModuleDir {
+  std::string dir;
+  std::string chosen_by;
+};
+
+ModuleDir module_dir(const std::string& dir) {
+  if (!dir.empty()) return {dir, "the folder given"};
+  if (const char* env = std::getenv("ACORE_RTL_DIR"); env && *env) return {env, "$ACORE_RTL_DIR"};
+  const std::string beside = program_dir() + "/rtl";
+  if (exists(beside)) return {beside, "rtl/ beside the program"};
+  return {ACORE_RTL_PLUGIN_DIR, "the module folder fixed at build time"};
+}
+
+// The command that builds a module. The build tree is the parent of the module folder fixed at
+// build time (CMake writes the modules to <build>/rtl); ACORE_RTL_MODULES_HERE says whether that
+// build makes them (1), was configured without them (0), or is another build (-1: the Python
+// package's, whose set-up names the repository's build/rtl). elsewhere: the engine looked in
+// another folder than the one the command writes to, so say where that is.
+std::string build_command(const std::string& name, bool elsewhere) {
+  const std::string target = "acore_rtl_" + name;
+  std::string build = ACORE_RTL_PLUGIN_DIR;
+  const std::string tail = "/rtl";
+  if (build.size() > tail.size() &&
+      build.compare(build.size() - tail.size(), tail.size(), tail) == 0)
+    build.resize(build.size() - tail.size());
+  else
+    build.clear();
+  if (build.empty())
+    return "`cmake --build build --target " + target + "` in the repository (it writes build/rtl/)";
+  const std::string writes = elsewhere ? " (it writes " + build + "/rtl/)" : "";
+  if (ACORE_RTL_MODULES_HERE == 0)
+    return "`cmake -DACORE_WITH_RTL=ON " + build + " && cmake --build " + build + " --target " +
+           target + "` (this build was configured with -DACORE_WITH_RTL=OFF)" + writes;
+  return "`cmake --build " + build + " --target " + target + "`" + writes;
+}
+
 }  // namespace
 
-std::string rtl_plugin_dir() {
-  if (const char* env = std::getenv("ACORE_RTL_DIR"); env && *env) return env;
-  const std::string beside = program_dir() + "/rtl";
-  if (exists(beside)) return beside;
-  return ACORE_RTL_PLUGIN_DIR;
-}
+std::string rtl_plugin_dir(const std::string& dir) { return module_dir(dir).dir; }
 
 const std::vector<RtlBuild>& rtl_builds() {
   static const std::vector<RtlBuild> builds = [] {
@@ -119,17 +151,26 @@ const RtlBuild& rtl_build_for(RtlTop top, const DatapathConfig& cfg) {
                    list_of(same_top));
 }
 
-const rtl::PluginInfo& RtlBuild::plugin() const {
+const rtl::PluginInfo& RtlBuild::plugin(const std::string& dir) const {
   static std::mutex mu;
-  static std::map<std::string, const rtl::PluginInfo*> loaded;
+  static std::map<std::string, const rtl::PluginInfo*> loaded;  // by path
   const std::lock_guard<std::mutex> lock(mu);
-  if (auto it = loaded.find(name); it != loaded.end()) return *it->second;
-  const std::string path = rtl_plugin_dir() + "/acore_rtl_" + name + ".so";
+  const ModuleDir where = module_dir(dir);
+  const std::string file = "acore_rtl_" + name + ".so";
+  const std::string what = "the RTL engine's module " + file + " (the Verilated build '" + name +
+                           "': " + module + ", " + (params.empty() ? "defaults" : params) + ")";
+  const std::string or_dir = ", or set ACORE_RTL_DIR to the rtl/ folder of a build that has it";
+  if (where.dir.empty())
+    throw RtlNotBuilt("the RTL engine has no folder to find " + what +
+                      " in: set ACORE_RTL_DIR to the rtl/ folder of a build that has it; build it "
+                      "with " +
+                      build_command(name, false));
+  const std::string path = where.dir + "/" + file;
+  if (auto it = loaded.find(path); it != loaded.end()) return *it->second;
   if (!exists(path))
-    throw InputError("the Verilated build '" + name + "' (" + module + " " +
-                     (params.empty() ? "defaults" : params) + ") is not built: " + path +
-                     " is missing; build it with `cmake --build build --target acore_rtl_" + name +
-                     "`");
+    throw RtlNotBuilt(what + " is not built: " + path + " (" + where.chosen_by +
+                      ") does not exist; build it with " +
+                      build_command(name, where.dir != ACORE_RTL_PLUGIN_DIR) + or_dir);
   // RTLD_LOCAL: each module keeps its own Verilator runtime; never unloaded.
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) throw InputError(path + ": cannot load the Verilated build: " + dlerror());
@@ -137,9 +178,10 @@ const rtl::PluginInfo& RtlBuild::plugin() const {
   const auto entry = reinterpret_cast<Entry>(dlsym(handle, "acore_rtl_plugin"));
   if (!entry) throw InputError(path + ": not an RTL build (no acore_rtl_plugin)");
   const rtl::PluginInfo* info = entry();
-  if (info->abi != rtl::kAbi || name != info->name)
-    throw InputError(path + ": built for another version of the engine (rebuild it)");
-  loaded[name] = info;
+  if (info->abi != rtl::kAbi || name != info->name || params != info->params)
+    throw InputError(path + ": built for another version of the engine or of rtl/configs.txt; " +
+                     "rebuild it with " + build_command(name, where.dir != ACORE_RTL_PLUGIN_DIR));
+  loaded[path] = info;
   return *info;
 }
 

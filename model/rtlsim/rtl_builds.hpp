@@ -1,17 +1,26 @@
 // SPDX-License-Identifier: MIT
 // The Verilated builds of the registry (rtl/configs.txt): every line with the `sim` flow whose
 // module is acore_top, acore_serial_top or acore_apb, as a table generated at configure time
-// (tb/CMakeLists.txt), each build a run-time module build/rtl/acore_rtl_<name>.so (rtl_plugin.hpp)
-// loaded on first use. A register image finds its build by field equality of its configuration.
+// (model/rtlsim/CMakeLists.txt), each build a run-time module build/rtl/acore_rtl_<name>.so
+// (rtl_plugin.hpp) loaded on first use. A register image finds its build by field equality of its
+// configuration.
 #pragma once
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "core/datapath_config.hpp"
+#include "core/errors.hpp"
 #include "rtlsim/rtl_plugin.hpp"
 
 namespace acore {
+
+// A build's run-time module is not where the engine looks: the message names the module, the
+// folder and the command that builds it. An InputError (the CLI exits with 2).
+class RtlNotBuilt : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 enum class RtlTop { kPipelined, kSerial, kShell };
 
@@ -24,8 +33,9 @@ struct RtlBuild {
   // to the defaults); for the shell, that of the top it wraps.
   DatapathConfig cfg;
   bool serial = false;  // the shell wraps the serial core (SERIAL=1)
-  // The loaded module; throws InputError naming the build target when it is not built.
-  const rtl::PluginInfo& plugin() const;
+  // The loaded module from rtl_plugin_dir(dir); throws RtlNotBuilt naming the module, the folder
+  // and the command that builds it when it is not there.
+  const rtl::PluginInfo& plugin(const std::string& dir = "") const;
 };
 
 // Every build of the registry with the `sim` flow, in the registry's order.
@@ -37,7 +47,8 @@ const RtlBuild& rtl_build_named(const std::string& name);
 const RtlBuild& rtl_build_for(RtlTop top, const DatapathConfig& cfg);
 // The builds of one top (the co-sim tests run over them).
 std::vector<const RtlBuild*> rtl_builds_of(RtlTop top);
-// The registry's lines as tb/CMakeLists.txt writes them into the generated rtl_registry.cpp.
+// The registry's lines as model/rtlsim/CMakeLists.txt writes them into the generated
+// rtl_registry.cpp.
 struct RtlRegistryLine {
   const char* name;
   const char* module;
@@ -48,8 +59,10 @@ extern const int kRtlRegistrySize;
 
 // GoogleTest prints a build parameter by its name.
 inline void PrintTo(const RtlBuild* b, std::ostream* os) { *os << b->name; }
-// Where the modules are looked for: $ACORE_RTL_DIR, else rtl/ beside the running program, else
-// the build tree's rtl/ this program was built in.
-std::string rtl_plugin_dir();
+// Where the modules are looked for: dir when given; else $ACORE_RTL_DIR; else rtl/ beside the
+// running program when it exists; else the folder fixed when this library was built
+// (ACORE_RTL_PLUGIN_DIR: the build tree's rtl/, or for the Python package the one its set-up
+// passes). "" when there is none.
+std::string rtl_plugin_dir(const std::string& dir = "");
 
 }  // namespace acore

@@ -14,12 +14,12 @@ struct RtlHarness::Impl {
 };
 
 RtlHarness::RtlHarness(const RtlBuild& build, const std::string& trace, int rand_reset,
-                       uint64_t seed)
+                       uint64_t seed, const std::string& module_dir)
     : impl_(new Impl) {
   if (build.top == RtlTop::kShell)
     throw InputError("RtlHarness drives a top; '" + build.name + "' is the register shell");
   impl_->build = &build;
-  impl_->info = &build.plugin();
+  impl_->info = &build.plugin(module_dir);
   rtl::SimOptions opt;
   opt.trace = trace.empty() ? nullptr : trace.c_str();
   opt.rand_reset = rand_reset;
@@ -146,7 +146,7 @@ std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelC
     cfg.fold = opt.fold;
     cfg.validate();
   }
-  RtlHarness h(rtl_build_for(opt.top, cfg), opt.trace, 2, opt.seed);
+  RtlHarness h(rtl_build_for(opt.top, cfg), opt.trace, 2, opt.seed, opt.module_dir);
   h.set_window(opt.window ? *opt.window : StatusWindow::defaults(img.cfg));
   h.reset();
   h.load(img);

@@ -32,10 +32,11 @@ struct RtlRunOptions {
   // for every image read from a file: a register image does not depend on FOLD); 1, 2, 4, 8 =
   // that build.
   int fold = 0;
+  std::string module_dir;  // where the build's module is ("" = rtl_plugin_dir())
 };
 
 // Throws InputError when no Verilated build of opt.top has the image's configuration (with
-// opt.fold).
+// opt.fold), RtlNotBuilt when that build's module is not built.
 std::vector<FixedSample> run_rtl(const RegImage& img, const std::vector<ChannelCodes>& in,
                                  const RtlRunOptions& opt);
 
@@ -44,8 +45,9 @@ class RtlHarness {
   // build: a build of acore_top or acore_serial_top (rtl_build_for, rtl_build_named).
   // trace: FST file ("" = none). rand_reset: Verilated::randReset mode for the initial state
   // (2 = random, proving that outputs are valid-gated and only control flops need a reset).
+  // module_dir: where the build's module is ("" = rtl_plugin_dir()).
   explicit RtlHarness(const RtlBuild& build, const std::string& trace = "", int rand_reset = 2,
-                      uint64_t seed = 1);
+                      uint64_t seed = 1, const std::string& module_dir = "");
   ~RtlHarness();
   RtlHarness(const RtlHarness&) = delete;
   RtlHarness& operator=(const RtlHarness&) = delete;

@@ -10,7 +10,8 @@
 
 Every function calls the C++ model's own function (the one the `anglecore` command calls), so the
 results equal the command's on the same inputs: register words, bit-accurate angles, statistics.
-Bad input raises ValueError with the model's message; a wrong array type TypeError.
+Bad input raises ValueError with the model's message; a wrong array type TypeError; an RTL engine
+whose run-time module is not built RtlNotBuilt (a ValueError naming the command that builds it).
 """
 from __future__ import annotations
 
@@ -25,8 +26,11 @@ from . import _core
 __all__ = [
     "Recording", "RegisterImage", "Estimate", "read_recording", "read_image", "simulate",
     "scenarios", "physics_scenarios", "simulate_physics", "calibrate", "estimate", "harmonics",
-    "diagnose", "ENGINES",
+    "diagnose", "ENGINES", "RtlNotBuilt",
 ]
+
+RtlNotBuilt = _core.RtlNotBuilt  # a ValueError: an RTL engine's run-time module is not built
+RtlNotBuilt.__module__ = __name__
 
 ENGINES = ("float", "fixed", "rtl", "rtl-serial")
 _CHANNELS = {4: ("c1", "c2", "c3", "c4"), 2: ("sin", "cos")}
@@ -256,42 +260,43 @@ def _check_recording(recording: Any) -> None:
 
 
 def estimate(image: RegisterImage, recording: Recording, engine: str = "fixed",
-             periodicity: Optional[int] = None, uncorrected: bool = True) -> Estimate:
-    """Runs an engine over a recording, as `anglecore estimate --engine ENGINE`.
+             periodicity: Optional[int] = None, uncorrected: bool = True, fold: int = 1,
+             trace: Optional[os.PathLike | str] = None,
+             rtl_dir: Optional[os.PathLike | str] = None) -> Estimate:
+    """Runs an engine over a recording, as `anglecore estimate --engine ENGINE [--fold N]`.
 
-    fixed: the bit-accurate batch path straight on the recording's arrays (no copy; the GIL is
-    released); uncorrected=True also runs the per-sample model for the uncorrected angle (the
-    command's uncorrected_error_deg); False skips it (the fast path). float: the double model."""
+    Every engine runs through the command's own dispatch (run_engine): float (the double model on
+    the image's dequantized coefficients), fixed (bit-accurate), rtl (the Verilated pipelined top,
+    folded to `fold` clocks a sample), rtl-serial (the serial core). The RTL engines load the run-time
+    modules of a CMake build: from rtl_dir when given, else $ACORE_RTL_DIR, else the build/rtl/
+    folder the set-up named; RtlNotBuilt (its message gives the command) when the module is not
+    there. trace: an FST waveform of the RTL run.
+
+    fixed with uncorrected=False takes the fast path: the bit-accurate batch straight on the
+    recording's arrays (no copy; the GIL is released), the same angles bit for bit."""
     if not isinstance(image, RegisterImage):
         raise TypeError(f"expected an anglecore.RegisterImage, got {type(image).__name__}")
     _check_recording(recording)
-    if engine in ("rtl", "rtl-serial"):
-        raise NotImplementedError(
-            f"engine '{engine}': the RTL engine runs in the CMake build only "
-            f"(build/anglecore estimate --engine {engine}); this package has no Verilator build")
-    if engine not in ("float", "fixed"):
-        raise ValueError(f"--engine: '{engine}' is not one of float, fixed, rtl, rtl-serial")
     p = int(periodicity) if periodicity else recording.periodicity
     theta = recording.columns.get("theta_ref")
     unc = unc_err = err = None
-    if engine == "fixed":
+    if engine == "fixed" and not uncorrected and fold == 1 and trace is None:
         arrays = [recording.columns[n] for n in recording.channel_names]
         angle, flags, region, err = _core.estimate_fixed_batch(
             image._img, recording.channels, arrays, theta, p)
-        if uncorrected:
-            unc = _core.estimate_series(image._img, recording._core(), "fixed")[1]
     else:
-        angle, unc, region, flags = _core.estimate_series(image._img, recording._core(), "float")
+        angle, unc, region, flags = _core.estimate_series(
+            image._img, recording._core(), engine, int(fold),
+            "" if trace is None else os.fspath(trace), "" if rtl_dir is None else os.fspath(rtl_dir))
+        if not uncorrected:
+            unc = None
         if theta is not None:
-            err = _core.angle_error_deg(angle, theta, p)
+            err = _core.judged_error_deg(image._img, angle, theta, p)
+    # A self-calibrated image does not know the reference's zero: the library judges its errors
+    # about their mean, as the command reports them.
     if unc is not None and theta is not None:
-        unc_err = _core.angle_error_deg(unc, theta, p)
-    # A self-calibrated image does not know the reference's zero: errors about their mean, as
-    # the command reports them.
-    if _core.zero_reference_unknown(image._img):
-        err = None if err is None else _core.about_mean_deg(err)
-        unc_err = None if unc_err is None else _core.about_mean_deg(unc_err)
-    report = _core.estimate_report(image._img, engine, len(recording), err, unc_err,
+        unc_err = _core.judged_error_deg(image._img, unc, theta, p)
+    report = _core.estimate_report(image._img, engine, int(fold), len(recording), err, unc_err,
                                    int(np.count_nonzero(flags)))
     return Estimate(angle, region, flags, err, unc, unc_err, report)
 

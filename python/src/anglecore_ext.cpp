@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// anglecore._core: the C++ model (acore_ip, acore_lab) as a Python extension. Every function here
-// converts between numpy/Python objects and the model's types and calls the model's own function
-// (the one the CLI calls); python/anglecore/__init__.py gives it its Python face.
-// Recordings cross as dicts {"channels", "columns": {name: float64 array}, "meta", "comments"}: the
-// batch estimate reads the caller's arrays in place, and arrays coming back own the C++ vectors
-// they were computed into (no copy either way).
+// anglecore._core: the C++ model (acore_ip, acore_lab) and the RTL engine (acore_rtlsim) as a
+// Python extension. Every function here converts between numpy/Python objects and the model's types
+// and calls the model's own function (the one the CLI calls); python/anglecore/__init__.py gives it
+// its Python face. Recordings cross as dicts {"channels", "columns": {name: float64 array}, "meta",
+// "comments"}: the batch estimate reads the caller's arrays in place, and arrays coming back own
+// the C++ vectors they were computed into (no copy either way).
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/optional.h>
@@ -26,6 +26,7 @@
 #include "harmonics/harmonics.hpp"
 #include "regmap/codec.hpp"
 #include "regmap/regimage.hpp"
+#include "rtlsim/run_engine.hpp"
 #include "sim/simulator.hpp"
 
 namespace nb = nanobind;
@@ -156,6 +157,7 @@ Scenario scenario_from_python(nb::handle s) {
 // --- estimate ----------------------------------------------------------------------------------
 
 // The bit-accurate batch over the caller's arrays, in place; the GIL is released while it runs.
+// The errors are judged as the command judges them (judged_error_deg).
 nb::tuple estimate_fixed_batch(const RegImage& img, int channels, const std::vector<InArray>& ch,
                                std::optional<InArray> theta, int periodicity) {
   ChannelColumns in;
@@ -177,19 +179,27 @@ nb::tuple estimate_fixed_batch(const RegImage& img, int channels, const std::vec
     nb::gil_scoped_release release;
     run_fixed_batch(img, in, periodicity,
                     {angle.data(), flags.data(), region.data(), theta ? err.data() : nullptr});
+    err = judged_error_deg(img, std::move(err));
   }
   return nb::make_tuple(to_numpy(std::move(angle)), to_numpy(std::move(flags)),
                         to_numpy(std::move(region)), theta ? to_numpy(std::move(err)) : nb::none());
 }
 
-// float: run_float on the dequantized image; fixed: run_fixed (per sample, with the uncorrected
-// angle). Returns (angle, uncorrected, region, flags) as the CLI computes them.
-nb::tuple estimate_series(const RegImage& img, const nb::dict& rec_py, const std::string& engine) {
+// Any engine through run_engine (the command's dispatch): (angle, uncorrected, region, flags) as
+// the command computes them. fold, trace and rtl_dir are the RTL's (EngineOptions).
+nb::tuple estimate_series(const RegImage& img, const nb::dict& rec_py, const std::string& engine,
+                          int fold, const std::string& trace, const std::string& rtl_dir) {
+  const Engine e = parse_engine(engine);
+  EngineOptions opt;
+  opt.fold = fold;
+  opt.trace = trace;
+  opt.module_dir = rtl_dir;
+  check_engine_options(e, opt);
   const Recording rec = recording_from_python(rec_py);
   AngleSeries s;
   {
     nb::gil_scoped_release release;
-    s = engine == "float" ? run_float(rec, dequantize(img)) : run_fixed(rec, img);
+    s = run_engine(e, rec, img, opt).series;
   }
   std::vector<uint8_t> region(s.region.begin(), s.region.end()),
       flags(s.flags.begin(), s.flags.end());
@@ -197,15 +207,23 @@ nb::tuple estimate_series(const RegImage& img, const nb::dict& rec_py, const std
                         to_numpy(std::move(region)), to_numpy(std::move(flags)));
 }
 
-nb::object estimate_report(const RegImage& img, const std::string& engine, size_t samples,
+// The error an image is judged by (judged_error_deg: about the mean when its zero is unknown).
+nb::object judged_error_py(const RegImage& img, InArray angle, InArray theta, int periodicity) {
+  if (angle.shape(0) != theta.shape(0)) throw InputError("estimate: theta_ref differs in length");
+  const std::vector<double> a(angle.data(), angle.data() + angle.shape(0)),
+      t(theta.data(), theta.data() + theta.shape(0));
+  return to_numpy(judged_error_deg(img, a, t, periodicity));
+}
+
+nb::object estimate_report(const RegImage& img, const std::string& engine, int fold, size_t samples,
                            std::optional<InArray> err, std::optional<InArray> uncorrected_err,
                            size_t flagged) {
   ErrorStats st, su;
   if (err) st = error_stats(err->data(), err->shape(0));
   if (uncorrected_err) su = error_stats(uncorrected_err->data(), uncorrected_err->shape(0));
-  return to_python(estimate_json(parse_engine(engine), samples, 1, img, img.applied_zero_offset(),
-                                 img.cfg.zero_word != 0, err ? &st : nullptr,
-                                 uncorrected_err ? &su : nullptr, flagged));
+  return to_python(estimate_json(parse_engine(engine), samples, fold, img,
+                                 img.applied_zero_offset(), img.cfg.zero_word != 0,
+                                 err ? &st : nullptr, uncorrected_err ? &su : nullptr, flagged));
 }
 
 // --- calibrate ---------------------------------------------------------------------------------
@@ -320,11 +338,20 @@ nb::dict physics_py(const std::string& name, size_t samples, uint64_t seed, size
 
 NB_MODULE(_core, m) {
   using namespace acore;
-  m.doc() = "AngleCore's C++ model (acore_ip, acore_lab); use the anglecore package, not this.";
+  m.doc() =
+      "AngleCore's C++ model (acore_ip, acore_lab) and RTL engine (acore_rtlsim); use the "
+      "anglecore package, not this.";
+  // A missing RTL module: its own type (a ValueError, as every input error), so that a caller can
+  // tell it apart; the message names the command that builds the module. The module attribute
+  // keeps the type alive (a plain pointer: nothing to release after the interpreter has gone).
+  static PyObject* rtl_not_built =
+      nb::exception<RtlNotBuilt>(m, "RtlNotBuilt", PyExc_ValueError).ptr();
   // The model's input errors are the caller's to fix: ValueError with the model's own message.
   nb::register_exception_translator([](const std::exception_ptr& p, void*) {
     try {
       std::rethrow_exception(p);
+    } catch (const RtlNotBuilt& e) {
+      PyErr_SetString(rtl_not_built, e.what());
     } catch (const InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const CheckFailed& e) {
@@ -410,26 +437,13 @@ NB_MODULE(_core, m) {
   m.def("calibrate", &calibrate_py, "recording"_a, "options"_a, "what"_a, "command"_a);
   m.def("estimate_fixed_batch", &estimate_fixed_batch, "image"_a, "channels"_a,
         "arrays"_a.noconvert(), "theta_ref"_a.noconvert().none(), "periodicity"_a);
-  m.def("estimate_series", &estimate_series, "image"_a, "recording"_a, "engine"_a);
-  m.def("estimate_report", &estimate_report, "image"_a, "engine"_a, "samples"_a,
+  m.def("estimate_series", &estimate_series, "image"_a, "recording"_a, "engine"_a, "fold"_a = 1,
+        "trace"_a = "", "rtl_dir"_a = "");
+  m.def("judged_error_deg", &judged_error_py, "image"_a, "angle"_a.noconvert(),
+        "theta_ref"_a.noconvert(), "periodicity"_a);
+  m.def("estimate_report", &estimate_report, "image"_a, "engine"_a, "fold"_a, "samples"_a,
         "error_deg"_a.noconvert().none(), "uncorrected_error_deg"_a.noconvert().none(),
         "flagged"_a);
-  m.def(
-      "angle_error_deg",
-      [](InArray est, InArray ref, int p) {
-        if (est.shape(0) != ref.shape(0)) throw InputError("angle_error_deg: lengths differ");
-        std::vector<double> e(est.data(), est.data() + est.shape(0)),
-            r(ref.data(), ref.data() + ref.shape(0));
-        return to_numpy(angle_error_deg(e, r, p));
-      },
-      "est"_a.noconvert(), "ref"_a.noconvert(), "periodicity"_a);
-  m.def(
-      "about_mean_deg",
-      [](InArray err) {
-        return to_numpy(about_mean_deg(std::vector<double>(err.data(), err.data() + err.shape(0))));
-      },
-      "err"_a.noconvert());
-  m.def("zero_reference_unknown", [](const RegImage& img) { return img.zero_reference_unknown(); });
   m.def("harmonics", &harmonics_py, "spec"_a, "grid"_a = 0);
   m.def("diagnose", &diagnose_py, "sim"_a, "real"_a, "holdout"_a.none(), "order"_a = 0);
 }

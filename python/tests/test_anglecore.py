@@ -161,8 +161,6 @@ def test_input_errors_are_value_errors_with_the_cli_message(cli, tmp_path):
     img = ac.calibrate(rec)
     with pytest.raises(ValueError, match="is not one of float, fixed"):
         ac.estimate(img, rec, engine="analog")
-    with pytest.raises(NotImplementedError, match="CMake build"):
-        ac.estimate(img, rec, engine="rtl")
 
 
 def test_wrong_types_and_shapes():

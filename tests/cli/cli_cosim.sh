@@ -2,23 +2,16 @@
 # SPDX-License-Identifier: MIT
 # `anglecore cosim` and `estimate --engine rtl|rtl-serial` through the CLI: RTL (pipelined top, the
 # top folded to 2, 4 and 8 clocks a sample with --fold, serial core) vs model on a simulated
-# recording (0 mismatches, JSON fields), stalls, FST trace, RTL = fixed error statistics, bad input.
-# usage: cli_cosim.sh ANGLECORE SOURCE_DIR. Skips (exit 0 with a note) when built without the RTL.
+# recording (0 mismatches, JSON fields), stalls, FST trace, RTL = fixed error statistics, bad input;
+# a run-time module that is not built: exit 2, and the message names the module and the command that
+# builds it (cosim, estimate, demo).
+# usage: cli_cosim.sh ANGLECORE SOURCE_DIR. ACORE_WITH_RTL=OFF (CTest passes the build's setting): the
+# build makes no modules, so only their absence is checked.
 set -u
 bin=$1
-if ! "$bin" --help 2>/dev/null | grep -qE "^ +cosim "; then echo "anglecore built without the RTL: cosim not tested"; exit 0; fi
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() {  # check NAME EXPECTED_STATUS COMMAND...
-  local name=$1 want=$2
-  shift 2
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL $name: exit $got, expected $want"; sed 's/^/  /' "$tmp/err" | head -5; fails=$((fails + 1))
-  fi
-}
+rtl=${ACORE_WITH_RTL:-ON}
+# shellcheck source=lib_cli.sh
+source "$(dirname "$0")/lib_cli.sh"
 # A two-channel recording with offsets, gain mismatch and a 3rd harmonic, so every stage works.
 /usr/bin/python3 - "$tmp/cal.csv" 3000 0 <<'PY'
 import math, sys
@@ -43,6 +36,34 @@ with open(path, "w") as f:
         f.write(f"{t:.9f},{s:.9f},{c:.9f}\n")
 PY
 check calibrate 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs.hex"
+
+# The modules are looked for in $ACORE_RTL_DIR: an empty folder has none. Without the RTL in this
+# build, the build's own folder has none either, and the command says how to configure it in.
+mkdir "$tmp/empty"
+missing() {  # missing NAME MODULE COMMAND...: exit 2, the message names MODULE and its build command
+  local name=$1 module=$2
+  shift 2
+  check "$name" 2 "$@"
+  expect_text "$name-module" "$tmp/err" "$module.so"
+  expect_text "$name-command" "$tmp/err" "cmake --build "
+  expect_text "$name-target" "$tmp/err" "--target $module\`"
+  expect_text "$name-env" "$tmp/err" "ACORE_RTL_DIR"
+}
+missing no-module-cosim acore_rtl_default env ACORE_RTL_DIR="$tmp/empty" "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+expect_text no-module-where "$tmp/err" "$tmp/empty/acore_rtl_default.so"
+missing no-module-serial acore_rtl_serial env ACORE_RTL_DIR="$tmp/empty" "$bin" estimate --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+missing no-module-fold4 acore_rtl_fold4 env ACORE_RTL_DIR="$tmp/empty" "$bin" estimate --engine rtl --fold 4 --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+missing no-module-demo acore_rtl_default env ACORE_RTL_DIR="$tmp/empty" "$bin" demo --no-plots --no-sweep --samples 512 --out "$tmp/demo"
+expect_text no-module-demo-hint "$tmp/err" "demo --no-rtl"
+check demo-no-rtl 0 env ACORE_RTL_DIR="$tmp/empty" "$bin" demo --no-rtl --no-plots --no-sweep --samples 512 --out "$tmp/demo"
+if [ "$rtl" = OFF ]; then
+  missing off-cosim acore_rtl_default "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+  expect_text off-configure "$tmp/err" "-DACORE_WITH_RTL=ON"
+  missing off-estimate acore_rtl_default "$bin" estimate --engine rtl --regs "$tmp/regs.hex" --in "$tmp/val.csv"
+  echo "$passes passed, $fails failed (built without the RTL: the module-absent checks only)"
+  [ "$fails" -eq 0 ]
+  exit
+fi
 check cosim 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/cosim.json"
 check cosim-stalls 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.5 --json "$tmp/cosim2.json"
 check cosim-trace 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --trace "$tmp/wave.fst"
@@ -59,7 +80,7 @@ for n in 2 4 8; do
   check "cosim-fold$n" 0 "$bin" cosim --fold $n --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.3 --json "$tmp/cf$n.json"
 done
 check est-fold4 0 "$bin" estimate --engine rtl --fold 4 --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/rf4.json"
-/usr/bin/python3 - "$tmp" <<'PY' || { echo "FAIL json"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp" <<'PY' && passes=$((passes + 1)) || { echo "FAIL json"; fails=$((fails + 1)); }
 import json, sys
 d = sys.argv[1]
 for name, engine in (("cosim.json", "rtl"), ("cosim2.json", "rtl"), ("cs.json", "rtl-serial"), ("cs2.json", "rtl-serial")):
@@ -89,5 +110,5 @@ check cosim-fold-serial 2 "$bin" cosim --engine rtl-serial --fold 2 --regs "$tmp
 check est-fold-fixed 2 "$bin" estimate --engine fixed --fold 2 --regs "$tmp/regs.hex" --in "$tmp/val.csv"
 # No folded build of the 12-iteration configuration: the error names the available builds.
 check fold-other-config 2 "$bin" cosim --fold 2 --regs "$tmp/k12.hex" --in "$tmp/val.csv"
-[ "$fails" -eq 0 ] && echo "cli_cosim: all checks passed" || echo "cli_cosim: $fails failed"
+echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

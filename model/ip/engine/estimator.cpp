@@ -86,13 +86,17 @@ AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const RegIma
   return out;
 }
 
-AngleSeries run_fixed(const Recording& rec, const RegImage& img) {
+std::vector<FixedSample> run_fixed_rows(const RegImage& img,
+                                        const std::vector<ChannelCodes>& codes) {
   const FixedModel model(img);
   std::vector<FixedSample> rows;
-  rows.reserve(rec.size());
-  for (const ChannelCodes& c : to_codes(rec, img.in_scale, img.cfg.in_w))
-    rows.push_back(model.step(c));
-  return series_from_fixed(rows, img);
+  rows.reserve(codes.size());
+  for (const ChannelCodes& c : codes) rows.push_back(model.step(c));
+  return rows;
+}
+
+AngleSeries run_fixed(const Recording& rec, const RegImage& img) {
+  return series_from_fixed(run_fixed_rows(img, to_codes(rec, img.in_scale, img.cfg.in_w)), img);
 }
 
 void run_fixed_batch(const RegImage& img, const ChannelColumns& in, int periodicity,
@@ -126,8 +130,12 @@ void run_fixed_batch(const RegImage& img, const ChannelColumns& in, int periodic
 
 std::vector<double> judged_error_deg(const RegImage& img, const std::vector<double>& angle_rad,
                                      const std::vector<double>& theta_ref, int periodicity) {
-  const std::vector<double> e = angle_error_deg(angle_rad, theta_ref, periodicity);
-  return img.zero_reference_unknown() ? about_mean_deg(e) : e;
+  return judged_error_deg(img, angle_error_deg(angle_rad, theta_ref, periodicity));
+}
+
+std::vector<double> judged_error_deg(const RegImage& img, std::vector<double> error_deg) {
+  if (img.zero_reference_unknown()) return about_mean_deg(error_deg);
+  return error_deg;  // moved, not copied (the Python package's fast path hands over its errors)
 }
 
 nlohmann::json estimate_json(Engine engine, size_t samples, int fold, const RegImage& img,

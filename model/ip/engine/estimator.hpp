@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Runs an estimator engine over a whole recording: the common front of `estimate`, `demo` and
 // `diagnose`. The RTL engine lives in model/rtlsim/rtl_engine.hpp (the pipelined top, "rtl", and
-// the serial core, "rtl-serial") and returns the same FixedSample rows.
+// the serial core, "rtl-serial") and returns the same FixedSample rows; model/rtlsim/run_engine.hpp
+// is the one dispatch from an engine name to these functions or the RTL.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -37,6 +38,9 @@ std::vector<ChannelCodes> to_codes(const Recording& rec, double in_scale, int in
 
 AngleSeries run_float(const Recording& rec, const FloatCoefficients& fc);
 AngleSeries run_fixed(const Recording& rec, const RegImage& img);
+// The bit-accurate model's rows for these input codes (FixedModel::step each): run_fixed's rows.
+std::vector<FixedSample> run_fixed_rows(const RegImage& img,
+                                        const std::vector<ChannelCodes>& codes);
 // Converts bit-accurate rows (model or RTL) of this image into angles in the reference frame.
 AngleSeries series_from_fixed(const std::vector<FixedSample>& rows, const RegImage& img);
 
@@ -52,6 +56,9 @@ struct ChannelColumns {
 // the image's zero is unknown (zero_reference=none, a self-calibration).
 std::vector<double> judged_error_deg(const RegImage& img, const std::vector<double>& angle_rad,
                                      const std::vector<double>& theta_ref, int periodicity);
+// The same judgement of errors already taken against the reference (angle_error_deg's, or
+// run_fixed_batch's error_deg): returned as they are, or about their mean.
+std::vector<double> judged_error_deg(const RegImage& img, std::vector<double> error_deg);
 
 // Caller-owned outputs of n samples each; error_deg is written only when it and theta_ref are set.
 struct BatchAngles {
