@@ -39,9 +39,9 @@ void CalibrateSpec::validate() const {
   // The mode's row: its name, and its legal degree (core/correction_modes.hpp).
   const CorrectionMode& mode = correction_mode(correction);
   if (degree < mode.degree_min || degree > mode.degree_max)
-    throw InputError(fmt::format("--degree {}: {} takes a {} of {}..{}", degree, mode.name,
-                                 *mode.degree_word() ? mode.degree_word() : "degree",
-                                 mode.degree_min, mode.degree_max));
+    throw InputError(fmt::format("--degree {}: not in {}..{} (the {} of {})", degree,
+                                 mode.degree_min, mode.degree_max,
+                                 *mode.degree_word() ? mode.degree_word() : "degree", mode.name));
   if (regions != 4 && regions != 8)
     throw InputError(fmt::format("--regions {}: not one of 4, 8", regions));
   if (iterations) check_range("--iterations", *iterations, 4, 24);
