@@ -39,34 +39,11 @@
 module acore_apb #(
   // 0: rtl/acore_top.v (pipelined, one sample a clock); 1: rtl/acore_serial_top.v (one adder).
   parameter integer SERIAL = 0,
-  // The tops' parameters (rtl/acore_top.v documents each). The serial core has no CORRECTION,
-  // XCENTER or Fourier stage: with SERIAL = 1 they must keep their defaults.
-  parameter integer IN_W = 16,
-  parameter integer REG_W = 18,
-  parameter integer S_W = 18,
-  parameter integer S_F = 16,
-  parameter integer R_SHIFT = 13,
-  parameter integer SCALE_G = 4,
-  parameter integer CORRECTION = 0,
-  parameter integer DEGREE = 3,
-  parameter integer REGIONS = 4,
-  parameter integer XCENTER = 0,
-  parameter integer COEF_F = 15,
-  parameter integer ACC_G = 4,
-  parameter integer ACC_I = 6,
-  parameter integer K = 16,
-  parameter integer CORDIC_G = 3,
-  parameter integer Z_W = 20,
-  parameter integer ANGLE_W = 16,
-  parameter integer FOURIER_K = 0,
-  parameter integer FOURIER_M = 12,
-  parameter integer FOURIER_CF = 22,
-  parameter integer FOURIER_W = 16,
-  parameter integer FOURIER_G = 2,
-  // 1: the ZERO word (the zero position, last register word; both tops): WORDS counts it.
-  parameter integer ZERO = 0,
-  // Fold factor of acore_top (1, 2, 4, 8; reported in CONFIG0). The serial core has none: 1.
-  parameter integer FOLD = 1,
+  // The datapath parameters of the top (IN_W .. FOLD, generated from the model's field table):
+  // the serial core takes the modes and options the mode table and its rules give it
+  // (acore_config_check with SERIAL = 1). FOLD is reported in CONFIG0; ZERO = 1 adds the ZERO
+  // word (the zero position, the last register word) to WORDS.
+`include "acore_datapath_params.vh"
   // $readmemh register image: power-up contents of the top's words and of the shadow ("" = none).
   parameter INIT_FILE = "",
   // CRC bits per clock: the commit's CRC pass takes WORDS 32/CRC_W clocks. 16 keeps the CRC off
@@ -151,18 +128,11 @@ module acore_apb #(
   acore_check #(.OK(SERIAL == 0 || SERIAL == 1), .VALUE(SERIAL),
     .MSG("illegal parameter: SERIAL must be 0 (acore_top) or 1 (acore_serial_top)"))
     SERIAL_must_be_0_or_1 ();
-  acore_check #(.OK(SERIAL == 0 || CORRECTION == 0), .VALUE(CORRECTION),
-    .MSG("illegal parameter: CORRECTION must be 0 with SERIAL=1 (the serial core is the 1-D polynomial)"))
-    CORRECTION_must_be_0_with_SERIAL ();
-  acore_check #(.OK(SERIAL == 0 || XCENTER == 0), .VALUE(XCENTER),
-    .MSG("illegal parameter: XCENTER must be 0 with SERIAL=1 (the serial core is the 1-D polynomial)"))
-    XCENTER_must_be_0_with_SERIAL ();
-  acore_check #(.OK(SERIAL == 0 || FOURIER_K == 0), .VALUE(FOURIER_K),
-    .MSG("illegal parameter: FOURIER_K must be 0 with SERIAL=1 (the serial core has no Fourier stage)"))
-    FOURIER_K_must_be_0_with_SERIAL ();
-  acore_check #(.OK(SERIAL == 0 || FOLD == 1), .VALUE(FOLD),
-    .MSG("illegal parameter: FOLD must be 1 with SERIAL=1 (the serial core is not folded)"))
-    FOLD_must_be_1_with_SERIAL ();
+  // The correction mode (the mode table's rules: a known mode, its DEGREE, the tops that build
+  // it) and the serial core's options, also at the shell's own level (rtl/acore_serial_checks.vh
+  // says why); the top checks them again (acore_config_check).
+`include "acore_mode_checks.vh"
+`include "acore_serial_checks.vh"
   acore_check #(.OK(WORDS <= COEF_WORDS), .VALUE(WORDS),
     .MSG("illegal parameter: WORDS must be at most 256 (the shadow window)"))
     WORDS_must_fit_the_shadow_window ();
@@ -193,10 +163,8 @@ module acore_apb #(
   generate
     if (SERIAL != 0) begin : g_serial
       acore_serial_top #(
-        .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
-        .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K),
-        .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .ZERO(ZERO), .INIT_FILE(INIT_FILE),
-        .WORDS(WORDS)
+`include "acore_datapath_pass.vh"
+        .INIT_FILE(INIT_FILE), .WORDS(WORDS)
       ) u_top (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(top_addr), .reg_wdata_i(top_wdata), .reg_we_i(top_we),
         .reg_rdata_o(top_rdata), .mag_lo_i(rg_mag_lo), .mag_hi_i(rg_mag_hi),
@@ -205,11 +173,8 @@ module acore_apb #(
         .region_o(top_region), .ovf_o(top_ovf), .los_o(top_los), .dos_o(top_dos));
     end else begin : g_pipe
       acore_top #(
-        .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
-        .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
-        .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
-        .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
-        .FOURIER_G(FOURIER_G), .FOLD(FOLD), .ZERO(ZERO), .INIT_FILE(INIT_FILE), .WORDS(WORDS)
+`include "acore_datapath_pass.vh"
+        .INIT_FILE(INIT_FILE), .WORDS(WORDS)
       ) u_top (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(top_addr), .reg_wdata_i(top_wdata), .reg_we_i(top_we),
         .reg_rdata_o(top_rdata), .mag_lo_i(rg_mag_lo), .mag_hi_i(rg_mag_hi),

@@ -42,20 +42,12 @@
 `default_nettype none
 
 module acore_board #(
-  // The estimator (rtl/acore_apb.v, rtl/acore_top.v document each).
+  // The estimator (rtl/acore_apb.v): its top (0 acore_top, 1 the serial core) and the datapath
+  // parameters (IN_W .. FOLD, generated from the model's field table; ANGLE_W is also the
+  // interfaces' width), its power-up register image.
   parameter integer SERIAL = 0,
-  parameter integer CORRECTION = 0,
-  parameter integer DEGREE = 3,
-  parameter integer REGIONS = 4,
-  parameter integer K = 16,
-  parameter integer FOLD = 1,
-  parameter integer ZERO = 0,
+`include "acore_datapath_params.vh"
   parameter INIT_FILE = "",
-  // The angle (the estimator's default) and the interfaces' widths.
-  parameter integer ANGLE_W = 16,
-  parameter integer IN_W = 16,
-  parameter integer REG_W = 18,
-  parameter integer S_W = 18,
   parameter integer RG_W = $clog2(REGIONS),
   // The observer's fraction bits below the angle (rtl/acore_track.v's FRAC_W): its velocity word
   // has ANGLE_W + TRK_FRAC_W bits, of which TRK_VELOCITY reads the upper 32.
@@ -113,7 +105,7 @@ module acore_board #(
   // The estimator's timing (the shell's): clocks from a sample taken to its angle on angle_o, and
   // clocks per sample at full rate (the interfaces take one sample a clock).
   localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO) :
-      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, 0, 12, FOLD);
+      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD);
   localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO) :
       acore_top_cycles(FOLD);
 
@@ -168,8 +160,8 @@ module acore_board #(
   wire [RG_W-1:0] est_region;
   wire trk_ready;
   acore_apb #(
-    .SERIAL(SERIAL), .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .FOLD(FOLD),
-    .ZERO(ZERO), .INIT_FILE(INIT_FILE), .ANGLE_W(ANGLE_W), .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W)
+`include "acore_datapath_pass.vh"
+    .SERIAL(SERIAL), .INIT_FILE(INIT_FILE)
   ) u_shell (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i & ~brd_sel), .penable_i(penable_i),
     .pwrite_i(pwrite_i), .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i),

@@ -1,41 +1,23 @@
 // SPDX-License-Identifier: MIT
 // acore_config_check: the datapath configuration's rules at elaboration, the same rules and limits
 // as the bit-accurate model's DatapathConfig::validate() (model/ip/core/datapath_config.cpp), one
-// acore_check per rule, named after it. Both tops instantiate it with their parameters (the serial
-// core has no CORRECTION, XCENTER, Fourier or FOLD parameters: it passes the defaults), so an illegal
-// configuration stops Verilator, Icarus and Yosys with the rule's message before any stage is
-// built, and the RTL accepts exactly what the model accepts (tb/lint/param_checks.py checks both ways
-// on random configurations).
+// acore_check per rule, named after it. Both tops instantiate it with their parameters and say
+// which top they are (SERIAL), so an illegal configuration stops Verilator, Icarus and Yosys with
+// the rule's message before any stage is built, and the RTL accepts exactly what the model accepts
+// (tb/lint/param_checks.py checks both ways on random configurations). The correction modes' rules
+// (a known mode, its DEGREE, the tops that build it) are generated from the model's mode table
+// (rtl/acore_mode_checks.vh).
 `resetall
 `default_nettype none
 
 module acore_config_check #(
-  // The datapath parameters of rtl/acore_top.v, same names and defaults (meanings there).
-  parameter integer IN_W = 16,
-  parameter integer REG_W = 18,
-  parameter integer S_W = 18,
-  parameter integer S_F = 16,
-  parameter integer R_SHIFT = 13,
-  parameter integer SCALE_G = 4,
-  parameter integer CORRECTION = 0,
-  parameter integer DEGREE = 3,
-  parameter integer REGIONS = 4,
-  parameter integer XCENTER = 0,
-  parameter integer COEF_F = 15,
-  parameter integer ACC_G = 4,
-  parameter integer ACC_I = 6,
-  parameter integer K = 16,
-  parameter integer CORDIC_G = 3,
-  parameter integer Z_W = 20,
-  parameter integer ANGLE_W = 16,
-  parameter integer FOURIER_K = 0,
-  parameter integer FOURIER_M = 12,
-  parameter integer FOURIER_CF = 22,
-  parameter integer FOURIER_W = 16,
-  parameter integer FOURIER_G = 2,
-  parameter integer ZERO = 0,
-  parameter integer FOLD = 1
+`include "acore_datapath_params.vh"
+  // The top the parameters are for: 0 = acore_top (pipelined, or folded by FOLD), 1 = the serial
+  // core acore_serial_top (the 1-D polynomial only, without XCENTER, Fourier stage or FOLD).
+  parameter integer SERIAL = 0
 ) ();
+
+`include "acore_derived.vh"
 
   // In the order of DatapathConfig::validate().
   acore_check #(.OK(IN_W >= 8 && IN_W <= 24), .VALUE(IN_W),
@@ -53,15 +35,9 @@ module acore_config_check #(
   acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),
     .MSG("illegal parameter: SCALE_G must be 0..R_SHIFT"))
     SCALE_G_must_be_0_to_R_SHIFT ();
-  acore_check #(.OK(CORRECTION >= 0 && CORRECTION <= 2), .VALUE(CORRECTION),
-    .MSG("illegal parameter: CORRECTION must be 0 (poly), 1 (poly2d) or 2 (none)"))
-    CORRECTION_must_be_0_1_or_2 ();
-  acore_check #(.OK(DEGREE >= 1 && DEGREE <= 7), .VALUE(DEGREE),
-    .MSG("illegal parameter: DEGREE must be 1..7"))
-    DEGREE_must_be_1_to_7 ();
-  acore_check #(.OK(CORRECTION != 1 || DEGREE <= 3), .VALUE(DEGREE),
-    .MSG("illegal parameter: DEGREE must be 1..3 for poly2d (CORRECTION=1)"))
-    DEGREE_must_be_1_to_3_for_poly2d ();
+  // The correction mode: a row of the table, its DEGREE, the tops that build it.
+`include "acore_mode_checks.vh"
+
   acore_check #(.OK(REGIONS == 4 || REGIONS == 8), .VALUE(REGIONS),
     .MSG("illegal parameter: REGIONS must be 4 or 8"))
     REGIONS_must_be_4_or_8 ();
@@ -141,16 +117,20 @@ module acore_config_check #(
     .MSG("illegal parameter: ANGLE_W must be <= REG_W with ZERO = 1 (the zero position is one word)"))
     ANGLE_W_must_fit_a_word_with_ZERO ();
 
-  // The fold factor (acore_top only; the serial core passes 1): poly and none corrections fold.
+  // The fold factor (acore_top; the modes that fold are the table's, above).
   acore_check #(.OK(FOLD == 1 || FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
     .MSG("illegal parameter: FOLD must be 1, 2, 4 or 8"))
     FOLD_must_be_1_2_4_or_8 ();
-  acore_check #(.OK(FOLD == 1 || CORRECTION != 1), .VALUE(FOLD),
-    .MSG("illegal parameter: FOLD must be 1 with poly2d (CORRECTION=1): poly2d is not folded"))
-    FOLD_must_be_1_with_poly2d ();
   acore_check #(.OK(FOLD == 1 || FOURIER_K == 0), .VALUE(FOLD),
     .MSG("illegal parameter: FOLD must be 1 with FOURIER_K > 0: the Fourier correction is not folded"))
     FOLD_must_be_1_with_Fourier ();
+
+  // The serial core (SERIAL = 1): the 1-D polynomial on raw x (its modes are the table's, above),
+  // no Fourier stage, not folded.
+  acore_check #(.OK(SERIAL == 0 || SERIAL == 1), .VALUE(SERIAL),
+    .MSG("illegal parameter: acore_config_check: SERIAL must be 0 (acore_top) or 1 (acore_serial_top)"))
+    SERIAL_must_be_0_or_1 ();
+`include "acore_serial_checks.vh"
 
 endmodule
 

@@ -11,6 +11,11 @@
 // elaboration. The datapath itself multiplies on adders and shifters only; tb/lint/no_multiplier.py
 // proves it on every registered build's netlist (no $mul, $macc, $div, $mod or $pow cell).
 
+// The correction modes (CORRECTION): their constants ACORE_CORR_*, TERMS (acore_terms), the
+// correction stage's latency (acore_correction_latency) and the tops that build each, generated
+// from the model's mode table.
+`include "acore_modes.vh"
+
 // ---- widths ----
 
 // D_W: c1 - c3 (pre-filter difference).
@@ -49,12 +54,7 @@ endfunction
 //   then 2 FOURIER_K + 1 words  Fourier a_0, a_1, b_1, .., a_K, b_K (FOURIER_K > 0)
 //   then the ZERO word          the zero position (ZERO = 1), the last word
 
-// Words per region and curve: DEGREE + 1 (poly, CORRECTION 0), (DEGREE + 1)(DEGREE + 2) / 2
-// (poly2d, 1), none (2).
-function integer acore_terms(input integer f_correction, input integer f_degree);
-  acore_terms = (f_correction == 2) ? 0 :
-                (f_correction == 1) ? ((f_degree + 1) * (f_degree + 2)) / 2 : f_degree + 1;
-endfunction
+// Words per region and curve: acore_terms(CORRECTION, DEGREE) (rtl/acore_modes.vh).
 
 // poly2d: the term of u^i v^j (i + j <= DEGREE), grouped by the power of u: (0,0), (0,1) .. (0,d),
 // (1,0) .., (d,0).
@@ -158,13 +158,7 @@ function integer acore_poly2d_latency(input integer f_degree, input integer f_s_
                          acore_round_sub_sat_latency();
 endfunction
 
-// Stage 4 by CORRECTION (0 poly, 1 poly2d, 2 none).
-function integer acore_correction_latency(input integer f_correction, input integer f_degree,
-                                          input integer f_s_w);
-  acore_correction_latency = (f_correction == 2) ? 0 :
-                             (f_correction == 1) ? acore_poly2d_latency(f_degree, f_s_w) :
-                                                   acore_poly_latency(f_degree, f_s_w);
-endfunction
+// Stage 4 by CORRECTION: acore_correction_latency (rtl/acore_modes.vh), each mode's function above.
 
 // acore_cordic: normalization and pre-rotation (5 clocks with NORM, else 1), K stages (two clocks
 // each with SPLIT), the output rounding. acore_fold_cordic has the same latency (NORM = SPLIT = 0).
@@ -235,7 +229,7 @@ endfunction
 function integer acore_fold_c(input integer f_reg_w, input integer f_s_w,
                               input integer f_correction, input integer f_degree,
                               input integer f_fold);
-  acore_fold_c = acore_fold_r(f_reg_w, f_fold) + ((f_correction == 2) ? 0 :
+  acore_fold_c = acore_fold_r(f_reg_w, f_fold) + ((f_correction == ACORE_CORR_NONE) ? 0 :
                  (f_fold / 2) + acore_fold_poly_latency(f_degree, f_s_w, f_fold / 2));
 endfunction
 // The accepting edge to valid_o, in clocks after it, minus one (v_q[LATENCY]).
@@ -270,12 +264,13 @@ endfunction
 
 // ---- the tops ----
 
-// acore_top builds the folded datapath for a legal folded configuration only (FOLD 2, 4, 8, not
-// poly2d, no Fourier stage); otherwise the pipeline, and acore_config_check stops an illegal one.
+// acore_top builds the folded datapath for a legal folded configuration only (FOLD 2, 4, 8, a
+// mode the table folds, no Fourier stage); otherwise the pipeline, and acore_config_check stops an
+// illegal one.
 function integer acore_folded(input integer f_fold, input integer f_correction,
                               input integer f_fourier_k);
-  acore_folded = ((f_fold == 2 || f_fold == 4 || f_fold == 8) && f_correction != 1 &&
-                  f_fourier_k == 0) ? 1 : 0;
+  acore_folded = ((f_fold == 2 || f_fold == 4 || f_fold == 8) &&
+                  acore_mode_on_folded(f_correction) != 0 && f_fourier_k == 0) ? 1 : 0;
 endfunction
 
 // acore_top's LATENCY: pipelined, the stages in a row; folded, the accepting edge to out_valid_o

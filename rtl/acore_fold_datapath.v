@@ -19,7 +19,7 @@
 //   C + CL  angle, magnitude, and the region and overflow of the sample beside them (valid_o)
 // A sample is a valid bit that travels with it (valid_o); nothing stalls: the top's credit counter
 // never lets more samples in than its output FIFO can hold. No reset but of the valid bits (and
-// of the block RAM delay lines' pointers). CORRECTION = 2 (none): no Horner chain, C = R.
+// of the block RAM delay lines' pointers). CORRECTION = ACORE_CORR_NONE: no Horner chain, C = R.
 `resetall
 `default_nettype none
 
@@ -95,15 +95,15 @@ module acore_fold_datapath #(
   localparam integer ATAN_BASE = acore_addr_atan(TERMS, REGIONS, 0);
   localparam integer H = FOLD / 2;
   localparam integer U = acore_fold_cordic_units(K, FOLD);
-  localparam integer PP = (CORRECTION == 2) ? 0 : acore_fold_poly_ports(DEGREE);
+  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
   localparam integer BLOCKS = FIFO_B + (PP + 3) * BPW;
-  localparam integer SR_B = ((CORRECTION == 2) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
+  localparam integer SR_B = ((CORRECTION == ACORE_CORR_NONE) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer RAM_BLOCKS = acore_hx8k_blocks();
   localparam integer S_RAM = (BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
-  localparam integer U_RAM = (S_RAM != 0 && CORRECTION != 2 && BLOCKS + SR_B + U_B <= RAM_BLOCKS) ? 1 : 0;
+  localparam integer U_RAM = (S_RAM != 0 && CORRECTION != ACORE_CORR_NONE && BLOCKS + SR_B + U_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer FREE_B = RAM_BLOCKS - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
   localparam integer AT_UNITS = (AT_FIT >= U) ? U : AT_FIT;
@@ -116,7 +116,7 @@ module acore_fold_datapath #(
   localparam integer D_W = acore_d_w(IN_W);
   localparam integer F = H;
   localparam integer SL = acore_fold_scaler_latency(REG_W, F);
-  localparam integer PL = (CORRECTION == 2) ? 0 : acore_fold_poly_latency(DEGREE, S_W, F);
+  localparam integer PL = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_latency(DEGREE, S_W, F);
   localparam integer CL = acore_cordic_latency(K, 0, 0);
   localparam integer R = acore_fold_r(REG_W, FOLD);
   localparam integer C = acore_fold_c(REG_W, S_W, CORRECTION, DEGREE, FOLD);
@@ -127,9 +127,11 @@ module acore_fold_datapath #(
   acore_check #(.OK(FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
     .MSG("illegal parameter: acore_fold_datapath: FOLD must be 2, 4 or 8"))
     FOLD_must_be_2_4_or_8 ();
-  acore_check #(.OK(CORRECTION == 0 || CORRECTION == 2), .VALUE(CORRECTION),
-    .MSG("illegal parameter: acore_fold_datapath: CORRECTION must be 0 (poly) or 2 (none): poly2d is not folded"))
-    CORRECTION_must_be_0_or_2 ();
+  // The modes this datapath builds (the table's folded modes, rtl/acore_modes.vh, must be among
+  // them: acore_top picks this datapath by acore_mode_on_folded).
+  acore_check #(.OK(CORRECTION == ACORE_CORR_POLY || CORRECTION == ACORE_CORR_NONE), .VALUE(CORRECTION),
+    .MSG("illegal parameter: acore_fold_datapath: CORRECTION must be poly or none (the folded datapath builds these)"))
+    CORRECTION_must_be_poly_or_none ();
   acore_check #(.OK(ZERO == 0 || ZERO == 1), .VALUE(ZERO),
     .MSG("illegal parameter: acore_fold_datapath: ZERO must be 0 or 1"))
     ZERO_must_be_0_or_1 ();
@@ -214,7 +216,7 @@ module acore_fold_datapath #(
   wire [S_W-1:0] y13, y24;
   wire           pc_ovf;
   generate
-    if (CORRECTION == 2) begin : g_none
+    if (CORRECTION == ACORE_CORR_NONE) begin : g_none
       wire unused_x = ^{x, x_h_q, region_h_q, sc_ovf_h_q};
       assign y13 = s13_r;
       assign y24 = s24_r;

@@ -66,7 +66,7 @@ module acore_fold_poly #(
 `include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer TERMS = acore_terms(0, DEGREE);
+  localparam integer TERMS = acore_terms_poly(DEGREE);
   localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
   localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);
   localparam integer U_SH = S_F - XCENTER;

@@ -55,7 +55,7 @@ module acore_poly2d_correct #(
   input  wire [S_W-1:0]      s24_i,
   input  wire [RG_W-1:0]     region_i,
   // The polynomial words of the map (from word 4: [region][curve][term]), first in the low bits.
-  input  wire [acore_poly_words(acore_terms(1, DEGREE), REGIONS)*REG_W-1:0] coef_i,
+  input  wire [acore_poly_words(acore_terms_poly2d(DEGREE), REGIONS)*REG_W-1:0] coef_i,
   // Corrected curve and "some step saturated".
   output wire [S_W-1:0]      y_o,
   output wire                ovf_o
@@ -64,7 +64,7 @@ module acore_poly2d_correct #(
 `include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer TERMS = acore_terms(1, DEGREE);
+  localparam integer TERMS = acore_terms_poly2d(DEGREE);
   localparam integer COEF_BUS_W = acore_poly_words(TERMS, REGIONS) * REG_W;
   localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
   localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);

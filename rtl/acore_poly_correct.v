@@ -45,7 +45,7 @@ module acore_poly_correct #(
   input  wire [S_W-1:0]      s_i,
   input  wire [RG_W-1:0]     region_i,
   // The polynomial words of the map (from word 4: [region][curve][power]), first in the low bits.
-  input  wire [acore_poly_words(acore_terms(0, DEGREE), REGIONS)*REG_W-1:0] coef_i,
+  input  wire [acore_poly_words(acore_terms_poly(DEGREE), REGIONS)*REG_W-1:0] coef_i,
   // Corrected curve and "some step saturated".
   output wire [S_W-1:0]      y_o,
   output wire                ovf_o
@@ -54,7 +54,7 @@ module acore_poly_correct #(
 `include "acore_derived.vh"
 
   // Derived, do not override.
-  localparam integer TERMS = acore_terms(0, DEGREE);
+  localparam integer TERMS = acore_terms_poly(DEGREE);
   localparam integer COEF_BUS_W = acore_poly_words(TERMS, REGIONS) * REG_W;
   localparam integer ACC_F = acore_acc_f(COEF_F, ACC_G);
   localparam integer ACC_W = acore_acc_w(COEF_F, ACC_G, ACC_I);

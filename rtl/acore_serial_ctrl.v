@@ -163,7 +163,7 @@ module acore_serial_ctrl #(
   localparam integer CNT_N = sc_max(sc_max(REG_W, S_W), K);
   localparam integer CNT_W = $clog2(CNT_N);
   localparam integer J_W = (DEGREE > 1) ? $clog2(DEGREE) : 1;
-  localparam integer TERMS = acore_terms(0, DEGREE);
+  localparam integer TERMS = acore_terms_poly(DEGREE);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(BI_W <= CNT_W), .VALUE(BI_W),

@@ -44,36 +44,19 @@
 `default_nettype none
 
 module acore_serial_top #(
-  // Channel code width, signed.
-  parameter integer IN_W = 16,
-  // Register word width.
-  parameter integer REG_W = 18,
-  // Scaled/corrected curve width (signed) and its fraction bits.
-  parameter integer S_W = 18,
-  parameter integer S_F = 16,
-  // Extra scale of the amplitude reciprocal, and guard bits of the scaling product.
-  parameter integer R_SHIFT = 13,
-  parameter integer SCALE_G = 4,
-  // Polynomial degree and number of regions (4 or 8).
-  parameter integer DEGREE = 3,
-  parameter integer REGIONS = 4,
-  // Coefficient fraction bits; Horner accumulator guard and integer bits.
-  parameter integer COEF_F = 15,
-  parameter integer ACC_G = 4,
-  parameter integer ACC_I = 6,
-  // CORDIC iterations, guard bits, angle accumulator width, output angle width.
-  parameter integer K = 16,
-  parameter integer CORDIC_G = 3,
-  parameter integer Z_W = 20,
-  parameter integer ANGLE_W = 16,
-  // 1: one more register word (the last) holding the zero position z, angle_o = angle - z (mod a
-  // turn), one more operation a sample; 0: none (the paper's map).
-  parameter integer ZERO = 0,
+  // The datapath parameters (IN_W .. FOLD; generated from the model's field table, each with its
+  // default and meaning). The serial core is the 1-D polynomial correction on the raw x without
+  // Fourier stage, not folded: acore_config_check stops any other CORRECTION (the mode table's
+  // rows say which tops build a mode), XCENTER, FOURIER_K or FOLD, and the Fourier parameters are
+  // not used otherwise. ZERO = 1: one more register word (the last) holding the zero position z,
+  // angle_o = angle - z (mod a turn), one more operation a sample.
+`include "acore_datapath_params.vh"
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override (rtl/acore_derived.vh).
   parameter integer RG_W = $clog2(REGIONS),
-  parameter integer WORDS = acore_words(acore_terms(0, DEGREE), REGIONS, K, 0, ZERO),
+  // The map of the 1-D polynomial (the only mode the serial core builds) with the ZERO word.
+  parameter integer WORDS = acore_words(acore_terms_poly(DEGREE), REGIONS, K, 0, ZERO),
   parameter integer ADDR_W = $clog2(WORDS),
   parameter integer MAG_W = acore_mag_w(S_W)
 ) (
@@ -143,18 +126,17 @@ module acore_serial_top #(
   localparam integer CYCLES = acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO);
   localparam integer LATENCY = acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO);
 
-  // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v; the serial core
-  // is the 1-D polynomial correction without Fourier stage: those parameters keep their defaults),
-  // and the derived parameters. An illegal configuration stops Verilator, Icarus and Yosys.
+  // Parameter rules: the model's DatapathConfig::validate(DatapathTop::kSerial) (acore_config_check.v
+  // with SERIAL = 1: the serial core's modes and options), and the derived parameters. An illegal
+  // configuration stops Verilator, Icarus and Yosys.
   acore_config_check #(
-    .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
-    .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K),
-    .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W), .ZERO(ZERO)
+`include "acore_datapath_pass.vh"
+    .SERIAL(1)
   ) u_config ();
   acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
     .MSG("illegal parameter: RG_W is derived (clog2(REGIONS)), do not override"))
     RG_W_is_derived ();
-  acore_check #(.OK(WORDS == acore_words(acore_terms(0, DEGREE), REGIONS, K, 0, ZERO)),
+  acore_check #(.OK(WORDS == acore_words(acore_terms_poly(DEGREE), REGIONS, K, 0, ZERO)),
     .VALUE(WORDS),
     .MSG("illegal parameter: WORDS is derived (4 + 2 REGIONS (DEGREE+1) + K + ZERO word), do not override"))
     WORDS_is_derived ();

@@ -11,9 +11,11 @@
 // and one subtractor in the output register: angle_o = (angle - z) mod 2^ANGLE_W, the angle in the
 // reference frame of the calibration (docs/datapath.md "Zero offset"); no extra clock.
 //
-// The correction stage is chosen by CORRECTION: 0 = acore_poly_correct (1-D in x, the paper's),
-// 1 = acore_poly2d_correct (2-D in x and the other curve), 2 = none (the scaled curves go straight
-// to the CORDIC, no coefficient words). LATENCY follows from the stages chosen.
+// The correction stage is chosen by CORRECTION, a mode of the table (rtl/acore_modes.vh, generated
+// from model/ip/core/correction_modes.hpp): ACORE_CORR_POLY = acore_poly_correct (1-D in x, the
+// paper's), ACORE_CORR_POLY2D = acore_poly2d_correct (2-D in x and the other curve),
+// ACORE_CORR_NONE = no stage (the scaled curves go straight to the CORDIC, no coefficient words).
+// LATENCY follows from the stages chosen.
 //
 // Streaming: a sample is taken when in_valid_i && in_ready_o and comes out LATENCY accepted-or-
 // advancing clocks later on out_valid_o. The pipeline stalls as a whole when the output is held
@@ -41,52 +43,18 @@
 `default_nettype none
 
 module acore_top #(
-  // Channel code width, signed.
-  parameter integer IN_W = 16,
-  // Register word width.
-  parameter integer REG_W = 18,
-  // Scaled/corrected curve width (signed) and its fraction bits.
-  parameter integer S_W = 18,
-  parameter integer S_F = 16,
-  // Extra scale of the amplitude reciprocal, and guard bits of the scaling product.
-  parameter integer R_SHIFT = 13,
-  parameter integer SCALE_G = 4,
-  // Correction mode: 0 = poly (1-D), 1 = poly2d (2-D, total degree DEGREE <= 3), 2 = none.
-  parameter integer CORRECTION = 0,
-  // Polynomial degree and number of regions (4 or 8).
-  parameter integer DEGREE = 3,
-  parameter integer REGIONS = 4,
-  // 1 (8 regions only): the polynomials are in u = x -+ 3/8, centred in their half region.
-  parameter integer XCENTER = 0,
-  // Coefficient fraction bits; Horner accumulator guard and integer bits.
-  parameter integer COEF_F = 15,
-  parameter integer ACC_G = 4,
-  parameter integer ACC_I = 6,
-  // CORDIC iterations (= stages), guard bits, angle accumulator width, output angle width.
-  parameter integer K = 16,
-  parameter integer CORDIC_G = 3,
-  parameter integer Z_W = 20,
-  parameter integer ANGLE_W = 16,
-  // Angle-domain Fourier correction after the CORDIC: harmonics (0 = none), rotation stages per
-  // harmonic (<= K), coefficient fraction bits (turns), significant bits of a harmonic's word, guard
-  // bits of the rotations.
-  parameter integer FOURIER_K = 0,
-  parameter integer FOURIER_M = 12,
-  parameter integer FOURIER_CF = 22,
-  parameter integer FOURIER_W = 16,
-  parameter integer FOURIER_G = 2,
-  // Clocks per sample: 1 = one sample per clock (the pipeline below, with a stall enable); 2, 4 or
-  // 8 = the folded datapath (acore_fold_datapath.v: the hardware reused FOLD times per sample, an
-  // output FIFO and credits instead of the stall). The same contract and register map at any FOLD.
-  parameter integer FOLD = 1,
-  // 1: one more register word (the last) holding the zero position, subtracted from the output
-  // angle; 0: none (the paper's map).
-  parameter integer ZERO = 0,
+  // The datapath parameters (IN_W .. FOLD; generated from the model's field table, each with its
+  // default and meaning). FOLD: 1 = one sample per clock (the pipeline below, with a stall
+  // enable); 2, 4 or 8 = the folded datapath (acore_fold_datapath.v: the hardware reused FOLD
+  // times per sample, an output FIFO and credits instead of the stall), the same contract and
+  // register map at any FOLD. ZERO = 1: one more register word (the last) holding the zero
+  // position, subtracted from the output angle.
+`include "acore_datapath_params.vh"
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
   // Derived, do not override (rtl/acore_derived.vh).
   parameter integer RG_W = $clog2(REGIONS),
-  // Coefficients per region and curve: DEGREE + 1 (poly), (DEGREE + 1)(DEGREE + 2) / 2 (poly2d), 0.
+  // Coefficients per region and curve: the mode's (rtl/acore_modes.vh), 0 without a polynomial.
   parameter integer TERMS = acore_terms(CORRECTION, DEGREE),
   // 4 + 2 REGIONS TERMS + K, plus 2 FOURIER_K + 1 Fourier words when FOURIER_K > 0, plus the ZERO
   // word.
@@ -145,11 +113,8 @@ module acore_top #(
   // Parameter rules: the model's DatapathConfig::validate() (acore_config_check.v), and the derived
   // parameters. An illegal configuration stops elaboration in Verilator, Icarus and Yosys.
   acore_config_check #(
-    .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
-    .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
-    .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
-    .FOURIER_K(FOURIER_K), .FOURIER_M(FOURIER_M), .FOURIER_CF(FOURIER_CF), .FOURIER_W(FOURIER_W),
-    .FOURIER_G(FOURIER_G), .ZERO(ZERO), .FOLD(FOLD)
+`include "acore_datapath_pass.vh"
+    .SERIAL(0)
   ) u_config ();
   // (The same functions as the defaults: only an override differs.)
   acore_check #(.OK(RG_W == $clog2(REGIONS)), .VALUE(RG_W),
@@ -234,8 +199,9 @@ module acore_top #(
     // ---- 4: correction (CORRECTION), the polynomial words ----
     wire [S_W-1:0] y13, y24;
     wire pc_ovf13, pc_ovf24;
-    if (CORRECTION == 2) begin : g_none
-      // No polynomial: x is not needed (named unused_* for lint).
+    if (CORRECTION != ACORE_CORR_POLY && CORRECTION != ACORE_CORR_POLY2D) begin : g_none
+      // No polynomial (ACORE_CORR_NONE; a CORRECTION no mode has is built alike, TERMS = 0, and
+      // acore_config_check stops it): x is not needed (named unused_* for lint).
       wire unused_x = ^x;
       assign y13 = s13_r;
       assign y24 = s24_r;
@@ -244,7 +210,7 @@ module acore_top #(
     end else begin : g_coef
       localparam integer COEF_BUS_W = acore_poly_words(TERMS, REGIONS) * REG_W;
       wire [COEF_BUS_W-1:0] coef = words[acore_addr_poly(TERMS, 0, 0, 0) * REG_W +: COEF_BUS_W];
-      if (CORRECTION == 1) begin : g_poly2d
+      if (CORRECTION == ACORE_CORR_POLY2D) begin : g_poly2d
         acore_poly2d_correct #(
           .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER),
           .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0)

@@ -1,3 +1,8 @@
+acore_datapath_params.vh
+acore_datapath_pass.vh
+acore_modes.vh
+acore_mode_checks.vh
+acore_serial_checks.vh
 acore_derived.vh
 acore_apb_regs.vh
 acore_board_regs.vh

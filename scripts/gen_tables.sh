@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Writes every table the model generates for the RTL and the docs, under OUT_ROOT (the repository
-# root to update them, a scratch folder to compare: the CTest gen_tables_current does that):
+# root to update them, a scratch folder to compare: the CTest gen_tables_current compares every
+# file this writes with the repository's):
 #   synth/acore_cordic16_atan.vh     the 16-bit CORDIC's atan table (registry line cordic16)
 #   docs/reports/register_map.md     the coefficient register map, from the codec table
+#   rtl/acore_modes.vh               the correction modes' constants and functions (the mode table)
+#   rtl/acore_mode_checks.vh         the correction modes' parameter rules (the mode table)
+#   docs/reports/correction_modes.md the mode table for the docs
+#   rtl/acore_datapath_params.vh     the datapath parameters' declaration (config_fields())
+#   rtl/acore_datapath_pass.vh       the datapath parameters passed on (config_fields())
 # usage: scripts/gen_tables.sh ACORE_GEN_TABLES [OUT_ROOT]   (OUT_ROOT default: the repository)
 set -euo pipefail
 gen=$1
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${2:-$root}
-mkdir -p "$out/synth" "$out/docs/reports"
+mkdir -p "$out/synth" "$out/docs/reports" "$out/rtl"
 # The cordic16 line's parameters from the registry's one reader, on the generator's command line.
 c16=$(python3 "$root/scripts/registry.py" --root "$root" params cordic16) || exit 2
 # shellcheck disable=SC2086
@@ -27,3 +33,8 @@ c16=$(python3 "$root/scripts/registry.py" --root "$root" params cordic16) || exi
     "$gen" register_map $params
   done
 } >"$out/docs/reports/register_map.md"
+"$gen" rtl_modes >"$out/rtl/acore_modes.vh"
+"$gen" rtl_mode_checks >"$out/rtl/acore_mode_checks.vh"
+"$gen" modes_doc >"$out/docs/reports/correction_modes.md"
+"$gen" rtl_datapath_params >"$out/rtl/acore_datapath_params.vh"
+"$gen" rtl_datapath_pass >"$out/rtl/acore_datapath_pass.vh"

@@ -318,9 +318,25 @@ def module_source(root, module):
     return synth_source(root, module)
 
 
+def with_includes(path, seen=()):
+    """The file's text with each `include "X" replaced by X's text (searched beside the file, then in
+    rtl/: the tops and the pin wrappers declare the datapath parameters with rtl/acore_datapath_params.vh)."""
+    text = open(path).read()
+    rtl = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(path))), "rtl")
+
+    def expand(m):
+        for d in (os.path.dirname(path), rtl):
+            f = os.path.join(d, m.group(1))
+            if os.path.isfile(f) and f not in seen:
+                return with_includes(f, seen + (f,))
+        return ""
+    return re.sub(r'^\s*`include\s+"([^"]+)"', expand, text, flags=re.M)
+
+
 def module_parameter_names(path, module):
-    """The parameter names of a module in a Verilog file (comments stripped; the pin wrappers' check)."""
-    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", open(path).read(), flags=re.S)
+    """The parameter names of a module in a Verilog file (comments stripped, includes read; the pin
+    wrappers' check)."""
+    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", with_includes(path), flags=re.S)
     m = re.search(r"^\s*module\s+%s\b(.*?)\bendmodule\b" % re.escape(module), text, re.M | re.S)
     body = m.group(1) if m else ""
     return set(re.findall(r"\bparameter\s+(?:integer\s+|signed\s+|\[[^\]]*\]\s*)*(\w+)", body))

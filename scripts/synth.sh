@@ -68,8 +68,9 @@ while IFS=$'\t' read -r kind target d out net top src synth params; do
   fi
   reads=$rtl_reads
   # (synth/acore_cordic16.v includes synth/acore_cordic16_atan.vh, written from the model by
-  # acore_gen_tables and checked by the CTest gen_tables_current.)
-  [ "$src" = - ] || reads+="read_verilog -sv -I$syn $src"$'\n'
+  # acore_gen_tables and checked by the CTest gen_tables_current; the pin wrappers include the
+  # datapath parameters' declaration and pass-on list of rtl/, generated alike.)
+  [ "$src" = - ] || reads+="read_verilog -sv -I$syn -I$root/rtl $src"$'\n'
   if [ -n "$params" ]; then
     chp=chparam
     for p in $params; do chp+=" -set ${p%%=*} ${p#*=}"; done

@@ -9,14 +9,11 @@
 
 module acore_apb_pinwrap #(
   // 0: around acore_top (with the default correction it does not fit an HX8K); 1: around the
-  // serial core. The defaults are acore_apb's: a registry line's parameters mean the same here.
+  // serial core. The datapath parameters and the power-up register image, passed to the shell (a
+  // registry line's parameters mean the same here); the port widths follow them.
   parameter integer SERIAL = 0,
-  // acore_top's correction mode (2 = none: a pipelined top that fits, to time the shell beside it).
-  parameter integer CORRECTION = 0,
-  // acore_top's fold factor (2: the default configuration folded, which fits an HX8K) and the ZERO
-  // word, passed to the shell.
-  parameter integer FOLD = 1,
-  parameter integer ZERO = 0
+`include "acore_datapath_params.vh"
+  parameter INIT_FILE = ""
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -36,8 +33,8 @@ module acore_apb_pinwrap #(
   output wire        in_ready_o,
   output wire        out_valid_o,
   input  wire        out_ready_i,
-  output wire [15:0] angle_o,
-  output wire [1:0]  region_o,
+  output wire [ANGLE_W-1:0] angle_o,
+  output wire [$clog2(REGIONS)-1:0] region_o,
   output wire        ovf_o,
   output wire        los_o,
   output wire        dos_o,
@@ -63,14 +60,18 @@ module acore_apb_pinwrap #(
   end
 
   // c1..c4.
-  reg [63:0] sr_q;
-  always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[62:0], sdi_i};
+  reg [4*IN_W-1:0] sr_q;
+  always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[4*IN_W-2:0], sdi_i};
 
-  acore_apb #(.SERIAL(SERIAL), .CORRECTION(CORRECTION), .FOLD(FOLD), .ZERO(ZERO)) u_shell (
+  acore_apb #(
+`include "acore_datapath_pass.vh"
+    .SERIAL(SERIAL), .INIT_FILE(INIT_FILE)
+  ) u_shell (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_q), .penable_i(penable_q), .pwrite_i(pwrite_q),
     .paddr_i(paddr_q), .pwdata_i(pwdata_q), .pstrb_i(pstrb_q), .prdata_o(prdata), .pready_o(pready),
     .pslverr_o(pslverr), .irq_o(irq_o), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),
-    .c1_i(sr_q[15:0]), .c2_i(sr_q[31:16]), .c3_i(sr_q[47:32]), .c4_i(sr_q[63:48]),
+    .c1_i(sr_q[0 +: IN_W]), .c2_i(sr_q[IN_W +: IN_W]), .c3_i(sr_q[2*IN_W +: IN_W]),
+    .c4_i(sr_q[3*IN_W +: IN_W]),
     .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle_o), .region_o(region_o),
     .ovf_o(ovf_o), .los_o(los_o), .dos_o(dos_o), .out_tag_o(out_tag_o));
 

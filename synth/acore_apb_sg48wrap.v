@@ -10,11 +10,11 @@
 `default_nettype none
 
 module acore_apb_sg48wrap #(
-  // The defaults are acore_apb's: a registry line's parameters mean the same here.
+  // The shell's top (acore_apb's SERIAL), the datapath parameters and the power-up register image
+  // (a registry line's parameters mean the same here); the shift registers' widths follow them.
   parameter integer SERIAL = 0,
-  parameter integer CORRECTION = 0,
-  parameter integer FOLD = 1,
-  parameter integer ZERO = 0
+`include "acore_datapath_params.vh"
+  parameter INIT_FILE = ""
 ) (
   input  wire clk_i,
   input  wire rst_i,
@@ -34,8 +34,9 @@ module acore_apb_sg48wrap #(
   output wire sdo_o
 );
 
-  // paddr (12), pwdata (32), pstrb (4), c1..c4 (4 x 16).
-  localparam integer SI_W = 12 + 32 + 4 + 64;
+  // paddr (12), pwdata (32), pstrb (4), c1..c4 (4 x IN_W).
+  localparam integer SI_W = 12 + 32 + 4 + 4 * IN_W;
+  localparam integer RG_W = $clog2(REGIONS);
   reg [SI_W-1:0] si_q;
   always @(posedge clk_i) if (shift_i) si_q <= {si_q[SI_W-2:0], sdi_i};
 
@@ -50,19 +51,22 @@ module acore_apb_sg48wrap #(
     pslverr_o <= pslverr;
   end
 
-  wire [15:0] angle;
-  wire [1:0] region;
+  wire [ANGLE_W-1:0] angle;
+  wire [RG_W-1:0] region;
   wire ovf, los, dos, tag;
-  acore_apb #(.SERIAL(SERIAL), .CORRECTION(CORRECTION), .FOLD(FOLD), .ZERO(ZERO)) u_shell (
+  acore_apb #(
+`include "acore_datapath_pass.vh"
+    .SERIAL(SERIAL), .INIT_FILE(INIT_FILE)
+  ) u_shell (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_q), .penable_i(penable_q), .pwrite_i(pwrite_q),
     .paddr_i(si_q[11:0]), .pwdata_i(si_q[43:12]), .pstrb_i(si_q[47:44]), .prdata_o(prdata),
     .pready_o(pready), .pslverr_o(pslverr), .irq_o(irq_o), .in_valid_i(in_valid_i),
-    .in_ready_o(in_ready_o), .c1_i(si_q[63:48]), .c2_i(si_q[79:64]), .c3_i(si_q[95:80]),
-    .c4_i(si_q[111:96]), .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle),
+    .in_ready_o(in_ready_o), .c1_i(si_q[48 +: IN_W]), .c2_i(si_q[48+IN_W +: IN_W]),
+    .c3_i(si_q[48+2*IN_W +: IN_W]), .c4_i(si_q[48+3*IN_W +: IN_W]), .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle),
     .region_o(region), .ovf_o(ovf), .los_o(los), .dos_o(dos), .out_tag_o(tag));
 
   // Read data and results: captured, then shifted out msb first.
-  localparam integer SO_W = 32 + 16 + 2 + 4;
+  localparam integer SO_W = 32 + ANGLE_W + RG_W + 4;
   reg [SO_W-1:0] so_q;
   always @(posedge clk_i) begin
     if (cap_i) so_q <= {prdata, angle, region, ovf, los, dos, tag};

@@ -9,11 +9,11 @@
 `default_nettype none
 
 module acore_board_pinwrap #(
-  // The estimator (acore_board's defaults: a registry line's parameters mean the same here).
+  // The estimator's top (acore_board's SERIAL), its datapath parameters and power-up register
+  // image (a registry line's parameters mean the same here); the port widths follow them.
   parameter integer SERIAL = 0,
-  parameter integer CORRECTION = 0,
-  parameter integer FOLD = 1,
-  parameter integer ZERO = 0
+`include "acore_datapath_params.vh"
+  parameter INIT_FILE = ""
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -32,7 +32,7 @@ module acore_board_pinwrap #(
   input  wire        in_valid_i,
   output wire        in_ready_o,
   output wire        out_valid_o,
-  output wire [15:0] angle_o,
+  output wire [ANGLE_W-1:0] angle_o,
   output wire        los_o,
   output wire        dos_o,
   output wire        a_o,
@@ -67,14 +67,18 @@ module acore_board_pinwrap #(
   end
 
   // c1..c4.
-  reg [63:0] sr_q;
-  always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[62:0], sdi_i};
+  reg [4*IN_W-1:0] sr_q;
+  always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[4*IN_W-2:0], sdi_i};
 
-  acore_board #(.SERIAL(SERIAL), .CORRECTION(CORRECTION), .FOLD(FOLD), .ZERO(ZERO)) u_board (
+  acore_board #(
+`include "acore_datapath_pass.vh"
+    .SERIAL(SERIAL), .INIT_FILE(INIT_FILE)
+  ) u_board (
     .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_q), .penable_i(penable_q), .pwrite_i(pwrite_q),
     .paddr_i(paddr_q), .pwdata_i(pwdata_q), .pstrb_i(pstrb_q), .prdata_o(prdata), .pready_o(pready),
     .pslverr_o(pslverr), .irq_o(irq_o), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),
-    .c1_i(sr_q[15:0]), .c2_i(sr_q[31:16]), .c3_i(sr_q[47:32]), .c4_i(sr_q[63:48]),
+    .c1_i(sr_q[0 +: IN_W]), .c2_i(sr_q[IN_W +: IN_W]), .c3_i(sr_q[2*IN_W +: IN_W]),
+    .c4_i(sr_q[3*IN_W +: IN_W]),
     .out_valid_o(out_valid_o), .angle_o(angle_o), .los_o(los_o), .dos_o(dos_o),
     .a_o(a_o), .b_o(b_o), .z_o(z_o), .u_o(u_o), .v_o(v_o), .w_o(w_o),
     .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o), .miso_oe_o(miso_oe_o));

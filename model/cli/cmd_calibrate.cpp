@@ -3,13 +3,17 @@
 // image.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "calibration/calibrate_options.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "core/correction_modes.hpp"
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
 
@@ -68,13 +72,22 @@ void add_calibrate(CLI::App& app) {
                 "spaced samples)")
       ->required();
   c->add_option("--out", args->out, "Register image to write ($readmemh)")->required();
-  c->add_option(
-       "--correction", args->spec.correction,
-       "poly (1-D in x, the paper's), poly2d (2-D in x and the other curve), none (no correction)")
-      ->check(CLI::IsMember({"poly", "poly2d", "none"}));
-  c->add_option("--degree", args->spec.degree,
-                "Polynomial degree n (poly: 1..7; poly2d: total degree 1..3)")
-      ->check(CLI::Range(1, 7));
+  // The modes, their meanings and degree limits: the table's rows (core/correction_modes.hpp).
+  std::vector<std::string> names;
+  std::string modes_help, degree_help;
+  int degree_lo = 1000, degree_hi = 0;
+  for (const acore::CorrectionMode& m : acore::correction_modes()) {
+    names.emplace_back(m.name);
+    modes_help += fmt::format("{}{}: {}", modes_help.empty() ? "" : "; ", m.name, m.meaning);
+    if (*m.degree_word())
+      degree_help += fmt::format("{}{}: {} {}..{}", degree_help.empty() ? "" : "; ", m.name,
+                                 m.degree_word(), m.degree_min, m.degree_max);
+    degree_lo = std::min(degree_lo, m.degree_min);
+    degree_hi = std::max(degree_hi, m.degree_max);
+  }
+  c->add_option("--correction", args->spec.correction, modes_help)->check(CLI::IsMember(names));
+  c->add_option("--degree", args->spec.degree, "Polynomial degree (" + degree_help + ")")
+      ->check(CLI::Range(degree_lo, degree_hi));
   c->add_option("--regions", args->spec.regions, "Correction regions (4 or 8)")
       ->check(CLI::IsMember({4, 8}));
   c->add_flag("--xcenter", args->spec.xcenter,

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // acore_stream_formal: the formal harness of the estimator's streaming contract (yosys-smtbmc,
 // driven by tb/formal/run.py). It wraps acore_top (SERIAL = 0, pipelined or folded by FOLD) or
-// acore_serial_top (SERIAL = 1) with their parameters set by the driver (chparam), drives every
+// acore_serial_top (SERIAL = 1) and passes them its datapath parameters (set by the driver with
+// chparam), drives every
 // input freely (reset high in the first clock) and checks the ports against the modules' headers:
 //
 //   reset     in_ready_o is low while rst_i is high; out_valid_o is low the clock after a reset.
@@ -21,15 +22,15 @@
 `default_nettype none
 
 module acore_stream_formal #(
+  // The datapath parameters, passed on to the top (IN_W .. FOLD: the registry line's, set by the
+  // driver; FOLD also selects the properties below).
+`include "acore_datapath_params.vh"
   parameter integer SERIAL = 0,
-  parameter integer FOLD = 1,
+  // The top's constants as it elaborates them (the driver reads them from the RTL).
   parameter integer LATENCY = 8,
   parameter integer CAP = 8,
   parameter integer BOUND = 8,
   parameter integer ADDR_W = 6,
-  parameter integer REG_W = 18,
-  parameter integer IN_W = 16,
-  parameter integer ANGLE_W = 16,
   parameter integer RG_W = 2,
   parameter integer MAG_W = 20,
   // 1: the timer properties (lost, latency), closed by a bound of LATENCY + 8 clocks; 0: left out
@@ -62,14 +63,20 @@ module acore_stream_formal #(
 
   generate
     if (SERIAL != 0) begin : g_serial
-      acore_serial_top dut (
+      acore_serial_top #(
+`include "acore_datapath_pass.vh"
+        .INIT_FILE("")
+      ) dut (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
         .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i),
         .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
         .c4_i(c4_i), .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle_o),
         .region_o(region_o), .ovf_o(ovf_o), .los_o(los_o), .dos_o(dos_o));
     end else begin : g_top
-      acore_top dut (
+      acore_top #(
+`include "acore_datapath_pass.vh"
+        .INIT_FILE("")
+      ) dut (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
         .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i),
         .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),

@@ -101,9 +101,10 @@ def stream_setup(line):
     # Clocks a sample may wait with the output free: its latency (the serial core: two clocks more,
     # a host write landing on each of its two scratch-word writes delays it by one).
     bound = lat + 2 if serial else lat
-    h = {"SERIAL": int(serial), "FOLD": fold, "LATENCY": lat, "CAP": shell["CAPACITY"], "BOUND": bound,
-         "ADDR_W": c["ADDR_W"], "REG_W": c["REG_W"], "IN_W": c["IN_W"], "ANGLE_W": c["ANGLE_W"],
-         "RG_W": c["RG_W"], "MAG_W": c["MAG_W"]}
+    # The line's datapath parameters go to the harness, which passes them on to the top.
+    h = dict(params)
+    h.update({"SERIAL": int(serial), "LATENCY": lat, "CAP": shell["CAPACITY"], "BOUND": bound,
+              "ADDR_W": c["ADDR_W"], "RG_W": c["RG_W"], "MAG_W": c["MAG_W"]})
     taps = []
     if not serial and fold == 1:
         taps.append(("g_ref.tap_vld", "g_top.dut.g_pipe.vld_q"))
@@ -196,8 +197,9 @@ def main(argv):
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
                 raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
-            line_module, line_params = line.module, line.params
             if line.module in ("acore_top", "acore_serial_top"):
+                # (the harness takes the line's parameters and passes them on: hparams holds them)
+                line_module, line_params = line.module, []
                 harness, top, hparams, cut, taps, bmc_depth, prove_depth = stream_setup(line)
             else:
                 raise registry.RegistryError(f"{line.where}: no formal harness for module {line.module}")

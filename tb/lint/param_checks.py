@@ -10,7 +10,7 @@
       must pass all three (the control), and so must the APB shell's.
   param_checks.py agree --validator BIN [--root DIR] [--jobs N] [--sets N] [--seed S]
       N random parameter sets around the limits (half for each top), each judged by
-      `verilator --lint-only -Wall` and by the model's DatapathConfig::validate() (BIN is
+      `verilator --lint-only -Wall` and by the model's DatapathConfig::validate() for that top (BIN is
       build/tb/acore_validate_params): 0 accepted by the RTL but rejected by the model, 0 the other
       way, and both verdicts must occur (at least a quarter each).
 
@@ -63,10 +63,11 @@ def yosys(root, top, params):
 
 
 def rule_messages(root):
-    """(module, rule instance) -> the MSG of that acore_check, from the RTL sources."""
+    """(module, rule instance) -> the MSG of that acore_check, from the RTL sources (with the files
+    they include: the mode table's rules are generated into rtl/acore_mode_checks.vh)."""
     msgs = {}
     for f in rtl_files(root):
-        text = open(os.path.join(root, "rtl", f)).read()
+        text = registry.with_includes(os.path.join(root, "rtl", f))
         mod = re.search(r"^module (\w+)", text, re.M).group(1)
         for m in re.finditer(r'\.MSG\("([^"]*)"\)\)\s*(\w+) \(\);', text):
             msgs[(mod, m.group(2))] = m.group(1)
@@ -216,7 +217,8 @@ def random_sets(root, n, seed):
 
 def agree(args):
     sets = random_sets(args.root, args.sets, args.seed)
-    lines = "".join(" ".join(f"{k}={v}" for k, v in p) + "\n" for _, p in sets)
+    # One set a line, the top first: the model judges each for its top (validate(DatapathTop)).
+    lines = "".join(" ".join([t] + [f"{k}={v}" for k, v in p]) + "\n" for t, p in sets)
     v = subprocess.run([args.validator], input=lines, stdout=subprocess.PIPE, text=True)
     if v.returncode != 0:
         print(f"param_checks: {args.validator} failed (exit {v.returncode})")

@@ -72,7 +72,7 @@ check angle20 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/a20.hex" --angl
 expect_text angle20-reg-w "$tmp/a20.hex" "// acore: reg_w=22"
 expect_text angle20-atan "$tmp/a20.hex" "atan(2^-19)"
 check poly2d-degree4 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --correction poly2d --degree 4
-expect_text poly2d-degree4-msg "$tmp/err" "poly2d takes a total degree of 1..3"
+expect_text poly2d-degree4-msg "$tmp/err" "--degree 4: not in 1..3 (the total degree of poly2d)"
 check xcenter-4regions 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --xcenter
 expect_text xcenter-4regions-msg "$tmp/err" "--xcenter needs --regions 8"
 check bad-angle-w 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --angle-w 17

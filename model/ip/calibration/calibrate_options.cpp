@@ -36,8 +36,12 @@ void parse_zero_offset(const std::string& v, CalOptions* opt) {
 }  // namespace
 
 void CalibrateSpec::validate() const {
-  parse_correction(correction);
-  check_range("--degree", degree, 1, 7);
+  // The mode's row: its name, and its legal degree (core/correction_modes.hpp).
+  const CorrectionMode& mode = correction_mode(correction);
+  if (degree < mode.degree_min || degree > mode.degree_max)
+    throw InputError(fmt::format("--degree {}: not in {}..{} (the {} of {})", degree,
+                                 mode.degree_min, mode.degree_max,
+                                 *mode.degree_word() ? mode.degree_word() : "degree", mode.name));
   if (regions != 4 && regions != 8)
     throw InputError(fmt::format("--regions {}: not one of 4, 8", regions));
   if (iterations) check_range("--iterations", *iterations, 4, 24);
@@ -50,8 +54,6 @@ void CalibrateSpec::validate() const {
   check_range("--fourier", fourier, 0, 31);
   check_range("--fourier-iterations", fourier_iterations, 4, 24);
   check_range("--fourier-guard", fourier_guard, 0, 8);
-  if (correction == "poly2d" && degree > 3)
-    throw InputError(fmt::format("--degree {}: poly2d takes a total degree of 1..3", degree));
   if (xcenter && regions != 8) throw InputError("--xcenter needs --regions 8");
   if (reference != "theta_ref" && reference != "none")
     throw InputError("--reference " + reference + ": not one of theta_ref, none");

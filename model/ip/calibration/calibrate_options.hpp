@@ -18,8 +18,8 @@ namespace acore {
 // are the command's. Unset optionals take the --angle-w preset's value (iterations) or the
 // automatic choice (coef_frac, in_scale = 0, periodicity = 0: the recording's `# p=`).
 struct CalibrateSpec {
-  std::string correction = "poly";  // poly | poly2d | none
-  int degree = 3;                   // poly: 1..7; poly2d: total degree 1..3
+  std::string correction = "poly";  // a mode's name (core/correction_modes.hpp)
+  int degree = 3;                   // the mode's (total) degree, its limits in its row
   int regions = 4;                  // 4 or 8
   bool xcenter = false;             // 8 regions only
   std::optional<int> iterations;    // CORDIC iterations 4..24

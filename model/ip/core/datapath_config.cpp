@@ -10,36 +10,16 @@
 
 namespace acore {
 
-const char* correction_name(int correction) {
-  switch (correction) {
-    case kPoly:
-      return "poly";
-    case kPoly2d:
-      return "poly2d";
-    case kNone:
-      return "none";
-  }
-  return "?";
+std::string correction_name(int correction) {
+  const CorrectionMode* m = find_correction_mode(correction);
+  return m ? m->name : std::to_string(correction);
 }
 
-int parse_correction(const std::string& name) {
-  for (int c : {kPoly, kPoly2d, kNone})
-    if (name == correction_name(c)) return c;
-  throw InputError("correction '" + name + "' is not one of poly, poly2d, none");
-}
+int parse_correction(const std::string& name) { return correction_mode(name).id; }
 
-int DatapathConfig::coef_per_curve() const {
-  switch (correction) {
-    case kPoly:
-      return degree + 1;
-    case kPoly2d:
-      return (degree + 1) * (degree + 2) / 2;
-    default:
-      return 0;
-  }
-}
+int DatapathConfig::coef_per_curve() const { return correction_mode(correction).terms(degree); }
 
-void DatapathConfig::validate() const {
+void DatapathConfig::validate(DatapathTop top) const {
   auto need = [](bool ok, const std::string& why) {
     if (!ok) throw InputError("datapath configuration: " + why);
   };
@@ -49,11 +29,13 @@ void DatapathConfig::validate() const {
   need(s_w >= s_f + 2 && s_w <= 30, fmt::format("s_w={} must be s_f+2..30 (s_f={})", s_w, s_f));
   need(r_shift >= 0 && r_shift <= 30 && scale_guard >= 0 && scale_guard <= r_shift,
        fmt::format("need 0 <= scale_guard={} <= r_shift={} <= 30", scale_guard, r_shift));
-  need(correction >= kPoly && correction <= kNone,
-       fmt::format("correction={} must be 0 (poly), 1 (poly2d) or 2 (none)", correction));
-  need(degree >= 1 && degree <= 7, fmt::format("degree={} must be 1..7", degree));
-  need(correction != kPoly2d || degree <= 3,
-       fmt::format("degree={} must be 1..3 for poly2d", degree));
+  // The mode's row: its limits, and the engines that build it (core/correction_modes.hpp).
+  const CorrectionMode* mode = find_correction_mode(correction);
+  need(mode != nullptr,
+       fmt::format("correction={} must be {}", correction, correction_mode_list()));
+  need(degree >= mode->degree_min && degree <= mode->degree_max,
+       fmt::format("degree={} must be {}..{} for {}", degree, mode->degree_min, mode->degree_max,
+                   mode->name));
   need(regions == 4 || regions == 8, fmt::format("regions={} must be 4 or 8", regions));
   need(xcenter == 0 || (xcenter == 1 && regions == 8),
        fmt::format("xcenter={} must be 0, or 1 with 8 regions (regions={})", xcenter, regions));
@@ -82,8 +64,21 @@ void DatapathConfig::validate() const {
                                                    angle_w, reg_w));
   need(fold == 1 || fold == 2 || fold == 4 || fold == 8,
        fmt::format("fold={} must be 1, 2, 4 or 8", fold));
-  need(fold == 1 || correction != kPoly2d,
-       fmt::format("fold={}: the poly2d correction is not folded", fold));
+  need(fold == 1 || mode->runs_on(kEngineFolded),
+       fmt::format("fold={}: the {} correction is not folded", fold, mode->name));
+  need(fold != 1 || top != DatapathTop::kTop || mode->runs_on(kEnginePipelined),
+       fmt::format("correction={}: the pipelined top does not build {} (it builds {})", correction,
+                   mode->name, correction_mode_list(kEnginePipelined)));
+  if (top == DatapathTop::kSerial) {
+    need(mode->runs_on(kEngineSerial),
+         fmt::format("correction={}: the serial core does not build {} (it builds {})", correction,
+                     mode->name, correction_mode_list(kEngineSerial)));
+    need(xcenter == 0,
+         fmt::format("xcenter={}: the serial core has no centred arguments", xcenter));
+    need(fourier_k == 0,
+         fmt::format("fourier_k={}: the serial core has no Fourier correction", fourier_k));
+    need(fold == 1, fmt::format("fold={}: the serial core is not folded", fold));
+  }
   need(
       fold == 1 || fourier_k == 0,
       fmt::format("fold={}: the Fourier correction (fourier_k={}) is not folded", fold, fourier_k));
@@ -141,31 +136,52 @@ const std::vector<ConfigField>& config_fields() {
   using D = DatapathConfig;
   using S = FieldShown;
   static const std::vector<ConfigField> t = {
-      {&D::in_w, "IN_W", "in_w", S::kAlways, true},
-      {&D::reg_w, "REG_W", "reg_w", S::kAlways, true},
-      {&D::s_w, "S_W", "s_w", S::kAlways, true},
-      {&D::s_f, "S_F", "s_f", S::kAlways, true},
-      {&D::r_shift, "R_SHIFT", "r_shift", S::kAlways, true},
-      {&D::scale_guard, "SCALE_G", "scale_guard", S::kAlways, true},
-      {&D::correction, "CORRECTION", "correction", S::kAlways, true, correction_name,
+      {&D::in_w, "IN_W", "in_w", S::kAlways, true, "Channel code width, signed."},
+      {&D::reg_w, "REG_W", "reg_w", S::kAlways, true, "Register word width."},
+      {&D::s_w, "S_W", "s_w", S::kAlways, true, "Scaled and corrected curve width, signed."},
+      {&D::s_f, "S_F", "s_f", S::kAlways, true,
+       "Fraction bits of the scaled curves (1.0 = 2^S_F)."},
+      {&D::r_shift, "R_SHIFT", "r_shift", S::kAlways, true,
+       "Extra scale of the amplitude reciprocal, R = round(2^(S_F + R_SHIFT) / A)."},
+      {&D::scale_guard, "SCALE_G", "scale_guard", S::kAlways, true,
+       "Guard fraction bits of the scaling product."},
+      {&D::correction, "CORRECTION", "correction", S::kAlways, true,
+       "Correction mode, a row of the mode table (rtl/acore_modes.vh).", correction_name,
        parse_correction},
-      {&D::degree, "DEGREE", "degree", S::kAlways, true},
-      {&D::regions, "REGIONS", "regions", S::kAlways, true},
-      {&D::xcenter, "XCENTER", "xcenter", S::kAlways, true},
-      {&D::coef_f, "COEF_F", "coef_f", S::kAlways, true},
-      {&D::acc_guard, "ACC_G", "acc_guard", S::kAlways, true},
-      {&D::acc_int, "ACC_I", "acc_int", S::kAlways, true},
-      {&D::iterations, "K", "iterations", S::kAlways, true},
-      {&D::cordic_guard, "CORDIC_G", "cordic_guard", S::kAlways, true},
-      {&D::z_w, "Z_W", "z_w", S::kAlways, true},
-      {&D::angle_w, "ANGLE_W", "angle_w", S::kAlways, true},
-      {&D::fourier_k, "FOURIER_K", "fourier_k", S::kWithFourier, true},
-      {&D::fourier_iterations, "FOURIER_M", "fourier_iterations", S::kWithFourier, true},
-      {&D::fourier_coef_f, "FOURIER_CF", "fourier_coef_f", S::kWithFourier, true},
-      {&D::fourier_word_w, "FOURIER_W", "fourier_word_w", S::kWithFourier, true},
-      {&D::fourier_guard, "FOURIER_G", "fourier_guard", S::kWithFourier, true},
-      {&D::zero_word, "ZERO", "zero_word", S::kWhenOne, true},
-      {&D::fold, "FOLD", "fold", S::kWhenNotOne, false},
+      {&D::degree, "DEGREE", "degree", S::kAlways, true,
+       "Polynomial degree of the correction (the total degree for two arguments)."},
+      {&D::regions, "REGIONS", "regions", S::kAlways, true,
+       "Regions of the domain selection, 4 or 8."},
+      {&D::xcenter, "XCENTER", "xcenter", S::kAlways, true,
+       "1 (8 regions only): the polynomials are in u = 2 (x -+ 3/8), centred in their half "
+       "region."},
+      {&D::coef_f, "COEF_F", "coef_f", S::kAlways, true,
+       "Fraction bits of a polynomial coefficient (a signed REG_W-bit word)."},
+      {&D::acc_guard, "ACC_G", "acc_guard", S::kAlways, true,
+       "Guard fraction bits of the Horner accumulator."},
+      {&D::acc_int, "ACC_I", "acc_int", S::kAlways, true,
+       "Integer bits (with the sign) of the Horner accumulator."},
+      {&D::iterations, "K", "iterations", S::kAlways, true, "CORDIC iterations (= stages)."},
+      {&D::cordic_guard, "CORDIC_G", "cordic_guard", S::kAlways, true,
+       "Guard fraction bits of the CORDIC's X/Y registers."},
+      {&D::z_w, "Z_W", "z_w", S::kAlways, true,
+       "CORDIC angle accumulator width, one turn = 2^Z_W."},
+      {&D::angle_w, "ANGLE_W", "angle_w", S::kAlways, true,
+       "Output angle width, unsigned, one turn = 2^ANGLE_W."},
+      {&D::fourier_k, "FOURIER_K", "fourier_k", S::kWithFourier, true,
+       "Harmonics of the Fourier correction after the CORDIC (0 = no stage, no words)."},
+      {&D::fourier_iterations, "FOURIER_M", "fourier_iterations", S::kWithFourier, true,
+       "Rotation-CORDIC stages per harmonic (<= K)."},
+      {&D::fourier_coef_f, "FOURIER_CF", "fourier_coef_f", S::kWithFourier, true,
+       "Fraction bits of a Fourier coefficient, in turns."},
+      {&D::fourier_word_w, "FOURIER_W", "fourier_word_w", S::kWithFourier, true,
+       "Significant bits of a harmonic's word, signed."},
+      {&D::fourier_guard, "FOURIER_G", "fourier_guard", S::kWithFourier, true,
+       "Guard fraction bits of the Fourier rotations."},
+      {&D::zero_word, "ZERO", "zero_word", S::kWhenOne, true,
+       "1: one more register word (the last), the zero position, subtracted from the angle."},
+      {&D::fold, "FOLD", "fold", S::kWhenNotOne, false,
+       "Clocks per sample of acore_top: 1 pipelined, 2, 4 or 8 folded (the serial core: 1)."},
   };
   return t;
 }

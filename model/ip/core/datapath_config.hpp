@@ -7,14 +7,19 @@
 #include <utility>
 #include <vector>
 
+#include "core/correction_modes.hpp"
+
 namespace acore {
 
-// The correction modes (RTL parameter CORRECTION, image header `correction=poly|poly2d|none`).
-constexpr int kPoly = 0;    // y = s - P(x), P of degree n (paper Eq. 6)
-constexpr int kPoly2d = 1;  // y = s - P(x, v), total degree d, v = 4 (y_other - sign(y_other))
-constexpr int kNone = 2;    // y = s: no polynomial words, the scaled curves go to the CORDIC
-const char* correction_name(int correction);
+// The correction modes (RTL parameter CORRECTION, image header `correction=poly|poly2d|none`):
+// the rows of core/correction_modes.hpp, which also defines their constants kPoly, kPoly2d, kNone.
+// The name of a mode's ID ("7" for an ID no row has: describe() shows what it was given).
+std::string correction_name(int correction);
 int parse_correction(const std::string& name);  // throws InputError
+
+// Which RTL top a configuration is for: acore_top (pipelined, or folded by FOLD) or the serial
+// core, which builds fewer of the modes and options (validate()).
+enum class DatapathTop { kTop, kSerial };
 
 // poly2d: the second argument v is the other curve's distance from the region's centre +-1, read
 // by the multiplier as 2^kVShift v (a shift of its partial products), so that its range
@@ -32,8 +37,8 @@ struct DatapathConfig {
   int r_shift = 13;     // R_SHIFT: extra scale of the amplitude reciprocal R
   int scale_guard = 4;  // SCALE_G: guard fraction bits kept in the shift-add product
   // --- domain selection and correction ---
-  int correction = 0;  // CORRECTION: kPoly (1-D in x), kPoly2d (2-D in x and v), kNone (no words)
-  int degree = 3;      // DEGREE: polynomial degree n (poly: 1..7), total degree d (poly2d: 1..3)
+  int correction = 0;  // CORRECTION: a mode of core/correction_modes.hpp (kPoly, kPoly2d, kNone)
+  int degree = 3;      // DEGREE: the mode's (total) degree, its limits in its row
   int regions = 4;     // REGIONS: 4 or 8
   int xcenter = 0;     // XCENTER (8 regions): polynomials in u = 2 (x -+ 3/8)
   int coef_f = 15;     // COEF_F: fraction bits of a polynomial coefficient (REG_W wide, signed)
@@ -59,7 +64,7 @@ struct DatapathConfig {
   int zero_word = 0;
   // --- RTL schedule (not the arithmetic: the model and the register image do not depend on it) ---
   // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock), 2, 4 or 8
-  // (folded: the hardware reused FOLD times per sample; poly and none corrections only).
+  // (folded: the hardware reused FOLD times per sample; the modes whose row says so).
   int fold = 1;
 
   // Derived, do not set.
@@ -67,7 +72,8 @@ struct DatapathConfig {
   int t_w() const { return d_w() + 1; }             // T_W: d - O
   int acc_f() const { return coef_f + acc_guard; }  // ACC_F
   int acc_w() const { return acc_f() + acc_int; }   // ACC_W
-  // Coefficients per region and curve: n + 1 (poly), (d + 1)(d + 2) / 2 (poly2d), 0 (none).
+  // Coefficients per region and curve: the mode's terms (correction_modes.hpp); throws
+  // InputError for an ID no row has.
   int coef_per_curve() const;
   int poly_words() const { return 2 * regions * coef_per_curve(); }
   int fourier_words() const { return fourier_k > 0 ? 2 * fourier_k + 1 : 0; }
@@ -98,8 +104,10 @@ struct DatapathConfig {
   // The ZERO word: the last word of the map (after the atan words and the Fourier words).
   int addr_zero() const { return 4 + poly_words() + iterations + fourier_words(); }
 
-  // Throws InputError naming the first illegal combination (like the RTL's elaboration checks).
-  void validate() const;
+  // Throws InputError naming the first illegal combination (like the RTL's elaboration checks,
+  // rtl/acore_config_check.v): for acore_top (pipelined or folded by FOLD), or for the serial
+  // core (only its modes, no XCENTER, Fourier stage or FOLD).
+  void validate(DatapathTop top = DatapathTop::kTop) const;
   // "correction=poly in_w=16 ..." for headers and logs: every field of config_fields() that it
   // shows (shows()), the correction first, then in the table's order.
   std::string describe() const;
@@ -133,16 +141,22 @@ enum class FieldShown {
 // with_rtl_params() and the register image header (regmap/regimage.cpp reads and writes its keys).
 struct ConfigField {
   int DatapathConfig::*member;
-  const char* rtl;  // RTL parameter of rtl/acore_top.v
+  const char* rtl;  // RTL parameter (rtl/acore_datapath_params.vh declares it in every top)
   const char* key;  // describe() key, and the image header key when in_image
   FieldShown shown;
   bool in_image;  // false: the RTL's schedule (fold), which the image does not record
+  // What the parameter is, one line: the comment above its RTL declaration.
+  const char* meaning;
   // A field written as a name (correction: poly, poly2d, none) instead of a number.
-  const char* (*name)(int) = nullptr;
+  std::string (*name)(int) = nullptr;
   int (*parse)(const std::string&) = nullptr;  // the name's inverse; throws InputError
 };
-// The rows in the order of the top's parameter list, except that ZERO comes before FOLD (the
-// order rtl_params() has always had: the sweep's reports list the parameters in it).
+// The rows in the order of the RTL's parameter list (ZERO before FOLD: the order rtl_params() has
+// always had, the sweep's reports list the parameters in it). The RTL's declaration of them,
+// rtl/acore_datapath_params.vh (each default a default-constructed DatapathConfig's, each comment
+// the row's meaning), and the pass-on list rtl/acore_datapath_pass.vh are written from these rows
+// by acore_gen_tables (scripts/gen_tables.sh): a new datapath parameter is a member above, a row
+// here, its rules (validate(), rtl/acore_config_check.v) and the stages that use it.
 const std::vector<ConfigField>& config_fields();
 // True when describe() and the image header write the field for configuration c.
 bool shows(const ConfigField& f, const DatapathConfig& c);

@@ -6,11 +6,14 @@
 // in registers (the CORDIC) or where lanes narrower than int32 pay (the shift-add products, in
 // fx::shift_add_mul_split's form). AVX-512 or AVX2 where the CPU has it, picked at run time by
 // target_clones. Used where speed matters: co-sim, the benchmark, long sweeps.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 
+#include "core/errors.hpp"
 #include "core/fixed_point.hpp"
 #include "engine/fixed_model.hpp"
 #include "stages/fourier_correct.hpp"
@@ -310,6 +313,38 @@ void zero_chunk(FixedOutput* out, size_t n, uint32_t zero, int angle_w) {
   for (size_t i = 0; i < n; ++i) out[i].angle = (out[i].angle - zero) & mask;
 }
 
+// One chunk through a mode's vector kernel (the BATCH column of core/correction_modes.hpp): the
+// scaled curves, x and the region in, the corrected curves out. The kernels take x raw (no
+// XCENTER: run_batch() runs step() for a centred argument).
+struct BatchChunk {
+  const DatapathConfig* cfg;
+  int n;
+  const int32_t *s13, *s24, *x, *region;
+  const int32_t* coef;             // every polynomial word of the image, in map order
+  int32_t *scratch13, *scratch24;  // terms * kChunk words each
+  int32_t *y13, *y24;
+  uint8_t* ovf;
+};
+using BatchKernel = void (*)(const BatchChunk&);
+
+// poly: the region's coefficients gathered per lane, then Horner (poly_correct.cpp).
+void batch_poly(const BatchChunk& b) {
+  const DatapathConfig& cfg = *b.cfg;
+  gather_chunk(b.region, b.n, b.coef, cfg.regions, cfg.degree + 1, b.scratch13, b.scratch24);
+  (cfg.s_f <= 16 ? poly_chunk16 : poly_chunk32)(
+      b.s13, b.s24, b.x, b.scratch13, b.scratch24, b.n, cfg.degree, cfg.s_w, cfg.s_f, cfg.acc_guard,
+      cfg.acc_w(), cfg.acc_f() - cfg.s_f, b.y13, b.y24, b.ovf);
+}
+
+// none: the scaled curves go straight to the CORDIC.
+void batch_none(const BatchChunk& b) {
+  std::copy(b.s13, b.s13 + b.n, b.y13);
+  std::copy(b.s24, b.s24 + b.n, b.y24);
+}
+
+// By ID; nullptr: the mode has no vector kernel, run_batch() runs step() per sample.
+constexpr BatchKernel kBatchKernels[] = {ACORE_CORRECTION_MODES(ACORE_MODE_BATCH)};
+
 }  // namespace
 
 bool FixedModel::batch_fits_int32() const {
@@ -319,13 +354,18 @@ bool FixedModel::batch_fits_int32() const {
 }
 
 void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) const {
-  // The vectorized loops cover the paper's correction (1-D, raw x) and none; the others run step().
-  if (!batch_fits_int32() || img_.cfg.correction == kPoly2d || img_.cfg.xcenter) {
+  const DatapathConfig& cfg = img_.cfg;
+  const CorrectionMode& mode = correction_mode(cfg.correction);
+  if (!mode.runs_on(kEngineBatch))
+    throw InputError(
+        fmt::format("the batch engine does not run the correction mode {}", mode.name));
+  // The vector loops cover the modes with a vector kernel on the raw x; the others run step().
+  const BatchKernel correct = kBatchKernels[mode.id];
+  if (!batch_fits_int32() || correct == nullptr || cfg.xcenter) {
     for (size_t i = 0; i < n; ++i) out[i] = to_output(step(in[i]));
     return;
   }
-  const DatapathConfig& cfg = img_.cfg;
-  const int terms = cfg.degree + 1;
+  const int terms = cfg.coef_per_curve();
   int32_t d13[kChunk] = {}, d24[kChunk] = {}, s13[kChunk] = {}, s24[kChunk] = {}, x[kChunk] = {},
           y13[kChunk] = {}, y24[kChunk] = {}, mag[kChunk];
   uint32_t angle[kChunk];
@@ -342,15 +382,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
     scale_chunk(d24, m, static_cast<int32_t>(img_.offset(1)), static_cast<uint32_t>(img_.recip(1)),
                 cfg.reg_w, cfg.r_shift, cfg.scale_guard, cfg.s_w, s24, ovf);
     region_chunk(s13, s24, m, cfg.regions, region, x);
-    if (cfg.correction == kPoly) {
-      gather_chunk(region, m, coef32.data(), cfg.regions, terms, coef13.data(), coef24.data());
-      (cfg.s_f <= 16 ? poly_chunk16 : poly_chunk32)(
-          s13, s24, x, coef13.data(), coef24.data(), m, cfg.degree, cfg.s_w, cfg.s_f, cfg.acc_guard,
-          cfg.acc_w(), cfg.acc_f() - cfg.s_f, y13, y24, ovf);
-    } else {  // kNone: the scaled curves go straight to the CORDIC
-      std::copy(s13, s13 + m, y13);
-      std::copy(s24, s24 + m, y24);
-    }
+    correct(
+        {&cfg, m, s13, s24, x, region, coef32.data(), coef13.data(), coef24.data(), y13, y24, ovf});
     cordic_chunk(y24, y13, m, atan32.data(), cfg.iterations, cfg.cordic_guard, cfg.z_w, cfg.angle_w,
                  angle, mag);
     output_chunk(angle, mag, region, ovf, m, window_.mag_lo, window_.mag_hi, out + base);

@@ -1,17 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include "engine/fixed_model.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "core/fixed_point.hpp"
+#include "stages/correction.hpp"
 #include "stages/fourier_correct.hpp"
-#include "stages/poly2d_correct.hpp"
-#include "stages/poly_correct.hpp"
 #include "stages/prefilter.hpp"
 #include "stages/region_select.hpp"
 #include "stages/scaler.hpp"
 
 namespace acore {
+
+namespace {
+// Each mode's bit-accurate kernel (the FIXED column of core/correction_modes.hpp), by ID.
+using FixedKernel = void (*)(int64_t, int64_t, int64_t, int, const int64_t*, const DatapathConfig&,
+                             int64_t*, int64_t*, bool*);
+constexpr FixedKernel kFixedKernels[] = {ACORE_CORRECTION_MODES(ACORE_MODE_FIXED)};
+}  // namespace
 
 StatusWindow StatusWindow::defaults(const DatapathConfig& cfg) {
   // CORDIC gain prod sqrt(1 + 2^-2i) for K iterations.
@@ -36,6 +45,9 @@ FixedModel::FixedModel(const RegImage& img) : FixedModel(img, StatusWindow::defa
 FixedModel::FixedModel(const RegImage& img, StatusWindow window) : img_(img), window_(window) {
   const DatapathConfig& cfg = img_.cfg;
   cfg.validate();
+  if (!correction_mode(cfg.correction).runs_on(kEngineFixed))
+    throw InputError(fmt::format("the bit-accurate model does not run the correction mode {}",
+                                 correction_name(cfg.correction)));
   for (int c = 0; c < 2; ++c) {
     offset_[c] = img_.offset(c);
     recip_[c] = img_.recip(c);
@@ -77,21 +89,8 @@ FixedSample FixedModel::step(const ChannelCodes& c) const {
   out.region = rc.region;
   const int terms = cfg.coef_per_curve();
   const int64_t* coef = coef_.data() + static_cast<size_t>(rc.region) * 2 * terms;
-  switch (cfg.correction) {
-    case kPoly:
-      out.y13 = poly_correct(out.s13, rc.x, coef, cfg, &out.ovf);
-      out.y24 = poly_correct(out.s24, rc.x, coef + terms, cfg, &out.ovf);
-      break;
-    case kPoly2d: {
-      const int64_t v = poly2d_v(x_is_sine(rc.region, cfg.regions) ? out.s24 : out.s13, cfg);
-      out.y13 = poly2d_correct(out.s13, rc.x, v, coef, cfg, &out.ovf);
-      out.y24 = poly2d_correct(out.s24, rc.x, v, coef + terms, cfg, &out.ovf);
-      break;
-    }
-    default:  // kNone
-      out.y13 = out.s13;
-      out.y24 = out.s24;
-  }
+  kFixedKernels[correction_mode(cfg.correction).id](out.s13, out.s24, rc.x, rc.region, coef, cfg,
+                                                    &out.y13, &out.y24, &out.ovf);
   const CordicConfig cc = cordic_config();
   const CordicResult r = cordic_vector(out.y24, out.y13, cc, atan_.data());
   out.cordic_angle = r.angle;

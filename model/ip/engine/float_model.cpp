@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "engine/float_model.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
+#include "core/errors.hpp"
+#include "stages/correction.hpp"
 #include "stages/fourier_correct.hpp"
 #include "stages/region_select.hpp"
 
@@ -11,9 +15,19 @@ namespace acore {
 namespace {
 double wrap_turn(double a) { return a < 0 ? a + 2 * M_PI : a; }
 
+// Each mode's float and basis kernels (the VALUE and BASIS columns of core/correction_modes.hpp),
+// by ID.
+using ValueKernel = double (*)(const DatapathConfig&, const double*, double, double);
+using BasisKernel = void (*)(const DatapathConfig&, double, double, double*);
+constexpr ValueKernel kValueKernels[] = {ACORE_CORRECTION_MODES(ACORE_MODE_VALUE)};
+constexpr BasisKernel kBasisKernels[] = {ACORE_CORRECTION_MODES(ACORE_MODE_BASIS)};
+
 }  // namespace
 
 FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc) {
+  if (!correction_mode(fc.correction).runs_on(kEngineFloat))
+    throw InputError(fmt::format("the float model does not run the correction mode {}",
+                                 correction_name(fc.correction)));
   FloatSample o;
   o.s13 = (d13 - fc.offset[0]) / fc.amp[0];
   o.s24 = (d24 - fc.offset[1]) / fc.amp[1];
@@ -36,48 +50,14 @@ FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc) 
   return o;
 }
 
-double correction_u(double x, int xcenter) {
-  if (!xcenter) return x;
-  return 2 * (x >= 0 ? x - 0.375 : x + 0.375);
-}
-
-double correction_v(double y_other) {
-  return std::ldexp(y_other >= 0 ? y_other - 1 : y_other + 1, kVShift);
-}
-
 void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out) {
-  const double u = correction_u(x, shape.xcenter);
-  if (shape.correction == kPoly) {
-    double pw = 1;
-    for (int j = 0; j <= shape.degree; ++j, pw *= u) out[j] = pw;
-  } else if (shape.correction == kPoly2d) {
-    const double v = correction_v(y_other);
-    double ui = 1;
-    for (int i = 0; i <= shape.degree; ++i, ui *= u) {
-      double vj = 1;
-      for (int j = 0; i + j <= shape.degree; ++j, vj *= v) out[shape.term2d(i, j)] = ui * vj;
-    }
-  }
+  kBasisKernels[correction_mode(shape.correction).id](shape, x, y_other, out);
 }
 
 double correction_poly(const FloatCoefficients& fc, int r, int c, double x, double y_other) {
-  const double u = correction_u(x, fc.xcenter);
-  const int d = fc.degree;
-  if (fc.correction == kPoly) {
-    double acc = fc.coef(r, c, d);
-    for (int j = d - 1; j >= 0; --j) acc = acc * u + fc.coef(r, c, j);
-    return acc;
-  }
-  if (fc.correction != kPoly2d) return 0.0;
   const DatapathConfig shape = fc.shape();
-  const double v = correction_v(y_other);
-  double acc = 0;
-  for (int i = d; i >= 0; --i) {
-    double q = fc.coef(r, c, shape.term2d(i, d - i));
-    for (int j = d - i - 1; j >= 0; --j) q = q * v + fc.coef(r, c, shape.term2d(i, j));
-    acc = i == d ? q : acc * u + q;
-  }
-  return acc;
+  const double* coef = fc.poly.data() + static_cast<size_t>(r * 2 + c) * shape.coef_per_curve();
+  return kValueKernels[correction_mode(shape.correction).id](shape, coef, x, y_other);
 }
 
 }  // namespace acore

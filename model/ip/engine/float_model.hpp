@@ -5,6 +5,7 @@
 #pragma once
 #include "core/datapath_config.hpp"
 #include "regmap/coefficients.hpp"
+#include "stages/correction.hpp"
 
 namespace acore {
 
@@ -20,13 +21,11 @@ struct FloatSample {
 // d13 = c1 - c3 (or sin), d24 = c2 - c4 (or cos), in recording units.
 FloatSample float_estimate(double d13, double d24, const FloatCoefficients& fc);
 
-// The real-valued arguments of the correction polynomials, as the datapath forms them:
-// u = x, or 2 (x -+ 3/8) with xcenter; v = 2^kVShift (y_other - sign(y_other)) (poly2d).
-double correction_u(double x, int xcenter);
-double correction_v(double y_other);
-// Every term's basis value at (x, y_other) in the register map's order (1-D: u^j; 2-D: u^i v^j).
+// The correction in double, through the mode's kernels (stages/correction.hpp; correction_u() and
+// correction_v() there are its arguments): every term's basis value at (x, y_other) in the register
+// map's order (1-D: u^j; 2-D: u^i v^j), and P_region,curve(x, y_other) by (nested) Horner like
+// the datapath. Both throw InputError for a mode no row of the table has.
 void correction_basis(const DatapathConfig& shape, double x, double y_other, double* out);
-// P_region,curve(x, y_other) in double, by (nested) Horner like the datapath.
 double correction_poly(const FloatCoefficients& fc, int region, int curve, double x,
                        double y_other);
 

@@ -136,8 +136,8 @@ int64_t field_value(const CodecField& f, const FloatCoefficients& fc, const RegI
       throw InputError(fmt::format(
           "polynomial coefficient region {} curve {} {}^{} = {:.4f} exceeds the Q{}.{} range: "
           "lower --coef-frac",
-          f.region, curve_name(f.curve), cfg.correction == kPoly2d ? "term" : "x", f.term,
-          fc.coef(f.region, f.curve, f.term), f.width - f.frac, f.frac));
+          f.region, curve_name(f.curve), correction_mode(cfg.correction).args > 1 ? "term" : "x",
+          f.term, fc.coef(f.region, f.curve, f.term), f.width - f.frac, f.frac));
     case CodecKind::kFourierA0:
     case CodecKind::kFourierHarmonic:
       throw InputError(
@@ -197,13 +197,14 @@ std::string CodecField::name(const DatapathConfig& cfg) const {
     case CodecKind::kRecip:
       return fmt::format("1/A{}", curve ? "24" : "13");
     case CodecKind::kPoly: {
-      const char* x = cfg.xcenter ? "u" : "x";
-      if (cfg.correction == kPoly2d)
-        for (int i = 0; i <= cfg.degree; ++i)
-          for (int j = 0; i + j <= cfg.degree; ++j)
-            if (cfg.term2d(i, j) == term)
-              return fmt::format("region {} {} {}^{} v^{}", region, curve_name(curve), x, i, j);
-      return fmt::format("region {} {} {}^{}", region, curve_name(curve), x, term);
+      // The term's monomial from the mode's basis: "x^3", "x^1 v^2" (u for a centred argument).
+      const char* vars[] = {cfg.xcenter ? "u" : "x", "v"};
+      const auto powers = correction_mode(cfg.correction).basis_powers(cfg.degree);
+      std::string monomial;
+      for (size_t k = 0; k < powers.at(static_cast<size_t>(term)).size(); ++k)
+        monomial += fmt::format("{}{}^{}", k ? " " : "", k < 2 ? vars[k] : "w",
+                                powers[static_cast<size_t>(term)][k]);
+      return fmt::format("region {} {} {}", region, curve_name(curve), monomial);
     }
     case CodecKind::kAtan:
       return fmt::format("atan(2^-{})", index);

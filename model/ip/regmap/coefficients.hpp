@@ -12,7 +12,7 @@ namespace acore {
 
 // The calibrated estimator in real numbers: what the float model runs.
 struct FloatCoefficients {
-  int correction = kPoly;  // kPoly, kPoly2d, kNone (datapath_config.hpp)
+  int correction = kPoly;  // a mode of core/correction_modes.hpp
   int degree = 3;
   int regions = 4;
   int xcenter = 0;

@@ -29,4 +29,15 @@ int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathCon
 int64_t poly2d_correct(int64_t s, int64_t x, int64_t v, const int64_t* coef,
                        const DatapathConfig& cfg, bool* ovf);
 
+// The mode's kernels (its row in core/correction_modes.hpp; the signatures of
+// stages/correction.hpp). Both curves of a sample: v from the other curve of the region (s24 where
+// x is the sine curve), coef = the region's words, c13's terms then c24's.
+void poly2d_correct_curves(int64_t s13, int64_t s24, int64_t x, int region, const int64_t* coef,
+                           const DatapathConfig& cfg, int64_t* y13, int64_t* y24, bool* ovf);
+// In double: v = 2^kVShift (y_other - sign(y_other)), P(u, v) of one curve by the datapath's
+// nested Horner, and the basis u^i v^j (term2d order) that the calibration fits.
+double correction_v(double y_other);
+double poly2d_value(const DatapathConfig& shape, const double* coef, double x, double y_other);
+void poly2d_basis(const DatapathConfig& shape, double x, double y_other, double* out);
+
 }  // namespace acore

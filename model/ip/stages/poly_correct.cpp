@@ -31,4 +31,28 @@ int64_t poly_correct(int64_t s, int64_t x, const int64_t* coef, const DatapathCo
   return poly_subtract(s, poly_eval(x, coef, cfg, ovf), cfg, ovf);
 }
 
+void poly_correct_curves(int64_t s13, int64_t s24, int64_t x, int /*region*/, const int64_t* coef,
+                         const DatapathConfig& cfg, int64_t* y13, int64_t* y24, bool* ovf) {
+  *y13 = poly_correct(s13, x, coef, cfg, ovf);
+  *y24 = poly_correct(s24, x, coef + cfg.degree + 1, cfg, ovf);
+}
+
+double correction_u(double x, int xcenter) {
+  if (!xcenter) return x;
+  return 2 * (x >= 0 ? x - 0.375 : x + 0.375);
+}
+
+double poly_value(const DatapathConfig& shape, const double* coef, double x, double /*y_other*/) {
+  const double u = correction_u(x, shape.xcenter);
+  double acc = coef[shape.degree];
+  for (int j = shape.degree - 1; j >= 0; --j) acc = acc * u + coef[j];
+  return acc;
+}
+
+void poly_basis(const DatapathConfig& shape, double x, double /*y_other*/, double* out) {
+  const double u = correction_u(x, shape.xcenter);
+  double pw = 1;
+  for (int j = 0; j <= shape.degree; ++j, pw *= u) out[j] = pw;
+}
+
 }  // namespace acore

@@ -30,4 +30,15 @@ int64_t poly_correct(int64_t s, int64_t x, const int64_t* coef, const DatapathCo
 // y = saturate(s - round_shr(acc_0, ACC_F - S_F), S_W): the last step of both correction modes.
 int64_t poly_subtract(int64_t s, int64_t acc0, const DatapathConfig& cfg, bool* ovf);
 
+// The mode's kernels (its row in core/correction_modes.hpp; the signatures of
+// stages/correction.hpp). Both curves of a sample: coef = the region's words, c13's n + 1 terms
+// then c24's.
+void poly_correct_curves(int64_t s13, int64_t s24, int64_t x, int region, const int64_t* coef,
+                         const DatapathConfig& cfg, int64_t* y13, int64_t* y24, bool* ovf);
+// In double: the argument u of x (x itself, or 2 (x -+ 3/8) with xcenter), P(u) of one curve by
+// Horner like the datapath, and the basis u^j (j = 0..n) that the calibration fits.
+double correction_u(double x, int xcenter);
+double poly_value(const DatapathConfig& shape, const double* coef, double x, double y_other);
+void poly_basis(const DatapathConfig& shape, double x, double y_other, double* out);
+
 }  // namespace acore

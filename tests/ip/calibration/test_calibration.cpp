@@ -198,5 +198,18 @@ TEST(Calibration, ImageIsTheQuantizedFitAtTheAutomaticScale) {
   EXPECT_THROW(calibrate(test::paper_recording(300), o), InputError);
 }
 
+// A correction mode no row of the table has is an InputError naming it, before any fit.
+TEST(Calibration, AModeOutsideTheTableIsAnInputErrorNamingIt) {
+  const Recording rec = test::paper_recording(4000);
+  CalOptions opt;
+  opt.correction = 4;
+  try {
+    calibrate(rec, opt);
+    ADD_FAILURE() << "calibrate fitted correction 4";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("correction=4"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace acore

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <random>
 #include <regex>
 #include <set>
@@ -155,20 +156,35 @@ TEST(DatapathConfig, TableCoversEveryFieldOnceAndTheTopsParameters) {
   EXPECT_EQ(seen.size(), fields);
   EXPECT_EQ(seen.count(-1), 0u);
   // The RTL names are the top's parameters that are not derived (rtl/acore_top.v names its derived
-  // ones in "... is derived" elaboration checks).
-  std::ifstream in(std::string(ACORE_SOURCE_DIR) + "/rtl/acore_top.v");
-  ASSERT_TRUE(in);
-  const std::string v((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // ones in "... is derived" elaboration checks), its text read with the files it includes (the
+  // datapath's declaration, rtl/acore_datapath_params.vh), each at the default configuration's
+  // value.
+  const auto read = [](const std::string& name) {
+    std::ifstream in(std::string(ACORE_SOURCE_DIR) + "/rtl/" + name);
+    EXPECT_TRUE(in) << name;
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  std::string v = read("acore_top.v");
+  const std::regex include(R"re(`include "([a-z_0-9]+\.vh)")re");
+  for (std::smatch m; std::regex_search(v, m, include);)
+    v = m.prefix().str() + read(m[1]) + m.suffix().str();
   std::set<std::string> top, derived, table;
-  const std::regex param(R"(parameter\s+integer\s+([A-Z_0-9]+)\s*=)");
+  std::map<std::string, int> value;
+  const std::regex param(R"(parameter\s+integer\s+([A-Z_0-9]+)\s*=\s*(-?[0-9]+)?)");
   const std::regex derived_msg(R"(illegal parameter: ([A-Z_0-9]+) is derived)");
-  for (std::sregex_iterator it(v.begin(), v.end(), param), end; it != end; ++it)
+  for (std::sregex_iterator it(v.begin(), v.end(), param), end; it != end; ++it) {
     top.insert((*it)[1]);
+    if ((*it)[2].matched) value[(*it)[1]] = std::stoi((*it)[2]);
+  }
   for (std::sregex_iterator it(v.begin(), v.end(), derived_msg), end; it != end; ++it)
     derived.insert((*it)[1]);
   EXPECT_GE(derived.size(), 4u);
   for (const auto& d : derived) top.erase(d);
-  for (const ConfigField& f : config_fields()) table.insert(f.rtl);
+  const DatapathConfig defaults;
+  for (const ConfigField& f : config_fields()) {
+    table.insert(f.rtl);
+    EXPECT_EQ(value.count(f.rtl) ? value[f.rtl] : -1000, defaults.*f.member) << f.rtl;
+  }
   EXPECT_EQ(table, top);
   // Keys are distinct and lower case; only the RTL schedule (fold) stays out of the image.
   std::set<std::string> keys;

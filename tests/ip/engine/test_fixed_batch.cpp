@@ -6,6 +6,7 @@
 #include <random>
 
 #include "calibration/calibration.hpp"
+#include "core/errors.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
 #include "support/paper_signals.hpp"
@@ -122,6 +123,23 @@ TEST(FixedBatch, MatchesStepWithTheZeroWord) {
     const DatapathConfig cfg = DatapathConfig{}.with_rtl_params(p);
     const RegImage img = random_image(cfg, rng);  // drawn before the inputs, in this order
     expect_same(FixedModel(img), random_codes(2000, cfg.in_w, rng));
+  }
+}
+
+// A correction mode no row of the table has is an InputError naming it before any sample, so the
+// vector path never runs it as "no correction".
+TEST(FixedBatch, AModeOutsideTheTableIsAnInputErrorNamingIt) {
+  std::mt19937_64 rng(3);
+  RegImage img = random_image(DatapathConfig{}, rng);
+  img.cfg.correction = 3;
+  const std::vector<ChannelCodes> codes = random_codes(300, 16, rng);
+  std::vector<FixedOutput> out(codes.size());
+  try {
+    const FixedModel m(img);
+    m.run_batch(codes.data(), codes.size(), out.data());
+    ADD_FAILURE() << "the batch engine ran correction=3";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("correction=3"), std::string::npos) << e.what();
   }
 }
 

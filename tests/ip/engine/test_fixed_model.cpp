@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <random>
 
+#include "core/errors.hpp"
 #include "core/fixed_point.hpp"
 #include "engine/fixed_model.hpp"
 #include "stages/cordic.hpp"
@@ -186,6 +187,20 @@ TEST(FixedModel, StatusFlagsFollowTheMagnitudeWindowAndSaturation) {
   EXPECT_TRUE(s.ovf);
   EXPECT_EQ(s.s13, fx::smax(cfg.s_w));
   EXPECT_FALSE(ml.step({1000, 0, -1000, 0}).ovf);
+}
+
+// A correction mode no row of the table has (core/correction_modes.hpp) is an InputError naming
+// it, not a chain without correction.
+TEST(FixedModel, AModeOutsideTheTableIsAnInputErrorNamingIt) {
+  RegImage img;
+  img.cfg.correction = 7;
+  img.words.assign(static_cast<size_t>(4 + DatapathConfig{}.iterations), 0);
+  try {
+    FixedModel m(img);
+    ADD_FAILURE() << "FixedModel took correction=7";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("correction=7"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

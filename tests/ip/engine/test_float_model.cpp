@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "engine/float_model.hpp"
 #include "stages/region_select.hpp"
 
@@ -149,6 +150,21 @@ TEST(FloatModel, FourierAndZeroWordSubtractFromTheAngle) {
   EXPECT_EQ(fc.software_zero_offset(), 0.4);
   const FloatSample s = float_estimate(std::sin(1.0), std::cos(1.0), fc);
   EXPECT_NEAR(s.uncorrected, 1.0, 1e-12);
+}
+
+// A correction mode no row of the table has is an InputError naming it, not a zero correction.
+TEST(FloatModel, AModeOutsideTheTableIsAnInputErrorNamingIt) {
+  FloatCoefficients fc;
+  fc.correction = 5;
+  try {
+    float_estimate(0.3, 0.9, fc);
+    ADD_FAILURE() << "float_estimate ran correction 5";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("correction mode 5"), std::string::npos) << e.what();
+  }
+  double basis[64];
+  EXPECT_THROW(correction_basis(fc.shape(), 0.3, 0.9, basis), InputError);
+  EXPECT_THROW(correction_poly(fc, 0, 0, 0.3, 0.9), InputError);
 }
 
 }  // namespace

@@ -358,5 +358,20 @@ TEST(Codec, AutoRangeGivesTheSteppingSearchsResultAndErrors) {
   EXPECT_GT(failed, 50);
 }
 
+// A correction mode no row of the table has is an InputError naming it: the map has no shape.
+TEST(Codec, AModeOutsideTheTableIsAnInputErrorNamingIt) {
+  DatapathConfig cfg;
+  cfg.correction = 9;
+  try {
+    codec_table(cfg);
+    ADD_FAILURE() << "codec_table sized correction 9";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("correction mode 9"), std::string::npos) << e.what();
+  }
+  FloatCoefficients fc;
+  fc.correction = 9;
+  EXPECT_THROW(quantize(fc, cfg, 8192.0), InputError);
+}
+
 }  // namespace
 }  // namespace acore
