@@ -18,6 +18,7 @@
 #include "Vtrack.h"
 #include "Vtrack_a20.h"
 #include "Vtrack_l2.h"
+#include "core/fixed_point.hpp"
 #include "stages/tracker.hpp"
 
 namespace acore {
@@ -29,7 +30,7 @@ namespace {
         ACORE_##S##_LEAD_W, ACORE_##S##_LEAD_F                                             \
   }
 
-uint64_t mask(int w) { return (uint64_t{1} << w) - 1; }
+using fx::mask;
 
 // An angle stream in input LSBs: speed ramps, a reversal, noise, and a jump every so often.
 std::vector<uint32_t> stimulus(const TrackConfig& c, std::mt19937_64& rng, int n) {

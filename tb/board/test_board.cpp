@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "Vboard_serial.h"
+#include "core/fixed_point.hpp"
 #include "cosim/cosim_stimuli.hpp"
 #include "shell/shell_regs.hpp"
 #include "stages/board_regs.hpp"
@@ -53,11 +54,7 @@ TrackConfig board_track_config(int comp_latency) {
   return c;
 }
 
-int64_t sext(uint64_t x, int w) {
-  const uint64_t m = (uint64_t{1} << w) - 1;
-  x &= m;
-  return (x >> (w - 1)) & 1 ? static_cast<int64_t>(x | ~m) : static_cast<int64_t>(x);
-}
+int64_t sext(uint64_t x, int w) { return fx::sext(static_cast<int64_t>(x), w); }
 
 struct Board {
   std::unique_ptr<VerilatedContext> ctx;

@@ -70,7 +70,10 @@ inline int64_t saturate(int64_t v, int w, bool* ovf ACORE_SAT_SITE) {
   return v;
 }
 
-// Sign-extends the low w bits of v.
+// The low w bits set (w in 0..64).
+inline uint64_t mask(int w) { return w >= 64 ? ~uint64_t{0} : (uint64_t{1} << w) - 1; }
+
+// Sign-extends the low w bits of v (w in 1..64).
 inline int64_t sext(int64_t v, int w) {
   const uint64_t m = uint64_t{1} << (w - 1);
   const uint64_t u = static_cast<uint64_t>(v) & ((m << 1) - 1);

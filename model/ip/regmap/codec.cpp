@@ -19,7 +19,7 @@ namespace acore {
 
 namespace {
 
-uint64_t mask(int w) { return (uint64_t{1} << w) - 1; }
+using fx::mask;
 
 const char* curve_name(int curve) { return curve ? "c24" : "c13"; }
 

@@ -18,8 +18,6 @@ namespace acore {
 
 namespace {
 
-uint64_t word_mask(int w) { return (uint64_t{1} << w) - 1; }
-
 // The header's configuration keys in the order images have always had them: the correction,
 // then the keys written always, those of the Fourier stage (only with it) and zero_word (only when
 // 1), each group alphabetically. The table is DatapathConfig's (config_fields()).
@@ -69,11 +67,11 @@ void RegImage::set_signed(int addr, int64_t value) {
   if (value > fx::smax(cfg.reg_w) || value < fx::smin(cfg.reg_w))
     throw InputError(fmt::format("register {}: value {} does not fit a signed {}-bit word", addr,
                                  value, cfg.reg_w));
-  words.at(addr) = static_cast<uint64_t>(value) & word_mask(cfg.reg_w);
+  words.at(addr) = static_cast<uint64_t>(value) & fx::mask(cfg.reg_w);
 }
 
 void RegImage::set_unsigned(int addr, int64_t value) {
-  if (value < 0 || static_cast<uint64_t>(value) > word_mask(cfg.reg_w))
+  if (value < 0 || static_cast<uint64_t>(value) > fx::mask(cfg.reg_w))
     throw InputError(fmt::format("register {}: value {} does not fit an unsigned {}-bit word", addr,
                                  value, cfg.reg_w));
   words.at(addr) = static_cast<uint64_t>(value);
@@ -183,7 +181,7 @@ RegImage parse_regimage(const std::string& text, const std::string& name) {
     throw InputError(fmt::format("{}: {} words, but the header's configuration needs {} ({})", name,
                                  img.words.size(), img.cfg.words(), img.cfg.describe()));
   for (size_t a = 0; a < img.words.size(); ++a)
-    if (img.words[a] > word_mask(img.cfg.reg_w))
+    if (img.words[a] > fx::mask(img.cfg.reg_w))
       throw InputError(fmt::format("{}: word {} = {:x} does not fit {} bits", name, a, img.words[a],
                                    img.cfg.reg_w));
   if (crc_line && crc_header != image_crc32(img))

@@ -5,18 +5,15 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/fixed_point.hpp"
 
 namespace acore {
 
 namespace {
 
-uint64_t mask(int w) { return w >= 64 ? ~uint64_t{0} : (uint64_t{1} << w) - 1; }
+using fx::mask;
 
-int64_t sext(uint64_t x, int w) {
-  const uint64_t m = mask(w);
-  x &= m;
-  return (x >> (w - 1)) & 1 ? static_cast<int64_t>(x | ~m) : static_cast<int64_t>(x);
-}
+int64_t sext(uint64_t x, int w) { return fx::sext(static_cast<int64_t>(x), w); }
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw InputError("tracking observer: " + what);

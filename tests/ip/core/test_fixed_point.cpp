@@ -73,6 +73,21 @@ TEST(FixedHelpers, RoundSaturateSignExtend) {
   EXPECT_EQ(fx::sext(0x1ffff, 18), 131071);
 }
 
+// mask(w) has exactly w low bits set, at both ends of its range; the widest word sign-extends
+// from the top bit (the observer's 41-bit registers and the 64-bit model words use both).
+TEST(FixedHelpers, MaskAndSignExtendOverEveryWidth) {
+  EXPECT_EQ(fx::mask(0), 0u);
+  EXPECT_EQ(fx::mask(64), ~uint64_t{0});
+  for (int w = 1; w <= 64; ++w) {
+    EXPECT_EQ(__builtin_popcountll(fx::mask(w)), w) << w;
+    EXPECT_EQ(fx::mask(w) >> (w - 1), 1u) << w;
+    EXPECT_EQ(fx::sext(static_cast<int64_t>(fx::mask(w)), w), -1) << w;
+    // The largest positive w-bit value stays itself.
+    if (w > 1 && w < 64)
+      EXPECT_EQ(fx::sext(static_cast<int64_t>(fx::mask(w - 1)), w), fx::smax(w)) << w;
+  }
+}
+
 TEST(Scaler, MatchesTheRealQuotientWithinHalfAnLsbPlusTruncation) {
   DatapathConfig cfg;
   const double amp = 8000.0;
