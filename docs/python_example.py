@@ -1,10 +1,10 @@
 # SPDX-License-Identifier: MIT
 """The demo's Table 3 and error plot (`anglecore demo`) in Python: .venv/bin/python docs/python_example.py [PNG]"""
+
 import sys
 
-import numpy as np
-
 import anglecore as ac
+import numpy as np
 
 cal = ac.simulate("paper", samples=4096, seed=1)  # the demo's calibration and validation seeds
 val = ac.simulate("paper", samples=4096, seed=2)
@@ -14,8 +14,10 @@ flt = ac.estimate(img, val, engine="float")
 printed = ac.estimate(ac.calibrate(cal, zero_offset=0), val, engine="fixed")  # Eq. 6 as printed
 raw = (fixed.uncorrected_error + np.degrees(img.zero_offset) + 180) % 360 - 180  # offset kept
 
+
 def row(name, e):
     print(f"  {name:<36} {np.sqrt(np.mean(e**2)):7.3f} {np.max(np.abs(e)):7.3f} {np.mean(e):+7.3f}")
+
 
 print(f"  {'':<36} {'RMS':>7} {'max|e|':>7} {'mean':>7}")
 row("ours, uncorrected", raw)
@@ -27,8 +29,10 @@ print(f"  register file {len(img.words)} words, zero offset {np.degrees(img.zero
 
 if len(sys.argv) > 1:  # the error plot: uncorrected and corrected error against the angle
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     order = np.argsort(val.theta_ref % (2 * np.pi))
     theta = np.degrees(val.theta_ref % (2 * np.pi))[order]
     plt.plot(theta, fixed.uncorrected_error[order], ",", label="uncorrected")

@@ -9,6 +9,7 @@ Prints the fastest of --reps runs (ms per 1 M samples; the minimum, as the machi
 BM_EstimateFixedBatch (codes + chain + angles + errors: what estimate runs) and of
 anglecore.estimate(img, rec, engine="fixed", uncorrected=False) timed with time.perf_counter.
 """
+
 import argparse
 import json
 import statistics
@@ -23,9 +24,16 @@ N = 1 << 20  # the benchmark's kSamples
 
 def cpp_fastest(exe: Path, reps: int) -> dict:
     out = subprocess.run(
-        [str(exe), "--benchmark_filter=BM_FixedChain$|BM_EstimateFixedBatch",
-         "--benchmark_format=json", f"--benchmark_repetitions={reps}"],
-        capture_output=True, text=True, check=True).stdout
+        [
+            str(exe),
+            "--benchmark_filter=BM_FixedChain$|BM_EstimateFixedBatch",
+            "--benchmark_format=json",
+            f"--benchmark_repetitions={reps}",
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
     best: dict = {}
     for b in json.loads(out)["benchmarks"]:
         if b.get("run_type") == "iteration":
@@ -48,7 +56,9 @@ def main() -> None:
         times.append((time.perf_counter() - t0) * 1e3)
     py = min(times)
     cpp = cpp_fastest(a.build / "tests" / "bench" / "bench_estimator", a.reps)
-    print(f"samples {N}, fastest of {a.reps} runs each (ms; Python median {statistics.median(times):.2f}):")
+    print(
+        f"samples {N}, fastest of {a.reps} runs each (ms; Python median {statistics.median(times):.2f}):"
+    )
     print(f"  C++ BM_FixedChain          {cpp['BM_FixedChain']:8.2f}  (batch chain on ready codes)")
     print(f"  C++ BM_EstimateFixedBatch  {cpp['BM_EstimateFixedBatch']:8.2f}  (estimate's work)")
     print(f"  Python anglecore.estimate  {py:8.2f}  (error RMS {res.error_deg['rms']:.4f} deg)")

@@ -28,6 +28,7 @@ Where each figure comes from (the table says it per row):
 Nothing is synthesized for a pipelined configuration without a report: it says "not measured".
 The parameters' defaults (to match a sweep row) are the RTL's (acore_top's header, elaborated).
 """
+
 import argparse
 import concurrent.futures
 import csv
@@ -37,9 +38,9 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import devices  # noqa: E402
-import registry  # noqa: E402
-from registry import cells  # noqa: E402
+import devices
+import registry
+from registry import cells
 
 TOPS = ("acore_top", "acore_serial_top")
 
@@ -80,7 +81,9 @@ def fmt_rate(x):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     ap.add_argument("--measure", action="store_true")
     ap.add_argument("--out", default=None)
@@ -96,7 +99,7 @@ def main():
     table = registry.table(root)
     dev = table.default
     fam = dev.family
-    pnr_result = lambda log: registry.pnr_result(log, dev)  # noqa: E731
+    pnr_result = lambda log: registry.pnr_result(log, dev)
     rows = [l for l in registry.load(root) if l.module in TOPS]
     defaults = registry.rtl_parameters(root, "acore_top")
     stages = [registry.placed_design(root, l) for l in registry.default_top_stages(root)]
@@ -123,9 +126,13 @@ def main():
                 pins = f", {fmt_name}" if registry.pnr_constrained(log, dev) else ""
                 lcs_name = fam.pnr_cell_label
                 if fmax:
-                    how.append(f"{lcs_name}, Fmax `{os.path.basename(log)}` (whole {whole} placed and routed{pins})")
+                    how.append(
+                        f"{lcs_name}, Fmax `{os.path.basename(log)}` (whole {whole} placed and routed{pins})"
+                    )
                 else:
-                    how.append(f"{lcs_name} `{os.path.basename(log)}` (does not fit the {dev.short})")
+                    how.append(
+                        f"{lcs_name} `{os.path.basename(log)}` (does not fit the {dev.short})"
+                    )
             if fmax is None and not serial and not params:
                 fs = [pnr_result(registry.report(root, dev.name, d))[0] for d in stages]
                 fmax = min(f for f in fs if f) if any(fs) else None
@@ -135,11 +142,23 @@ def main():
         elif serial:
             key = " ".join(f"{p}={v}" for p, v in sorted(params.items()))
             if key not in measured and a.measure:
-                r = subprocess.run([sys.executable, os.path.join(root, "scripts", "stage_fmax.py"), "--whole",
-                                    "acore_serial_top", root, os.path.join(root, "synth", "build", "config_table")]
-                                   + key.split(), capture_output=True, text=True)
+                r = subprocess.run(
+                    [
+                        sys.executable,
+                        os.path.join(root, "scripts", "stage_fmax.py"),
+                        "--whole",
+                        "acore_serial_top",
+                        root,
+                        os.path.join(root, "synth", "build", "config_table"),
+                        *key.split(),
+                    ],
+                    capture_output=True,
+                    text=True,
+                )
                 if r.returncode != 0:
-                    raise RuntimeError(f"stage_fmax.py --whole acore_serial_top {key}: {r.stderr.strip()}")
+                    raise RuntimeError(
+                        f"stage_fmax.py --whole acore_serial_top {key}: {r.stderr.strip()}"
+                    )
                 measured[key] = json.loads(r.stdout)
                 with open(measured_path, "w") as f:
                     json.dump(measured, f, indent=1, sort_keys=True)
@@ -148,8 +167,10 @@ def main():
             if m:
                 lut4, fmax = m.get("lut4"), m.get("fmax_mhz")
                 lcs = f"{m['lcs']}/{dev.capacity['logic_cells']}" if m.get("lcs") else None
-                how = ("measured, `scripts/config_table.py --measure` (`stage_fmax.py --whole`: whole core placed "
-                       "and routed, generated wrapper, pins unconstrained)")
+                how = (
+                    "measured, `scripts/config_table.py --measure` (`stage_fmax.py --whole`: whole core placed "
+                    "and routed, generated wrapper, pins unconstrained)"
+                )
             else:
                 how = "not measured (run `scripts/config_table.py --measure`)"
         else:
@@ -158,20 +179,31 @@ def main():
                 lut4 = int(r["lut4"])
                 fmax = float(r["fmax_mhz"]) if r.get("fmax_mhz") else None
                 bound = True
-                how = (f"measured, design-space sweep (`design_space.csv` row {r['index']}): {lut} of the whole "
-                       "top; Fmax = slowest stage placed alone (≤); not placed whole")
+                how = (
+                    f"measured, design-space sweep (`design_space.csv` row {r['index']}): {lut} of the whole "
+                    "top; Fmax = slowest stage placed alone (≤); not placed whole"
+                )
             else:
                 how = "not measured (no report has this configuration; a whole-top synthesis takes minutes)"
         rate = fmax * 1e6 / cycles if fmax else None
         ptxt = " ".join(f"{p}={v}" for p, v in params.items()) or "(defaults)"
         le = "≤ " if bound and fmax else ""
-        lines.append(f"| {name} | `{top}` {ptxt} | {k['WORDS']} | {k['LATENCY']} | {cycles} | "
-                     f"{lut4 if lut4 is not None else '-'} | {lcs or '-'} | "
-                     f"{le + f'{fmax:.1f}' if fmax else '-'} | {le + fmt_rate(rate) if rate else '-'} | {how} |")
+        lines.append(
+            f"| {name} | `{top}` {ptxt} | {k['WORDS']} | {k['LATENCY']} | {cycles} | "
+            f"{lut4 if lut4 is not None else '-'} | {lcs or '-'} | "
+            f"{le + f'{fmax:.1f}' if fmax else '-'} | {le + fmt_rate(rate) if rate else '-'} | {how} |"
+        )
 
-    shown = [x for i, x in enumerate(sys.argv[1:]) if not x.startswith("--root") and sys.argv[i] != "--root"]
-    cmd = " ".join(["scripts/config_table.py"] + shown)
-    text = ["# Configuration table", "",
+    shown = [
+        x
+        for i, x in enumerate(sys.argv[1:])
+        if not x.startswith("--root") and sys.argv[i] != "--root"
+    ]
+    cmd = " ".join(["scripts/config_table.py", *shown])
+    text = [
+        "# Configuration table",
+        "",
+        (
             f"Generated by `{cmd}` from the repository root (`--measure` places and routes the serial "
             "configurations no report covers, results kept in `config_table_measured.json`; without it the "
             "script only reads reports). Every `acore_top` and `acore_serial_top` line of the build registry "
@@ -180,11 +212,17 @@ def main():
             "CYCLES are the RTL's own constants (`verilator --xml-only` with the configuration's parameters); "
             f"area and clock come from the reports named in the last column ({table.flow['yosys']} `{fam.synth}`, "
             f"{fam.measured_with} on {devices.article(dev.short)} {dev.package}, seed {table.seed}). samples/s = Fmax / "
-            "clocks per sample. \"≤\": the pipelined top was not placed whole, its clock is bounded by its "
-            "slowest stage placed alone (routing congestion of the whole design not included).", "",
+            'clocks per sample. "≤": the pipelined top was not placed whole, its clock is bounded by its '
+            "slowest stage placed alone (routing congestion of the whole design not included)."
+        ),
+        "",
+        (
             f"| configuration | top and parameters | words | LATENCY (clk) | clk/sample | {fam.title} {lut} | "
-            f"{dev.short} {fam.pnr_cell_label} | Fmax (MHz) | samples/s | source |",
-            "|---|---|---|---|---|---|---|---|---|---|"] + lines
+            f"{dev.short} {fam.pnr_cell_label} | Fmax (MHz) | samples/s | source |"
+        ),
+        "|---|---|---|---|---|---|---|---|---|---|",
+        *lines,
+    ]
     text = "\n".join(text) + "\n"
     if out_path == "-":
         sys.stdout.write(text)

@@ -23,15 +23,43 @@ sweep_args=()
 usage() { sed -n '3,16p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case $1 in
-    --out) out=$2; shift 2 ;;
-    --jobs|-j) jobs=$2; shift 2 ;;
-    --shard) shard=$2; shift 2 ;;
-    --merge) merge=$2; shift 2 ;;
-    --grid) sweep_args+=(--grid "$2"); shift 2 ;;
-    --quick) sweep_args+=(--quick); shift ;;
-    --no-synth) synth=0; shift ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "design_space.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+    --out)
+      out=$2
+      shift 2
+      ;;
+    --jobs | -j)
+      jobs=$2
+      shift 2
+      ;;
+    --shard)
+      shard=$2
+      shift 2
+      ;;
+    --merge)
+      merge=$2
+      shift 2
+      ;;
+    --grid)
+      sweep_args+=(--grid "$2")
+      shift 2
+      ;;
+    --quick)
+      sweep_args+=(--quick)
+      shift
+      ;;
+    --no-synth)
+      synth=0
+      shift
+      ;;
+    -h | --help)
+      usage
+      exit 0
+      ;;
+    *)
+      echo "design_space.sh: unknown option '$1'" >&2
+      usage >&2
+      exit 2
+      ;;
   esac
 done
 report() { /usr/bin/python3 "$root/scripts/design_space_report.py" "$1" && echo "wrote $1/design_space.md, $1/pareto.png"; }

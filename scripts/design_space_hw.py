@@ -21,6 +21,7 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
 """
+
 import concurrent.futures
 import hashlib
 import json
@@ -32,7 +33,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-import registry  # noqa: E402  (the RTL's parameters and constants, elaborated; the devices table)
+import registry
 
 
 def rtl_files(root):
@@ -44,20 +45,37 @@ def synth_area(root, params):
     chp = " ".join(f"-chparam {k} {v}" for k, v in (p.split("=", 1) for p in params.split()))
     with tempfile.TemporaryDirectory(prefix="acore_area_") as tmp:
         stat = os.path.join(tmp, "stat.txt")
-        r = subprocess.run(["yosys", "-q", "-l", os.path.join(tmp, "log"), "-p",
-                            f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top {chp}; "
-                            f"{fam.yosys_command('acore_top')}; tee -q -o {stat} stat"],
-                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        r = subprocess.run(
+            [
+                "yosys",
+                "-q",
+                "-l",
+                os.path.join(tmp, "log"),
+                "-p",
+                (
+                    f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top {chp}; "
+                    f"{fam.yosys_command('acore_top')}; tee -q -o {stat} stat"
+                ),
+            ],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
         if r.returncode != 0 or not os.path.exists(stat):
             raise RuntimeError(f"yosys {fam.synth} failed for " + params)
         c = registry.cells(stat)
-    return {"lut4": fam.count(c, ["lut"]), "dff": fam.count(c, ["ff"]), "carry": fam.count(c, ["carry"]),
-            "bram": fam.count(c, ["bram"])}
+    return {
+        "lut4": fam.count(c, ["lut"]),
+        "dff": fam.count(c, ["ff"]),
+        "carry": fam.count(c, ["carry"]),
+        "bram": fam.count(c, ["bram"]),
+    }
 
 
 def measure(root, cache, params):
     dev = registry.device(root).name
-    key = hashlib.sha1((params + "|" + dev + "|" + "".join(open(f).read() for f in rtl_files(root))).encode()).hexdigest()[:16]
+    key = hashlib.sha1(
+        (params + "|" + dev + "|" + "".join(open(f).read() for f in rtl_files(root))).encode()
+    ).hexdigest()[:16]
     path = os.path.join(cache, f"top-{key}.json")
     if os.path.exists(path):
         return json.load(open(path))
@@ -66,10 +84,23 @@ def measure(root, cache, params):
     p = dict(kv.split("=", 1) for kv in params.split())
     if int(p.get("FOLD", 1)) > 1:
         # A folded top is made to fit: place and route it whole.
-        out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), "--whole", "acore_top", root,
-                              os.path.join(cache, "whole")] + params.split(), capture_output=True, text=True)
+        out = subprocess.run(
+            [
+                sys.executable,
+                os.path.join(HERE, "stage_fmax.py"),
+                "--whole",
+                "acore_top",
+                root,
+                os.path.join(cache, "whole"),
+                *params.split(),
+            ],
+            capture_output=True,
+            text=True,
+        )
         if out.returncode != 0:
-            raise RuntimeError("stage_fmax.py --whole acore_top failed for " + params + ": " + out.stderr.strip())
+            raise RuntimeError(
+                "stage_fmax.py --whole acore_top failed for " + params + ": " + out.stderr.strip()
+            )
         wh = json.loads(out.stdout)
         res["whole"] = wh
         res["fmax_mhz"] = wh.get("fmax_mhz")
@@ -79,25 +110,60 @@ def measure(root, cache, params):
         with open(path, "w") as f:
             json.dump(res, f)
         return res
-    out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), root, os.path.join(cache, "stages")]
-                         + params.split(), capture_output=True, text=True)
+    out = subprocess.run(
+        [
+            sys.executable,
+            os.path.join(HERE, "stage_fmax.py"),
+            root,
+            os.path.join(cache, "stages"),
+            *params.split(),
+        ],
+        capture_output=True,
+        text=True,
+    )
     if out.returncode != 0:
         raise RuntimeError("stage_fmax.py failed for " + params + ": " + out.stderr.strip())
     st = json.loads(out.stdout)
-    datapath = [s for s in st["stages"] if s.get("module") != "acore_coef_regfile" and s.get("fmax_mhz")]
+    datapath = [
+        s for s in st["stages"] if s.get("module") != "acore_coef_regfile" and s.get("fmax_mhz")
+    ]
     slow = min(datapath, key=lambda s: s["fmax_mhz"]) if datapath else None
     res["fmax_mhz"] = slow["fmax_mhz"] if slow else None
     res["slowest"] = slow["module"] if slow else None
     res["all_stages_fit"] = st["all_fit"]
     res["stages"] = st["stages"]
-    if int(p.get("CORRECTION", 0)) == 0 and int(p.get("XCENTER", 0)) == 0 and int(p.get("FOURIER_K", 0)) == 0:
+    if (
+        int(p.get("CORRECTION", 0)) == 0
+        and int(p.get("XCENTER", 0)) == 0
+        and int(p.get("FOURIER_K", 0)) == 0
+    ):
         # The serial core has the pipelined top's parameters but those of the correction modes and FOLD.
-        serial = [(k, int(v)) for k, v in p.items() if k in registry.rtl_parameters(root, "acore_serial_top")]
+        serial = [
+            (k, int(v))
+            for k, v in p.items()
+            if k in registry.rtl_parameters(root, "acore_serial_top")
+        ]
         serial_params = [f"{k}={v}" for k, v in serial]
-        out = subprocess.run([sys.executable, os.path.join(HERE, "stage_fmax.py"), "--whole", "acore_serial_top", root,
-                              os.path.join(cache, "serial")] + serial_params, capture_output=True, text=True)
+        out = subprocess.run(
+            [
+                sys.executable,
+                os.path.join(HERE, "stage_fmax.py"),
+                "--whole",
+                "acore_serial_top",
+                root,
+                os.path.join(cache, "serial"),
+                *serial_params,
+            ],
+            capture_output=True,
+            text=True,
+        )
         if out.returncode != 0:
-            raise RuntimeError("stage_fmax.py --whole acore_serial_top failed for " + params + ": " + out.stderr.strip())
+            raise RuntimeError(
+                "stage_fmax.py --whole acore_serial_top failed for "
+                + params
+                + ": "
+                + out.stderr.strip()
+            )
         sr = json.loads(out.stdout)
         sr["cycles"] = registry.rtl_constants(root, "acore_serial_top", serial)["CYCLES"]
         res["serial"] = sr
@@ -112,14 +178,16 @@ def main():
     if "--jobs" in args:
         i = args.index("--jobs")
         jobs = int(args[i + 1])
-        del args[i:i + 2]
+        del args[i : i + 2]
     if len(args) != 3:
         sys.exit(__doc__)
     root, d, shard = args
     i, n = shard.split("/")
     acc = os.path.join(d, f"accuracy-{i}-of-{n}.jsonl")
     if not os.path.exists(acc):
-        sys.exit(f"design_space_hw.py: {acc}: not found (run anglecore sweep --shard {shard} first)")
+        sys.exit(
+            f"design_space_hw.py: {acc}: not found (run anglecore sweep --shard {shard} first)"
+        )
     configs = []
     for line in open(acc):
         p = json.loads(line).get("final_params")
@@ -130,7 +198,10 @@ def main():
     out_path = os.path.join(d, f"hw-{i}-of-{n}.jsonl")
     t0 = time.time()
     done = 0
-    with open(out_path, "w") as out, concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+    with (
+        open(out_path, "w") as out,
+        concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool,
+    ):
         futs = {pool.submit(measure, root, cache, p): p for p in configs}
         for fut in concurrent.futures.as_completed(futs):
             done += 1
@@ -138,9 +209,12 @@ def main():
                 r = fut.result()
                 out.write(json.dumps(r) + "\n")
                 out.flush()
-                print(f"[{done}/{len(configs)}] {futs[fut]}: {r['lut4']} LUT4, {r['fmax_mhz']} MHz "
-                      f"({time.time() - t0:.0f} s)", file=sys.stderr)
-            except Exception as e:  # one failed configuration must not lose the others
+                print(
+                    f"[{done}/{len(configs)}] {futs[fut]}: {r['lut4']} LUT4, {r['fmax_mhz']} MHz "
+                    f"({time.time() - t0:.0f} s)",
+                    file=sys.stderr,
+                )
+            except Exception as e:  # noqa: BLE001 (one failed configuration must not lose the others)
                 print(f"[{done}/{len(configs)}] {futs[fut]}: FAILED: {e}", file=sys.stderr)
                 out.write(json.dumps({"final_params": futs[fut], "error": str(e)}) + "\n")
 

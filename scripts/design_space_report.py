@@ -12,6 +12,7 @@ The device, its family's LUT and flip-flop names come from synth/devices.toml (t
 "device", the default device for rows written before they named it).
 Uses Debian's python3-matplotlib (run with /usr/bin/python3).
 """
+
 import csv
 import glob
 import json
@@ -20,9 +21,12 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import devices  # noqa: E402  (synth/devices.toml)
+import devices
 
-TARGETS = [(64, 0.10, 0.35), (104, 0.01, 0.07)]  # words, RMS, max (accuracy targets, noise-free paper scenario)
+TARGETS = [
+    (64, 0.10, 0.35),
+    (104, 0.01, 0.07),
+]  # words, RMS, max (accuracy targets, noise-free paper scenario)
 MAIN = "paper-noiseless"
 
 
@@ -30,7 +34,9 @@ def load(d):
     grid = json.load(open(os.path.join(d, "grid.json")))
     files = sorted(glob.glob(os.path.join(d, "accuracy-*-of-*.jsonl")))
     if not files:
-        sys.exit(f"design_space_report.py: {d}: no accuracy-*-of-*.jsonl (run anglecore sweep first)")
+        sys.exit(
+            f"design_space_report.py: {d}: no accuracy-*-of-*.jsonl (run anglecore sweep first)"
+        )
     counts = {re.search(r"-of-(\d+)\.jsonl$", f).group(1) for f in files}
     if len(counts) != 1:
         sys.exit(f"design_space_report.py: shards of different splits in {d}: {sorted(counts)}")
@@ -49,8 +55,10 @@ def load(d):
             rows[r["index"]] = r
     lost = sorted(set(range(grid["points"])) - set(rows))
     if lost:
-        sys.exit(f"design_space_report.py: points {lost[:10]}{'...' if len(lost) > 10 else ''} missing "
-                 f"(a shard stopped early?)")
+        sys.exit(
+            f"design_space_report.py: points {lost[:10]}{'...' if len(lost) > 10 else ''} missing "
+            f"(a shard stopped early?)"
+        )
     hw = {}
     for f in glob.glob(os.path.join(d, "hw-*-of-*.jsonl")):
         for line in open(f):
@@ -95,7 +103,11 @@ def pareto(points):
     """Indices of points not dominated in (cost, error): no other point is <= in both and < in one."""
     front = []
     for i, (c, e) in enumerate(points):
-        if not any((c2 <= c and e2 <= e) and (c2 < c or e2 < e) for j, (c2, e2) in enumerate(points) if j != i):
+        if not any(
+            (c2 <= c and e2 <= e) and (c2 < c or e2 < e)
+            for j, (c2, e2) in enumerate(points)
+            if j != i
+        ):
             front.append(i)
     return front
 
@@ -111,11 +123,13 @@ def main():
         sys.exit(f"design_space_report.py: {e}")
     used = {h.get("device", table.flow["default_device"]) for h in hw.values()}
     if len(used) > 1 or not used <= set(table.devices):
-        sys.exit(f"design_space_report.py: {d}: hardware rows of devices {sorted(used)} (one device of "
-                 f"synth/devices.toml a sweep)")
+        sys.exit(
+            f"design_space_report.py: {d}: hardware rows of devices {sorted(used)} (one device of "
+            f"synth/devices.toml a sweep)"
+        )
     dev = table.devices[used.pop() if used else table.flow["default_device"]]
     fam = dev.family
-    label = lambda cls: next((lab for lab, count in fam.columns if cls in count), cls.upper())  # noqa: E731
+    label = lambda cls: next((lab for lab, count in fam.columns if cls in count), cls.upper())
     lut, ff = label("lut"), label("ff")
     ok = [r for r in rows if "error" not in r]
     scen = list(ok[0]["accuracy"].keys()) if ok else []
@@ -139,7 +153,14 @@ def main():
         if h.get("serial"):
             # The serial core is bit-exact to the same model: same accuracy, its own area and rate.
             sr = h["serial"]
-            s2 = dict(r, engine="serial", lut4=sr["lut4"], dff=sr["dff"], fmax=sr.get("fmax_mhz"), unplaced=[])
+            s2 = dict(
+                r,
+                engine="serial",
+                lut4=sr["lut4"],
+                dff=sr["dff"],
+                fmax=sr.get("fmax_mhz"),
+                unplaced=[],
+            )
             s2["sps"] = s2["fmax"] * 1e6 / sr["cycles"] if s2["fmax"] else None
             s2["cycles"] = sr["cycles"]
             serial_rows.append(s2)
@@ -155,25 +176,46 @@ def main():
         head = ["index", "engine", "params", "words", "coef_f"]
         for s in scen:
             head += [f"{s}_fixed_rms", f"{s}_fixed_max", f"{s}_float_rms", f"{s}_float_max"]
-        w.writerow(head + ["lut4", "dff", "fmax_mhz", "samples_per_s", "error"])
+        w.writerow([*head, "lut4", "dff", "fmax_mhz", "samples_per_s", "error"])
         for r in rows:
-            line = [r["index"], r.get("engine", "pipelined"), r["params"], r.get("words"), coef_f(r)]
+            line = [
+                r["index"],
+                r.get("engine", "pipelined"),
+                r["params"],
+                r.get("words"),
+                coef_f(r),
+            ]
             for s in scen:
                 a = r.get("accuracy", {}).get(s)
-                line += [a["fixed"]["rms"], a["fixed"]["max_abs"], a["float"]["rms"], a["float"]["max_abs"]] if a else [""] * 4
+                line += (
+                    [
+                        a["fixed"]["rms"],
+                        a["fixed"]["max_abs"],
+                        a["float"]["rms"],
+                        a["float"]["max_abs"],
+                    ]
+                    if a
+                    else [""] * 4
+                )
             line += [r.get("lut4"), r.get("dff"), r.get("fmax"), r.get("sps"), r.get("error", "")]
             w.writerow(line)
 
-    md = ["# Design space", "",
-          f"Generated by `scripts/design_space.sh` ({grid['points']} points; calibration {grid['cal_samples']} "
-          f"samples, validation {grid['val_samples']} samples at other angles, noise-free scenarios). "
-          f"Accuracy: bit-accurate model (= RTL), error = estimate − reference, degrees. {lut}/{ff}: Yosys "
-          f"`{fam.synth}` of the whole `acore_top`; Fmax: slowest datapath stage placed and routed alone on "
-          f"{devices.article(dev.title)} (`scripts/stage_fmax.py`), or for a folded top (FOLD > 1: a sample every FOLD clocks) the "
-          "whole top placed and routed; samples/s = Fmax / FOLD. Rows marked "
-          "*serial*: the serial core (`rtl/acore_serial_top.v`, same parameters, bit-exact to the same model) "
-          "placed and routed whole; samples/s = Fmax / CYCLES. "
-          f"P = on the Pareto front of RMS against words (w) or {lut} (l).", ""]
+    md = [
+        "# Design space",
+        "",
+        (
+            f"Generated by `scripts/design_space.sh` ({grid['points']} points; calibration {grid['cal_samples']} "
+            f"samples, validation {grid['val_samples']} samples at other angles, noise-free scenarios). "
+            f"Accuracy: bit-accurate model (= RTL), error = estimate − reference, degrees. {lut}/{ff}: Yosys "
+            f"`{fam.synth}` of the whole `acore_top`; Fmax: slowest datapath stage placed and routed alone on "
+            f"{devices.article(dev.title)} (`scripts/stage_fmax.py`), or for a folded top (FOLD > 1: a sample every FOLD clocks) the "
+            "whole top placed and routed; samples/s = Fmax / FOLD. Rows marked "
+            "*serial*: the serial core (`rtl/acore_serial_top.v`, same parameters, bit-exact to the same model) "
+            "placed and routed whole; samples/s = Fmax / CYCLES. "
+            f"P = on the Pareto front of RMS against words (w) or {lut} (l)."
+        ),
+        "",
+    ]
     hdr = "| # | configuration | words | COEF_F |"
     sep = "|---|---|---|---|"
     for s in scen:
@@ -184,10 +226,15 @@ def main():
     md += [hdr, sep]
     for r in rows:
         if "error" in r:
-            md.append(f"| {r['index']} | `{r['params']}` | - | - | " + "- | - | " * len(scen)
-                      + f"calibration failed: {r['error']} | | | | | |")
+            md.append(
+                f"| {r['index']} | `{r['params']}` | - | - | "
+                + "- | - | " * len(scen)
+                + f"calibration failed: {r['error']} | | | | | |"
+            )
             continue
-        name = f"`{r['params']}`" + (f" *serial* ({r['cycles']} clk/sample)" if r.get("engine") == "serial" else "")
+        name = f"`{r['params']}`" + (
+            f" *serial* ({r['cycles']} clk/sample)" if r.get("engine") == "serial" else ""
+        )
         line = f"| {r['index']} | {name} | {r['words']} | {coef_f(r)} |"
         for s in scen:
             a = r["accuracy"][s]["fixed"]
@@ -197,65 +244,127 @@ def main():
         if r.get("nofit"):
             fm = f"no fit ({r['nofit']} {fam.pnr_cell_label})"
         sps = f"{r['sps'] / 1e6:.1f}" if r["sps"] else "-"
-        line += (f" {r['accuracy'][MAIN]['float']['rms']:.4f} | {r['lut4'] or '-'} | {r['dff'] or '-'} | {fm} | {sps} |"
-                 f" {p} |")
+        line += (
+            f" {r['accuracy'][MAIN]['float']['rms']:.4f} | {r['lut4'] or '-'} | {r['dff'] or '-'} | {fm} | {sps} |"
+            f" {p} |"
+        )
         md.append(line)
     unplaced = [r for r in ok if r.get("unplaced")]
     if unplaced:
-        md += ["", f"† A stage of this configuration is larger than {devices.article(dev.short)} placed alone, so it "
-               "was not placed; the "
-               "Fmax shown is that of the other stages (the large stage repeats the same one-adder-per-clock "
-               "step, but its routing is not measured): "
-               + "; ".join(f"#{r['index']}: {', '.join(r['unplaced'])}" for r in unplaced if r.get("engine") != "serial")
-               + "."]
-    md += ["", f"## Targets ({MAIN}, bit-accurate, validation recording)", "",
-           "| budget | required RMS / max | best point (by RMS) | its RMS / max | met |", "|---|---|---|---|---|"]
+        md += [
+            "",
+            f"† A stage of this configuration is larger than {devices.article(dev.short)} placed alone, so it "
+            "was not placed; the "
+            "Fmax shown is that of the other stages (the large stage repeats the same one-adder-per-clock "
+            "step, but its routing is not measured): "
+            + "; ".join(
+                f"#{r['index']}: {', '.join(r['unplaced'])}"
+                for r in unplaced
+                if r.get("engine") != "serial"
+            )
+            + ".",
+        ]
+    md += [
+        "",
+        f"## Targets ({MAIN}, bit-accurate, validation recording)",
+        "",
+        "| budget | required RMS / max | best point (by RMS) | its RMS / max | met |",
+        "|---|---|---|---|---|",
+    ]
     status = 0
     for words, rms, mx in TARGETS:
         cand = [r for r in ok if r["words"] <= words]
         meeting = [r for r in cand if r["rms"] <= rms and r["max"] <= mx]
         best = min(meeting or cand, key=lambda r: r["rms"]) if cand else None
         if best:
-            md.append(f"| ≤ {words} words | {rms} / {mx} | `{best['params']}` ({best['words']} words) | "
-                      f"{best['rms']:.4f} / {best['max']:.3f} | {'yes' if meeting else 'NO'} |")
+            md.append(
+                f"| ≤ {words} words | {rms} / {mx} | `{best['params']}` ({best['words']} words) | "
+                f"{best['rms']:.4f} / {best['max']:.3f} | {'yes' if meeting else 'NO'} |"
+            )
         else:
             md.append(f"| ≤ {words} words | {rms} / {mx} | none in the grid | - | NO |")
     open(os.path.join(d, "design_space.md"), "w").write("\n".join(md) + "\n")
 
     try:
         import matplotlib
+
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
         print("design_space_report.py: matplotlib missing, no plot", file=sys.stderr)
         return status
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
-    axes_spec = [("words", "register words"), ("lut4", f"{fam.title} {lut}"), ("fmax", f"Fmax, MHz ({dev.short}, slowest stage)"),
-                 ("sps", "samples / s")]
+    axes_spec = [
+        ("words", "register words"),
+        ("lut4", f"{fam.title} {lut}"),
+        ("fmax", f"Fmax, MHz ({dev.short}, slowest stage)"),
+        ("sps", "samples / s"),
+    ]
     for ax, (key, label) in zip(axes.flat, axes_spec):
         pts = [r for r in ok if r.get(key)]
         if not pts:
-            ax.text(0.5, 0.5, f"no {label} data (sweep run with --no-synth)", ha="center", transform=ax.transAxes)
+            ax.text(
+                0.5,
+                0.5,
+                f"no {label} data (sweep run with --no-synth)",
+                ha="center",
+                transform=ax.transAxes,
+            )
             continue
-        pip = [r for r in pts if r.get("engine") != "serial" and not (key in ("fmax", "sps") and r.get("unplaced"))]
+        pip = [
+            r
+            for r in pts
+            if r.get("engine") != "serial" and not (key in ("fmax", "sps") and r.get("unplaced"))
+        ]
         part = [r for r in pts if key in ("fmax", "sps") and r.get("unplaced")]
         if part:
-            ax.scatter([r[key] for r in part], [r["rms"] for r in part], s=14, facecolors="none", edgecolors="C0",
-                       label="RMS (a stage too large to place: other stages' Fmax)")
+            ax.scatter(
+                [r[key] for r in part],
+                [r["rms"] for r in part],
+                s=14,
+                facecolors="none",
+                edgecolors="C0",
+                label="RMS (a stage too large to place: other stages' Fmax)",
+            )
         ser = [r for r in pts if r.get("engine") == "serial"]
-        ax.scatter([r[key] for r in pip], [r["rms"] for r in pip], s=14, label="RMS (pipelined top)")
+        ax.scatter(
+            [r[key] for r in pip], [r["rms"] for r in pip], s=14, label="RMS (pipelined top)"
+        )
         if ser and key != "words":
-            ax.scatter([r[key] for r in ser], [r["rms"] for r in ser], s=14, marker="s", label="RMS (serial core)")
-        ax.scatter([r[key] for r in pts], [r["max"] for r in pts], s=8, marker="x", alpha=0.6, label="max")
+            ax.scatter(
+                [r[key] for r in ser],
+                [r["rms"] for r in ser],
+                s=14,
+                marker="s",
+                label="RMS (serial core)",
+            )
+        ax.scatter(
+            [r[key] for r in pts], [r["max"] for r in pts], s=8, marker="x", alpha=0.6, label="max"
+        )
         if key in ("words", "lut4"):
             # Words: the serial core has the pipelined top's words and accuracy, so one front suffices.
             cand = [r for r in pts if key == "lut4" or r.get("engine") != "serial"]
-            fr = sorted((cand[i] for i in pareto([(r[key], r["rms"]) for r in cand])), key=lambda r: r[key])
-            ax.step([r[key] for r in fr], [r["rms"] for r in fr], where="post", color="k", lw=1, label="Pareto (RMS)")
+            fr = sorted(
+                (cand[i] for i in pareto([(r[key], r["rms"]) for r in cand])), key=lambda r: r[key]
+            )
+            ax.step(
+                [r[key] for r in fr],
+                [r["rms"] for r in fr],
+                where="post",
+                color="k",
+                lw=1,
+                label="Pareto (RMS)",
+            )
             for r in fr:
-                ax.annotate(short(r), (r[key], r["rms"]), fontsize=7, xytext=(3, 3), textcoords="offset points")
+                ax.annotate(
+                    short(r),
+                    (r[key], r["rms"]),
+                    fontsize=7,
+                    xytext=(3, 3),
+                    textcoords="offset points",
+                )
         if key == "words":
-            for words, rms, mx in TARGETS:
+            for words, rms, _mx in TARGETS:
                 ax.plot([0, words, words], [rms, rms, 1e-4], "g--", lw=0.8)
         if key in ("sps", "lut4"):
             ax.set_xscale("log")

@@ -8,12 +8,14 @@ usage: devices.py [--root DIR] list
          package" (the table checked)
 Exit 2 on a malformed table (file, line and field named).
 """
+
 import functools
 import glob
 import os
 import re
 import shutil
 import sys
+
 import tomllib
 
 PATH = os.path.join("synth", "devices.toml")
@@ -21,14 +23,39 @@ NAME = r"[a-z][a-z0-9_]*"
 CAPACITY = ("logic_cells", "luts", "ffs", "bram_blocks", "bram_bits", "dsp", "user_io")
 FLOW_FIELDS = {"default_device": str, "freq_mhz": int, "seed": int, "yosys": str}
 FAMILY_FIELDS = {"title": str, "synth": str, "options": list, "cells": dict, "columns": list}
-PNR_FIELDS = {"netlist": list, "pnr": str, "pnr_output": list, "constrained": list, "unconstrained": list,
-              "constraint_comment": str, "constraint_pin": str, "pnr_cell": str, "pnr_cell_label": str,
-              "pnr_bram": str, "pnr_dsp": str,
-              "unconstrained_log": str, "measured_with": str}
-DEVICE_FIELDS = {"family": str, "title": str, "short": str, "part": str, "package": str, "speed": str,
-                 "pnr_args": list, "aliases": list, "constraints": str, "wrapper": str,
-                 "wrapper_required": bool, "suffix": str, "bare_suffix": str, "wrapper_doc": str,
-                 "capacity": dict, "tested": bool}
+PNR_FIELDS = {
+    "netlist": list,
+    "pnr": str,
+    "pnr_output": list,
+    "constrained": list,
+    "unconstrained": list,
+    "constraint_comment": str,
+    "constraint_pin": str,
+    "pnr_cell": str,
+    "pnr_cell_label": str,
+    "pnr_bram": str,
+    "pnr_dsp": str,
+    "unconstrained_log": str,
+    "measured_with": str,
+}
+DEVICE_FIELDS = {
+    "family": str,
+    "title": str,
+    "short": str,
+    "part": str,
+    "package": str,
+    "speed": str,
+    "pnr_args": list,
+    "aliases": list,
+    "constraints": str,
+    "wrapper": str,
+    "wrapper_required": bool,
+    "suffix": str,
+    "bare_suffix": str,
+    "wrapper_doc": str,
+    "capacity": dict,
+    "tested": bool,
+}
 
 
 class DevicesError(Exception):
@@ -51,7 +78,7 @@ class Family:
     def yosys_command(self, top, netlist=None):
         """The Yosys synthesis command of the top (writing the netlist to place when given)."""
         out = [a.format(file=netlist) for a in self.netlist] if netlist else []
-        return " ".join([self.synth] + self.options + ["-top", top] + out)
+        return " ".join([self.synth, *self.options, "-top", top, *out])
 
     def count(self, cells, classes):
         """Sum of the cells of these classes in a `registry.cells()` dict (None when it is None)."""
@@ -103,18 +130,29 @@ class Device:
 
     def pnr_command(self, netlist, stem, log, constraint, freq, seed):
         """The place-and-route command line (a list of words)."""
-        pins = ([a.format(file=constraint) for a in self.family.constrained] if constraint
-                else list(self.family.unconstrained))
-        return ([self.family.pnr] + list(self.pnr_args) + ["--json", netlist]
-                + [a.format(stem=stem) for a in self.family.pnr_output] + ["--freq", str(freq)] + pins
-                + ["--timing-allow-fail", "--seed", str(seed), "-l", log])
+        pins = (
+            [a.format(file=constraint) for a in self.family.constrained]
+            if constraint
+            else list(self.family.unconstrained)
+        )
+        return (
+            [self.family.pnr]
+            + list(self.pnr_args)
+            + ["--json", netlist]
+            + [a.format(stem=stem) for a in self.family.pnr_output]
+            + ["--freq", str(freq)]
+            + pins
+            + ["--timing-allow-fail", "--seed", str(seed), "-l", log]
+        )
 
     def tool_missing(self):
         """Why the device cannot be placed on this machine ("" when it can)."""
         if shutil.which(self.family.pnr):
             return ""
-        return (f"device {self.name} ({self.title}): its place-and-route program {self.family.pnr} is not "
-                f"installed{'' if self.tested else ' (the row has datasheet fields only: no report made with it yet)'}")
+        return (
+            f"device {self.name} ({self.title}): its place-and-route program {self.family.pnr} is not "
+            f"installed{'' if self.tested else ' (the row has datasheet fields only: no report made with it yet)'}"
+        )
 
 
 class Table:
@@ -191,7 +229,7 @@ def _regex(where, table, key, pat, groups=0):
         raise DevicesError(f"{where(table, key)}: {key}: '{pat}' needs a group (the port bit)")
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _load(root):
     path = os.path.join(root, PATH)
     try:
@@ -205,14 +243,18 @@ def _load(root):
     where = _where(text, PATH)
     for k in data:
         if k not in ("flow", "family", "device"):
-            raise DevicesError(f"{where(k)}: [{k}]: the table has [flow], [family.NAME] and [device.NAME] only")
+            raise DevicesError(
+                f"{where(k)}: [{k}]: the table has [flow], [family.NAME] and [device.NAME] only"
+            )
     flow = data.get("flow")
     if not isinstance(flow, dict):
         raise DevicesError(f"{PATH}: no [flow] table")
     _check(where, "flow", flow, FLOW_FIELDS)
     for k in flow:
         if k not in FLOW_FIELDS:
-            raise DevicesError(f"{where('flow', k)}: [flow] {k}: unknown field (known: {', '.join(FLOW_FIELDS)})")
+            raise DevicesError(
+                f"{where('flow', k)}: [flow] {k}: unknown field (known: {', '.join(FLOW_FIELDS)})"
+            )
     families = {}
     for name, f in data.get("family", {}).items():
         t = f"family.{name}"
@@ -225,24 +267,39 @@ def _load(root):
         _check(where, t, f, PNR_FIELDS, required=placed)
         for k in f:
             if k not in FAMILY_FIELDS and k not in PNR_FIELDS:
-                raise DevicesError(f"{where(t, k)}: {k}: unknown field of a family (known: "
-                                   f"{', '.join(list(FAMILY_FIELDS) + list(PNR_FIELDS))})")
+                raise DevicesError(
+                    f"{where(t, k)}: {k}: unknown field of a family (known: "
+                    f"{', '.join(list(FAMILY_FIELDS) + list(PNR_FIELDS))})"
+                )
         for c, pat in f["cells"].items():
             if not isinstance(pat, str) or c == "total":
-                raise DevicesError(f"{where(t, 'cells')}: cells: {c}: expected a regular expression of "
-                                   "cell types ('total' is Yosys's cell count)")
+                raise DevicesError(
+                    f"{where(t, 'cells')}: cells: {c}: expected a regular expression of "
+                    "cell types ('total' is Yosys's cell count)"
+                )
             _regex(where, t, "cells", pat)
         if not f["columns"]:
-            raise DevicesError(f"{where(t, 'columns')}: columns: a family reports at least one column")
+            raise DevicesError(
+                f"{where(t, 'columns')}: columns: a family reports at least one column"
+            )
         for c in f["columns"]:
-            if (not isinstance(c, dict) or set(c) != {"label", "count"} or not isinstance(c["label"], str)
-                    or not isinstance(c["count"], list) or not c["count"]):
-                raise DevicesError(f"{where(t, 'columns')}: columns: {c!r}: expected {{ label = \"...\", "
-                                   "count = [\"class\", ...] }")
+            if (
+                not isinstance(c, dict)
+                or set(c) != {"label", "count"}
+                or not isinstance(c["label"], str)
+                or not isinstance(c["count"], list)
+                or not c["count"]
+            ):
+                raise DevicesError(
+                    f'{where(t, "columns")}: columns: {c!r}: expected {{ label = "...", '
+                    'count = ["class", ...] }'
+                )
             for cls in c["count"]:
                 if cls != "total" and cls not in f["cells"]:
-                    raise DevicesError(f"{where(t, 'columns')}: columns: {c['label']}: '{cls}' is not a cell "
-                                       f"class of the family (cells: {', '.join(f['cells']) or 'none'}; or total)")
+                    raise DevicesError(
+                        f"{where(t, 'columns')}: columns: {c['label']}: '{cls}' is not a cell "
+                        f"class of the family (cells: {', '.join(f['cells']) or 'none'}; or total)"
+                    )
         if placed:
             _regex(where, t, "constraint_pin", f["constraint_pin"], groups=1)
         families[name] = Family(name, f)
@@ -252,33 +309,51 @@ def _load(root):
         if not re.fullmatch(NAME, name):
             raise DevicesError(f"{where(t)}: device '{name}': lower case letters, digits and '_'")
         if name in families:
-            raise DevicesError(f"{where(t)}: device '{name}': also a family's name (both are flow names)")
+            raise DevicesError(
+                f"{where(t)}: device '{name}': also a family's name (both are flow names)"
+            )
         if not isinstance(d, dict):
             raise DevicesError(f"{where(t)}: device '{name}' is not a table")
         _check(where, t, d, DEVICE_FIELDS)
         for k in d:
             if k not in DEVICE_FIELDS:
-                raise DevicesError(f"{where(t, k)}: {k}: unknown field of a device (known: {', '.join(DEVICE_FIELDS)})")
+                raise DevicesError(
+                    f"{where(t, k)}: {k}: unknown field of a device (known: {', '.join(DEVICE_FIELDS)})"
+                )
         fam = families.get(d["family"])
         if fam is None or not fam.placed:
-            raise DevicesError(f"{where(t, 'family')}: family: '{d['family']}' is not a family with a "
-                               f"place-and-route program (those: {', '.join(f for f in families if families[f].placed)})")
+            raise DevicesError(
+                f"{where(t, 'family')}: family: '{d['family']}' is not a family with a "
+                f"place-and-route program (those: {', '.join(f for f in families if families[f].placed)})"
+            )
         for k in CAPACITY:
             v = d["capacity"].get(k)
             if not isinstance(v, int) or isinstance(v, bool) or v < 0:
-                raise DevicesError(f"{where(t, 'capacity')}: capacity: {k}: expected a count >= 0, got {v!r}")
+                raise DevicesError(
+                    f"{where(t, 'capacity')}: capacity: {k}: expected a count >= 0, got {v!r}"
+                )
         for k in d["capacity"]:
             if k not in CAPACITY:
-                raise DevicesError(f"{where(t, 'capacity')}: capacity: {k}: unknown (known: {', '.join(CAPACITY)})")
+                raise DevicesError(
+                    f"{where(t, 'capacity')}: capacity: {k}: unknown (known: {', '.join(CAPACITY)})"
+                )
         if "{module}" not in d["wrapper"]:
-            raise DevicesError(f"{where(t, 'wrapper')}: wrapper: '{d['wrapper']}' must contain {{module}}")
+            raise DevicesError(
+                f"{where(t, 'wrapper')}: wrapper: '{d['wrapper']}' must contain {{module}}"
+            )
         if not re.fullmatch(r"_[a-z0-9_]+", d["suffix"]):
-            raise DevicesError(f"{where(t, 'suffix')}: suffix: '{d['suffix']}': '_' then lower case letters and digits")
+            raise DevicesError(
+                f"{where(t, 'suffix')}: suffix: '{d['suffix']}': '_' then lower case letters and digits"
+            )
         if d["bare_suffix"] and not re.fullmatch(r"_[a-z0-9_]+", d["bare_suffix"]):
-            raise DevicesError(f"{where(t, 'bare_suffix')}: bare_suffix: '{d['bare_suffix']}': empty, or '_' then "
-                               "lower case letters and digits")
+            raise DevicesError(
+                f"{where(t, 'bare_suffix')}: bare_suffix: '{d['bare_suffix']}': empty, or '_' then "
+                "lower case letters and digits"
+            )
         if d["constraints"] and not glob.glob(os.path.join(root, d["constraints"])):
-            raise DevicesError(f"{where(t, 'constraints')}: constraints: '{d['constraints']}' names no file")
+            raise DevicesError(
+                f"{where(t, 'constraints')}: constraints: '{d['constraints']}' names no file"
+            )
         devices[name] = Device(name, d, fam)
     # Flow names and report names must not collide.
     seen = {n: f"family {n}" for n in families}
@@ -289,21 +364,29 @@ def _load(root):
         t = f"device.{dev.name}"
         for a in dev.aliases:
             if not re.fullmatch(NAME, a) or a in seen:
-                raise DevicesError(f"{where(t, 'aliases')}: aliases: '{a}' is {'already ' + seen[a] if a in seen else 'not a flow name'}")
+                raise DevicesError(
+                    f"{where(t, 'aliases')}: aliases: '{a}' is {'already ' + seen[a] if a in seen else 'not a flow name'}"
+                )
             seen[a] = f"an alias of device {dev.name}"
         for s in {dev.suffix, dev.bare_suffix} - {""}:
             if suffixes.get(s, dev.name) != dev.name:
-                raise DevicesError(f"{where(t, 'suffix')}: suffix '{s}': also device {suffixes[s]}'s (report names "
-                                   "would collide)")
+                raise DevicesError(
+                    f"{where(t, 'suffix')}: suffix '{s}': also device {suffixes[s]}'s (report names "
+                    "would collide)"
+                )
             suffixes[s] = dev.name
         if not dev.bare_suffix:
             bare_empty.append(dev.name)
     if len(bare_empty) > 1:
-        raise DevicesError(f"{PATH}: bare_suffix: empty for {', '.join(bare_empty)}: at most one device places a "
-                           "module as it is under the line's own name")
+        raise DevicesError(
+            f"{PATH}: bare_suffix: empty for {', '.join(bare_empty)}: at most one device places a "
+            "module as it is under the line's own name"
+        )
     if flow["default_device"] not in devices:
-        raise DevicesError(f"{where('flow', 'default_device')}: default_device: '{flow['default_device']}' is not a "
-                           f"device (devices: {', '.join(devices)})")
+        raise DevicesError(
+            f"{where('flow', 'default_device')}: default_device: '{flow['default_device']}' is not a "
+            f"device (devices: {', '.join(devices)})"
+        )
     return Table(flow, families, devices)
 
 
@@ -314,7 +397,10 @@ def load(root):
 
 def main(argv):
     import argparse
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     ap.add_argument("cmd", choices=["list"])
     try:
@@ -327,9 +413,9 @@ def main(argv):
         print(f"devices: {e}", file=sys.stderr)
         return 2
     for f in t.families.values():
-        print(" ".join(["family", f.name, f.synth] + f.options))
+        print(" ".join(["family", f.name, f.synth, *f.options]))
     for d in t.devices.values():
-        print(" ".join(["device", d.name, d.family.name, d.part, d.package]))
+        print(f"device {d.name} {d.family.name} {d.part} {d.package}")
     return 0
 
 

@@ -36,6 +36,7 @@ usage:
                                            docs/reports/demo.json bit for bit (--no-rtl: a build
                                            without the RTL; its rows are left out of both sides)
 """
+
 import datetime
 import json
 import os
@@ -79,11 +80,11 @@ def rel_link(doc, target):
 
 # ---- Markdown tables ----
 
+
 def split_row(line):
     cells, cur, i = [], "", 0
     s = line.strip()
-    if s.startswith("|"):
-        s = s[1:]
+    s = s.removeprefix("|")
     if s.endswith("|") and not s.endswith("\\|"):
         s = s[:-1]
     while i < len(s):
@@ -153,9 +154,10 @@ def source_line(doc, source, extra=""):
 
 # ---- kinds ----
 
+
 def fig_table(root, doc, source, opts):
     header, rows = pick_table(source, read(root, source), opts)
-    return render_table(header, rows) + ["", source_line(doc, source)]
+    return [*render_table(header, rows), "", source_line(doc, source)]
 
 
 def fig_cell(root, doc, source, opts):
@@ -189,11 +191,11 @@ def fig_text(root, doc, source, opts):
     head = [lines[0]] if start > 0 and lines and lines[0].startswith("$ ") else []
     if head and start > 1:
         head.append("...")
-    return ["```"] + head + lines[start:end] + ["```", "", source_line(doc, source)]
+    return ["```", *head, *lines[start:end], "```", "", source_line(doc, source)]
 
 
 def fmt_duration(seconds):
-    m, s = divmod(int(round(seconds)), 60)
+    m, s = divmod(round(seconds), 60)
     return f"{m} min {s:02d} s" if m else f"{s} s"
 
 
@@ -203,21 +205,27 @@ def view_timings(doc, source, data):
         wall = run.get("wall_seconds")
         tests = run.get("tests_passed")
         total = run.get("tests_total")
-        rows.append([
-            f"`{run['command']}`",
-            fmt_duration(wall) if wall is not None else "not measured yet",
-            (f"{tests} of {total} passed" if total else f"{tests} passed") if tests is not None else "-",
-            run.get("date") or "-",
-            run.get("machine") or "-",
-        ])
+        rows.append(
+            [
+                f"`{run['command']}`",
+                fmt_duration(wall) if wall is not None else "not measured yet",
+                (f"{tests} of {total} passed" if total else f"{tests} passed")
+                if tests is not None
+                else "-",
+                run.get("date") or "-",
+                run.get("machine") or "-",
+            ]
+        )
     header = ["command (fresh clone)", "wall time", "tests", "date", "machine"]
-    return render_table(header, rows) + ["", source_line(doc, source, f" ({data['how']})")]
+    return [*render_table(header, rows), "", source_line(doc, source, f" ({data['how']})")]
 
 
 def view_demo(doc, source, data):
     summary = data["summary"]
-    rows = [["paper, without correction", "9.01", "16.7", "7.18 (opposite sign)"],
-            ["paper, with correction", "0.76", "3.21", "0.00"]]
+    rows = [
+        ["paper, without correction", "9.01", "16.7", "7.18 (opposite sign)"],
+        ["paper, with correction", "0.76", "3.21", "0.00"],
+    ]
     # summary.json keeps the rows sorted by name: print them in the order the demo prints them.
     printed = data.get("stdout", [])
 
@@ -227,28 +235,68 @@ def view_demo(doc, source, data):
 
     for name, s in sorted(summary["table3"].items(), key=lambda kv: (order(kv[0]), kv[0])):
         rows.append([name, f"{s['rms']:.3f}", f"{s['max_abs']:.3f}", f"{s['mean']:+.3f}"])
-    lines = render_table(["chain (validation recording, paper scenario)", "RMS °", "max °", "mean °"],
-                         rows)
-    lines += ["", f"Zero offset estimated by the calibration: {summary['zero_offset_deg']:+.3f}°; "
-              f"bit-accurate vs float: max {summary['bit_accurate_vs_float_max_deg']:.4f}°; "
-              f"{summary['words']} register words. Independent per-channel noise σ = 0.05: "
-              f"Cramér–Rao floor {summary['independent_noise']['crlb_rms_deg']:.3f}° RMS, "
-              f"corrected {summary['independent_noise']['fixed']['rms']:.3f}° RMS (bit-accurate).",
-              "", source_line(doc, source, f" (`anglecore {' '.join(data['command'])}`, "
-                                           f"commit {data['commit'][:7]})")]
+    lines = render_table(
+        ["chain (validation recording, paper scenario)", "RMS °", "max °", "mean °"], rows
+    )
+    lines += [
+        "",
+        (
+            f"Zero offset estimated by the calibration: {summary['zero_offset_deg']:+.3f}°; "
+            f"bit-accurate vs float: max {summary['bit_accurate_vs_float_max_deg']:.4f}°; "
+            f"{summary['words']} register words. Independent per-channel noise σ = 0.05: "
+            f"Cramér–Rao floor {summary['independent_noise']['crlb_rms_deg']:.3f}° RMS, "
+            f"corrected {summary['independent_noise']['fixed']['rms']:.3f}° RMS (bit-accurate)."
+        ),
+        "",
+        source_line(
+            doc, source, f" (`anglecore {' '.join(data['command'])}`, commit {data['commit'][:7]})"
+        ),
+    ]
     return lines
 
 
 def view_demo_sweep(doc, source, data):
-    rows = [[str(p["degree"]), str(p["regions"]), str(p["words"]), f"{p['float']['rms']:.4f}",
-             f"{p['float']['max_abs']:.4f}", f"{p['fixed']['rms']:.4f}", f"{p['fixed']['max_abs']:.4f}",
-             str(p["coef_f"])] for p in data["summary"]["sweep"]]
-    rows += [[m["mode"] + f" (`{m['params']}`)", "", str(m["words"]), "", "",
-              f"{m['fixed']['rms']:.4f}", f"{m['fixed']['max_abs']:.4f}", ""]
-             for m in data["summary"]["modes"]]
-    header = ["degree / mode", "regions", "words", "float RMS °", "float max °",
-              "bit-accurate RMS °", "bit-accurate max °", "COEF_F"]
-    return render_table(header, rows) + ["", source_line(doc, source, f" (`anglecore {' '.join(data['command'])}`)")]
+    rows = [
+        [
+            str(p["degree"]),
+            str(p["regions"]),
+            str(p["words"]),
+            f"{p['float']['rms']:.4f}",
+            f"{p['float']['max_abs']:.4f}",
+            f"{p['fixed']['rms']:.4f}",
+            f"{p['fixed']['max_abs']:.4f}",
+            str(p["coef_f"]),
+        ]
+        for p in data["summary"]["sweep"]
+    ]
+    rows += [
+        [
+            m["mode"] + f" (`{m['params']}`)",
+            "",
+            str(m["words"]),
+            "",
+            "",
+            f"{m['fixed']['rms']:.4f}",
+            f"{m['fixed']['max_abs']:.4f}",
+            "",
+        ]
+        for m in data["summary"]["modes"]
+    ]
+    header = [
+        "degree / mode",
+        "regions",
+        "words",
+        "float RMS °",
+        "float max °",
+        "bit-accurate RMS °",
+        "bit-accurate max °",
+        "COEF_F",
+    ]
+    return [
+        *render_table(header, rows),
+        "",
+        source_line(doc, source, f" (`anglecore {' '.join(data['command'])}`)"),
+    ]
 
 
 VIEWS = {"timings": view_timings, "demo": view_demo, "demo-sweep": view_demo_sweep}
@@ -274,7 +322,9 @@ KINDS = {"table": fig_table, "text": fig_text, "cell": fig_cell, "json": fig_jso
 def generate(root, doc, spec):
     words = shlex.split(spec)
     if len(words) < 2 or words[0] not in KINDS:
-        raise FigureError(f"bad figure spec {spec!r}: KIND SOURCE [key=value ...], KIND in {sorted(KINDS)}")
+        raise FigureError(
+            f"bad figure spec {spec!r}: KIND SOURCE [key=value ...], KIND in {sorted(KINDS)}"
+        )
     opts = {}
     for w in words[2:]:
         if "=" not in w:
@@ -301,13 +351,13 @@ def rewrite(root, doc, text):
             continue
         count += 1
         where = f"{doc}:{i + 1}"
-        if CLOSE in line[m.end():]:  # inline: one value
+        if CLOSE in line[m.end() :]:  # inline: one value
             try:
                 body = generate(root, doc, m.group(1))
                 if len(body) != 1:
                     raise FigureError("an inline figure must be one value (use a block)")
                 close = line.index(CLOSE, m.end())
-                out.append(line[:m.end()] + body[0] + line[close:])
+                out.append(line[: m.end()] + body[0] + line[close:])
                 if out[-1] != line:
                     stale.append(i + 1)
             except FigureError as e:
@@ -329,8 +379,8 @@ def rewrite(root, doc, text):
             body = generate(root, doc, m.group(1))
         except FigureError as e:
             errors.append(f"{where}: {e}")
-            body = lines[i + 1:end]
-        if body != lines[i + 1:end]:
+            body = lines[i + 1 : end]
+        if body != lines[i + 1 : end]:
             stale.append(i + 1)
         out.append(line)
         out.extend(body)
@@ -340,6 +390,7 @@ def rewrite(root, doc, text):
 
 
 # ---- links ----
+
 
 def slug(heading):
     s = re.sub(r"[`*]|<[^>]*>", "", heading.strip().lower())
@@ -361,7 +412,7 @@ def anchors(text):
 
 
 def strip_fences(text):
-    return re.sub(r"^```.*?^```", "", text, flags=re.S | re.M)
+    return re.sub(r"^```.*?^```", "", text, flags=re.DOTALL | re.MULTILINE)
 
 
 def strip_code(text):
@@ -411,14 +462,20 @@ def run_docs(root, write):
         return 1 if errors else 0
     for doc in changed:
         where = ", ".join(f"{doc}:{n}" for n in stale_at[doc]) or doc
-        print(f"doc_figures: {where}: the figure differs from its report "
-              f"(run `python3 scripts/doc_figures.py write` and commit)", file=sys.stderr)
-    print(f"doc_figures: {figures} figures in {len(doc_files(root))} files, "
-          f"{len(changed)} stale, {len(errors)} errors")
+        print(
+            f"doc_figures: {where}: the figure differs from its report "
+            f"(run `python3 scripts/doc_figures.py write` and commit)",
+            file=sys.stderr,
+        )
+    print(
+        f"doc_figures: {figures} figures in {len(doc_files(root))} files, "
+        f"{len(changed)} stale, {len(errors)} errors"
+    )
     return 1 if errors or changed else 0
 
 
 # ---- the demo report ----
+
 
 def run_demo(anglecore, no_rtl=False):
     """Runs the demo in a fresh folder; returns (stdout, summary.json, report.md)."""
@@ -439,13 +496,14 @@ def run_demo(anglecore, no_rtl=False):
 
 def demo_record(root, anglecore):
     stdout, summary, report = run_demo(anglecore)
-    commit = subprocess.run(["git", "-C", root, "rev-parse", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
+    commit = subprocess.run(
+        ["git", "-C", root, "rev-parse", "HEAD"], capture_output=True, text=True
+    ).stdout.strip()
     data = {
         "command": DEMO_COMMAND,
         "how": "scripts/doc_figures.py demo-record build/anglecore: runs `anglecore demo --no-plots` "
-               "in an empty folder and keeps its stdout, out/demo/summary.json and out/demo/report.md; "
-               "CTest doc_demo_report runs it again and requires the same output bit for bit",
+        "in an empty folder and keeps its stdout, out/demo/summary.json and out/demo/report.md; "
+        "CTest doc_demo_report runs it again and requires the same output bit for bit",
         "commit": commit,
         "date": datetime.date.today().isoformat(),
         "stdout": stdout.splitlines(),
@@ -466,7 +524,7 @@ def without_rtl(lines):
     """The recorded demo's lines as `demo --no-rtl` writes them: no RTL rows, and the report's
     command line with the flag it ran with."""
     recorded = "`anglecore " + " ".join(DEMO_COMMAND) + "`"
-    run = "`anglecore " + " ".join(DEMO_COMMAND + ["--no-rtl"]) + "`"
+    run = "`anglecore " + " ".join([*DEMO_COMMAND, "--no-rtl"]) + "`"
     return [l.replace(recorded, run) for l in lines if not RTL_ROW.search(l)]
 
 
@@ -489,26 +547,37 @@ def demo_check(root, anglecore, no_rtl):
     want_out, want_sum, want_rep = data["stdout"], data["summary"], data["report_md"]
     if no_rtl:
         want_out, want_rep = without_rtl(want_out), without_rtl(want_rep)
-        want_sum = dict(want_sum, table3={k: v for k, v in want_sum["table3"].items() if not RTL_ROW.search(k)})
+        want_sum = dict(
+            want_sum, table3={k: v for k, v in want_sum["table3"].items() if not RTL_ROW.search(k)}
+        )
     bad = 0
-    for name, got, want in (("stdout", stdout.splitlines(), want_out),
-                            ("report.md", report.splitlines(), want_rep)):
+    for name, got, want in (
+        ("stdout", stdout.splitlines(), want_out),
+        ("report.md", report.splitlines(), want_rep),
+    ):
         if got != want:
             bad += 1
             for i in range(max(len(got), len(want))):
                 g = got[i] if i < len(got) else "<missing>"
                 w = want[i] if i < len(want) else "<missing>"
                 if g != w:
-                    print(f"doc_figures: demo {name} line {i + 1}:\n  now:      {g}\n  recorded: {w}",
-                          file=sys.stderr)
+                    print(
+                        f"doc_figures: demo {name} line {i + 1}:\n  now:      {g}\n  recorded: {w}",
+                        file=sys.stderr,
+                    )
                     break
     if summary != want_sum:
         bad += 1
         path, got, want = first_difference(summary, want_sum)
-        print(f"doc_figures: demo summary.json differs at {path}:\n  now:      "
-              f"{json.dumps(got)[:400]}\n  recorded: {json.dumps(want)[:400]}", file=sys.stderr)
-    print(f"doc_figures: demo {'differs from' if bad else 'equals'} {DEMO_REPORT} "
-          f"({'without' if no_rtl else 'with'} the RTL rows)")
+        print(
+            f"doc_figures: demo summary.json differs at {path}:\n  now:      "
+            f"{json.dumps(got)[:400]}\n  recorded: {json.dumps(want)[:400]}",
+            file=sys.stderr,
+        )
+    print(
+        f"doc_figures: demo {'differs from' if bad else 'equals'} {DEMO_REPORT} "
+        f"({'without' if no_rtl else 'with'} the RTL rows)"
+    )
     return 1 if bad else 0
 
 

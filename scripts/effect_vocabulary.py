@@ -20,6 +20,7 @@ simulate --list-effects --json F` lists it. This script
 
 usage: effect_vocabulary.py [--root DIR] write|check ANGLECORE
 """
+
 import json
 import os
 import re
@@ -40,11 +41,15 @@ class VocabularyError(Exception):
 def listing(anglecore):
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "effects.json")
-        r = subprocess.run([anglecore, "simulate", "--list-effects", "--json", path],
-                           capture_output=True, text=True)
+        r = subprocess.run(
+            [anglecore, "simulate", "--list-effects", "--json", path],
+            capture_output=True,
+            text=True,
+        )
         if r.returncode != 0:
-            raise VocabularyError(f"{anglecore} simulate --list-effects failed ({r.returncode}): "
-                                  f"{r.stderr.strip()}")
+            raise VocabularyError(
+                f"{anglecore} simulate --list-effects failed ({r.returncode}): {r.stderr.strip()}"
+            )
         with open(path, encoding="utf-8") as f:
             return json.load(f)["effects"]
 
@@ -66,13 +71,17 @@ def report(effects):
         meaning = e["widened"] or e["meaning"]
         fit = e["fit"] + (f"; {e['fit_note']}" if e["fit_note"] else "")
         status = re.sub(r"^(added|widened)", r"**\1**", e["status"])
-        lines.append(f"| `{e['name']}` | {cell(meaning)} | {e['domain']} | {cell(fit)} | {cell(status)} |")
+        lines.append(
+            f"| `{e['name']}` | {cell(meaning)} | {e['domain']} | {cell(fit)} | {cell(status)} |"
+        )
     lines += ["", "| effect | parameter | default | unit | what it does |", "|---|---|---|---|---|"]
     for e in effects:
         for p in e["params"]:
             default = f"{p['default']:g}"
             unit = p["unit"] or "-"
-            lines.append(f"| `{e['name']}` | `{p['name']}` | {default} | {cell(unit)} | {cell(p['what'])} |")
+            lines.append(
+                f"| `{e['name']}` | `{p['name']}` | {default} | {cell(unit)} | {cell(p['what'])} |"
+            )
     return "\n".join(lines) + "\n"
 
 
@@ -111,22 +120,30 @@ def check_contract(root, effects):
         in_table.add(name)
         if name in VERDICTS:
             if name in by_name:
-                errors.append(f"{CONTRACT}:{line}: `{name}` is a verdict, but the effect table has it")
+                errors.append(
+                    f"{CONTRACT}:{line}: `{name}` is a verdict, but the effect table has it"
+                )
             continue
         if name not in by_name:
-            errors.append(f"{CONTRACT}:{line}: effect `{name}`: not in the effect table "
-                          "(the contract removes no name)")
+            errors.append(
+                f"{CONTRACT}:{line}: effect `{name}`: not in the effect table "
+                "(the contract removes no name)"
+            )
         elif by_name[name]["meaning"] != meaning:
-            errors.append(f"{CONTRACT}:{line}: effect `{name}`: the contract says {meaning!r}, the "
-                          f"effect table's meaning is {by_name[name]['meaning']!r}")
+            errors.append(
+                f"{CONTRACT}:{line}: effect `{name}`: the contract says {meaning!r}, the "
+                f"effect table's meaning is {by_name[name]['meaning']!r}"
+            )
     for e in effects:
         if e["name"] in in_table:
             continue
         said = f"`{e['name']}` ({e['meaning']})"
         if said not in added:
-            errors.append(f"{CONTRACT}:{added_line or 1}: effect `{e['name']}` of the effect table is "
-                          f"neither a row of the vocabulary nor named as {said!r} in its "
-                          "'Added since' paragraph")
+            errors.append(
+                f"{CONTRACT}:{added_line or 1}: effect `{e['name']}` of the effect table is "
+                f"neither a row of the vocabulary nor named as {said!r} in its "
+                "'Added since' paragraph"
+            )
     return errors
 
 
@@ -144,13 +161,17 @@ def main(argv):
         if argv[0] == "write":
             with open(path, "w", encoding="utf-8") as f:
                 f.write(text)
-            print(f"wrote {REPORT} ({len(effects)} effects); now run python3 scripts/doc_figures.py write")
+            print(
+                f"wrote {REPORT} ({len(effects)} effects); now run python3 scripts/doc_figures.py write"
+            )
             return 0
         errors = check_contract(root, effects)
         old = open(path, encoding="utf-8").read() if os.path.exists(path) else ""
         if old != text:
-            errors.append(f"{REPORT}: differs from the effect table; run python3 "
-                          "scripts/effect_vocabulary.py write build/anglecore")
+            errors.append(
+                f"{REPORT}: differs from the effect table; run python3 "
+                "scripts/effect_vocabulary.py write build/anglecore"
+            )
     except VocabularyError as e:
         print(f"effect_vocabulary: {e}", file=sys.stderr)
         return 2

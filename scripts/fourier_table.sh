@@ -26,6 +26,6 @@ for degree in 0 1 2 3; do
     "$bin" estimate --regs "$img" --in "$out/val.csv" --engine fixed --json "$out/d${degree}_k$k.fixed.json" >/dev/null
     words=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['words'])" "$out/d${degree}_k$k.cal.json")
     echo "| $degree | $k | $words | $(field "$out/d${degree}_k$k.float.json" rms) | $(field "$out/d${degree}_k$k.float.json" max_abs)" \
-         "| $(field "$out/d${degree}_k$k.fixed.json" rms) | $(field "$out/d${degree}_k$k.fixed.json" max_abs) |"
+      "| $(field "$out/d${degree}_k$k.fixed.json" rms) | $(field "$out/d${degree}_k$k.fixed.json" max_abs) |"
   done
 done

@@ -14,16 +14,28 @@ while getopts "s:j:h" o; do
   case $o in
     s) seconds=$OPTARG ;;
     j) jobs=$OPTARG ;;
-    h) usage; exit 0 ;;
-    *) usage >&2; exit 2 ;;
+    h)
+      usage
+      exit 0
+      ;;
+    *)
+      usage >&2
+      exit 2
+      ;;
   esac
 done
 shift $((OPTIND - 1))
 all=$(sed -n 's/^set(ACORE_FUZZ_TARGETS \(.*\))$/\1/p' tests/fuzz/CMakeLists.txt)
 targets=${*:-$all}
-[ -n "$targets" ] || { echo "fuzz.sh: no targets found in tests/fuzz/CMakeLists.txt" >&2; exit 2; }
+[ -n "$targets" ] || {
+  echo "fuzz.sh: no targets found in tests/fuzz/CMakeLists.txt" >&2
+  exit 2
+}
 cxx=$(command -v clang++ || command -v clang++-14 || true)
-[ -n "$cxx" ] || { echo "fuzz.sh: clang++ not found (Debian: clang, libclang-rt-14-dev)" >&2; exit 2; }
+[ -n "$cxx" ] || {
+  echo "fuzz.sh: clang++ not found (Debian: clang, libclang-rt-14-dev)" >&2
+  exit 2
+}
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$cxx" \

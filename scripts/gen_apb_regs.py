@@ -22,6 +22,7 @@ ROOT, or to OUT when given):
 --check exits 1, printing a diff, when a file under ROOT differs from what its description gives
 (CTest apb_regs_generated). Exit 2 on a malformed description, naming its file, line and field.
 """
+
 import argparse
 import difflib
 import glob
@@ -34,14 +35,34 @@ COMMAND = "python3 scripts/gen_apb_regs.py"
 RTL = "rtl"  # the folder of the descriptions and of the RTL they give
 # Software access of a field, and what the register block builds for it (the hardware's view).
 ACCESS = {
-    "RO": ("read only", "no flop: a `reg`'s field reads the hardware's value (input rg_<reg>_<field>), "
-           "a `const`'s its RESET"),
-    "RW": ("read/write", "a flop with its RESET: its value (rg_<reg>_<field>) and its write strobe "
-           "(rg_<reg>_<field>_we, high in the clock it is written)"),
-    "W1C": ("write 1 to clear", "a sticky flop: the hardware sets it (input rg_<reg>_<field>_set, "
-            "a set wins over a clear in the same clock), a write of 1 clears it; its value"),
-    "W1": ("write 1 to act, reads 0", "no flop: a pulse (rg_<reg>_<field>) in the clock a write "
-           "with the field's bits set takes effect"),
+    "RO": (
+        "read only",
+        (
+            "no flop: a `reg`'s field reads the hardware's value (input rg_<reg>_<field>), "
+            "a `const`'s its RESET"
+        ),
+    ),
+    "RW": (
+        "read/write",
+        (
+            "a flop with its RESET: its value (rg_<reg>_<field>) and its write strobe "
+            "(rg_<reg>_<field>_we, high in the clock it is written)"
+        ),
+    ),
+    "W1C": (
+        "write 1 to clear",
+        (
+            "a sticky flop: the hardware sets it (input rg_<reg>_<field>_set, "
+            "a set wins over a clear in the same clock), a write of 1 clears it; its value"
+        ),
+    ),
+    "W1": (
+        "write 1 to act, reads 0",
+        (
+            "no flop: a pulse (rg_<reg>_<field>) in the clock a write "
+            "with the field's bits set takes effect"
+        ),
+    ),
 }
 # The description's line kinds: (syntax, what it means). Attributes apply to the field (or window)
 # above them.
@@ -54,20 +75,40 @@ KINDS = {
     "space": ("space SIZE", "the address space the default APB_AW decodes"),
     "reg": ("reg OFFSET NAME ACCESS summary", "a 32-bit register at a byte OFFSET below 0x100"),
     "const": ("const OFFSET NAME RO summary", "a register of constants (its fields' RESET values)"),
-    "window": ("window OFFSET NAME ACCESS WORDS summary",
-               "WORDS 32-bit words from OFFSET (word a at OFFSET + 4a), kept outside the block"),
+    "window": (
+        "window OFFSET NAME ACCESS WORDS summary",
+        "WORDS 32-bit words from OFFSET (word a at OFFSET + 4a), kept outside the block",
+    ),
     "field": ("field BITS NAME ACCESS RESET meaning", "a field of the register (or window) above"),
-    "range": ("range LO HI [word]", "the RW field above accepts LO..HI (numbers or parameters of the "
-              "owner); a write outside is an error without effect; `word`: the whole written word "
-              "from the field's lsb up is compared (bits above the field must be 0)"),
-    "lock": ("lock TEXT", "the owner refuses the field above (W1: a write that sets it; RW: a write "
-             "to its register) or any access to the window above, with an error and no effect, "
-             "while its input rg_<reg>_<field>_lock is high; TEXT says when"),
-    "clears": ("clears REG", "the W1 field above clears every W1C field of REG (no port of its own)"),
+    "range": (
+        "range LO HI [word]",
+        (
+            "the RW field above accepts LO..HI (numbers or parameters of the "
+            "owner); a write outside is an error without effect; `word`: the whole written word "
+            "from the field's lsb up is compared (bits above the field must be 0)"
+        ),
+    ),
+    "lock": (
+        "lock TEXT",
+        (
+            "the owner refuses the field above (W1: a write that sets it; RW: a write "
+            "to its register) or any access to the window above, with an error and no effect, "
+            "while its input rg_<reg>_<field>_lock is high; TEXT says when"
+        ),
+    ),
+    "clears": (
+        "clears REG",
+        "the W1 field above clears every W1C field of REG (no port of its own)",
+    ),
     "frac": ("frac N", "the field above is unsigned fixed point with N fraction bits"),
     "size": ("size PARAM", "the window above holds PARAM words of the owner (at most its WORDS)"),
-    "irq": ("irq REG EN_REG.FIELD PEND_REG.FIELD", "REG's W1C bits are bits 0..n-1, and the enable "
-            "and pending fields have one bit per W1C bit at the same positions"),
+    "irq": (
+        "irq REG EN_REG.FIELD PEND_REG.FIELD",
+        (
+            "REG's W1C bits are bits 0..n-1, and the enable "
+            "and pending fields have one bit per W1C bit at the same positions"
+        ),
+    ),
     "note": ("note text", "a paragraph of the table's page, after the tables"),
 }
 NUM = r"0x[0-9A-Fa-f]+|\d+"
@@ -85,7 +126,14 @@ def isnum(text):
 class Field:
     def __init__(self, msb, lsb, name, access, reset, meaning, where):
         self.msb, self.lsb, self.name, self.access, self.reset, self.meaning, self.where = (
-            msb, lsb, name, access, reset, meaning, where)
+            msb,
+            lsb,
+            name,
+            access,
+            reset,
+            meaning,
+            where,
+        )
         self.range = None  # (lo, hi, word): lo/hi an int or a parameter name
         self.lock = None  # when the owner refuses it (text)
         self.clears = None  # the register whose W1C fields a W1 field clears
@@ -111,7 +159,11 @@ class Field:
     def port(self):
         """The field's port stem: <reg>_<field>, or <reg> when the names are equal."""
         r = self.reg.name.lower()
-        return r if self.name == self.reg.name or self.reg.kind == "window" else f"{r}_{self.name.lower()}"
+        return (
+            r
+            if self.name == self.reg.name or self.reg.kind == "window"
+            else f"{r}_{self.name.lower()}"
+        )
 
     def lp(self):
         """The localparam of its lsb (<REG>_<FIELD>)."""
@@ -130,7 +182,14 @@ class Field:
 class Reg:
     def __init__(self, kind, offset, name, access, summary, words, where):
         self.kind, self.offset, self.name, self.access, self.summary, self.words, self.where = (
-            kind, offset, name, access, summary, words, where)
+            kind,
+            offset,
+            name,
+            access,
+            summary,
+            words,
+            where,
+        )
         self.fields = []
         self.size = None  # window: the owner's parameter of the words in use
         self.lock = None
@@ -219,7 +278,9 @@ def parse(root, rel):
             blk.owner = args[0]
         elif kind == "cpp":
             need(2)
-            if not re.fullmatch(r"[\w/]+\.hpp", args[0]) or not re.fullmatch(r"\w+(::\w+)*", args[1]):
+            if not re.fullmatch(r"[\w/]+\.hpp", args[0]) or not re.fullmatch(
+                r"\w+(::\w+)*", args[1]
+            ):
                 raise DescError(f"{where}: expected 'cpp PATH.hpp NAME::SPACE', not '{rest}'")
             blk.cpp, blk.namespace = args
         elif kind == "doc":
@@ -250,19 +311,27 @@ def parse(root, rel):
             if not re.fullmatch(NAME, name):
                 raise DescError(f"{where}: register name '{name}' is not UPPER_CASE")
             if access not in ACCESS:
-                raise DescError(f"{where}: access '{access}' of {name} is not one of {', '.join(ACCESS)}")
+                raise DescError(
+                    f"{where}: access '{access}' of {name} is not one of {', '.join(ACCESS)}"
+                )
             if offset % 4:
                 raise DescError(f"{where}: offset {parts[0]} of {name} is not word-aligned")
             words = num(parts[3], "words", where) if kind == "window" else 1
             if kind == "window" and (words < 2 or words & (words - 1) or offset % (4 * words)):
-                raise DescError(f"{where}: window {name}: WORDS {parts[3]} must be a power of two >= 2 "
-                                f"and the offset a multiple of its size")
+                raise DescError(
+                    f"{where}: window {name}: WORDS {parts[3]} must be a power of two >= 2 "
+                    f"and the offset a multiple of its size"
+                )
             if kind == "window" and access != "RW":
                 raise DescError(f"{where}: window {name} must be RW")
             if kind != "window" and offset >= 0x100:
-                raise DescError(f"{where}: register {name} at {parts[0]}: registers live below 0x100")
+                raise DescError(
+                    f"{where}: register {name} at {parts[0]}: registers live below 0x100"
+                )
             if kind == "window" and offset < 0x100:
-                raise DescError(f"{where}: window {name} at {parts[0]}: windows live above the registers")
+                raise DescError(
+                    f"{where}: window {name} at {parts[0]}: windows live above the registers"
+                )
             if kind == "const" and access != "RO":
                 raise DescError(f"{where}: register of constants {name} must be RO")
             last_reg = Reg(kind, offset, name, access, parts[-1], words, where)
@@ -277,7 +346,9 @@ def parse(root, rel):
             bits, name, access, reset, meaning = parts
             m = re.fullmatch(r"(\d+)(?::(\d+))?|(" + NAME + r")-1:0", bits)
             if not m:
-                raise DescError(f"{where}: bits '{bits}' of field {name}: expected msb:lsb, a bit or PARAM-1:0")
+                raise DescError(
+                    f"{where}: bits '{bits}' of field {name}: expected msb:lsb, a bit or PARAM-1:0"
+                )
             if m.group(3):
                 msb, lsb = m.group(3), 0
             else:
@@ -288,29 +359,43 @@ def parse(root, rel):
             if not re.fullmatch(NAME, name):
                 raise DescError(f"{where}: field name '{name}' is not UPPER_CASE")
             if access not in ACCESS:
-                raise DescError(f"{where}: access '{access}' of field {name} is not one of {', '.join(ACCESS)}")
+                raise DescError(
+                    f"{where}: access '{access}' of field {name} is not one of {', '.join(ACCESS)}"
+                )
             if not re.fullmatch(r"-|" + NUM + "|" + NAME, reset):
-                raise DescError(f"{where}: reset '{reset}' of field {name}: a number, a parameter or '-'")
+                raise DescError(
+                    f"{where}: reset '{reset}' of field {name}: a number, a parameter or '-'"
+                )
             reg = last_reg
             if any(x.name == name for x in reg.fields):
                 raise DescError(f"{where}: field {name} twice in {reg.name}")
             if reg.kind == "window" and (reg.fields or access != "RW"):
                 raise DescError(f"{where}: window {reg.name} has one RW field (the word)")
             if reg.fields and (not isinstance(msb, int) or not isinstance(reg.fields[0].msb, int)):
-                raise DescError(f"{where}: field {name}: a field whose width is a parameter is its "
-                                f"register's only field")
+                raise DescError(
+                    f"{where}: field {name}: a field whose width is a parameter is its "
+                    f"register's only field"
+                )
             if isinstance(msb, int):
                 for x in reg.fields:
                     if not (msb < x.lsb or lsb > x.msb):
-                        raise DescError(f"{where}: field {name} ({bits}) overlaps {x.name} ({x.bits()})")
+                        raise DescError(
+                            f"{where}: field {name} ({bits}) overlaps {x.name} ({x.bits()})"
+                        )
             if access in ("W1", "W1C") and not (isinstance(msb, int) and isnum(reset)):
-                raise DescError(f"{where}: field {name}: a {access} field has fixed bits and a number as RESET")
+                raise DescError(
+                    f"{where}: field {name}: a {access} field has fixed bits and a number as RESET"
+                )
             if access == "W1" and int(reset, 0) != 0:
                 raise DescError(f"{where}: field {name}: a W1 field reads 0: RESET 0")
             if access == "RW" and reg.kind == "reg" and reset == "-":
-                raise DescError(f"{where}: field {name}: an RW field has a RESET (a number or a parameter)")
+                raise DescError(
+                    f"{where}: field {name}: an RW field has a RESET (a number or a parameter)"
+                )
             if isnum(reset) and isinstance(msb, int) and int(reset, 0) >> (msb + 1 - lsb):
-                raise DescError(f"{where}: reset {reset} of field {name} does not fit its {msb + 1 - lsb} bits")
+                raise DescError(
+                    f"{where}: reset {reset} of field {name} does not fit its {msb + 1 - lsb} bits"
+                )
             last_field = Field(msb, lsb, name, access, reset, meaning, where)
             last_field.reg = reg
             reg.fields.append(last_field)
@@ -325,19 +410,27 @@ def parse(root, rel):
                 elif re.fullmatch(NAME, a):
                     lim.append(a)
                 else:
-                    raise DescError(f"{where}: range limit '{a}' of field {f.name}: a number or a parameter")
+                    raise DescError(
+                        f"{where}: range limit '{a}' of field {f.name}: a number or a parameter"
+                    )
             word = len(args) == 3
             if word and len(f.reg.fields) > 1:
-                raise DescError(f"{where}: range of field {f.name}: 'word' needs the register's only field")
+                raise DescError(
+                    f"{where}: range of field {f.name}: 'word' needs the register's only field"
+                )
             w = f.width()
             if not isinstance(w, int):
                 raise DescError(f"{where}: range of field {f.name}: its width is a parameter")
             nums = [v for v in lim if isinstance(v, int)]
             if any(v > (1 << w) - 1 for v in nums) or (len(nums) == 2 and nums[0] > nums[1]):
-                raise DescError(f"{where}: range {args[0]}..{args[1]} of field {f.name}: not within its "
-                                f"{w} bits, or empty")
+                raise DescError(
+                    f"{where}: range {args[0]}..{args[1]} of field {f.name}: not within its "
+                    f"{w} bits, or empty"
+                )
             if isnum(f.reset) and len(nums) == 2 and not nums[0] <= int(f.reset, 0) <= nums[1]:
-                raise DescError(f"{where}: field {f.name}: its reset {f.reset} is outside its range")
+                raise DescError(
+                    f"{where}: field {f.name}: its reset {f.reset} is outside its range"
+                )
             f.range = (lim[0], lim[1], word)
         elif kind == "lock":
             need(1, "text")
@@ -346,7 +439,9 @@ def parse(root, rel):
             elif last_reg is not None and last_reg.kind == "window":
                 raise DescError(f"{where}: 'lock' of a window follows its window line")
             else:
-                attr_field(("RW", "W1"), "only an RW or W1 field (or a window) has a lock").lock = rest
+                attr_field(
+                    ("RW", "W1"), "only an RW or W1 field (or a window) has a lock"
+                ).lock = rest
         elif kind == "clears":
             need(1)
             attr_field(("W1",), "only a W1 field clears").clears = args[0]
@@ -361,7 +456,9 @@ def parse(root, rel):
             if last_reg is None or last_reg.kind != "window" or last_field is not None:
                 raise DescError(f"{where}: 'size' follows its window line")
             if not re.fullmatch(NAME, args[0]):
-                raise DescError(f"{where}: size '{args[0]}' of window {last_reg.name} is not a parameter")
+                raise DescError(
+                    f"{where}: size '{args[0]}' of window {last_reg.name} is not a parameter"
+                )
             last_reg.size = args[0]
         elif kind == "irq":
             need(3)
@@ -387,24 +484,34 @@ def validate(blk):
             offsets[o] = r.name
         if not r.fields:
             raise DescError(f"{r.where}: register {r.name} has no field")
-        if r.kind == "const" and any(not isinstance(x.msb, int) or x.reset == "-" for x in r.fields):
-            raise DescError(f"{r.where}: register of constants {r.name}: every field needs fixed bits "
-                            f"and a reset value")
+        if r.kind == "const" and any(
+            not isinstance(x.msb, int) or x.reset == "-" for x in r.fields
+        ):
+            raise DescError(
+                f"{r.where}: register of constants {r.name}: every field needs fixed bits "
+                f"and a reset value"
+            )
         ro = all(x.access == "RO" for x in r.fields)
         if (r.access == "RO") != ro:
-            raise DescError(f"{r.where}: register {r.name} is {r.access} but its fields say "
-                            f"{'read only' if ro else 'writable'}")
+            raise DescError(
+                f"{r.where}: register {r.name} is {r.access} but its fields say "
+                f"{'read only' if ro else 'writable'}"
+            )
         if r.kind == "window" and r.size is None:
             raise DescError(f"{r.where}: window {r.name} has no 'size' line ({KINDS['size'][0]})")
         for f in r.fields:
             if f.clears is not None:
                 target = next((x for x in blk.regs if x.name == f.clears), None)
                 if target is None or not any(x.access == "W1C" for x in target.fields):
-                    raise DescError(f"{f.where}: field {f.name} clears {f.clears}, which has no W1C field")
+                    raise DescError(
+                        f"{f.where}: field {f.name} clears {f.clears}, which has no W1C field"
+                    )
             stem = f.port() if r.kind != "window" else r.name.lower()
             if stem in ports:
-                raise DescError(f"{f.where}: field {r.name}.{f.name}: its port name {stem} is also "
-                                f"{ports[stem]}'s")
+                raise DescError(
+                    f"{f.where}: field {r.name}.{f.name}: its port name {stem} is also "
+                    f"{ports[stem]}'s"
+                )
             ports[stem] = f"{r.name}.{f.name}"
     params = blk.params()
     for p in params:
@@ -416,15 +523,23 @@ def validate(blk):
         if st not in by:
             raise DescError(f"{where}: irq: no register {st}")
         w1c = sorted(x.lsb for x in by[st].fields if x.access == "W1C")
-        if not w1c or w1c != list(range(len(w1c))) or any(x.width() != 1 for x in by[st].fields
-                                                           if x.access == "W1C"):
+        if (
+            not w1c
+            or w1c != list(range(len(w1c)))
+            or any(x.width() != 1 for x in by[st].fields if x.access == "W1C")
+        ):
             raise DescError(f"{where}: irq: {st}'s W1C fields must be one bit each, bits 0..n-1")
         for rf in (en, pend):
             reg, _, fld = rf.partition(".")
-            f = next((x for x in by.get(reg, Reg("", 0, "", "", "", 1, "")).fields if x.name == fld), None)
+            f = next(
+                (x for x in by.get(reg, Reg("", 0, "", "", "", 1, "")).fields if x.name == fld),
+                None,
+            )
             if f is None or f.width() != len(w1c):
-                raise DescError(f"{where}: irq: {rf} must be a field with one bit per W1C bit of {st} "
-                                f"({len(w1c)})")
+                raise DescError(
+                    f"{where}: irq: {rf} must be a field with one bit per W1C bit of {st} "
+                    f"({len(w1c)})"
+                )
 
 
 def header(comment, lines):
@@ -432,18 +547,23 @@ def header(comment, lines):
 
 
 def provenance(blk):
-    return [f"Generated by scripts/gen_apb_regs.py from {blk.path}: do not edit. Regenerate with",
-            f"  {COMMAND}"]
+    return [
+        f"Generated by scripts/gen_apb_regs.py from {blk.path}: do not edit. Regenerate with",
+        f"  {COMMAND}",
+    ]
 
 
 def reset_value(r):
     """The register's reset as a number (fields with a numeric reset), or None."""
-    if all(isnum(f.reset) or f.reset == "-" for f in r.fields) and any(isnum(f.reset) for f in r.fields):
+    if all(isnum(f.reset) or f.reset == "-" for f in r.fields) and any(
+        isnum(f.reset) for f in r.fields
+    ):
         return sum(int(f.reset, 0) << f.lsb for f in r.fields if isnum(f.reset))
     return None
 
 
 # ---- rtl/<owner>_regs.vh: the owner's view ----------------------------------------------------------
+
 
 def owner_ports(blk):
     """The block's field ports: (port, wire, direction, Verilog range, comment)."""
@@ -453,14 +573,47 @@ def owner_ports(blk):
             w = r.name.lower()
             fw = r.fields[0].vwidth()
             aw = f"{r.name}_ADDR_W"
-            out += [(f"{w}_re_o", f"rg_{w}_re", "output", "", f"{r.name}: read the word at the address"),
-                    (f"{w}_addr_o", f"rg_{w}_addr", "output", f"[{aw}-1:0]", f"{r.name}: the word index"),
-                    (f"{w}_we_o", f"rg_{w}_we", "output", "", f"{r.name}: write the word"),
-                    (f"{w}_wdata_o", f"rg_{w}_wdata", "output", f"[{fw}-1:0]", f"{r.name}: the word written"),
-                    (f"{w}_rdata_i", f"rg_{w}_rdata", "input", f"[{fw}-1:0]",
-                     f"{r.name}: the word read, the clock after {w}_re_o")]
+            out += [
+                (
+                    f"{w}_re_o",
+                    f"rg_{w}_re",
+                    "output",
+                    "",
+                    f"{r.name}: read the word at the address",
+                ),
+                (
+                    f"{w}_addr_o",
+                    f"rg_{w}_addr",
+                    "output",
+                    f"[{aw}-1:0]",
+                    f"{r.name}: the word index",
+                ),
+                (f"{w}_we_o", f"rg_{w}_we", "output", "", f"{r.name}: write the word"),
+                (
+                    f"{w}_wdata_o",
+                    f"rg_{w}_wdata",
+                    "output",
+                    f"[{fw}-1:0]",
+                    f"{r.name}: the word written",
+                ),
+                (
+                    f"{w}_rdata_i",
+                    f"rg_{w}_rdata",
+                    "input",
+                    f"[{fw}-1:0]",
+                    f"{r.name}: the word read, the clock after {w}_re_o",
+                ),
+            ]
             if r.lock:
-                out.append((f"{w}_lock_i", f"rg_{w}_lock", "input", "", f"{r.name}: any access refused {r.lock}"))
+                out.append(
+                    (
+                        f"{w}_lock_i",
+                        f"rg_{w}_lock",
+                        "input",
+                        "",
+                        f"{r.name}: any access refused {r.lock}",
+                    )
+                )
             continue
         if r.kind == "const":
             continue
@@ -469,16 +622,22 @@ def owner_ports(blk):
             desc = f"{r.name}.{f.name}"
             if f.access == "RW":
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: the value"))
-                out.append((f"{s}_we_o", f"rg_{s}_we", "output", "", f"{desc}: written in this clock"))
+                out.append(
+                    (f"{s}_we_o", f"rg_{s}_we", "output", "", f"{desc}: written in this clock")
+                )
             elif f.access == "W1C":
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: the sticky value"))
-                out.append((f"{s}_set_i", f"rg_{s}_set", "input", d, f"{desc}: set (wins over a clear)"))
+                out.append(
+                    (f"{s}_set_i", f"rg_{s}_set", "input", d, f"{desc}: set (wins over a clear)")
+                )
             elif f.access == "W1" and f.clears is None:
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: a write of 1, this clock"))
             elif f.live():
                 out.append((f"{s}_i", f"rg_{s}", "input", d, f"{desc}: the hardware's value"))
             if f.lock:
-                out.append((f"{s}_lock_i", f"rg_{s}_lock", "input", "", f"{desc}: refused {f.lock}"))
+                out.append(
+                    (f"{s}_lock_i", f"rg_{s}_lock", "input", "", f"{desc}: refused {f.lock}")
+                )
     return out
 
 
@@ -494,11 +653,26 @@ def block_params(blk):
             _, side, f = what
             # The default excludes nothing: the field's whole range.
             d = "0" if side == "lo" else str((1 << f.width()) - 1)
-            out.append((p, d, f"the {'lowest' if side == 'lo' else 'highest'} value {f.reg.name}.{f.name} "
-                              f"accepts", p))
+            out.append(
+                (
+                    p,
+                    d,
+                    (
+                        f"the {'lowest' if side == 'lo' else 'highest'} value {f.reg.name}.{f.name} "
+                        f"accepts"
+                    ),
+                    p,
+                )
+            )
     for r in blk.windows():
-        out.append((f"{r.name}_SIZE", str(r.words), f"the {r.name} window's words in use (1..{r.words})",
-                    r.size))
+        out.append(
+            (
+                f"{r.name}_SIZE",
+                str(r.words),
+                f"the {r.name} window's words in use (1..{r.words})",
+                r.size,
+            )
+        )
     for r in blk.regs:
         if r.kind == "const" and not all(isnum(f.reset) for f in r.fields):
             out.append((f"{r.name}_VALUE", "0", f"the value of {r.name}", f"{r.name}_VALUE"))
@@ -506,25 +680,37 @@ def block_params(blk):
 
 
 def gen_vh(blk):
-    out = ["// SPDX-License-Identifier: MIT\n",
-           header("//", provenance(blk) + [
-               f"The register map of {RTL}/{blk.owner}.v, included inside it (after the parameters and",
-               f"localparams its registers read): <REG>_<FIELD> is a field's lsb, <REG>_<FIELD>_W its width",
-               f"(fields wider than a bit); then a wire per port of its register block",
-               f"({RTL}/{blk.owner}_regblock.v) and the block's instance u_regs."]), "\n"]
+    out = [
+        "// SPDX-License-Identifier: MIT\n",
+        header(
+            "//",
+            [
+                *provenance(blk),
+                f"The register map of {RTL}/{blk.owner}.v, included inside it (after the parameters and",
+                "localparams its registers read): <REG>_<FIELD> is a field's lsb, <REG>_<FIELD>_W its width",
+                "(fields wider than a bit); then a wire per port of its register block",
+                f"({RTL}/{blk.owner}_regblock.v) and the block's instance u_regs.",
+            ],
+        ),
+        "\n",
+    ]
     plain = blk.plain()
     out.append("// Register word indices (byte address / 4).\n")
     for r in plain:
         out.append(f"localparam [5:0] R_{r.name} = 6'h{r.idx():02X};\n")
     ro = sum(1 << r.idx() for r in plain if not r.writable())
     wr = sum(1 << r.idx() for r in plain if r.writable())
-    out.append("// The registers the block answers, one bit per word index: read only, writable, either.\n")
+    out.append(
+        "// The registers the block answers, one bit per word index: read only, writable, either.\n"
+    )
     out.append(f"localparam [63:0] REGS_RO = 64'h{ro:016X};\n")
     out.append(f"localparam [63:0] REGS_WR = 64'h{wr:016X};\n")
     out.append(f"localparam [63:0] REGS_ALL = 64'h{ro | wr:016X};\n")
     for w in blk.windows():
-        out.append(f"// {w.name}: {w.words} words from byte 0x{w.offset:03X} (word index {w.idx()}); "
-                   f"{w.size} in use.\n")
+        out.append(
+            f"// {w.name}: {w.words} words from byte 0x{w.offset:03X} (word index {w.idx()}); "
+            f"{w.size} in use.\n"
+        )
         out.append(f"localparam integer {w.name}_BASE = {w.offset};\n")
         out.append(f"localparam integer {w.name}_WORDS = {w.words};\n")
         out.append(f"localparam integer {w.name}_ADDR_W = ({w.size} > 1) ? $clog2({w.size}) : 1;\n")
@@ -541,7 +727,9 @@ def gen_vh(blk):
     if ranged:
         out.append("// Ranges (a write outside is refused).\n")
         for f in ranged:
-            out.append(f"localparam integer {f.lp()}_MIN = {f.range[0]}, {f.lp()}_MAX = {f.range[1]};\n")
+            out.append(
+                f"localparam integer {f.lp()}_MIN = {f.range[0]}, {f.lp()}_MAX = {f.range[1]};\n"
+            )
     out.append("// Reset values of the writable registers (fields with a constant reset).\n")
     for r in plain:
         if r.writable() and all(isnum(f.reset) for f in r.fields):
@@ -560,53 +748,86 @@ def gen_vh(blk):
     # The block's instance and its wires.
     ports = owner_ports(blk)
     out.append(f"\n// ---- the register block ({RTL}/{blk.owner}_regblock.v) ----\n")
-    out.append("// APB: the owner drives rg_psel (its PSEL for the block's addresses) and returns rg_prdata\n"
-               "// (zero unless the block answers a read) and rg_pslverr; PREADY is always high.\n")
+    out.append(
+        "// APB: the owner drives rg_psel (its PSEL for the block's addresses) and returns rg_prdata\n"
+        "// (zero unless the block answers a read) and rg_pslverr; PREADY is always high.\n"
+    )
     out.append("wire rg_psel;\nwire [31:0] rg_prdata;\nwire rg_pslverr;\n")
     out.append("// A wire per field port: the owner drives the inputs (live values, set, lock).\n")
-    for port, wire, dirn, rng, comment in ports:
-        out.append(f"wire {rng + ' ' if rng else ''}{wire};  // {'in: ' if dirn == 'input' else ''}{comment}\n")
+    for _port, wire, dirn, rng, comment in ports:
+        out.append(
+            f"wire {rng + ' ' if rng else ''}{wire};  // {'in: ' if dirn == 'input' else ''}{comment}\n"
+        )
     params = block_params(blk)
     out.append(f"{blk.owner}_regblock #(\n")
     out.append(",\n".join(f"  .{p}({v})" for p, _, _, v in params) + "\n")
     out.append(") u_regs (\n")
-    conns = ["clk_i(clk_i)", "rst_i(rst_i)", "psel_i(rg_psel)", "penable_i(penable_i)",
-             "pwrite_i(pwrite_i)", "paddr_i(paddr_i)", "pwdata_i(pwdata_i)", "pstrb_i(pstrb_i)",
-             "prdata_o(rg_prdata)", "pslverr_o(rg_pslverr)"] + [f"{p}({w})" for p, w, _, _, _ in ports]
+    conns = [
+        "clk_i(clk_i)",
+        "rst_i(rst_i)",
+        "psel_i(rg_psel)",
+        "penable_i(penable_i)",
+        "pwrite_i(pwrite_i)",
+        "paddr_i(paddr_i)",
+        "pwdata_i(pwdata_i)",
+        "pstrb_i(pstrb_i)",
+        "prdata_o(rg_prdata)",
+        "pslverr_o(rg_pslverr)",
+    ] + [f"{p}({w})" for p, w, _, _, _ in ports]
     out.append(",\n".join(f"  .{c}" for c in conns) + "\n);\n")
     return "".join(out)
 
 
 # ---- rtl/<owner>_regblock.v: the register block -----------------------------------------------------
 
+
 def gen_regblock(blk):
     mod = f"{blk.owner}_regblock"
     plain, wins = blk.plain(), blk.windows()
     params = block_params(blk)
     ports = owner_ports(blk)
-    o = ["// SPDX-License-Identifier: MIT\n",
-         header("//", provenance(blk) + textwrap.wrap(
-             f"{mod}: the registers of {RTL}/{blk.owner}.v ({blk.doc}), an APB4 slave. It decodes the "
-             "address and reads in the setup phase (PSEL && !PENABLE), so the access phase returns "
-             "registered data (a window's word from the owner's memory, read the clock after the setup "
-             "phase) with zero wait states; a write takes effect at the end of its access phase. PSLVERR "
-             "(with PRDATA 0 and no effect) answers: an address outside the map or not word-aligned, a "
-             "write with PSTRB other than 4'b1111, a write to a read-only register, a value outside its "
-             "field's range, and a locked field or window (decided in the setup phase). The owner keeps "
-             "the behaviour: it drives the live values, the W1C set inputs and the locks, and uses the "
-             "values, the strobes and the W1 pulses.", 96)),
-         "`resetall\n`default_nettype none\n\n", f"module {mod} #(\n"]
-    o.append(",\n".join(f"  // {what}\n  parameter integer {p} = {d}" if not p.endswith("_VALUE") else
-                        f"  // {what}\n  parameter [31:0] {p} = 32'h0" for p, d, what, _ in params))
-    o.append("\n) (\n  input  wire clk_i,\n  // Synchronous, active high: every flop to its reset value.\n"
-             "  input  wire rst_i,\n  // APB4 slave (PREADY is the owner's: always high).\n"
-             "  input  wire psel_i,\n  input  wire penable_i,\n  input  wire pwrite_i,\n"
-             "  input  wire [APB_AW-1:0] paddr_i,\n  input  wire [31:0] pwdata_i,\n"
-             "  input  wire [3:0] pstrb_i,\n  output wire [31:0] prdata_o,\n  output wire pslverr_o")
+    o = [
+        "// SPDX-License-Identifier: MIT\n",
+        header(
+            "//",
+            provenance(blk)
+            + textwrap.wrap(
+                f"{mod}: the registers of {RTL}/{blk.owner}.v ({blk.doc}), an APB4 slave. It decodes the "
+                "address and reads in the setup phase (PSEL && !PENABLE), so the access phase returns "
+                "registered data (a window's word from the owner's memory, read the clock after the setup "
+                "phase) with zero wait states; a write takes effect at the end of its access phase. PSLVERR "
+                "(with PRDATA 0 and no effect) answers: an address outside the map or not word-aligned, a "
+                "write with PSTRB other than 4'b1111, a write to a read-only register, a value outside its "
+                "field's range, and a locked field or window (decided in the setup phase). The owner keeps "
+                "the behaviour: it drives the live values, the W1C set inputs and the locks, and uses the "
+                "values, the strobes and the W1 pulses.",
+                96,
+            ),
+        ),
+        "`resetall\n`default_nettype none\n\n",
+        f"module {mod} #(\n",
+    ]
+    o.append(
+        ",\n".join(
+            f"  // {what}\n  parameter integer {p} = {d}"
+            if not p.endswith("_VALUE")
+            else f"  // {what}\n  parameter [31:0] {p} = 32'h0"
+            for p, d, what, _ in params
+        )
+    )
+    o.append(
+        "\n) (\n  input  wire clk_i,\n  // Synchronous, active high: every flop to its reset value.\n"
+        "  input  wire rst_i,\n  // APB4 slave (PREADY is the owner's: always high).\n"
+        "  input  wire psel_i,\n  input  wire penable_i,\n  input  wire pwrite_i,\n"
+        "  input  wire [APB_AW-1:0] paddr_i,\n  input  wire [31:0] pwdata_i,\n"
+        "  input  wire [3:0] pstrb_i,\n  output wire [31:0] prdata_o,\n  output wire pslverr_o"
+    )
     for port, _, dirn, rng, comment in ports:
         # (A port's range cannot name the body's localparams: the window's address width inline.)
         rng = re.sub(r"\[(\w+)_ADDR_W-1:0\]", r"[((\1_SIZE > 1) ? $clog2(\1_SIZE) : 1)-1:0]", rng)
-        o.append(f",\n  // {comment}\n  {dirn + ' ' if dirn == 'input' else dirn} wire {rng + ' ' if rng else ''}{port}")
+        o.append(
+            f",\n  // {comment}\n  {dirn + ' ' if dirn == 'input' else dirn} wire {rng + ' ' if rng else ''}{port}"
+        )
     o.append("\n);\n\n")
     # Localparams.
     o.append("  // Word indices (byte address / 4), the register sets, field positions.\n")
@@ -614,12 +835,16 @@ def gen_regblock(blk):
         o.append(f"  localparam [5:0] R_{r.name} = 6'h{r.idx():02X};\n")
     ro = sum(1 << r.idx() for r in plain if not r.writable())
     wr = sum(1 << r.idx() for r in plain if r.writable())
-    o.append(f"  localparam [63:0] REGS_RO = 64'h{ro:016X};\n  localparam [63:0] REGS_WR = 64'h{wr:016X};\n")
+    o.append(
+        f"  localparam [63:0] REGS_RO = 64'h{ro:016X};\n  localparam [63:0] REGS_WR = 64'h{wr:016X};\n"
+    )
     for f in blk.fields():
         if f.reg.kind == "reg":
             o.append(f"  localparam integer {f.lp()} = {f.lsb};\n")
     for w in wins:
-        o.append(f"  localparam integer {w.name}_ADDR_W = ({w.name}_SIZE > 1) ? $clog2({w.name}_SIZE) : 1;\n")
+        o.append(
+            f"  localparam integer {w.name}_ADDR_W = ({w.name}_SIZE > 1) ? $clog2({w.name}_SIZE) : 1;\n"
+        )
     for r in blk.regs:
         if r.kind == "const" and all(isnum(f.reset) for f in r.fields):
             v = sum(int(f.reset, 0) << f.lsb for f in r.fields)
@@ -628,7 +853,9 @@ def gen_regblock(blk):
     stored = [f for r in wregs for f in r.fields if f.access in ("RW", "W1C")]
     rst_lps = [f for f in stored if not isnum(f.reset) or not isinstance(f.width(), int)]
     if rst_lps:
-        o.append("  // Reset values of fields whose reset or width is a parameter (the field's low bits).\n")
+        o.append(
+            "  // Reset values of fields whose reset or width is a parameter (the field's low bits).\n"
+        )
     for f in rst_lps:
         v = f.reset if not isnum(f.reset) else str(int(f.reset, 0))
         o.append(f"  localparam [31:0] {f.port().upper()}_RST = {v};\n")
@@ -636,48 +863,62 @@ def gen_regblock(blk):
     top = max([r.offset + 4 * r.words for r in blk.regs] + [0x100])
     min_aw = (top - 1).bit_length()
     o.append("\n  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).\n")
-    o.append(f"  acore_check #(.OK(APB_AW >= {min_aw} && APB_AW <= 32), .VALUE(APB_AW),\n"
-             f"    .MSG(\"illegal parameter: APB_AW must be {min_aw}..32 (the map reaches 0x{top - 1:03X})\"))\n"
-             f"    APB_AW_must_be_{min_aw}_to_32 ();\n")
-    for p, d, what, _ in params:
+    o.append(
+        f"  acore_check #(.OK(APB_AW >= {min_aw} && APB_AW <= 32), .VALUE(APB_AW),\n"
+        f'    .MSG("illegal parameter: APB_AW must be {min_aw}..32 (the map reaches 0x{top - 1:03X})"))\n'
+        f"    APB_AW_must_be_{min_aw}_to_32 ();\n"
+    )
+    for p, _d, what, _ in params:
         if what.startswith("a field's width"):
-            o.append(f"  acore_check #(.OK({p} >= 1 && {p} <= 32), .VALUE({p}),\n"
-                     f"    .MSG(\"illegal parameter: {p} must be 1..32 (a field's width)\"))\n"
-                     f"    {p}_must_be_1_to_32 ();\n")
+            o.append(
+                f"  acore_check #(.OK({p} >= 1 && {p} <= 32), .VALUE({p}),\n"
+                f'    .MSG("illegal parameter: {p} must be 1..32 (a field\'s width)"))\n'
+                f"    {p}_must_be_1_to_32 ();\n"
+            )
     for w in wins:
-        o.append(f"  acore_check #(.OK({w.name}_SIZE >= 1 && {w.name}_SIZE <= {w.words}), .VALUE({w.name}_SIZE),\n"
-                 f"    .MSG(\"illegal parameter: {w.name}_SIZE must be 1..{w.words} (the {w.name} window)\"))\n"
-                 f"    {w.name}_SIZE_must_be_1_to_{w.words} ();\n")
+        o.append(
+            f"  acore_check #(.OK({w.name}_SIZE >= 1 && {w.name}_SIZE <= {w.words}), .VALUE({w.name}_SIZE),\n"
+            f'    .MSG("illegal parameter: {w.name}_SIZE must be 1..{w.words} (the {w.name} window)"))\n'
+            f"    {w.name}_SIZE_must_be_1_to_{w.words} ();\n"
+        )
     for f in blk.fields():
         if f.range and not all(isinstance(v, int) for v in f.range[:2]):
             lo, hi, _ = f.range
             mx = (1 << f.width()) - 1
             rule = f.reg.name if len(f.reg.fields) == 1 else f.port().upper()
-            o.append(f"  acore_check #(.OK({lo} >= 0 && {lo} <= {hi} && {hi} <= {mx}), .VALUE({hi}),\n"
-                     f"    .MSG(\"illegal parameter: {lo}..{hi} must lie in 0..{mx}\"))\n"
-                     f"    {rule}_range_must_lie_in_0_to_{mx} ();\n")
+            o.append(
+                f"  acore_check #(.OK({lo} >= 0 && {lo} <= {hi} && {hi} <= {mx}), .VALUE({hi}),\n"
+                f'    .MSG("illegal parameter: {lo}..{hi} must lie in 0..{mx}"))\n'
+                f"    {rule}_range_must_lie_in_0_to_{mx} ();\n"
+            )
     # The fields' flops (RW and W1C).
     o.append("\n  // The fields' flops (RW values and W1C sticky bits).\n")
     for f in stored:
         o.append(f"  reg {f.decl() + ' ' if f.decl() else ''}{f.port()}_q;\n")
     # Decode.
-    o.append("\n  // ---- decode and read in the setup phase ----\n"
-             "  wire setup = psel_i & ~penable_i;\n  wire access = psel_i & penable_i;\n"
-             "  wire [5:0] ridx = paddr_i[7:2];\n"
-             "  wire in_regs = (paddr_i[APB_AW-1:8] == {(APB_AW-8){1'b0}});\n")
+    o.append(
+        "\n  // ---- decode and read in the setup phase ----\n"
+        "  wire setup = psel_i & ~penable_i;\n  wire access = psel_i & penable_i;\n"
+        "  wire [5:0] ridx = paddr_i[7:2];\n"
+        "  wire in_regs = (paddr_i[APB_AW-1:8] == {(APB_AW-8){1'b0}});\n"
+    )
     for w in wins:
         n, lw = w.name, w.name.lower()
         aw = w.words.bit_length() + 1  # byte address bits of the window
-        o.append(f"  // {n}: address bits [{aw - 1}:2] index a word, the bits above select the window.\n"
-                 f"  // (The width is kept positive for an illegal APB_AW, so that its rule reports it.)\n"
-                 f"  localparam integer {n}_SEL_W = (APB_AW > {aw}) ? APB_AW - {aw} : 1;\n"
-                 f"  localparam integer {n}_SEL_I = {w.offset} >> {aw};\n"
-                 f"  localparam [{n}_SEL_W-1:0] {n}_SEL = {n}_SEL_I[{n}_SEL_W-1:0];\n"
-                 f"  wire [{aw - 3}:0] {lw}_idx = paddr_i[{aw - 1}:2];\n"
-                 f"  wire in_{lw} = (paddr_i[APB_AW-1:{aw}] == {n}_SEL) && "
-                 f"({{1'b0, {lw}_idx}} < {n}_SIZE[{aw - 2}:0]);\n")
-    o.append("  wire is_ro = REGS_RO[ridx];\n  wire is_rw = REGS_WR[ridx];\n"
-             "  wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));\n")
+        o.append(
+            f"  // {n}: address bits [{aw - 1}:2] index a word, the bits above select the window.\n"
+            f"  // (The width is kept positive for an illegal APB_AW, so that its rule reports it.)\n"
+            f"  localparam integer {n}_SEL_W = (APB_AW > {aw}) ? APB_AW - {aw} : 1;\n"
+            f"  localparam integer {n}_SEL_I = {w.offset} >> {aw};\n"
+            f"  localparam [{n}_SEL_W-1:0] {n}_SEL = {n}_SEL_I[{n}_SEL_W-1:0];\n"
+            f"  wire [{aw - 3}:0] {lw}_idx = paddr_i[{aw - 1}:2];\n"
+            f"  wire in_{lw} = (paddr_i[APB_AW-1:{aw}] == {n}_SEL) && "
+            f"({{1'b0, {lw}_idx}} < {n}_SIZE[{aw - 2}:0]);\n"
+        )
+    o.append(
+        "  wire is_ro = REGS_RO[ridx];\n  wire is_rw = REGS_WR[ridx];\n"
+        "  wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));\n"
+    )
     # Locks, per register and window.
     lock_terms, reg_lock = [], {}
     for r in plain:
@@ -686,18 +927,29 @@ def gen_regblock(blk):
             if f.lock:
                 s = f.port()
                 if f.access == "W1":
-                    sel = f"pwdata_i[{f.lp()}]" if f.width() == 1 else f"(|pwdata_i[{f.lp()} +: {f.width()}])"
+                    sel = (
+                        f"pwdata_i[{f.lp()}]"
+                        if f.width() == 1
+                        else f"(|pwdata_i[{f.lp()} +: {f.width()}])"
+                    )
                     terms.append(f"{s}_lock_i & {sel}")
                 else:
                     terms.append(f"{s}_lock_i")
         if terms:
-            reg_lock[r.name] = " | ".join(terms) if len(terms) == 1 else " | ".join(f"({t})" for t in terms)
+            reg_lock[r.name] = (
+                " | ".join(terms) if len(terms) == 1 else " | ".join(f"({t})" for t in terms)
+            )
             lock_terms.append(f"((ridx == R_{r.name}) & ({reg_lock[r.name]}))")
     win_lock = [f"(in_{w.name.lower()} & {w.name.lower()}_lock_i)" for w in wins if w.lock]
     if lock_terms or win_lock:
-        o.append("  // Refused while the owner locks them: a window's any access, a register's write.\n")
-        terms = win_lock + (["(in_regs & pwrite_i & (" + " |\n        ".join(lock_terms) + "))"]
-                            if lock_terms else [])
+        o.append(
+            "  // Refused while the owner locks them: a window's any access, a register's write.\n"
+        )
+        terms = win_lock + (
+            ["(in_regs & pwrite_i & (" + " |\n        ".join(lock_terms) + "))"]
+            if lock_terms
+            else []
+        )
         o.append("  wire lock_err = " + " |\n      ".join(terms) + ";\n")
     # Ranges.
     range_terms = {}
@@ -732,29 +984,46 @@ def gen_regblock(blk):
                     continue
                 # A limit set by the owner: a comparison only where it can exclude a value.
                 cond = f"{v} > 0" if side == "lo" else f"{v} < {vmax}"
-                gen.append(f"    if ({cond}) begin : g_{s}_{side}\n"
-                           f"      assign {s}_{side}_bad = {s}_wr {op} {lp};\n"
-                           f"    end else begin : g_{s}_{side}_all\n"
-                           f"      assign {s}_{side}_bad = 1'b0;\n    end\n")
+                gen.append(
+                    f"    if ({cond}) begin : g_{s}_{side}\n"
+                    f"      assign {s}_{side}_bad = {s}_wr {op} {lp};\n"
+                    f"    end else begin : g_{s}_{side}_all\n"
+                    f"      assign {s}_{side}_bad = 1'b0;\n    end\n"
+                )
                 bad.append(f"{s}_{side}_bad")
             if gen:
-                o.append(f"  wire {', '.join(b for b in bad if not b.startswith('('))};\n"
-                         "  generate\n" + "".join(gen) + "  endgenerate\n")
+                o.append(
+                    f"  wire {', '.join(b for b in bad if not b.startswith('('))};\n"
+                    "  generate\n" + "".join(gen) + "  endgenerate\n"
+                )
             o.append(f"  wire {s}_bad = {' | '.join(bad) if bad else chr(49) + chr(39) + 'b0'};\n")
             range_terms.setdefault(r.name, []).append(f"{s}_bad")
     if range_terms:
-        o.append("  wire range_err = in_regs & pwrite_i & (\n      " + " |\n      ".join(
-            f"((ridx == R_{n}) & ({' | '.join(t)}))" for n, t in range_terms.items()) + ");\n")
-    err = ["(paddr_i[1:0] != 2'b00)", "(pwrite_i & (pstrb_i != 4'hF))",
-           "~" + ("(reg_ok" + "".join(f" | in_{w.name.lower()}" for w in wins) + ")" if wins else "reg_ok")]
+        o.append(
+            "  wire range_err = in_regs & pwrite_i & (\n      "
+            + " |\n      ".join(
+                f"((ridx == R_{n}) & ({' | '.join(t)}))" for n, t in range_terms.items()
+            )
+            + ");\n"
+        )
+    err = [
+        "(paddr_i[1:0] != 2'b00)",
+        "(pwrite_i & (pstrb_i != 4'hF))",
+        "~"
+        + (
+            "(reg_ok" + "".join(f" | in_{w.name.lower()}" for w in wins) + ")" if wins else "reg_ok"
+        ),
+    ]
     if lock_terms or win_lock:
         err.append("lock_err")
     if range_terms:
         err.append("range_err")
     o.append("  wire err_d = " + " |\n      ".join(err) + ";\n")
     # Read mux.
-    o.append("\n  // Each register's fields at their positions, zero elsewhere (W1 fields read 0).\n"
-             "  reg [31:0] rd_d;\n  always @(*) begin\n    rd_d = 32'd0;\n    case (ridx)\n")
+    o.append(
+        "\n  // Each register's fields at their positions, zero elsewhere (W1 fields read 0).\n"
+        "  reg [31:0] rd_d;\n  always @(*) begin\n    rd_d = 32'd0;\n    case (ridx)\n"
+    )
     for r in plain:
         if r.kind == "const":
             o.append(f"      R_{r.name}: rd_d = {r.name}_VALUE;\n")
@@ -771,18 +1040,30 @@ def gen_regblock(blk):
         if len(items) == 1:
             o.append(f"      R_{r.name}: {items[0]}\n")
         elif items:
-            o.append(f"      R_{r.name}: begin\n" + "".join(f"        {i}\n" for i in items) + "      end\n")
+            o.append(
+                f"      R_{r.name}: begin\n"
+                + "".join(f"        {i}\n" for i in items)
+                + "      end\n"
+            )
     o.append("      default: rd_d = 32'd0;\n    endcase\n  end\n")
     # Setup flops.
-    o.append("\n  // Setup phase: the answer (error, register data, or a window's word next clock) and which\n"
-             "  // register an error-free write will change: the access phase's write enables are one gate\n"
-             "  // from these flops, so the address decode stays off the data registers' enables.\n"
-             "  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);\n"
-             "  wire ok_reg_wr = ok_wr & in_regs;\n")
-    flops = ["err_q"] + [f"win_{w.name.lower()}_q" for w in wins] + \
-        [f"w_{r.name.lower()}_q" for r in wregs] + [f"w_{w.name.lower()}_q" for w in wins]
-    o.append("".join(f"  reg {', '.join(flops[i:i + 6])};\n" for i in range(0, len(flops), 6)) +
-             "  reg [31:0] rdata_q;\n")
+    o.append(
+        "\n  // Setup phase: the answer (error, register data, or a window's word next clock) and which\n"
+        "  // register an error-free write will change: the access phase's write enables are one gate\n"
+        "  // from these flops, so the address decode stays off the data registers' enables.\n"
+        "  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);\n"
+        "  wire ok_reg_wr = ok_wr & in_regs;\n"
+    )
+    flops = (
+        ["err_q"]
+        + [f"win_{w.name.lower()}_q" for w in wins]
+        + [f"w_{r.name.lower()}_q" for r in wregs]
+        + [f"w_{w.name.lower()}_q" for w in wins]
+    )
+    o.append(
+        "".join(f"  reg {', '.join(flops[i : i + 6])};\n" for i in range(0, len(flops), 6))
+        + "  reg [31:0] rdata_q;\n"
+    )
     o.append("  always @(posedge clk_i) begin\n    if (setup) begin\n      err_q <= err_d;\n")
     for w in wins:
         o.append(f"      win_{w.name.lower()}_q <= in_{w.name.lower()};\n")
@@ -806,19 +1087,25 @@ def gen_regblock(blk):
         lw = w.name.lower()
         pad = f"{{{{(32-{fw}){{1'b0}}}}, {lw}_rdata_i}}" if fw != "32" else f"{lw}_rdata_i"
         rd = f"win_{lw}_q ? {pad} : {rd}"
-    o.append(f"  assign prdata_o = ~rd_access ? 32'd0 : {rd};\n  assign pslverr_o = access & err_q;\n")
+    o.append(
+        f"  assign prdata_o = ~rd_access ? 32'd0 : {rd};\n  assign pslverr_o = access & err_q;\n"
+    )
     for w in wins:
         lw, fw = w.name.lower(), w.fields[0].vwidth()
-        o.append(f"  // {w.name}: every setup phase reads the word (used only for a read of the window): the\n"
-                 f"  // address decode stays off the memory's read enable.\n"
-                 f"  assign {lw}_re_o = setup;\n  assign {lw}_addr_o = {lw}_idx[{w.name}_ADDR_W-1:0];\n"
-                 f"  assign {lw}_we_o = access & w_{lw}_q;\n  assign {lw}_wdata_o = pwdata_i[{fw}-1:0];\n")
+        o.append(
+            f"  // {w.name}: every setup phase reads the word (used only for a read of the window): the\n"
+            f"  // address decode stays off the memory's read enable.\n"
+            f"  assign {lw}_re_o = setup;\n  assign {lw}_addr_o = {lw}_idx[{w.name}_ADDR_W-1:0];\n"
+            f"  assign {lw}_we_o = access & w_{lw}_q;\n  assign {lw}_wdata_o = pwdata_i[{fw}-1:0];\n"
+        )
     for r in wregs:
         o.append(f"  wire wr_{r.name.lower()} = access & w_{r.name.lower()}_q;\n")
     clears = {}
     for r in wregs:
         for f in r.fields:
-            sel = f"pwdata_i[{f.lp()}]" if f.width() == 1 else f"(|pwdata_i[{f.lp()} +: {f.width()}])"
+            sel = (
+                f"pwdata_i[{f.lp()}]" if f.width() == 1 else f"(|pwdata_i[{f.lp()} +: {f.width()}])"
+            )
             if f.access == "W1" and f.clears:
                 clears.setdefault(f.clears, []).append(f"(wr_{r.name.lower()} & {sel})")
             elif f.access == "W1":
@@ -830,8 +1117,11 @@ def gen_regblock(blk):
     for f in stored:
         if isnum(f.reset):
             v = int(f.reset, 0)
-            o.append(f"      {f.port()}_q <= {f.vwidth()}'d{v};\n" if isinstance(f.width(), int) else
-                     f"      {f.port()}_q <= {f.port().upper()}_RST[{f.vwidth()}-1:0];\n")
+            o.append(
+                f"      {f.port()}_q <= {f.vwidth()}'d{v};\n"
+                if isinstance(f.width(), int)
+                else f"      {f.port()}_q <= {f.port().upper()}_RST[{f.vwidth()}-1:0];\n"
+            )
         else:
             o.append(f"      {f.port()}_q <= {f.port().upper()}_RST[{f.vwidth()}-1:0];\n")
     o.append("    end else begin\n")
@@ -840,7 +1130,11 @@ def gen_regblock(blk):
         if rw:
             o.append(f"      if (wr_{r.name.lower()}) begin\n")
             for f in rw:
-                src = f"pwdata_i[{f.lp()}]" if f.width() == 1 else f"pwdata_i[{f.lp()} +: {f.vwidth()}]"
+                src = (
+                    f"pwdata_i[{f.lp()}]"
+                    if f.width() == 1
+                    else f"pwdata_i[{f.lp()} +: {f.vwidth()}]"
+                )
                 o.append(f"        {f.port()}_q <= {src};\n")
             o.append("      end\n")
         for f in r.fields:
@@ -848,9 +1142,17 @@ def gen_regblock(blk):
                 continue
             s, w = f.port(), f.width()
             src = f"pwdata_i[{f.lp()}]" if w == 1 else f"pwdata_i[{f.lp()} +: {w}]"
-            clr = f"({{{w}{{wr_{r.name.lower()}}}}} & {src})" if w != 1 else f"(wr_{r.name.lower()} & {src})"
+            clr = (
+                f"({{{w}{{wr_{r.name.lower()}}}}} & {src})"
+                if w != 1
+                else f"(wr_{r.name.lower()} & {src})"
+            )
             if r.name in clears:
-                clr += f" | {{{w}{{clear_{r.name.lower()}}}}}" if w != 1 else f" | clear_{r.name.lower()}"
+                clr += (
+                    f" | {{{w}{{clear_{r.name.lower()}}}}}"
+                    if w != 1
+                    else f" | clear_{r.name.lower()}"
+                )
             o.append(f"      {s}_q <= ({s}_q & ~({clr})) | {s}_set_i;\n")
     o.append("    end\n  end\n")
     for f in stored:
@@ -863,6 +1165,7 @@ def gen_regblock(blk):
 
 # ---- C++ ------------------------------------------------------------------------------------------
 
+
 def camel(name):
     return "".join(p.capitalize() for p in name.lower().split("_"))
 
@@ -873,17 +1176,26 @@ def cpp_comment(text, indent=""):
 
 
 def gen_hpp(blk):
-    out = ["// SPDX-License-Identifier: MIT\n",
-           header("//", provenance(blk) + [
-               f"The register map of {RTL}/{blk.owner}.v ({blk.doc}): byte addresses and bit fields. A",
-               "one-bit field is its mask; a wider one has <Field>Shift, and with fixed bits <Field>Mask",
-               "(in place) and <Field>Bits; a range gives <Field>Min and <Field>Max, fixed point",
-               "<Field>Frac (fraction bits)."]),
-           f"#pragma once\n#include <cstdint>\n\nnamespace {blk.namespace} {{\n\n",
-           "// The address space the default APB_AW decodes.\n",
-           f"constexpr uint32_t kAddrSpace = 0x{blk.space:X};\n"]
+    out = [
+        "// SPDX-License-Identifier: MIT\n",
+        header(
+            "//",
+            [
+                *provenance(blk),
+                f"The register map of {RTL}/{blk.owner}.v ({blk.doc}): byte addresses and bit fields. A",
+                "one-bit field is its mask; a wider one has <Field>Shift, and with fixed bits <Field>Mask",
+                "(in place) and <Field>Bits; a range gives <Field>Min and <Field>Max, fixed point",
+                "<Field>Frac (fraction bits).",
+            ],
+        ),
+        f"#pragma once\n#include <cstdint>\n\nnamespace {blk.namespace} {{\n\n",
+        "// The address space the default APB_AW decodes.\n",
+        f"constexpr uint32_t kAddrSpace = 0x{blk.space:X};\n",
+    ]
     for r in blk.regs:
-        what = f"{r.words} words, word a at 0x{r.offset:03X} + 4a" if r.kind == "window" else r.access
+        what = (
+            f"{r.words} words, word a at 0x{r.offset:03X} + 4a" if r.kind == "window" else r.access
+        )
         out.append(f"\n{cpp_comment(f'{r.name} ({what}): {r.summary}')}")
         out.append(f"constexpr uint32_t k{camel(r.name)} = 0x{r.offset:03X};\n")
         for f in r.fields:
@@ -898,16 +1210,22 @@ def gen_hpp(blk):
                     out.append(f"constexpr uint32_t {c}Mask = 0x{f.mask():X}u;\n")
                     out.append(f"constexpr int {c}Bits = {w};\n")
             if f.range:
-                lo, hi, word = f.range
+                lo, hi, _word = f.range
                 if isinstance(lo, int) and isinstance(hi, int):
-                    out.append(f"constexpr int64_t {c}Min = {lo};\nconstexpr int64_t {c}Max = {hi};\n")
+                    out.append(
+                        f"constexpr int64_t {c}Min = {lo};\nconstexpr int64_t {c}Max = {hi};\n"
+                    )
                 else:
-                    out.append(f"// (Its range {lo}..{hi} is set by parameters of {RTL}/{blk.owner}.v.)\n")
+                    out.append(
+                        f"// (Its range {lo}..{hi} is set by parameters of {RTL}/{blk.owner}.v.)\n"
+                    )
             if f.frac is not None:
                 out.append(f"constexpr int {c}Frac = {f.frac};\n")
         if r.kind == "const" and all(isnum(f.reset) for f in r.fields):
-            out.append(f"constexpr uint32_t k{camel(r.name)}Value = "
-                       f"0x{sum(int(f.reset, 0) << f.lsb for f in r.fields):X}u;\n")
+            out.append(
+                f"constexpr uint32_t k{camel(r.name)}Value = "
+                f"0x{sum(int(f.reset, 0) << f.lsb for f in r.fields):X}u;\n"
+            )
         if r.kind == "reg" and r.writable() and reset_value(r) is not None:
             out.append(f"constexpr uint32_t k{camel(r.name)}Reset = 0x{reset_value(r):X}u;\n")
         if r.kind == "reg" and r.writable() and all(isinstance(f.width(), int) for f in r.fields):
@@ -924,6 +1242,7 @@ def gen_hpp(blk):
 
 # ---- the doc page ---------------------------------------------------------------------------------
 
+
 def md_escape(text):
     return text.replace("|", "\\|")
 
@@ -937,27 +1256,38 @@ def field_meaning(f):
     text = f.meaning
     if f.range:
         lo, hi, word = f.range
-        text += (f" Range {lo}..{hi}{' (the whole word: the bits above the field must be 0)' if word else ''}"
-                 f": a write outside it is an error without effect.")
+        text += (
+            f" Range {lo}..{hi}{' (the whole word: the bits above the field must be 0)' if word else ''}"
+            f": a write outside it is an error without effect."
+        )
     if f.frac is not None:
         text += f" Unsigned, {f.frac} fraction bits (0..{fmt_frac(f)})."
     if f.lock:
-        text += f" A write {'of 1 ' if f.access == 'W1' else ''}is an error without effect {f.lock}."
+        text += (
+            f" A write {'of 1 ' if f.access == 'W1' else ''}is an error without effect {f.lock}."
+        )
     return text
 
 
 def gen_md(blk):
     aw = blk.space.bit_length() - 1
-    out = [f"# {blk.title}\n\n",
-           f"<!-- Generated by scripts/gen_apb_regs.py from {blk.path}: do not edit. Regenerate with\n"
-           f"     {COMMAND} -->\n\n"]
+    out = [
+        f"# {blk.title}\n\n",
+        (
+            f"<!-- Generated by scripts/gen_apb_regs.py from {blk.path}: do not edit. Regenerate with\n"
+            f"     {COMMAND} -->\n\n"
+        ),
+    ]
     for p in blk.intro:
         out.append(p + "\n\n")
-    out.append(f"Byte addresses; 32-bit registers, 32-bit accesses only (an APB_AW of {aw} decodes "
-               f"0x000..0x{blk.space - 1:03X}); the registers are `{RTL}/{blk.owner}_regblock.v`, "
-               f"generated with this page. Access: " +
-               "; ".join(f"{k} {v[0]}" for k, v in ACCESS.items()) + ". A reset that names a "
-               "parameter is the build's value; `-` is live state.\n\n")
+    out.append(
+        f"Byte addresses; 32-bit registers, 32-bit accesses only (an APB_AW of {aw} decodes "
+        f"0x000..0x{blk.space - 1:03X}); the registers are `{RTL}/{blk.owner}_regblock.v`, "
+        f"generated with this page. Access: "
+        + "; ".join(f"{k} {v[0]}" for k, v in ACCESS.items())
+        + ". A reset that names a "
+        "parameter is the build's value; `-` is live state.\n\n"
+    )
     out.append("| address | register | access | reset | summary |\n|---|---|---|---|---|\n")
     for r in blk.regs:
         addr = f"0x{r.offset:03X} + 4a" if r.kind == "window" else f"0x{r.offset:03X}"
@@ -973,19 +1303,28 @@ def gen_md(blk):
             reset = r.fields[0].reset
         else:
             reset = "parameters"
-        out.append(f"| {addr} | [{name}](#{r.name.lower()}) | {r.access} | {reset} | {md_escape(r.summary)} |\n")
+        out.append(
+            f"| {addr} | [{name}](#{r.name.lower()}) | {r.access} | {reset} | {md_escape(r.summary)} |\n"
+        )
     for r in blk.regs:
-        addr = (f"0x{r.offset:03X} + 4a, a < {r.size} (at most {r.words})" if r.kind == "window"
-                else f"0x{r.offset:03X}")
+        addr = (
+            f"0x{r.offset:03X} + 4a, a < {r.size} (at most {r.words})"
+            if r.kind == "window"
+            else f"0x{r.offset:03X}"
+        )
         lock = f" Any access is an error without effect {r.lock}." if r.lock else ""
         out.append(f"\n## {r.name}\n\n{addr}, {r.access}. {md_escape(r.summary)}{lock}\n\n")
         out.append("| bits | field | access | reset | meaning |\n|---|---|---|---|---|\n")
         for f in sorted(r.fields, key=lambda x: -x.lsb if isinstance(x.msb, int) else 0):
-            out.append(f"| {f.bits()} | {f.name} | {f.access} | {f.reset} | {md_escape(field_meaning(f))} |\n")
+            out.append(
+                f"| {f.bits()} | {f.name} | {f.access} | {f.reset} | {md_escape(field_meaning(f))} |\n"
+            )
     if blk.irq:
         (st, en, pend), _ = blk.irq
-        out.append(f"\n## Interrupts\n\n{st}'s W1C bits, their enables {en} and the pending bits {pend} "
-                   f"share positions (bit i of each is the same event).\n")
+        out.append(
+            f"\n## Interrupts\n\n{st}'s W1C bits, their enables {en} and the pending bits {pend} "
+            f"share positions (bit i of each is the same event).\n"
+        )
     if blk.notes:
         out.append("\n## Transfers and errors\n\n")
         out.append("\n\n".join(blk.notes) + "\n")
@@ -994,28 +1333,35 @@ def gen_md(blk):
 
 def generate(root, rel):
     blk = parse(root, rel)
-    return {f"{RTL}/{blk.owner}_regs.vh": gen_vh(blk),
-            f"{RTL}/{blk.owner}_regblock.v": gen_regblock(blk),
-            blk.cpp: gen_hpp(blk),
-            blk.doc: gen_md(blk)}
+    return {
+        f"{RTL}/{blk.owner}_regs.vh": gen_vh(blk),
+        f"{RTL}/{blk.owner}_regblock.v": gen_regblock(blk),
+        blk.cpp: gen_hpp(blk),
+        blk.doc: gen_md(blk),
+    }
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    ap.add_argument(
+        "--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    )
     ap.add_argument("--out", help="write under this directory instead of ROOT")
     ap.add_argument("--check", metavar="DIR", help="write under DIR and compare with ROOT's files")
-    ap.add_argument("--syntax", action="store_true", help="print the line kinds and the access types")
+    ap.add_argument(
+        "--syntax", action="store_true", help="print the line kinds and the access types"
+    )
     ap.add_argument("desc", nargs="*", help="descriptions (default: every rtl/*_regs.txt)")
     args = ap.parse_args()
     if args.syntax:
-        for k, (syn, what) in KINDS.items():
+        for syn, what in KINDS.values():
             print(f"{syn:44s} {what}")
         for k, (name, hw) in ACCESS.items():
             print(f"{k:4s} {name}: {hw}")
         return 0
-    descs = args.desc or sorted(os.path.relpath(p, args.root)
-                                for p in glob.glob(os.path.join(args.root, RTL, "*_regs.txt")))
+    descs = args.desc or sorted(
+        os.path.relpath(p, args.root) for p in glob.glob(os.path.join(args.root, RTL, "*_regs.txt"))
+    )
     if not descs:
         print("gen_apb_regs.py: no description (rtl/*_regs.txt)", file=sys.stderr)
         return 2
@@ -1045,8 +1391,15 @@ def main():
         if have != text:
             differ += 1
             print(f"FAIL {rel} differs from {d} (regenerate: {COMMAND}):")
-            sys.stdout.writelines(difflib.unified_diff(have.splitlines(True), text.splitlines(True),
-                                                       rel, os.path.join(args.check, rel), n=1))
+            sys.stdout.writelines(
+                difflib.unified_diff(
+                    have.splitlines(True),
+                    text.splitlines(True),
+                    rel,
+                    os.path.join(args.check, rel),
+                    n=1,
+                )
+            )
         else:
             print(f"ok   {rel} is {d}'s")
     return 1 if differ else 0

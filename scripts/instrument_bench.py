@@ -21,6 +21,7 @@ designer's nominal model at one constant speed, in the same units.
 (the first named effect, or the verdict, is one the case accepts) and the median holdout shrink
 (1 - after/before) over the cases with a gap; exit 1 when a target is missed.
 """
+
 import argparse
 import concurrent.futures
 import json
@@ -77,7 +78,9 @@ def element_positions(g):
         pos = []
         for k in range(4):
             a = math.pi / 2 - k * math.pi / 2 + g["plate_angle"][k]
-            pos.append((g["ring"] * math.cos(a) + g["ring_dx"], g["ring"] * math.sin(a) + g["ring_dy"]))
+            pos.append(
+                (g["ring"] * math.cos(a) + g["ring_dx"], g["ring"] * math.sin(a) + g["ring_dy"])
+            )
         return pos
     return [(g["ring_dx"], g["ring_dy"])] * 2
 
@@ -103,7 +106,11 @@ def field(g, theta):
             by = s * B[:, 0] + c * B[:, 1]
             # axis2: sin = B_y, cos = B_x; a turned sensing axis (plate_angle) mixes them.
             a = g["plate_angle"][k]
-            out.append(math.cos(a) * by - math.sin(a) * bx if k == 0 else math.cos(a) * bx + math.sin(a) * by)
+            out.append(
+                math.cos(a) * by - math.sin(a) * bx
+                if k == 0
+                else math.cos(a) * bx + math.sin(a) * by
+            )
     return np.array(out)
 
 
@@ -116,13 +123,18 @@ def trajectory(rng, kind, n):
         # a drive at one speed: its ripple (+-0.5..2 %, a few times per second) is all that changes
         ripple, f = rng.uniform(0.005, 0.02), rng.uniform(2, 7)
         w = 2 * math.pi * turns / dur
-        theta = (rng.uniform(0, 2 * math.pi) + w * t
-                 + w * ripple * (1 - np.cos(2 * math.pi * f * t)) / (2 * math.pi * f))
+        theta = (
+            rng.uniform(0, 2 * math.pi)
+            + w * t
+            + w * ripple * (1 - np.cos(2 * math.pi * f * t)) / (2 * math.pi * f)
+        )
     else:
         # speed w(t) = w0 + w1 cos(pi t / dur): from w0 + w1 to w0 - w1, through zero when |w0| < w1
         w1 = 2 * math.pi * rng.uniform(5, 8)
         w0 = w1 * rng.uniform(-0.3, 0.3)
-        theta = rng.uniform(0, 2 * math.pi) + w0 * t + w1 * dur / math.pi * np.sin(math.pi * t / dur)
+        theta = (
+            rng.uniform(0, 2 * math.pi) + w0 * t + w1 * dur / math.pi * np.sin(math.pi * t / dur)
+        )
     return t, theta
 
 
@@ -161,11 +173,19 @@ def record(g, rng, kind, n=SAMPLES):
     x = x * unit
     if g["adc_bits"]:
         step = 2 * g["adc_range"] / 2 ** g["adc_bits"]
-        x = np.clip(np.round(x / step), -(2 ** (g["adc_bits"] - 1)), 2 ** (g["adc_bits"] - 1) - 1) * step
-    enc = np.round((theta + g["encoder_zero"]) / (2 * math.pi) * g["encoder_counts"]) * 2 * math.pi / g["encoder_counts"]
+        x = (
+            np.clip(np.round(x / step), -(2 ** (g["adc_bits"] - 1)), 2 ** (g["adc_bits"] - 1) - 1)
+            * step
+        )
+    enc = (
+        np.round((theta + g["encoder_zero"]) / (2 * math.pi) * g["encoder_counts"])
+        * 2
+        * math.pi
+        / g["encoder_counts"]
+    )
     del peak
     names = ["c1", "c2", "c3", "c4"] if nch == 4 else ["sin", "cos"]
-    return ["t", "theta_ref"] + names, [t, enc] + list(x)
+    return ["t", "theta_ref", *names], [t, enc, *list(x)]
 
 
 def fmt_value(v, style):
@@ -180,8 +200,7 @@ def fmt_value(v, style):
 
 def write_csv(path, cols, values, style, meta):
     with open(path, "w") as f:
-        for k, v in meta.items():
-            f.write(f"# {k}={v}\n")
+        f.writelines(f"# {k}={v}\n" for k, v in meta.items())
         f.write(",".join(cols) + "\n")
         n = len(values[0])
         for i in range(n):
@@ -194,31 +213,81 @@ def write_csv(path, cols, values, style, meta):
 # name: (sensors, accepted top-1 names, trajectory of real/holdout, what it does)
 CASES = {
     "nominal": (["hall4", "axis2"], ["no_gap"], "ramp", "the nominal instrument"),
-    "encoder_zero": (["hall4", "axis2"], ["zero_offset"], "ramp", "the encoder's zero 20..120 deg off"),
-    "plate_offset": (["hall4", "axis2"], ["offset"], "ramp", "one element's offset, 2..5 % of the peak"),
-    "plate_gain": (["hall4", "axis2"], ["gain_mismatch"], "ramp", "one element's sensitivity 2..5 %"),
-    "placement": (["hall4", "axis2"], ["phase_error"], "ramp", "one element 1..3 deg off its place"),
-    "ring_shift": (["hall4"], ["gain_mismatch", "phase_error"], "ramp",
-                   "the plate ring displaced 0.3..0.6 mm in its plane"),
+    "encoder_zero": (
+        ["hall4", "axis2"],
+        ["zero_offset"],
+        "ramp",
+        "the encoder's zero 20..120 deg off",
+    ),
+    "plate_offset": (
+        ["hall4", "axis2"],
+        ["offset"],
+        "ramp",
+        "one element's offset, 2..5 % of the peak",
+    ),
+    "plate_gain": (
+        ["hall4", "axis2"],
+        ["gain_mismatch"],
+        "ramp",
+        "one element's sensitivity 2..5 %",
+    ),
+    "placement": (
+        ["hall4", "axis2"],
+        ["phase_error"],
+        "ramp",
+        "one element 1..3 deg off its place",
+    ),
+    "ring_shift": (
+        ["hall4"],
+        ["gain_mismatch", "phase_error"],
+        "ramp",
+        "the plate ring displaced 0.3..0.6 mm in its plane",
+    ),
     "air_gap": (["hall4", "axis2"], ["amplitude"], "ramp", "the magnet 0.3..0.6 mm further away"),
     # x - a x^3 on a unit sine is (1 - 3a/4) sin t - (a/4) sin 3t: a 3rd harmonic and a common
     # scale, both in the vocabulary (the angle the IP computes sees the scale through its regions)
-    "nonlinearity": (["hall4", "axis2"], ["harmonic", "amplitude"], "ramp", "front end x - a x^3, a = 3..6 %"),
-    "adc": (["hall4", "axis2"], ["quantization"], "ramp",
-            "an ADC of 7..9 bits over a range 1.05..1.4 x the peak (not a power of two)"),
+    "nonlinearity": (
+        ["hall4", "axis2"],
+        ["harmonic", "amplitude"],
+        "ramp",
+        "front end x - a x^3, a = 3..6 %",
+    ),
+    "adc": (
+        ["hall4", "axis2"],
+        ["quantization"],
+        "ramp",
+        "an ADC of 7..9 bits over a range 1.05..1.4 x the peak (not a power of two)",
+    ),
     "excess_noise": (["hall4", "axis2"], ["excess_noise"], "ramp", "3..5 x the designer's noise"),
     "rc_filter": (["hall4", "axis2"], ["common_delay"], "ramp", "one RC low-pass on every channel"),
     "mux": (["hall4", "axis2"], ["channel_skew"], "ramp", "one ADC converts the channels in turn"),
-    "skew_constant": (["hall4", "axis2"], ["zero_offset", "common_delay"], "constant",
-                      "every channel sampled 2..6 ms late at one constant speed"),
-    "skew_diff_constant": (["axis2"], ["phase_error"], "constant",
-                           "the sin channel sampled 1..3 ms after the cos one at one constant speed"),
+    "skew_constant": (
+        ["hall4", "axis2"],
+        ["zero_offset", "common_delay"],
+        "constant",
+        "every channel sampled 2..6 ms late at one constant speed",
+    ),
+    "skew_diff_constant": (
+        ["axis2"],
+        ["phase_error"],
+        "constant",
+        "the sin channel sampled 1..3 ms after the cos one at one constant speed",
+    ),
     # The ring sees the magnet's centre move on a circle: the field's linear part adds the same
     # constant to every plate (no angle), its cubic part a constant angle (zero_offset), and the
     # plates' mean distance grows with e^2: the amplitude, the larger here (e/R = 0.05..0.2).
-    "runout": (["hall4"], ["amplitude", "zero_offset"], "constant",
-               "the magnet 0.1..0.3 mm off the shaft axis, one constant speed"),
-    "saturation": (["hall4", "axis2"], ["saturation"], "ramp", "the front end clips at 80..92 % of the peak"),
+    "runout": (
+        ["hall4"],
+        ["amplitude", "zero_offset"],
+        "constant",
+        "the magnet 0.1..0.3 mm off the shaft axis, one constant speed",
+    ),
+    "saturation": (
+        ["hall4", "axis2"],
+        ["saturation"],
+        "ramp",
+        "the front end clips at 80..92 % of the peak",
+    ),
 }
 
 
@@ -297,7 +366,7 @@ def generate(args):
     i = 0
     for scen, (sensors, truth, kind, why) in CASES.items():
         for sensor in sensors:
-            for k in range(args.per_case):
+            for _k in range(args.per_case):
                 i += 1
                 label = f"{scen}/{sensor}"
                 if only and scen not in only and label not in only:
@@ -306,21 +375,45 @@ def generate(args):
                 name = f"{i:03d}_{scen}_{sensor}"
                 meta = {"p": 1, "instrument": "magpylib", "unit": real["unit"]}
                 files = {}
-                for role, g, traj in (("sim", sim, "constant"), ("real", real, kind), ("holdout", real, kind)):
+                for role, g, traj in (
+                    ("sim", sim, "constant"),
+                    ("real", real, kind),
+                    ("holdout", real, kind),
+                ):
                     cols, vals = record(g, rng, traj)
                     path = os.path.join(args.dir, f"{name}_{role}.csv")
                     write_csv(path, cols, vals, "repr" if role == "sim" else real["print"], meta)
                     files[role] = os.path.basename(path)
-                index.append({"name": name, "label": label, "truth": truth, "why": why, "params": p,
-                              "unit": real["unit"], "print": real["print"], **files})
+                index.append(
+                    {
+                        "name": name,
+                        "label": label,
+                        "truth": truth,
+                        "why": why,
+                        "params": p,
+                        "unit": real["unit"],
+                        "print": real["print"],
+                        **files,
+                    }
+                )
     with open(os.path.join(args.dir, "cases.json"), "w") as f:
         json.dump(index, f, indent=1)
     print(f"{len(index)} cases in {args.dir}")
 
 
 def diagnose_one(anglecore, d, c):
-    cmd = [anglecore, "diagnose", "--sim", os.path.join(d, c["sim"]), "--real", os.path.join(d, c["real"]),
-           "--holdout", os.path.join(d, c["holdout"]), "--json", "-"]
+    cmd = [
+        anglecore,
+        "diagnose",
+        "--sim",
+        os.path.join(d, c["sim"]),
+        "--real",
+        os.path.join(d, c["real"]),
+        "--holdout",
+        os.path.join(d, c["holdout"]),
+        "--json",
+        "-",
+    ]
     r = subprocess.run(cmd, capture_output=True, text=True)
     if r.returncode != 0:
         return {"error": r.stderr.strip()}
@@ -356,11 +449,15 @@ def score(args):
         r[1] += ok
         r[2].append(shrink if shrink is not None else float("nan"))
         if not ok:
-            wrong.append(f"{c['name']}: expected {'/'.join(c['truth'])}, got {'+'.join(named) or top1}"
-                         + (f" ({j['error']})" if "error" in j else ""))
+            wrong.append(
+                f"{c['name']}: expected {'/'.join(c['truth'])}, got {'+'.join(named) or top1}"
+                + (f" ({j['error']})" if "error" in j else "")
+            )
         if args.verbose:
-            print(f"{c['name']:32s} {c['unit']:2s} {c['print']:6s} -> {'+'.join(named) or top1:40s} "
-                  f"{'ok' if ok else 'WRONG'} shrink {shrink if shrink is not None else float('nan'):.3f}")
+            print(
+                f"{c['name']:32s} {c['unit']:2s} {c['print']:6s} -> {'+'.join(named) or top1:40s} "
+                f"{'ok' if ok else 'WRONG'} shrink {shrink if shrink is not None else float('nan'):.3f}"
+            )
     print(f"{'case':24s} {'n':>3s} {'top-1':>6s} {'median shrink':>14s}")
     for label, (n, ok, sh) in rows.items():
         print(f"{label:24s} {n:3d} {100 * ok / n:5.0f}% {100 * float(np.nanmedian(sh)):13.1f}%")
@@ -374,7 +471,9 @@ def score(args):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     sub = ap.add_subparsers(dest="cmd", required=True)
     g = sub.add_parser("generate")
     g.add_argument("dir")
@@ -390,7 +489,9 @@ def main():
     s.add_argument("--verbose", action="store_true")
     c = sub.add_parser("check")
     c.add_argument("--anglecore", required=True)
-    c.add_argument("--only", default="nominal,encoder_zero,plate_offset,adc,skew_constant,skew_diff_constant")
+    c.add_argument(
+        "--only", default="nominal,encoder_zero,plate_offset,adc,skew_constant,skew_diff_constant"
+    )
     c.add_argument("--seed", type=int, default=1)
     c.add_argument("--jobs", type=int, default=2)
     a = ap.parse_args()
@@ -399,6 +500,7 @@ def main():
         return 0
     if a.cmd == "check":
         import tempfile
+
         with tempfile.TemporaryDirectory() as d:
             a.dir, a.per_case = d, 1
             generate(a)

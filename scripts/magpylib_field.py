@@ -9,6 +9,7 @@ IN:  {"cases": [{"radius_m": R, "height_m": h, "br_T": Br, "points": [[x, y, z],
 OUT: {"magpylib": VERSION, "cases": [{"B_T": [[Bx, By, Bz], ...]}, ...]}
 Run it with the interpreter of the virtual environment scripts/setup.sh makes (.venv/bin/python).
 """
+
 import json
 import sys
 

@@ -6,6 +6,7 @@ usage: /usr/bin/python3 scripts/plot_demo.py OUT_DIR
 Reads OUT_DIR/validation_angles.csv (theta_ref, s13, s24, y13, y24, err_uncorrected,
 err_float, err_fixed[, err_rtl]) and writes error_vs_angle.png, lissajous.png, histogram.png.
 """
+
 import csv
 import os
 import sys
@@ -13,7 +14,7 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
 
 def load(path):

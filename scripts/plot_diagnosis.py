@@ -4,6 +4,7 @@
 
 usage: /usr/bin/python3 scripts/plot_diagnosis.py DIR
 """
+
 import csv
 import math
 import os
@@ -12,8 +13,8 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
 
 def load(path):
@@ -33,7 +34,13 @@ def main():
     fig, ax = plt.subplots(figsize=(9, 4))
     ax.plot(deg, col["g"], ".", ms=1, alpha=0.3, label="gap g (real - model error)")
     ax.plot(deg, col["g_systematic"], ".", ms=1.5, label="systematic part, before")
-    ax.plot(deg, col["g_after_systematic"], ".", ms=1.5, label="systematic part, after adding the effect")
+    ax.plot(
+        deg,
+        col["g_after_systematic"],
+        ".",
+        ms=1.5,
+        label="systematic part, after adding the effect",
+    )
     ax.set_xlabel("reference angle [deg]")
     ax.set_ylabel("[deg]")
     ax.grid(alpha=0.3)
@@ -47,7 +54,9 @@ def main():
     ax[1].plot(col["temp"], col["g_systematic"], ".", ms=1)
     ax[1].set_xlabel("temperature [C]")
     fwd = col["omega"] >= 0
-    ax[2].boxplot([col["g_systematic"][fwd], col["g_systematic"][~fwd]], labels=["forward", "backward"])
+    ax[2].boxplot(
+        [col["g_systematic"][fwd], col["g_systematic"][~fwd]], labels=["forward", "backward"]
+    )
     for a in ax:
         a.set_ylabel("systematic gap [deg]")
         a.grid(alpha=0.3)
@@ -56,7 +65,7 @@ def main():
 
     st = load(os.path.join(out, "stages.csv"))
     fig, ax = plt.subplots(figsize=(9, 3.5))
-    labels = [f'{r["stage"]}\n{r["signal"]}' for r in st]
+    labels = [f"{r['stage']}\n{r['signal']}" for r in st]
     ax.bar(range(len(st)), [float(r["rms_over_noise"]) for r in st])
     ax.axhline(1.0, color="k", lw=0.8, ls="--")
     ax.set_xticks(range(len(st)))

@@ -8,6 +8,7 @@ one turn, with the Eq. 32 residual bounds) and DIR/harmonics_spectrum.png (per-o
 exact DFT vs first- and second-order predictions).
 usage: plot_harmonics.py DIR
 """
+
 import json
 import os
 import sys
@@ -15,8 +16,8 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
 
 def main(out_dir):
@@ -30,17 +31,31 @@ def main(out_dir):
     ax1.plot(curve["phi_deg"], curve["first_deg"], "C0--", lw=1.0, label="Taylor k=1 (Eq. 18)")
     ax1.plot(curve["phi_deg"], curve["second_deg"], "C1:", lw=1.2, label="Taylor k=2 (Eq. 26)")
     ax1.set_ylabel("electrical error (deg)")
-    ax1.set_title(f"p = {res['p']}: max |error| {res['max_error_deg']:.3f} deg "
-                  f"(geometric bound {bounds['geometric_deg']:.3f} deg)")
+    ax1.set_title(
+        f"p = {res['p']}: max |error| {res['max_error_deg']:.3f} deg "
+        f"(geometric bound {bounds['geometric_deg']:.3f} deg)"
+    )
     ax1.legend(loc="upper right", fontsize=8)
     ax1.grid(alpha=0.3)
-    ax2.plot(curve["phi_deg"], curve["residual_first_deg"], "C0-", lw=1.0,
-             label=f"residual k=1 (max {res['residual_first_deg']:.3f} deg)")
-    ax2.plot(curve["phi_deg"], curve["residual_second_deg"], "C1-", lw=1.0,
-             label=f"residual k=2 (max {res['residual_second_deg']:.4f} deg)")
+    ax2.plot(
+        curve["phi_deg"],
+        curve["residual_first_deg"],
+        "C0-",
+        lw=1.0,
+        label=f"residual k=1 (max {res['residual_first_deg']:.3f} deg)",
+    )
+    ax2.plot(
+        curve["phi_deg"],
+        curve["residual_second_deg"],
+        "C1-",
+        lw=1.0,
+        label=f"residual k=2 (max {res['residual_second_deg']:.4f} deg)",
+    )
     if bounds.get("taylor_first_deg") is not None:
         b1 = bounds["taylor_first_deg"]
-        ax2.fill_between(curve["phi_deg"], -b1, b1, color="C0", alpha=0.12, label=f"bound k=1 (+-{b1:.3f} deg)")
+        ax2.fill_between(
+            curve["phi_deg"], -b1, b1, color="C0", alpha=0.12, label=f"bound k=1 (+-{b1:.3f} deg)"
+        )
     if bounds.get("taylor_second_deg") is not None:
         b2 = bounds["taylor_second_deg"]
         ax2.axhline(b2, color="C1", ls="--", lw=0.8, label=f"bound k=2 (+-{b2:.3f} deg)")
@@ -54,7 +69,9 @@ def main(out_dir):
     fig.savefig(os.path.join(out_dir, "harmonics_error.png"), dpi=120)
     plt.close(fig)
 
-    h = [r for r in res["harmonics"] if max(r["exact_deg"], r["first_deg"], r["second_deg"]) >= 1e-4]
+    h = [
+        r for r in res["harmonics"] if max(r["exact_deg"], r["first_deg"], r["second_deg"]) >= 1e-4
+    ]
     orders = np.array([r["order"] for r in h])
     w = 0.27
     fig, ax = plt.subplots(figsize=(9, 4))

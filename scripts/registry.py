@@ -42,6 +42,7 @@ Synthesis rules (scripts/synth.sh; the registry's header states them for its rea
                           constraint file that places every port of the placed design, unconstrained
                           otherwise.
 """
+
 import functools
 import glob
 import json
@@ -53,7 +54,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import devices  # noqa: E402  (synth/devices.toml)
+import devices
 
 # The flows that are not synthesis (those are the families and devices of synth/devices.toml).
 BASE_FLOWS = ("sim", "lint", "icarus", "formal")
@@ -61,8 +62,8 @@ BASE_FLOWS = ("sim", "lint", "icarus", "formal")
 # select builds by, instead of their names. A tag test_<bench> links the line's Verilated build into
 # the stand-alone bench tb/*/test_<bench>.cpp.
 TAGS = {
-    "demo": "sim",        # built with the anglecore command: `anglecore demo`'s RTL rows, tb/bench
-    "fast-sim": "sim",    # Verilated with -O3 (the long regressions run it)
+    "demo": "sim",  # built with the anglecore command: `anglecore demo`'s RTL rows, tb/bench
+    "fast-sim": "sim",  # Verilated with -O3 (the long regressions run it)
     "long-cosim": "sim",  # a 10^7-sample co-sim of its own, CTest cosim_long.<name> (configuration Long)
     "long-proof": "formal",  # its formal proof runs long: CTest configuration Long, label long
 }
@@ -78,14 +79,22 @@ class Line:
     in line order), tags (tuple)."""
 
     def __init__(self, where, name, module, flows, params, tags=()):
-        self.where, self.name, self.module, self.flows, self.params = where, name, module, flows, params
+        self.where, self.name, self.module, self.flows, self.params = (
+            where,
+            name,
+            module,
+            flows,
+            params,
+        )
         self.tags = tags
 
     def param_text(self):
         return " ".join(f"{k}={v}" for k, v in self.params)
 
     def __str__(self):
-        return " ".join(x for x in (self.name, self.module, ",".join(self.flows) or "-", self.param_text()) if x)
+        return " ".join(
+            x for x in (self.name, self.module, ",".join(self.flows) or "-", self.param_text()) if x
+        )
 
 
 def registry_path(root):
@@ -110,17 +119,21 @@ def _tag_ok(root, where, tag, fl):
         need = TAGS[tag]
     elif re.fullmatch(BENCH_TAG, tag):
         if not glob.glob(os.path.join(root, "tb", "*", tag + ".cpp")):
-            raise RegistryError(f"{where}: tags: '{tag}': no bench tb/*/{tag}.cpp (a test_<bench> tag links "
-                                "the line's Verilated build into that bench)")
+            raise RegistryError(
+                f"{where}: tags: '{tag}': no bench tb/*/{tag}.cpp (a test_<bench> tag links "
+                "the line's Verilated build into that bench)"
+            )
         need = "sim"
     else:
-        raise RegistryError(f"{where}: tags: '{tag}' is not a tag (known: {', '.join(TAGS)}, and test_<bench> "
-                            "for a bench tb/*/test_<bench>.cpp)")
+        raise RegistryError(
+            f"{where}: tags: '{tag}' is not a tag (known: {', '.join(TAGS)}, and test_<bench> "
+            "for a bench tb/*/test_<bench>.cpp)"
+        )
     if need not in fl:
         raise RegistryError(f"{where}: tags: '{tag}' needs the {need} flow")
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _load(root):
     path = registry_path(root)
     rel = os.path.relpath(path, root)
@@ -138,15 +151,21 @@ def _load(root):
         where = f"{rel}:{n}"
         f = raw.split()
         if raw[0].isspace() or len(f) < 3:
-            raise RegistryError(f"{where}: expected 'name module flows [tags=T,...] [PARAM=value ...]' starting "
-                                "in column 1")
+            raise RegistryError(
+                f"{where}: expected 'name module flows [tags=T,...] [PARAM=value ...]' starting "
+                "in column 1"
+            )
         name, module, flow_text = f[0], f[1], f[2]
         if not re.fullmatch(r"[a-z][a-z0-9_]*", name):
-            raise RegistryError(f"{where}: name '{name}': lower case letters, digits and '_', starting with a letter")
+            raise RegistryError(
+                f"{where}: name '{name}': lower case letters, digits and '_', starting with a letter"
+            )
         for s in suffixes:
             if name.endswith(s):
-                raise RegistryError(f"{where}: name '{name}': '{s}' ends the placed designs' report names "
-                                    f"(synth/devices.toml suffixes: {', '.join(suffixes)})")
+                raise RegistryError(
+                    f"{where}: name '{name}': '{s}' ends the placed designs' report names "
+                    f"(synth/devices.toml suffixes: {', '.join(suffixes)})"
+                )
         if name in seen:
             raise RegistryError(f"{where}: name '{name}': already on line {seen[name]}")
         seen[name] = n
@@ -155,7 +174,9 @@ def _load(root):
         fl = [] if flow_text == "-" else flow_text.split(",")
         for x in fl:
             if x not in known:
-                raise RegistryError(f"{where}: flows: '{x}' is not a flow (known: {', '.join(known)}; '-' for none)")
+                raise RegistryError(
+                    f"{where}: flows: '{x}' is not a flow (known: {', '.join(known)}; '-' for none)"
+                )
         fl = [t.canonical(x) for x in fl]
         for x in set(fl):
             if fl.count(x) > 1:
@@ -182,8 +203,10 @@ def _load(root):
         lines.append(Line(where, name, module, tuple(fl), params, tuple(tags)))
     if not lines or lines[0].name != "default" or lines[0].module != "acore_top" or lines[0].params:
         where = lines[0].where if lines else rel
-        raise RegistryError(f"{where}: the first line must be 'default acore_top FLOWS' (no parameters: the "
-                            "model's and the RTL's defaults)")
+        raise RegistryError(
+            f"{where}: the first line must be 'default acore_top FLOWS' (no parameters: the "
+            "model's and the RTL's defaults)"
+        )
     return tuple(lines)
 
 
@@ -200,16 +223,23 @@ def select(root, flows=None, module=None, names=None, tag=None):
         known = {l.name for l in lines}
         for n in names:
             if n not in known:
-                raise RegistryError(f"unknown configuration '{n}' (rtl/configs.txt names: {', '.join(sorted(known))})")
+                raise RegistryError(
+                    f"unknown configuration '{n}' (rtl/configs.txt names: {', '.join(sorted(known))})"
+                )
     if flows:
         t = table(root)
         for f in flows:
             if f not in BASE_FLOWS and t.target(f) is None:
                 raise RegistryError(f"'{f}' is not a flow (known: {', '.join(flow_names(root))})")
         flows = {t.canonical(f) for f in flows}
-    return [l for l in lines
-            if (not flows or flows & set(l.flows)) and (not module or l.module == module)
-            and (not names or l.name in names) and (not tag or tag in l.tags)]
+    return [
+        l
+        for l in lines
+        if (not flows or flows & set(l.flows))
+        and (not module or l.module == module)
+        and (not names or l.name in names)
+        and (not tag or tag in l.tags)
+    ]
 
 
 def get(root, name):
@@ -220,14 +250,18 @@ def cmake_text(root):
     """The CMake file `registry.py cmake` writes (see the usage)."""
     lines = load(root)
     q = lambda items: '"' + ";".join(items) + '"'
-    out = ["# Generated by scripts/registry.py from rtl/configs.txt at configure time: do not edit.",
-           f"set(ACORE_REG_NAMES {q(l.name for l in lines)})"]
+    out = [
+        "# Generated by scripts/registry.py from rtl/configs.txt at configure time: do not edit.",
+        f"set(ACORE_REG_NAMES {q(l.name for l in lines)})",
+    ]
     tagged = {t: [] for t in TAGS}
     for l in lines:
-        out += [f"set(ACORE_REG_MODULE_{l.name} {l.module})",
-                f"set(ACORE_REG_FLOWS_{l.name} {q(l.flows)})",
-                f"set(ACORE_REG_PARAMS_{l.name} {q(f'{k}={v}' for k, v in l.params)})",
-                f"set(ACORE_REG_TAGS_{l.name} {q(l.tags)})"]
+        out += [
+            f"set(ACORE_REG_MODULE_{l.name} {l.module})",
+            f"set(ACORE_REG_FLOWS_{l.name} {q(l.flows)})",
+            f"set(ACORE_REG_PARAMS_{l.name} {q(f'{k}={v}' for k, v in l.params)})",
+            f"set(ACORE_REG_TAGS_{l.name} {q(l.tags)})",
+        ]
         for t in l.tags:
             tagged.setdefault(t, []).append(l.name)
     out += [f"set(ACORE_REG_TAGGED_{t} {q(n)})" for t, n in tagged.items()]
@@ -235,6 +269,7 @@ def cmake_text(root):
 
 
 # --- The RTL ------------------------------------------------------------------------------------
+
 
 def rtl_files(root):
     """rtl/files.f: the RTL sources in order (names relative to rtl/)."""
@@ -251,17 +286,34 @@ def _const(text):
     return v - (1 << width) if signed and v >> (width - 1) & 1 else v
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _elaborate(root, module, params):
     rtl = os.path.join(root, "rtl")
     with tempfile.TemporaryDirectory(prefix="acore_xml_") as tmp:
         xml = os.path.join(tmp, "top.xml")
-        r = subprocess.run(["verilator", "--xml-only", "--xml-output", xml, "--Mdir", tmp, "verilator.vlt",
-                            *rtl_files(root), "--top-module", module, *[f"-G{k}={v}" for k, v in params]],
-                           cwd=rtl, capture_output=True, text=True)
+        r = subprocess.run(
+            [
+                "verilator",
+                "--xml-only",
+                "--xml-output",
+                xml,
+                "--Mdir",
+                tmp,
+                "verilator.vlt",
+                *rtl_files(root),
+                "--top-module",
+                module,
+                *[f"-G{k}={v}" for k, v in params],
+            ],
+            cwd=rtl,
+            capture_output=True,
+            text=True,
+        )
         if r.returncode != 0:
-            raise RegistryError(f"verilator --xml-only {module} {' '.join(f'{k}={v}' for k, v in params)}: "
-                                f"{r.stderr.strip()[:500]}")
+            raise RegistryError(
+                f"verilator --xml-only {module} {' '.join(f'{k}={v}' for k, v in params)}: "
+                f"{r.stderr.strip()[:500]}"
+            )
         tree = ET.parse(xml)
     subs = frozenset(m.get("origName") for m in tree.iter("module") if m.get("topModule") != "1")
     mod = next(m for m in tree.iter("module") if m.get("topModule") == "1")
@@ -297,8 +349,9 @@ def rtl_submodules(root, module, params=()):
 
 # --- Synthesis ----------------------------------------------------------------------------------
 
+
 def _defines(path, module):
-    return re.search(r"^module %s\b" % re.escape(module), open(path).read(), re.M) is not None
+    return re.search(rf"^module {re.escape(module)}\b", open(path).read(), re.MULTILINE) is not None
 
 
 def synth_source(root, module):
@@ -328,16 +381,21 @@ def with_includes(path, seen=()):
         for d in (os.path.dirname(path), rtl):
             f = os.path.join(d, m.group(1))
             if os.path.isfile(f) and f not in seen:
-                return with_includes(f, seen + (f,))
+                return with_includes(f, (*seen, f))
         return ""
-    return re.sub(r'^\s*`include\s+"([^"]+)"', expand, text, flags=re.M)
+
+    return re.sub(r'^\s*`include\s+"([^"]+)"', expand, text, flags=re.MULTILINE)
 
 
 def module_parameter_names(path, module):
     """The parameter names of a module in a Verilog file (comments stripped, includes read; the pin
     wrappers' check)."""
-    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", with_includes(path), flags=re.S)
-    m = re.search(r"^\s*module\s+%s\b(.*?)\bendmodule\b" % re.escape(module), text, re.M | re.S)
+    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", with_includes(path), flags=re.DOTALL)
+    m = re.search(
+        rf"^\s*module\s+{re.escape(module)}\b(.*?)\bendmodule\b",
+        text,
+        re.MULTILINE | re.DOTALL,
+    )
     body = m.group(1) if m else ""
     return set(re.findall(r"\bparameter\s+(?:integer\s+|signed\s+|\[[^\]]*\]\s*)*(\w+)", body))
 
@@ -349,7 +407,9 @@ def device(root, flow=None):
         return t.default
     d = t.devices.get(t.canonical(flow))
     if d is None:
-        raise RegistryError(f"'{flow}' is not a device of synth/devices.toml (devices: {', '.join(t.devices)})")
+        raise RegistryError(
+            f"'{flow}' is not a device of synth/devices.toml (devices: {', '.join(t.devices)})"
+        )
     return d
 
 
@@ -389,14 +449,18 @@ def synth_designs(root, names=None, flows=None):
         src = synth_source(root, l.module)
         msrc = module_source(root, l.module)
         if not msrc:
-            raise RegistryError(f"{l.where}: module {l.module}: defined neither in rtl/files.f nor in synth/*.v")
+            raise RegistryError(
+                f"{l.where}: module {l.module}: defined neither in rtl/files.f nor in synth/*.v"
+            )
         check_params(root, l, l.module, msrc, "the line's module")
         bare = [d for d in placed if not pin_wrapper(root, l.module, d.name)[0]]
         for d in bare:
             if d.wrapper_required:
-                raise RegistryError(f"{l.where}: flow {d.name}: no module {d.wrapper_module(l.module)} in synth/*.v "
-                                    f"(the {d.title} in {d.package} has {d.capacity['user_io']} user pins: the "
-                                    "design is placed in that wrapper)")
+                raise RegistryError(
+                    f"{l.where}: flow {d.name}: no module {d.wrapper_module(l.module)} in synth/*.v "
+                    f"(the {d.title} in {d.package} has {d.capacity['user_io']} user pins: the "
+                    "design is placed in that wrapper)"
+                )
         own = [d.name for d in bare if not d.bare_suffix]
         if area or own:
             out.append(Design(l.name, l.module, src, area + own, l.params))
@@ -417,8 +481,10 @@ def check_params(root, line, module, path, what):
     have = module_parameter_names(path, module)
     for k, _ in line.params:
         if k not in have:
-            raise RegistryError(f"{line.where}: parameter {k}: {module} ({os.path.relpath(path, root)}), {what}, "
-                                f"has no parameter {k} (it has: {', '.join(sorted(have)) or 'none'})")
+            raise RegistryError(
+                f"{line.where}: parameter {k}: {module} ({os.path.relpath(path, root)}), {what}, "
+                f"has no parameter {k} (it has: {', '.join(sorted(have)) or 'none'})"
+            )
 
 
 def synth_tasks(root, names=None, flows=None):
@@ -432,19 +498,43 @@ def synth_tasks(root, names=None, flows=None):
         for dev in placed:
             why = dev.tool_missing()
             if why:
-                raise RegistryError(f"{why}: cannot place {d.name} (scripts/synth.sh -f selects other flows)")
+                raise RegistryError(
+                    f"{why}: cannot place {d.name} (scripts/synth.sh -f selects other flows)"
+                )
         nl_families = {dev.family.name for dev in placed}
         for f in d.flows:
             fam = t.families.get(f)
             if fam is None or f in nl_families:
                 continue
-            areas.append(("yosys", f, d.name, report(root, f, d.name), "-", d.top, d.source or "-",
-                          fam.yosys_command(d.top), params))
+            areas.append(
+                (
+                    "yosys",
+                    f,
+                    d.name,
+                    report(root, f, d.name),
+                    "-",
+                    d.top,
+                    d.source or "-",
+                    fam.yosys_command(d.top),
+                    params,
+                )
+            )
         for dev in placed:
             fam = dev.family
             nl = netlist(root, d.name)
-            netlists.append(("yosys", fam.name, d.name, report(root, fam.name, d.name), nl, d.top,
-                             d.source or "-", fam.yosys_command(d.top, nl), params))
+            netlists.append(
+                (
+                    "yosys",
+                    fam.name,
+                    d.name,
+                    report(root, fam.name, d.name),
+                    nl,
+                    d.top,
+                    d.source or "-",
+                    fam.yosys_command(d.top, nl),
+                    params,
+                )
+            )
             places.append(("place", dev.name, d.name, report(root, dev.name, d.name), dev.short))
     return netlists + places + areas
 
@@ -474,13 +564,16 @@ def pnr_command(root, flow, design):
         ports = netlist_ports(nl)
     except (OSError, ValueError, KeyError, StopIteration) as e:
         raise RegistryError(f"{os.path.relpath(nl, root)}: not a Yosys netlist ({e})")
-    constraint = next((c for c in dev.constraint_files(root) if ports <= dev.constraint_ports(c)), None)
+    constraint = next(
+        (c for c in dev.constraint_files(root) if ports <= dev.constraint_ports(c)), None
+    )
     stem = os.path.join(root, "synth", "build", design)
     t = table(root)
     return dev.pnr_command(nl, stem, report(root, dev.name, design), constraint, t.freq, t.seed)
 
 
 # --- Reports (synth/reports/, written by scripts/synth.sh) -------------------------------------
+
 
 def report(root, flow, design):
     """synth/reports/<family>_<design>.txt for a family (generic, ice40, xilinx, ...), or the
@@ -502,7 +595,7 @@ def cells(path):
     if len(blocks) < 2:
         return None
     out = {"total": int(blocks[-1].split()[0])}
-    for m in re.finditer(r"^\s+(\S+)\s+(\d+)\s*$", blocks[-1], re.M):
+    for m in re.finditer(r"^\s+(\S+)\s+(\d+)\s*$", blocks[-1], re.MULTILINE):
         out[m.group(1)] = int(m.group(2))
     return out
 
@@ -514,10 +607,14 @@ def pnr_result(path, dev):
         return None, None, "not run"
     text = open(path).read()
     fmax = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
-    lc = re.findall(r"%s:\s+(\d+)/\s*(\d+)" % re.escape(dev.family.pnr_cell), text)
+    lc = re.findall(rf"{re.escape(dev.family.pnr_cell)}:\s+(\d+)/\s*(\d+)", text)
     lc = (int(lc[-1][0]), int(lc[-1][1])) if lc else None
     if not fmax:
-        why = "does not fit" if re.search(r"(Unable to place|utilisation|too many)", text, re.I) else "failed"
+        why = (
+            "does not fit"
+            if re.search(r"(Unable to place|utilisation|too many)", text, re.IGNORECASE)
+            else "failed"
+        )
         return None, lc, why
     return float(fmax[-1]), lc, ""
 
@@ -540,6 +637,7 @@ def default_top_stages(root):
 
 # --- Command line -------------------------------------------------------------------------------
 
+
 def write_if_changed(path, text):
     """Writes the file unless it holds that text already (CMake then keeps its time stamp)."""
     try:
@@ -554,8 +652,11 @@ def write_if_changed(path, text):
 
 def main(argv):
     import argparse
+
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("--root", default=root)
     sub = ap.add_subparsers(dest="cmd", required=True)
     a = sub.add_parser("lines")
@@ -581,7 +682,13 @@ def main(argv):
     split = lambda x: [v for v in x.split(",") if v]
     try:
         if args.cmd == "lines":
-            for l in select(args.root, split(args.flow), args.module or None, split(args.names), args.tag or None):
+            for l in select(
+                args.root,
+                split(args.flow),
+                args.module or None,
+                split(args.names),
+                args.tag or None,
+            ):
                 print(l)
         elif args.cmd == "params":
             print(get(args.root, args.name).param_text())
@@ -590,7 +697,11 @@ def main(argv):
         elif args.cmd == "synth":
             for d in synth_designs(args.root, split(args.names), split(args.flows)):
                 params = " ".join(f"{k}={v}" for k, v in d.params)
-                print(" ".join(x for x in (d.name, d.top, d.source or "-", ",".join(d.flows), params) if x))
+                print(
+                    " ".join(
+                        x for x in (d.name, d.top, d.source or "-", ",".join(d.flows), params) if x
+                    )
+                )
         elif args.cmd == "synth-tasks":
             for task in synth_tasks(args.root, split(args.names), split(args.flows)):
                 print("\t".join(task))

@@ -16,7 +16,7 @@ packages=(
   verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3
   libsystemc-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev zlib1g-dev
-  python3-matplotlib python3-numpy python3-venv python3-dev ccache
+  python3-matplotlib python3-numpy python3-venv python3-dev ccache shfmt
 )
 
 missing=()
@@ -33,23 +33,22 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # PyPI, pinned, in .venv at the repository root, with Debian's python3 (never the system site).
-fusesoc_version=2.4.7
-edalize_version=0.6.8
-magpylib_version=5.1.1
-numpy_version=2.4.6
-pytest_version=9.2.0
-skbuild_version=1.1.2   # the same pins as pyproject.toml's [build-system]
-nanobind_version=2.9.2
+# One row per package: its distribution name and version. scikit-build-core and nanobind carry the
+# same pins as pyproject.toml's [build-system]; ruff formats and lints every Python file (CTest
+# python_style).
+pins=(
+  fusesoc==2.4.7 edalize==0.6.8 magpylib==5.1.1 numpy==2.4.6 pytest==9.2.0
+  scikit-build-core==1.1.2 nanobind==2.9.2 ruff==0.17.6
+)
 venv=$root/.venv
-want="$fusesoc_version $edalize_version $magpylib_version $numpy_version $pytest_version $skbuild_version $nanobind_version"
-installed=$("$venv/bin/python" -c "from importlib.metadata import version as v; print(*(v(p) for p in ('fusesoc', 'edalize', 'magpylib', 'numpy', 'pytest', 'scikit-build-core', 'nanobind')))" \
-  2>/dev/null || true)
+want=$(printf '%s\n' "${pins[@]}")
+names=$(printf '%s\n' "${pins[@]%%==*}")
+installed=$("$venv/bin/python" -c "import sys; from importlib.metadata import version as v; print('\n'.join(f'{p}=={v(p)}' for p in sys.argv[1:]))" \
+  $names 2>/dev/null || true)
 if [ "$installed" != "$want" ]; then
-  echo "setup: installing fusesoc $fusesoc_version, edalize $edalize_version, magpylib $magpylib_version, numpy $numpy_version, pytest $pytest_version, scikit-build-core $skbuild_version, nanobind $nanobind_version into $venv" >&2
+  echo "setup: installing ${pins[*]} into $venv" >&2
   /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/python" -m pip install -q --disable-pip-version-check "fusesoc==$fusesoc_version" \
-    "edalize==$edalize_version" "magpylib==$magpylib_version" "numpy==$numpy_version" \
-    "pytest==$pytest_version" "scikit-build-core==$skbuild_version" "nanobind==$nanobind_version"
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "${pins[@]}"
 fi
 
 # The package itself: built in build/python/ (kept, so a second run only relinks what changed, and

@@ -23,6 +23,7 @@ prints {"module", "lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}.
 lut4, dff, bram: the family's lut, ff and bram cell classes (LUT4, DFF, BRAM on iCE40); lcs: the
 logic cells the device's place-and-route log counts. Every result names its "device".
 """
+
 import hashlib
 import json
 import os
@@ -32,8 +33,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import registry  # noqa: E402  (the RTL file list and the devices table)
-from registry import cells  # noqa: E402
+import registry
+from registry import cells
 
 DEVICE = None  # the devices.Device measured on (main() sets it)
 ROOT = None
@@ -75,7 +76,9 @@ def run(cmd, log):
 
 def wrapper(ports):
     """Verilog of acore_pnr_wrap around acore_pnr_dut with the given JSON port list."""
-    ins = [(n, len(p["bits"])) for n, p in ports.items() if p["direction"] == "input" and n != "clk_i"]
+    ins = [
+        (n, len(p["bits"])) for n, p in ports.items() if p["direction"] == "input" and n != "clk_i"
+    ]
     outs = [(n, len(p["bits"])) for n, p in ports.items() if p["direction"] == "output"]
     in_w = max(2, sum(w for _, w in ins))
     out_w = max(2, sum(w for _, w in outs))
@@ -111,34 +114,63 @@ def stage_result(work, full_json, module, ports):
         f.write(wrapper(ports))
     ys = os.path.join(work, "stage.ys")
     with open(ys, "w") as f:
-        f.write(f"read_json {full_json}\nhierarchy -top {module}\nrename {module} acore_pnr_dut\n"
-                f"read_verilog -sv {work}/wrap.v\nhierarchy -top acore_pnr_wrap\n"
-                f"{fam.yosys_command('acore_pnr_wrap', f'{work}/wrap.json')}\n"
-                f"tee -o {work}/stat.txt stat\n")
+        f.write(
+            f"read_json {full_json}\nhierarchy -top {module}\nrename {module} acore_pnr_dut\n"
+            f"read_verilog -sv {work}/wrap.v\nhierarchy -top acore_pnr_wrap\n"
+            f"{fam.yosys_command('acore_pnr_wrap', f'{work}/wrap.json')}\n"
+            f"tee -o {work}/stat.txt stat\n"
+        )
     if run(["yosys", "-q", "-s", ys], os.path.join(work, "yosys.log")) != 0:
         return {"error": "yosys failed", "log": os.path.join(work, "yosys.log")}
     stat = cells(os.path.join(work, "stat.txt"))
     log = os.path.join(work, "nextpnr.log")
     t = registry.table(ROOT)
-    run(DEVICE.pnr_command(f"{work}/wrap.json", f"{work}/wrap", log, None, t.freq, t.seed), log + ".out")
+    run(
+        DEVICE.pnr_command(f"{work}/wrap.json", f"{work}/wrap", log, None, t.freq, t.seed),
+        log + ".out",
+    )
     fmax, lc, _ = registry.pnr_result(log, DEVICE)
     # The wrapper's own shift registers are counted in dff (not in lut4: they pack with no LUT).
-    return {"device": DEVICE.name, "lut4": fam.count(stat, ["lut"]), "dff": fam.count(stat, ["ff"]),
-            "bram": fam.count(stat, ["bram"]), "lcs": lc[0] if lc else None, "fits": fmax is not None,
-            "fmax_mhz": fmax}
+    return {
+        "device": DEVICE.name,
+        "lut4": fam.count(stat, ["lut"]),
+        "dff": fam.count(stat, ["ff"]),
+        "bram": fam.count(stat, ["bram"]),
+        "lcs": lc[0] if lc else None,
+        "fits": fmax is not None,
+        "fmax_mhz": fmax,
+    }
 
 
 def elaborate(root, top, params, full, log):
     chp = " ".join(f"-chparam {k} {v}" for k, v in params)
-    if run(["yosys", "-q", "-p", f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top {top} {chp}; "
-            f"proc; opt_clean; write_json {full}"], log) != 0:
-        sys.exit(f"stage_fmax.py: Yosys could not elaborate {top} " + " ".join(f"{k}={v}" for k, v in params))
+    if (
+        run(
+            [
+                "yosys",
+                "-q",
+                "-p",
+                (
+                    f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top {top} {chp}; "
+                    f"proc; opt_clean; write_json {full}"
+                ),
+            ],
+            log,
+        )
+        != 0
+    ):
+        sys.exit(
+            f"stage_fmax.py: Yosys could not elaborate {top} "
+            + " ".join(f"{k}={v}" for k, v in params)
+        )
     return json.load(open(full))["modules"]
 
 
 def whole(top, root, cache, params):
     os.makedirs(cache, exist_ok=True)
-    key = hashlib.sha1(f"{sources_hash(root)} {top} {params} {DEVICE.name}".encode()).hexdigest()[:16]
+    key = hashlib.sha1(f"{sources_hash(root)} {top} {params} {DEVICE.name}".encode()).hexdigest()[
+        :16
+    ]
     path = os.path.join(cache, f"{top}-{key}.json")
     if os.path.exists(path):
         return json.load(open(path))
@@ -184,11 +216,23 @@ def main():
         # Delay lines are flop chains (no logic between flops) and the register file's only logic is
         # the host read-back mux (a host-port path, not the datapath's): neither can be the slowest
         # datapath stage, so they are not placed (scripts/synth.sh reports the whole top's area).
-        children = sorted({c["type"] for c in design["acore_top"]["cells"].values()
-                           if c["type"] in design and not re.search(r"\\acore_(delay|coef_regfile)$", c["type"])})
+        children = sorted(
+            {
+                c["type"]
+                for c in design["acore_top"]["cells"].values()
+                if c["type"] in design
+                and not re.search(r"\\acore_(delay|coef_regfile)$", c["type"])
+            }
+        )
         stages = []
         for mod in children:
-            base = mod.split("\\")[-1] if mod.startswith("$paramod$") else mod.split("\\")[1] if mod.startswith("$paramod") else mod
+            base = (
+                mod.split("\\")[-1]
+                if mod.startswith("$paramod$")
+                else mod.split("\\")[1]
+                if mod.startswith("$paramod")
+                else mod
+            )
             key = hashlib.sha1((module_text(design, mod) + DEVICE.name).encode()).hexdigest()[:16]
             path = os.path.join(cache, f"{base}-{key}.json")
             if os.path.exists(path):
@@ -205,9 +249,16 @@ def main():
             stages.append(res)
     fitted = [s for s in stages if s.get("fmax_mhz")]
     slow = min(fitted, key=lambda s: s["fmax_mhz"]) if fitted else None
-    print(json.dumps({"stages": stages, "fmax_mhz": slow["fmax_mhz"] if slow else None,
-                      "slowest": slow["module"] if slow else None,
-                      "all_fit": all(s.get("fits") for s in stages)}))
+    print(
+        json.dumps(
+            {
+                "stages": stages,
+                "fmax_mhz": slow["fmax_mhz"] if slow else None,
+                "slowest": slow["module"] if slow else None,
+                "all_fit": all(s.get("fits") for s in stages),
+            }
+        )
+    )
 
 
 if __name__ == "__main__":

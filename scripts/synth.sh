@@ -26,10 +26,22 @@ only=""
 flows=""
 while [ $# -gt 0 ]; do
   case $1 in
-    -j) jobs=${2:?-j needs a number}; shift 2 ;;
-    -d) only=${2:?-d needs registry names}; shift 2 ;;
-    -f) flows=${2:?-f needs flow names}; shift 2 ;;
-    *) echo "usage: scripts/synth.sh [-j N] [-d NAME[,NAME...]] [-f FLOW[,FLOW...]]" >&2; exit 2 ;;
+    -j)
+      jobs=${2:?-j needs a number}
+      shift 2
+      ;;
+    -d)
+      only=${2:?-d needs registry names}
+      shift 2
+      ;;
+    -f)
+      flows=${2:?-f needs flow names}
+      shift 2
+      ;;
+    *)
+      echo "usage: scripts/synth.sh [-j N] [-d NAME[,NAME...]] [-f FLOW[,FLOW...]]" >&2
+      exit 2
+      ;;
   esac
 done
 syn=$root/synth
@@ -61,7 +73,7 @@ while IFS=$'\t' read -r kind target d out net top src synth params; do
   [ -n "$kind" ] || continue
   if [ "$kind" = place ]; then
     # (the fields after the design: log, short name)
-    LOG[$target:$d]=$out
+    LOG["$target:$d"]=$out
     SHORT[$target]=$net
     places+=("run_pnr $target $d")
     continue
@@ -92,45 +104,57 @@ done
 for k in "${!LOG[@]}"; do rm -f "${LOG[$k]}"; done
 rm -f "$rep/summary.md"
 
-run_yosys() {  # run_yosys FAMILY DESIGN
+run_yosys() { # run_yosys FAMILY DESIGN
   local flow=$1 d=$2
   local ys=$build/${flow}_$d.ys log=$build/${flow}_$d.log
-  printf '%s\n' "${SCRIPT[$flow:$d]}" >"$ys"
+  printf '%s\n' "${SCRIPT["$flow:$d"]}" >"$ys"
   if ! yosys -q -l "$log" -s "$ys" >/dev/null 2>&1; then
-    echo "yosys $flow $d: FAILED: $(grep -m1 'ERROR' "$log" || true) (see $log)"; touch "$build/failed"; return 1
+    echo "yosys $flow $d: FAILED: $(grep -m1 'ERROR' "$log" || true) (see $log)"
+    touch "$build/failed"
+    return 1
   fi
   # A multiply driven net means the netlist is not the simulated design: fail loudly.
   if grep -q "conflicting drivers" "$log"; then
-    echo "yosys $flow $d: FAILED: conflicting drivers (see $log)"; touch "$build/failed"; return 1
+    echo "yosys $flow $d: FAILED: conflicting drivers (see $log)"
+    touch "$build/failed"
+    return 1
   fi
   echo "yosys $flow $d: done"
 }
-run_pnr() {  # run_pnr DEVICE DESIGN
-  local dev=$1 d=$2 log=${LOG[$1:$2]} cmd
+run_pnr() { # run_pnr DEVICE DESIGN
+  local dev=$1 d=$2 log=${LOG["$1:$2"]} cmd
   # The device's nextpnr command: pins from its first constraint file that places every port of the
   # netlist (the whole tops in their wrappers on the HX8K: acore_hx8k_ct256.pcf; the board top:
   # acore_board_hx8k_ct256.pcf), unconstrained otherwise (the stage and shell wrappers, the 16-bit
   # CORDIC, everything on the UP5K).
   if ! cmd=$(registry pnr-command "$dev" "$d" 2>&1); then
-    echo "place $dev $d: skipped ($cmd)"; touch "$build/failed"; return 1
+    echo "place $dev $d: skipped ($cmd)"
+    touch "$build/failed"
+    return 1
   fi
   mapfile -t cmd <<<"$cmd"
   if ! "${cmd[@]}" >/dev/null 2>&1; then
     # A design larger than the device is a measurement (the summary says "does not fit"), not a failure.
     if awk '/Info:[ \t]+[A-Z_0-9]+:[ \t]+[0-9]+\/[ \t]*[0-9]+/ { split($3, u, "/"); if (u[1] + 0 > $4 + 0) over = 1 }
             END { exit !over }' "$log"; then
-      echo "${cmd[0]} $d: does not fit the ${SHORT[$dev]} (utilisation in ${log#"$root"/})"; return 0
+      echo "${cmd[0]} $d: does not fit the ${SHORT[$dev]} (utilisation in ${log#"$root"/})"
+      return 0
     fi
-    echo "${cmd[0]} $d: failed (see ${log#"$root"/})"; touch "$build/failed"; return 1
+    echo "${cmd[0]} $d: failed (see ${log#"$root"/})"
+    touch "$build/failed"
+    return 1
   fi
   echo "${cmd[0]} $d: done"
 }
-parallel() {  # parallel COMMAND...: each argument one command line, at most $jobs at once
+parallel() { # parallel COMMAND...: each argument one command line, at most $jobs at once
   local running=0 t
   for t in "$@"; do
     $t &
     running=$((running + 1))
-    if [ "$running" -ge "$jobs" ]; then wait -n || true; running=$((running - 1)); fi
+    if [ "$running" -ge "$jobs" ]; then
+      wait -n || true
+      running=$((running - 1))
+    fi
   done
   wait || true
 }
@@ -141,4 +165,7 @@ parallel "${places[@]}" "${tasks[@]}"
 
 python3 "$root/scripts/synth_summary.py" "$root" >"$rep/summary.md"
 echo "wrote $rep/summary.md"
-if [ -e "$build/failed" ]; then echo "scripts/synth.sh: some runs failed (see above)" >&2; exit 1; fi
+if [ -e "$build/failed" ]; then
+  echo "scripts/synth.sh: some runs failed (see above)" >&2
+  exit 1
+fi

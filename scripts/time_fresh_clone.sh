@@ -20,7 +20,10 @@ for cmd in demo test; do
   rc=0
   (cd "$dir" && "./scripts/$cmd.sh") >"$dir.log" 2>&1 || rc=$?
   end=$(date +%s)
-  [ "$rc" -eq 0 ] || { echo "time_fresh_clone: ./scripts/$cmd.sh failed (exit $rc), see $dir.log" >&2; exit 1; }
+  [ "$rc" -eq 0 ] || {
+    echo "time_fresh_clone: ./scripts/$cmd.sh failed (exit $rc), see $dir.log" >&2
+    exit 1
+  }
   results+=("$cmd $((end - start)) $(grep -oE '[0-9]+% tests passed, [0-9]+ tests failed out of [0-9]+' "$dir.log" | tail -1 || true)")
 done
 /usr/bin/python3 - "$root/docs/reports/timings.json" "$commit" "$(nproc)" "$(lscpu | sed -n 's/^Model name: *//p' | head -1)" "${results[@]}" <<'PY'

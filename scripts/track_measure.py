@@ -16,6 +16,7 @@ Writes DIR/track_measure.md (a table per measurement, with the commands) and pri
 Runs on both sensors: `ideal` (the observer's own error) and `paper` (the paper scenario: its residual
 systematic error and noise pass into the velocity).
 """
+
 import argparse
 import csv
 import json
@@ -62,97 +63,250 @@ def main():
         p = lambda n: os.path.join(tmp, n)
         regs = {}
         for sc in ("ideal", "paper"):
-            run([a.anglecore, "simulate", "--scenario", sc, "--samples", "20000", "--seed", "1",
-                 "--out", p(sc + "_cal.csv")], log)
-            run([a.anglecore, "calibrate", "--in", p(sc + "_cal.csv"), "--out", p(sc + ".hex"),
-                 "--zero-offset", "0"], log)
+            run(
+                [
+                    a.anglecore,
+                    "simulate",
+                    "--scenario",
+                    sc,
+                    "--samples",
+                    "20000",
+                    "--seed",
+                    "1",
+                    "--out",
+                    p(sc + "_cal.csv"),
+                ],
+                log,
+            )
+            run(
+                [
+                    a.anglecore,
+                    "calibrate",
+                    "--in",
+                    p(sc + "_cal.csv"),
+                    "--out",
+                    p(sc + ".hex"),
+                    "--zero-offset",
+                    "0",
+                ],
+                log,
+            )
             regs[sc] = p(sc + ".hex")
 
         # 1. Residual lag.
-        md += ["## Residual lag of the compensated angle (1 MS/s, bandwidth code 6 = 3.6 kHz)", "",
-               "| sensor | speed | D (samples) | lag without compensation | residual mean | residual RMS | residual max |",
-               "|---|---|---|---|---|---|---|"]
+        md += [
+            "## Residual lag of the compensated angle (1 MS/s, bandwidth code 6 = 3.6 kHz)",
+            "",
+            "| sensor | speed | D (samples) | lag without compensation | residual mean | residual RMS | residual max |",
+            "|---|---|---|---|---|---|---|",
+        ]
         for sc in ("ideal", "paper"):
             for rpm in (10000, 60000):
                 rec = p(f"{sc}_{rpm}.csv")
-                run([a.anglecore, "simulate", "--scenario", sc, "--profile", "constant", "--speed-rpm",
-                     str(rpm), "--sample-rate", str(FS), "--samples", "100000", "--seed", "3",
-                     "--out", rec], log)
+                run(
+                    [
+                        a.anglecore,
+                        "simulate",
+                        "--scenario",
+                        sc,
+                        "--profile",
+                        "constant",
+                        "--speed-rpm",
+                        str(rpm),
+                        "--sample-rate",
+                        str(FS),
+                        "--samples",
+                        "100000",
+                        "--seed",
+                        "3",
+                        "--out",
+                        rec,
+                    ],
+                    log,
+                )
                 for d in (1, 10):
                     ang = p(f"{sc}_{rpm}_{d}.ang.csv")
-                    run([a.anglecore, "estimate", "--regs", regs[sc], "--in", rec, "--out", ang,
-                         "--track-lead", str(d)], log)
+                    run(
+                        [
+                            a.anglecore,
+                            "estimate",
+                            "--regs",
+                            regs[sc],
+                            "--in",
+                            rec,
+                            "--out",
+                            ang,
+                            "--track-lead",
+                            str(d),
+                        ],
+                        log,
+                    )
                     rows = read(ang)
                     settle = 20000
-                    res = [wrap_deg(float(rows[i]["angle_comp_rad"]) - float(rows[i + d]["theta_ref"]))
-                           for i in range(settle, len(rows) - d)]
-                    raw = [wrap_deg(float(rows[i]["angle_rad"]) - float(rows[i + d]["theta_ref"]))
-                           for i in range(settle, len(rows) - d)]
+                    res = [
+                        wrap_deg(float(rows[i]["angle_comp_rad"]) - float(rows[i + d]["theta_ref"]))
+                        for i in range(settle, len(rows) - d)
+                    ]
+                    raw = [
+                        wrap_deg(float(rows[i]["angle_rad"]) - float(rows[i + d]["theta_ref"]))
+                        for i in range(settle, len(rows) - d)
+                    ]
                     rms, mx, mean = stats(res)
-                    md.append(f"| {sc} | {rpm} rpm | {d} | {-sum(raw) / len(raw):.4f} deg | "
-                              f"{mean:+.5f} deg | {rms:.5f} deg | {mx:.5f} deg |")
+                    md.append(
+                        f"| {sc} | {rpm} rpm | {d} | {-sum(raw) / len(raw):.4f} deg | "
+                        f"{mean:+.5f} deg | {rms:.5f} deg | {mx:.5f} deg |"
+                    )
         md.append("")
 
         # 2. Velocity on the ripple profile.
-        md += ["## Velocity on 3000 rpm with a 2 % speed ripple at 40 Hz (1 MS/s)", "",
-               "| sensor | bandwidth | vs reference through the observer: RMS / max / mean | vs the profile's speed: RMS / max |",
-               "|---|---|---|---|"]
+        md += [
+            "## Velocity on 3000 rpm with a 2 % speed ripple at 40 Hz (1 MS/s)",
+            "",
+            "| sensor | bandwidth | vs reference through the observer: RMS / max / mean | vs the profile's speed: RMS / max |",
+            "|---|---|---|---|",
+        ]
         plot_data = {}
         for sc in ("ideal", "paper"):
             rec = p(f"{sc}_rip.csv")
-            run([a.anglecore, "simulate", "--scenario", sc, "--profile", "ripple", "--speed-rpm", "3000",
-                 "--ripple", "0.02", "--ripple-hz", "40", "--sample-rate", str(FS), "--samples", "200000",
-                 "--seed", "4", "--out", rec], log)
+            run(
+                [
+                    a.anglecore,
+                    "simulate",
+                    "--scenario",
+                    sc,
+                    "--profile",
+                    "ripple",
+                    "--speed-rpm",
+                    "3000",
+                    "--ripple",
+                    "0.02",
+                    "--ripple-hz",
+                    "40",
+                    "--sample-rate",
+                    str(FS),
+                    "--samples",
+                    "200000",
+                    "--seed",
+                    "4",
+                    "--out",
+                    rec,
+                ],
+                log,
+            )
             for bw in (200, 1000):
                 ang, js = p(f"{sc}_rip_{bw}.csv"), p(f"{sc}_rip_{bw}.json")
-                out = run([a.anglecore, "estimate", "--regs", regs[sc], "--in", rec, "--out", ang,
-                           "--track-bandwidth", str(bw), "--json", js], log)
+                out = run(
+                    [
+                        a.anglecore,
+                        "estimate",
+                        "--regs",
+                        regs[sc],
+                        "--in",
+                        rec,
+                        "--out",
+                        ang,
+                        "--track-bandwidth",
+                        str(bw),
+                        "--json",
+                        js,
+                    ],
+                    log,
+                )
                 j = json.load(open(js))
                 ve = j["velocity_error_rpm"]
                 rows = read(ang)
                 v = [float(r["velocity_rpm"]) for r in rows]
-                true = [3000 * (1 + 0.02 * math.sin(2 * math.pi * 40 * i / FS)) for i in range(len(v))]
+                true = [
+                    3000 * (1 + 0.02 * math.sin(2 * math.pi * 40 * i / FS)) for i in range(len(v))
+                ]
                 settle = 50000
                 rms, mx, _ = stats([v[i] - true[i] for i in range(settle, len(v))])
-                md.append(f"| {sc} | {j['track']['bandwidth_hz']:.0f} Hz (code {j['track']['code']}) | "
-                          f"{ve['rms']:.2f} / {ve['max_abs']:.2f} / {ve['mean']:+.3f} rpm | {rms:.2f} / {mx:.2f} rpm |")
+                md.append(
+                    f"| {sc} | {j['track']['bandwidth_hz']:.0f} Hz (code {j['track']['code']}) | "
+                    f"{ve['rms']:.2f} / {ve['max_abs']:.2f} / {ve['mean']:+.3f} rpm | {rms:.2f} / {mx:.2f} rpm |"
+                )
                 plot_data[(sc, bw)] = (v, true, j["track"]["bandwidth_hz"])
         md.append("")
 
         # 3. Velocity noise against a finite difference of the same bandwidth.
-        md += ["## Velocity noise at constant speed (3000 rpm, 1 MS/s) vs a finite difference of equal bandwidth", "",
-               "| sensor | code | observer RMS | finite difference (N) RMS | ratio |", "|---|---|---|---|---|"]
+        md += [
+            "## Velocity noise at constant speed (3000 rpm, 1 MS/s) vs a finite difference of equal bandwidth",
+            "",
+            "| sensor | code | observer RMS | finite difference (N) RMS | ratio |",
+            "|---|---|---|---|---|",
+        ]
         for sc in ("paper",):
             rec = p(f"{sc}_const.csv")
-            run([a.anglecore, "simulate", "--scenario", sc + "-indep" if sc == "paper" else sc,
-                 "--profile", "constant", "--speed-rpm", "3000", "--sample-rate", str(FS), "--samples",
-                 "300000", "--seed", "5", "--out", rec], log)
+            run(
+                [
+                    a.anglecore,
+                    "simulate",
+                    "--scenario",
+                    sc + "-indep" if sc == "paper" else sc,
+                    "--profile",
+                    "constant",
+                    "--speed-rpm",
+                    "3000",
+                    "--sample-rate",
+                    str(FS),
+                    "--samples",
+                    "300000",
+                    "--seed",
+                    "5",
+                    "--out",
+                    rec,
+                ],
+                log,
+            )
             for code_bw in (900, 3600):
                 ang = p(f"{sc}_const_{code_bw}.csv")
-                out = run([a.anglecore, "estimate", "--regs", regs[sc], "--in", rec, "--out", ang,
-                           "--track-bandwidth", str(code_bw)], log)
+                out = run(
+                    [
+                        a.anglecore,
+                        "estimate",
+                        "--regs",
+                        regs[sc],
+                        "--in",
+                        rec,
+                        "--out",
+                        ang,
+                        "--track-bandwidth",
+                        str(code_bw),
+                    ],
+                    log,
+                )
                 code = int(out.split("code ")[1].split()[0])
-                wn = 2 ** -code / math.sqrt(2)
+                wn = 2**-code / math.sqrt(2)
                 n = 1
-                while abs(math.sin(wn * (n + 1) / 2) / ((n + 1) * math.sin(wn / 2))) > 1 / math.sqrt(2):
+                while abs(
+                    math.sin(wn * (n + 1) / 2) / ((n + 1) * math.sin(wn / 2))
+                ) > 1 / math.sqrt(2):
                     n += 1
                 rows = read(ang)
                 th = [float(r["angle_rad"]) for r in rows]
                 v = [float(r["velocity_rpm"]) for r in rows]
                 settle = 100000
-                fd = [math.remainder(th[i] - th[i - n], 2 * math.pi) / (2 * math.pi) / n * FS * 60
-                      for i in range(settle, len(th))]
+                fd = [
+                    math.remainder(th[i] - th[i - n], 2 * math.pi) / (2 * math.pi) / n * FS * 60
+                    for i in range(settle, len(th))
+                ]
                 ob = v[settle:]
+
                 def sd(xs):
                     m = sum(xs) / len(xs)
                     return math.sqrt(sum((x - m) ** 2 for x in xs) / len(xs))
-                md.append(f"| {sc}-indep | {code} | {sd(ob):.2f} rpm | {sd(fd):.2f} rpm (N = {n}) | {sd(fd) / sd(ob):.2f} |")
+
+                md.append(
+                    f"| {sc}-indep | {code} | {sd(ob):.2f} rpm | {sd(fd):.2f} rpm (N = {n}) | {sd(fd) / sd(ob):.2f} |"
+                )
         md.append("")
 
         if a.plot:
             import matplotlib
+
             matplotlib.use("Agg")
             import matplotlib.pyplot as plt
+
             fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
             for ax, sc in zip(axes, ("ideal", "paper")):
                 for bw in (200, 1000):
@@ -167,9 +321,21 @@ def main():
             axes[-1].set_xlabel("time (ms)")
             fig.tight_layout()
             fig.savefig(a.plot, dpi=110)
-    text = "\n".join(["# Tracking observer measurements", "",
-                      f"Generated by `scripts/track_measure.py` (commands at the end).", ""] + md +
-                     ["## Commands", "", "```"] + log + ["```", ""])
+    text = "\n".join(
+        [
+            "# Tracking observer measurements",
+            "",
+            "Generated by `scripts/track_measure.py` (commands at the end).",
+            "",
+            *md,
+            "## Commands",
+            "",
+            "```",
+            *log,
+            "```",
+            "",
+        ]
+    )
     os.makedirs(a.out, exist_ok=True)
     open(os.path.join(a.out, "track_measure.md"), "w").write(text)
     print("\n".join(md))

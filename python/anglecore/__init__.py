@@ -13,20 +13,33 @@ results equal the command's on the same inputs: register words, bit-accurate ang
 Bad input raises ValueError with the model's message; a wrong array type TypeError; an RTL engine
 whose run-time module is not built RtlNotBuilt (a ValueError naming the command that builds it).
 """
+
 from __future__ import annotations
 
 import os
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional
+from typing import Any, Optional
 
 import numpy as np
 
 from . import _core
 
 __all__ = [
-    "Recording", "RegisterImage", "Estimate", "read_recording", "read_image", "simulate",
-    "scenarios", "physics_scenarios", "simulate_physics", "calibrate", "estimate", "harmonics",
-    "diagnose", "ENGINES", "RtlNotBuilt",
+    "ENGINES",
+    "Estimate",
+    "Recording",
+    "RegisterImage",
+    "RtlNotBuilt",
+    "calibrate",
+    "diagnose",
+    "estimate",
+    "harmonics",
+    "physics_scenarios",
+    "read_image",
+    "read_recording",
+    "scenarios",
+    "simulate",
+    "simulate_physics",
 ]
 
 RtlNotBuilt = _core.RtlNotBuilt  # a ValueError: an RTL engine's run-time module is not built
@@ -58,11 +71,36 @@ class Recording:
     meta holds the `# key=value` lines (p = periodicity), comments the other `#` lines.
     """
 
-    def __init__(self, *, theta_ref=None, t=None, temp=None, c1=None, c2=None, c3=None, c4=None,
-                 sin=None, cos=None, meta: Optional[Dict[str, Any]] = None,
-                 comments: Optional[List[str]] = None):
-        given = {k: v for k, v in dict(t=t, theta_ref=theta_ref, c1=c1, c2=c2, c3=c3, c4=c4,
-                                       sin=sin, cos=cos, temp=temp).items() if v is not None}
+    def __init__(
+        self,
+        *,
+        theta_ref=None,
+        t=None,
+        temp=None,
+        c1=None,
+        c2=None,
+        c3=None,
+        c4=None,
+        sin=None,
+        cos=None,
+        meta: Optional[dict[str, Any]] = None,
+        comments: Optional[list[str]] = None,
+    ):
+        given = {
+            k: v
+            for k, v in {
+                "t": t,
+                "theta_ref": theta_ref,
+                "c1": c1,
+                "c2": c2,
+                "c3": c3,
+                "c4": c4,
+                "sin": sin,
+                "cos": cos,
+                "temp": temp,
+            }.items()
+            if v is not None
+        }
         four = [k for k in _CHANNELS[4] if k in given]
         two = [k for k in _CHANNELS[2] if k in given]
         if len(four) == 4 and not two:
@@ -71,15 +109,15 @@ class Recording:
             self.channels = 2
         else:
             raise ValueError("Recording: give the four channels c1..c4 or the two sin, cos")
-        self.columns: Dict[str, np.ndarray] = {k: _column(k, v) for k, v in given.items()}
+        self.columns: dict[str, np.ndarray] = {k: _column(k, v) for k, v in given.items()}
         lengths = {k: len(v) for k, v in self.columns.items()}
         if len(set(lengths.values())) != 1:
             raise ValueError(f"Recording: columns differ in length: {lengths}")
-        self.meta: Dict[str, str] = {str(k): str(v) for k, v in (meta or {}).items()}
-        self.comments: List[str] = list(comments or [])
+        self.meta: dict[str, str] = {str(k): str(v) for k, v in (meta or {}).items()}
+        self.comments: list[str] = list(comments or [])
 
     @classmethod
-    def _from_core(cls, d: dict) -> "Recording":
+    def _from_core(cls, d: dict) -> Recording:
         rec = cls.__new__(cls)
         rec.channels = d["channels"]
         rec.columns = dict(d["columns"])
@@ -88,8 +126,12 @@ class Recording:
         return rec
 
     def _core(self) -> dict:
-        return {"channels": self.channels, "columns": self.columns, "meta": self.meta,
-                "comments": self.comments}
+        return {
+            "channels": self.channels,
+            "columns": self.columns,
+            "meta": self.meta,
+            "comments": self.comments,
+        }
 
     def __getattr__(self, name: str) -> np.ndarray:
         if name in _COLUMNS:
@@ -130,7 +172,7 @@ class RegisterImage:
     """A register image: .words (uint64 array, address order), .header (the `// acore:` keys),
     .report (the `calibrate --json` object when made by calibrate), .write(path)."""
 
-    def __init__(self, core: "_core.RegImage", report: Optional[dict] = None):
+    def __init__(self, core: _core.RegImage, report: Optional[dict] = None):
         self._img = core
         self.report = report
 
@@ -144,11 +186,11 @@ class RegisterImage:
         return self._img.text
 
     @property
-    def header(self) -> Dict[str, str]:
-        out: Dict[str, str] = {}
+    def header(self) -> dict[str, str]:
+        out: dict[str, str] = {}
         for line in self._img.text.splitlines():
             if line.startswith("// acore: ") and "=" in line:
-                k, v = line[len("// acore: "):].split("=", 1)
+                k, v = line[len("// acore: ") :].split("=", 1)
                 out[k] = v
         return out
 
@@ -172,13 +214,17 @@ def read_image(path: os.PathLike | str) -> RegisterImage:
     return RegisterImage(_core.read_image(os.fspath(path)))
 
 
-def scenarios() -> List[str]:
+def scenarios() -> list[str]:
     """The built-in scenario names (`anglecore simulate --list`)."""
     return list(_core.scenario_names())
 
 
-def simulate(scenario_or_config: Any = "paper", samples: int = 4096, seed: int = 1,
-             channels: Optional[int] = None) -> Recording:
+def simulate(
+    scenario_or_config: Any = "paper",
+    samples: int = 4096,
+    seed: int = 1,
+    channels: Optional[int] = None,
+) -> Recording:
     """A recording from a built-in scenario name, a scenario JSON file (path ending in .json) or a
     scenario dict (the fields of `simulate --dump-config`, effects included), as
     `anglecore simulate --scenario/--config ... --samples N --seed S [--channels C]`."""
@@ -189,7 +235,8 @@ def simulate(scenario_or_config: Any = "paper", samples: int = 4096, seed: int =
     if int(samples) < 1:
         raise ValueError(f"samples {samples}: must be >= 1")
     return Recording._from_core(
-        _core.simulate(scenario_or_config, int(samples), int(seed), channels or 0))
+        _core.simulate(scenario_or_config, int(samples), int(seed), channels or 0)
+    )
 
 
 def scenario_config(scenario_or_config: Any, channels: Optional[int] = None) -> dict:
@@ -197,7 +244,7 @@ def scenario_config(scenario_or_config: Any, channels: Optional[int] = None) -> 
     return _core.scenario_json(scenario_or_config, channels or 0)
 
 
-def physics_scenarios() -> List[dict]:
+def physics_scenarios() -> list[dict]:
     """The physics rig's scenarios (magnet, sensor, ADC chain; `diagnose-bench --physics`)."""
     return list(_core.physics_scenarios())
 
@@ -221,18 +268,20 @@ def calibrate(recording: Recording, **options: Any) -> RegisterImage:
     if "zero_offset" in opts and not isinstance(opts["zero_offset"], str):
         opts["zero_offset"] = repr(float(opts["zero_offset"]))
     call = ", ".join(f"{k}={v!r}" for k, v in options.items())
-    img, report = _core.calibrate(recording._core(), opts, "recording",
-                                  f"python anglecore.calibrate({call})")
+    img, report = _core.calibrate(
+        recording._core(), opts, "recording", f"python anglecore.calibrate({call})"
+    )
     return RegisterImage(img, report)
 
 
 @dataclass
 class Estimate:
     """estimate()'s result: per-sample arrays and the `estimate --json` object (.report)."""
-    angle: np.ndarray                 # rad, reference frame, [0, 2 pi)
-    region: np.ndarray                # uint8
-    flags: np.ndarray                 # uint8: bit 0 ovf, 1 los, 2 dos
-    error: Optional[np.ndarray]       # deg, angle - p theta_ref wrapped (None without theta_ref)
+
+    angle: np.ndarray  # rad, reference frame, [0, 2 pi)
+    region: np.ndarray  # uint8
+    flags: np.ndarray  # uint8: bit 0 ovf, 1 los, 2 dos
+    error: Optional[np.ndarray]  # deg, angle - p theta_ref wrapped (None without theta_ref)
     uncorrected: Optional[np.ndarray]  # rad, the chain without correction (None when not asked)
     uncorrected_error: Optional[np.ndarray]
     report: dict
@@ -259,10 +308,16 @@ def _check_recording(recording: Any) -> None:
         raise TypeError(f"expected an anglecore.Recording, got {type(recording).__name__}")
 
 
-def estimate(image: RegisterImage, recording: Recording, engine: str = "fixed",
-             periodicity: Optional[int] = None, uncorrected: bool = True, fold: int = 1,
-             trace: Optional[os.PathLike | str] = None,
-             rtl_dir: Optional[os.PathLike | str] = None) -> Estimate:
+def estimate(
+    image: RegisterImage,
+    recording: Recording,
+    engine: str = "fixed",
+    periodicity: Optional[int] = None,
+    uncorrected: bool = True,
+    fold: int = 1,
+    trace: Optional[os.PathLike | str] = None,
+    rtl_dir: Optional[os.PathLike | str] = None,
+) -> Estimate:
     """Runs an engine over a recording, as `anglecore estimate --engine ENGINE [--fold N]`.
 
     Every engine runs through the command's own dispatch (run_engine): float (the double model on
@@ -283,11 +338,17 @@ def estimate(image: RegisterImage, recording: Recording, engine: str = "fixed",
     if engine == "fixed" and not uncorrected and fold == 1 and trace is None:
         arrays = [recording.columns[n] for n in recording.channel_names]
         angle, flags, region, err = _core.estimate_fixed_batch(
-            image._img, recording.channels, arrays, theta, p)
+            image._img, recording.channels, arrays, theta, p
+        )
     else:
         angle, unc, region, flags = _core.estimate_series(
-            image._img, recording._core(), engine, int(fold),
-            "" if trace is None else os.fspath(trace), "" if rtl_dir is None else os.fspath(rtl_dir))
+            image._img,
+            recording._core(),
+            engine,
+            int(fold),
+            "" if trace is None else os.fspath(trace),
+            "" if rtl_dir is None else os.fspath(rtl_dir),
+        )
         if not uncorrected:
             unc = None
         if theta is not None:
@@ -296,8 +357,9 @@ def estimate(image: RegisterImage, recording: Recording, engine: str = "fixed",
     # about their mean, as the command reports them.
     if unc is not None and theta is not None:
         unc_err = _core.judged_error_deg(image._img, unc, theta, p)
-    report = _core.estimate_report(image._img, engine, int(fold), len(recording), err, unc_err,
-                                   int(np.count_nonzero(flags)))
+    report = _core.estimate_report(
+        image._img, engine, int(fold), len(recording), err, unc_err, int(np.count_nonzero(flags))
+    )
     return Estimate(angle, region, flags, err, unc, unc_err, report)
 
 
@@ -309,12 +371,17 @@ def harmonics(spec: Any, grid: int = 0) -> dict:
     return _core.harmonics(spec, int(grid))
 
 
-def diagnose(sim: Recording, real: Recording, holdout: Optional[Recording] = None,
-             order: Optional[int] = None) -> dict:
+def diagnose(
+    sim: Recording,
+    real: Recording,
+    holdout: Optional[Recording] = None,
+    order: Optional[int] = None,
+) -> dict:
     """The sim-to-real gap diagnosis (`anglecore diagnose --json`) as a dict."""
     _check_recording(sim)
     _check_recording(real)
     if holdout is not None:
         _check_recording(holdout)
-    return _core.diagnose(sim._core(), real._core(),
-                          None if holdout is None else holdout._core(), int(order or 0))
+    return _core.diagnose(
+        sim._core(), real._core(), None if holdout is None else holdout._core(), int(order or 0)
+    )

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Shared fixtures: the `anglecore` command the package is compared with (ACORE_CLI, set by CTest;
 else build/anglecore) and a runner that returns its --json output."""
+
 import json
 import os
 import subprocess
@@ -34,6 +35,15 @@ def paper(tmp_path_factory, cli):
     written by the CLI."""
     d = tmp_path_factory.mktemp("paper")
     for name, seed in (("cal", 11), ("val", 12)):
-        cli("simulate", "--scenario", "paper", "--samples", 3600, "--seed", seed, "--out",
-            d / f"{name}.csv")
+        cli(
+            "simulate",
+            "--scenario",
+            "paper",
+            "--samples",
+            3600,
+            "--seed",
+            seed,
+            "--out",
+            d / f"{name}.csv",
+        )
     return d

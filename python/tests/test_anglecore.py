@@ -1,15 +1,15 @@
 # SPDX-License-Identifier: MIT
 """The package against the `anglecore` command on the same inputs: recordings, register words,
 bit-accurate angles and statistics identical; input errors as ValueError/TypeError."""
+
 import csv
 import json
 import subprocess
 import sys
 
+import anglecore as ac
 import numpy as np
 import pytest
-
-import anglecore as ac
 from conftest import ROOT
 
 
@@ -41,16 +41,43 @@ def test_recording_roundtrip_and_arrays(tmp_path):
 OPTION_SETS = [
     ({}, []),
     ({"degree": 5, "regions": 8, "xcenter": True}, ["--degree", 5, "--regions", 8, "--xcenter"]),
-    ({"correction": "poly2d", "degree": 2, "fourier": 3, "zero_word": True},
-     ["--correction", "poly2d", "--degree", 2, "--fourier", 3, "--zero-word"]),
-    ({"angle_w": 18, "zero_offset": 0, "coef_frac": 14, "iterations": 14, "in_w": 18},
-     ["--angle-w", 18, "--zero-offset", 0, "--coef-frac", 14, "--iterations", 14, "--in-w", 18]),
-    ({"correction": "none", "fourier": 4, "fourier_iterations": 10, "fourier_guard": 3,
-      "in_scale": 2048.0, "periodicity": 1},
-     ["--correction", "none", "--fourier", 4, "--fourier-iterations", 10, "--fourier-guard", 3,
-      "--in-scale", 2048, "--periodicity", 1]),
+    (
+        {"correction": "poly2d", "degree": 2, "fourier": 3, "zero_word": True},
+        ["--correction", "poly2d", "--degree", 2, "--fourier", 3, "--zero-word"],
+    ),
+    (
+        {"angle_w": 18, "zero_offset": 0, "coef_frac": 14, "iterations": 14, "in_w": 18},
+        ["--angle-w", 18, "--zero-offset", 0, "--coef-frac", 14, "--iterations", 14, "--in-w", 18],
+    ),
+    (
+        {
+            "correction": "none",
+            "fourier": 4,
+            "fourier_iterations": 10,
+            "fourier_guard": 3,
+            "in_scale": 2048.0,
+            "periodicity": 1,
+        },
+        [
+            "--correction",
+            "none",
+            "--fourier",
+            4,
+            "--fourier-iterations",
+            10,
+            "--fourier-guard",
+            3,
+            "--in-scale",
+            2048,
+            "--periodicity",
+            1,
+        ],
+    ),
     # The self-calibration: theta_ref is in the file but not used by the fit.
-    ({"reference": "none", "selfcal_harmonics": 8}, ["--reference", "none", "--selfcal-harmonics", 8]),
+    (
+        {"reference": "none", "selfcal_harmonics": 8},
+        ["--reference", "none", "--selfcal-harmonics", 8],
+    ),
 ]
 
 
@@ -71,8 +98,17 @@ def test_calibrate_and_estimate_equal_cli(paper, cli, tmp_path, opts, flags):
 
     val = ac.read_recording(paper / "val.csv")
     for engine in ("fixed", "float"):
-        j = cli.json("estimate", "--regs", hexfile, "--in", paper / "val.csv", "--engine", engine,
-                     "--out", angles)
+        j = cli.json(
+            "estimate",
+            "--regs",
+            hexfile,
+            "--in",
+            paper / "val.csv",
+            "--engine",
+            engine,
+            "--out",
+            angles,
+        )
         res = ac.estimate(img, val, engine=engine)
         # The command also runs the tracking observer (track, velocity_error_rpm): the package
         # has no observer yet.
@@ -116,8 +152,9 @@ def test_diagnose_equals_cli(cli, tmp_path):
     sim.write(tmp_path / "sim.csv")
     real.write(tmp_path / "real.csv")
     ours = ac.diagnose(sim, real)
-    assert ours == cli.json("diagnose", "--sim", tmp_path / "sim.csv", "--real",
-                            tmp_path / "real.csv")
+    assert ours == cli.json(
+        "diagnose", "--sim", tmp_path / "sim.csv", "--real", tmp_path / "real.csv"
+    )
     assert ours["verdict"] in ("explained", "unexplained", "no_gap")
 
 
@@ -125,8 +162,17 @@ def test_simulate_config_dict_equals_cli_and_physics(cli, tmp_path):
     cfg = ac.scenario_config("paper", channels=2)
     cfg["effects"] = [{"effect": "offset", "offset_sin": 0.03}]
     (tmp_path / "s.json").write_text(json.dumps(cfg))
-    cli("simulate", "--config", tmp_path / "s.json", "--samples", 500, "--seed", 5, "--out",
-        tmp_path / "s.csv")
+    cli(
+        "simulate",
+        "--config",
+        tmp_path / "s.json",
+        "--samples",
+        500,
+        "--seed",
+        5,
+        "--out",
+        tmp_path / "s.csv",
+    )
     theirs = ac.read_recording(tmp_path / "s.csv")
     for ours in (ac.simulate(cfg, samples=500, seed=5), ac.simulate(tmp_path / "s.json", 500, 5)):
         assert set(ours.columns) == set(theirs.columns) == {"t", "theta_ref", "sin", "cos"}
@@ -156,7 +202,7 @@ def test_input_errors_are_value_errors_with_the_cli_message(cli, tmp_path):
         ac.calibrate(rec, zero_offset="north")
     with pytest.raises(TypeError, match="unknown option 'degrees'"):
         ac.calibrate(rec, degrees=3)
-    with pytest.raises(ValueError, match="not a known scenario|scenario"):
+    with pytest.raises(ValueError, match="unknown scenario 'no-such-scenario'"):
         ac.simulate("no-such-scenario")
     img = ac.calibrate(rec)
     with pytest.raises(ValueError, match="is not one of float, fixed"):
@@ -171,7 +217,7 @@ def test_wrong_types_and_shapes():
         ac.Recording(sin=np.zeros((4, 2)), cos=n, theta_ref=n)
     with pytest.raises(ValueError, match="differ in length"):
         ac.Recording(sin=np.zeros(7), cos=n, theta_ref=n)
-    with pytest.raises(ValueError, match="c1..c4"):
+    with pytest.raises(ValueError, match=r"c1\.\.c4"):
         ac.Recording(c1=n, c2=n, theta_ref=n)
     with pytest.raises(TypeError):
         ac.estimate("regs.hex", ac.Recording(sin=n, cos=n))
@@ -186,10 +232,17 @@ def test_wrong_types_and_shapes():
 def test_example_reproduces_the_demo_table(cli, tmp_path):
     demo = cli.json("demo", "--no-rtl", "--no-plots", "--no-sweep", "--out", tmp_path / "demo")
     png = tmp_path / "error.png"
-    out = subprocess.run([sys.executable, str(ROOT / "docs" / "python_example.py"), str(png)],
-                         capture_output=True, text=True, check=True).stdout
-    rows = {line[2:38].strip(): [float(v) for v in line[38:].split()]
-            for line in out.splitlines() if line.startswith("  ours")}
+    out = subprocess.run(
+        [sys.executable, str(ROOT / "docs" / "python_example.py"), str(png)],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    rows = {
+        line[2:38].strip(): [float(v) for v in line[38:].split()]
+        for line in out.splitlines()
+        if line.startswith("  ours")
+    }
     assert len(rows) == 5
     for name, got in rows.items():
         s = demo["table3"][name]

@@ -5,16 +5,18 @@ module that is not built raises RtlNotBuilt naming the command that builds it.
 
 The modules come from the CMake build under test (CTest sets ACORE_RTL_DIR to its rtl/ folder and
 ACORE_WITH_RTL to whether it makes them: OFF skips the runs, not the missing-module checks)."""
+
 import csv
 import os
 
+import anglecore as ac
 import numpy as np
 import pytest
 
-import anglecore as ac
-
-needs_modules = pytest.mark.skipif(os.environ.get("ACORE_WITH_RTL", "ON") == "OFF",
-                                   reason="this build makes no RTL modules (ACORE_WITH_RTL=OFF)")
+needs_modules = pytest.mark.skipif(
+    os.environ.get("ACORE_WITH_RTL", "ON") == "OFF",
+    reason="this build makes no RTL modules (ACORE_WITH_RTL=OFF)",
+)
 
 
 @pytest.fixture(scope="module")
@@ -44,8 +46,15 @@ def test_rtl_equals_cli_and_fixed(paper, cli, tmp_path, images, name, engine, fo
     img = ac.read_image(images[name])
     val = ac.read_recording(paper / "val.csv")
     res = ac.estimate(img, val, engine=engine, fold=fold)
-    j, rows = cli_estimate(cli, tmp_path, images[name], paper / "val.csv", "--engine", engine,
-                           *(["--fold", fold] if fold != 1 else []))
+    j, rows = cli_estimate(
+        cli,
+        tmp_path,
+        images[name],
+        paper / "val.csv",
+        "--engine",
+        engine,
+        *(["--fold", fold] if fold != 1 else []),
+    )
     assert res.report == j  # every statistic, the fold, the zero offset, the flagged count
     assert res.report["engine"] == engine and res.report["about_mean"] == (name == "self")
     assert [f"{a:.9f}" for a in res.angle] == [r["angle_rad"] for r in rows]
@@ -79,7 +88,7 @@ def test_rtl_module_missing_names_the_command(paper, images, tmp_path, monkeypat
             ac.estimate(img, rec, engine=engine, rtl_dir=empty)
         msg = str(e.value)
         assert f"{empty}/{module}.so" in msg and "(the folder given)" in msg, msg
-        assert f"cmake --build " in msg and f"--target {module}`" in msg, msg
+        assert "cmake --build " in msg and f"--target {module}`" in msg, msg
         assert "ACORE_RTL_DIR" in msg, msg
         assert isinstance(e.value, ValueError)  # an input error, as the command's exit 2
     monkeypatch.setenv("ACORE_RTL_DIR", str(empty))

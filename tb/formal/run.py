@@ -24,6 +24,7 @@ become free values each clock). The properties are about the valid/ready control
 registers, which are kept, so any behaviour of the cut values is covered.
 Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
 """
+
 import argparse
 import os
 import re
@@ -35,54 +36,90 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import registry  # noqa: E402
+import registry
 
 HERE = os.path.join(ROOT, "tb", "formal")
 
 # Stage modules whose instances are cut (outputs free each clock). The FIFO, the valid bits and the
 # output registers of the tops, and all of the serial core and of the shell's control, stay.
-CUT_TOP = ["acore_coef_regfile", "acore_prefilter", "acore_scaler", "acore_region_select",
-           "acore_poly_correct", "acore_poly2d_correct", "acore_cordic", "acore_fourier_correct",
-           "acore_delay", "acore_fold_regs", "acore_fold_scaler", "acore_fold_poly",
-           "acore_fold_cordic", "acore_ram_delay"]
+CUT_TOP = [
+    "acore_coef_regfile",
+    "acore_prefilter",
+    "acore_scaler",
+    "acore_region_select",
+    "acore_poly_correct",
+    "acore_poly2d_correct",
+    "acore_cordic",
+    "acore_fourier_correct",
+    "acore_delay",
+    "acore_fold_regs",
+    "acore_fold_scaler",
+    "acore_fold_poly",
+    "acore_fold_cordic",
+    "acore_ram_delay",
+]
 
 # Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks). Each must make the
 # solver find a counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
 MUTANTS = {
     # FOLD = 1: a sample offered while the output is held is taken, but the pipeline does not move:
     # it is lost (overwritten).
-    "top_ready_ignores_stall": ("default", "acore_top.v",
-                                r"assign in_ready_o = en & ~rst_i;", "assign in_ready_o = ~rst_i;",
-                                "count/pipe: a sample taken during a stall is lost"),
+    "top_ready_ignores_stall": (
+        "default",
+        "acore_top.v",
+        r"assign in_ready_o = en & ~rst_i;",
+        "assign in_ready_o = ~rst_i;",
+        "count/pipe: a sample taken during a stall is lost",
+    ),
     # FOLD = 1: the valid pipeline keeps shifting while the output is held: the held sample is
     # replaced (dropped) and the output changes under a stall.
-    "top_shift_in_stall": ("default", "acore_top.v",
-                           r"else if \(en\) vld_q <= \{vld_q\[LATENCY-2:0\], in_valid_i\};",
-                           "else vld_q <= {vld_q[LATENCY-2:0], in_valid_i & en};",
-                           "hold/count: the held output is dropped"),
+    "top_shift_in_stall": (
+        "default",
+        "acore_top.v",
+        r"else if \(en\) vld_q <= \{vld_q\[LATENCY-2:0\], in_valid_i\};",
+        "else vld_q <= {vld_q[LATENCY-2:0], in_valid_i & en};",
+        "hold/count: the held output is dropped",
+    ),
     # FOLD = 1: in_ready_o high during reset.
-    "top_ready_in_reset": ("default", "acore_top.v",
-                           r"assign in_ready_o = en & ~rst_i;", "assign in_ready_o = en;",
-                           "reset: in_ready_o high in reset"),
+    "top_ready_in_reset": (
+        "default",
+        "acore_top.v",
+        r"assign in_ready_o = en & ~rst_i;",
+        "assign in_ready_o = en;",
+        "reset: in_ready_o high in reset",
+    ),
     # Folded: the FIFO's output register loads while the held word waits (ready ignored).
-    "fold_fifo_ignores_ready": ("fold2", "acore_fold_fifo.v",
-                                r"wire load = !empty && \(!valid_o \|\| ready_i\);",
-                                "wire load = !empty;",
-                                "hold/count: a held word is overwritten (lost)"),
+    "fold_fifo_ignores_ready": (
+        "fold2",
+        "acore_fold_fifo.v",
+        r"wire load = !empty && \(!valid_o \|\| ready_i\);",
+        "wire load = !empty;",
+        "hold/count: a held word is overwritten (lost)",
+    ),
     # Folded: the credit check dropped: samples closer than FOLD clocks.
-    "fold_no_spacing": ("fold4", "acore_top.v",
-                        r"rdy_q <= \(cnt_d == CNT_FULL\) && \(occ_d < OCC_MAX\);",
-                        "rdy_q <= (occ_d < OCC_MAX);",
-                        "spacing: two samples less than FOLD clocks apart"),
+    "fold_no_spacing": (
+        "fold4",
+        "acore_top.v",
+        r"rdy_q <= \(cnt_d == CNT_FULL\) && \(occ_d < OCC_MAX\);",
+        "rdy_q <= (occ_d < OCC_MAX);",
+        "spacing: two samples less than FOLD clocks apart",
+    ),
     # Folded: the output register's valid bit not reset: a sample of before the reset comes out.
-    "fold_valid_not_reset": ("fold8", "acore_top.v",
-                             r"if \(rst_i\) out_vld_q <= 1'b0;\n\s*else out_vld_q <= dp_valid;",
-                             "out_vld_q <= dp_valid;",
-                             "count/reset: an output from before the reset"),
+    "fold_valid_not_reset": (
+        "fold8",
+        "acore_top.v",
+        r"if \(rst_i\) out_vld_q <= 1'b0;\n\s*else out_vld_q <= dp_valid;",
+        "out_vld_q <= dp_valid;",
+        "count/reset: an output from before the reset",
+    ),
     # FIFO: the read pointer advances twice on a load: a word is skipped (reordered/lost).
-    "fifo_skip_word": ("fifo", "acore_fold_fifo.v",
-                       r"if \(load\) rptr_q <= rptr_q \+ 1'b1;", "if (load) rptr_q <= rptr_q + 2'd1 + wr_i;",
-                       "order: the tagged word is not the word given"),
+    "fifo_skip_word": (
+        "fifo",
+        "acore_fold_fifo.v",
+        r"if \(load\) rptr_q <= rptr_q \+ 1'b1;",
+        "if (load) rptr_q <= rptr_q + 2'd1 + wr_i;",
+        "order: the tagged word is not the word given",
+    ),
 }
 
 
@@ -103,8 +140,17 @@ def stream_setup(line):
     bound = lat + 2 if serial else lat
     # The line's datapath parameters go to the harness, which passes them on to the top.
     h = dict(params)
-    h.update({"SERIAL": int(serial), "LATENCY": lat, "CAP": shell["CAPACITY"], "BOUND": bound,
-              "ADDR_W": c["ADDR_W"], "RG_W": c["RG_W"], "MAG_W": c["MAG_W"]})
+    h.update(
+        {
+            "SERIAL": int(serial),
+            "LATENCY": lat,
+            "CAP": shell["CAPACITY"],
+            "BOUND": bound,
+            "ADDR_W": c["ADDR_W"],
+            "RG_W": c["RG_W"],
+            "MAG_W": c["MAG_W"],
+        }
+    )
     taps = []
     if not serial and fold == 1:
         taps.append(("g_ref.tap_vld", "g_top.dut.g_pipe.vld_q"))
@@ -112,10 +158,15 @@ def stream_setup(line):
         h["DPV_W"] = lat - 3
         h["OCC_W"] = (shell["CAPACITY"] - 1).bit_length() + 1
         f = "g_top.dut.g_fold."
-        taps += [("g_fold_ref.tap_v", f + "u_dp.v_q"), ("g_fold_ref.tap_out_vld", f + "out_vld_q"),
-                 ("g_fold_ref.tap_rdy", f + "rdy_q"), ("g_fold_ref.tap_occ", f + "occ_q"),
-                 ("g_fold_ref.tap_cnt", f + "cnt_q"), ("g_fold_ref.tap_wptr", f + "u_fifo.wptr_q"),
-                 ("g_fold_ref.tap_rptr", f + "u_fifo.rptr_q")]
+        taps += [
+            ("g_fold_ref.tap_v", f + "u_dp.v_q"),
+            ("g_fold_ref.tap_out_vld", f + "out_vld_q"),
+            ("g_fold_ref.tap_rdy", f + "rdy_q"),
+            ("g_fold_ref.tap_occ", f + "occ_q"),
+            ("g_fold_ref.tap_cnt", f + "cnt_q"),
+            ("g_fold_ref.tap_wptr", f + "u_fifo.wptr_q"),
+            ("g_fold_ref.tap_rptr", f + "u_fifo.rptr_q"),
+        ]
     cut = [] if serial else CUT_TOP
     # k-induction (TIMERS = 0) closes on acore_top at small depths with the taps' invariants; the
     # serial core is bounded: LATENCY + 8 clocks past reset.
@@ -124,8 +175,11 @@ def stream_setup(line):
 
 
 def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2):
-    s = [f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(rtl_dir, os.path.basename(f))}" for f in rtl_files()
-         if f.endswith(".v")]
+    s = [
+        f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(rtl_dir, os.path.basename(f))}"
+        for f in rtl_files()
+        if f.endswith(".v")
+    ]
     s.append(f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(HERE, harness)}")
     if line_params:
         s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in line_params) + f" {line_module}")
@@ -141,12 +195,21 @@ def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, 
     for w, src in taps:
         s.append(f"connect -set {w} {src}")
     # A tap left undriven would be a free value: check stops on it.
-    s += ["opt_clean", "check -assert", "async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]
+    s += [
+        "opt_clean",
+        "check -assert",
+        "async2sync",
+        "dffunmap",
+        "stat",
+        f"write_smt2 -wires {smt2}",
+    ]
     return "\n".join(s) + "\n"
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("config", nargs="?")
     ap.add_argument("--mode", choices=("auto", "bmc", "prove"), default="auto")
     ap.add_argument("--depth", type=int)
@@ -183,16 +246,25 @@ def main(argv):
         text = open(path).read()
         new, n = re.subn(pat, rep, text)
         if n != 1:
-            print(f"run.py: mutant {a.mutant}: pattern found {n} times in rtl/{fname} (expected once)",
-                  file=sys.stderr)
+            print(
+                f"run.py: mutant {a.mutant}: pattern found {n} times in rtl/{fname} (expected once)",
+                file=sys.stderr,
+            )
             return 2
         open(path, "w").write(new)
         rtl_dir = mdir
     try:
         if a.config == "fifo":
             line_module, line_params = "acore_fold_fifo", []
-            harness, top, hparams, cut, taps, bmc_depth, prove_depth = \
-                "acore_fifo_formal.sv", "acore_fifo_formal", {}, [], [], 14, None
+            harness, top, hparams, cut, taps, bmc_depth, prove_depth = (
+                "acore_fifo_formal.sv",
+                "acore_fifo_formal",
+                {},
+                [],
+                [],
+                14,
+                None,
+            )
         else:
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
@@ -202,24 +274,34 @@ def main(argv):
                 line_module, line_params = line.module, []
                 harness, top, hparams, cut, taps, bmc_depth, prove_depth = stream_setup(line)
             else:
-                raise registry.RegistryError(f"{line.where}: no formal harness for module {line.module}")
+                raise registry.RegistryError(
+                    f"{line.where}: no formal harness for module {line.module}"
+                )
     except registry.RegistryError as e:
         print(f"run.py: {e}", file=sys.stderr)
         return 2
     if a.mode == "auto":
         a.mode = "bmc" if prove_depth is None or a.mutant else "prove"
     if a.mode == "prove" and prove_depth is None and a.depth is None:
-        print(f"run.py: {a.config}: no induction depth known to close (use bmc, or --depth)", file=sys.stderr)
+        print(
+            f"run.py: {a.config}: no induction depth known to close (use bmc, or --depth)",
+            file=sys.stderr,
+        )
         return 2
     depth = a.depth or (prove_depth if a.mode == "prove" else bmc_depth)
     if "TIMERS" in hparams or top == "acore_stream_formal":
         hparams["TIMERS"] = 0 if a.mode == "prove" else 1
     smt2 = os.path.join(work, "model.smt2")
     ys = os.path.join(work, "model.ys")
-    open(ys, "w").write(yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2))
+    open(ys, "w").write(
+        yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2)
+    )
     t0 = time.time()
-    r = subprocess.run(["yosys", "-q", "-l", os.path.join(work, "yosys.log"), "-s", ys], capture_output=True,
-                       text=True)
+    r = subprocess.run(
+        ["yosys", "-q", "-l", os.path.join(work, "yosys.log"), "-s", ys],
+        capture_output=True,
+        text=True,
+    )
     if r.returncode != 0:
         print(f"run.py: yosys failed (log {work}/yosys.log):\n{r.stderr[-3000:]}", file=sys.stderr)
         return 2
@@ -227,11 +309,20 @@ def main(argv):
     # proof needs both. yosys-smtbmc -i runs the step alone.
     runs = [("bmc", ["-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")])]
     if a.mode == "prove":
-        runs.append(("induction", ["-i", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace_induction.vcd")]))
+        runs.append(
+            (
+                "induction",
+                ["-i", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace_induction.vcd")],
+            )
+        )
     status, out = "PASSED", ""
     for what, opts in runs:
-        r = subprocess.run(["yosys-smtbmc", "-s", "z3", *opts, smt2], stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, text=True)
+        r = subprocess.run(
+            ["yosys-smtbmc", "-s", "z3", *opts, smt2],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+        )
         open(os.path.join(work, f"smtbmc_{what}.log"), "w").write(r.stdout)
         out += r.stdout
         st = re.findall(r"Status: (\w+)", r.stdout)
@@ -241,8 +332,10 @@ def main(argv):
             break
     dt = time.time() - t0
     fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
-    what = f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {a.mode} depth {depth}: {status} " \
-           f"({dt:.1f} s; {work})"
+    what = (
+        f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {a.mode} depth {depth}: {status} "
+        f"({dt:.1f} s; {work})"
+    )
     print(what + (f"\n  failed: {' '.join(fails)}" if fails else ""))
     if not status.startswith(("PASSED", "FAILED")):
         print(out[-3000:], file=sys.stderr)

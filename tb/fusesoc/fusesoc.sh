@@ -21,12 +21,18 @@ cd "$work"
 export XDG_CONFIG_HOME=$work/config XDG_DATA_HOME=$work/data XDG_CACHE_HOME=$work/cache
 core=anglecore:ip:anglecore
 status=0
-check() {  # check NAME COMMAND...: runs it, keeps its log, prints ok/FAIL
-  local name=$1; shift
-  if "$@" >"$work/$name.log" 2>&1; then echo "ok   $name"; else echo "FAIL $name (see $work/$name.log)"; tail -20 "$work/$name.log"; status=1; fi
+check() { # check NAME COMMAND...: runs it, keeps its log, prints ok/FAIL
+  local name=$1
+  shift
+  if "$@" >"$work/$name.log" 2>&1; then echo "ok   $name"; else
+    echo "FAIL $name (see $work/$name.log)"
+    tail -20 "$work/$name.log"
+    status=1
+  fi
 }
-run() {  # run TARGET [--PARAM=value ...] (the core's parameters come after its name)
-  local target=$1; shift
+run() { # run TARGET [--PARAM=value ...] (the core's parameters come after its name)
+  local target=$1
+  shift
   "$fusesoc" --cores-root "$src/rtl" run --build-root "$work/build" --target="$target" "$core" "$@"
 }
 

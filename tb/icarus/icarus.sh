@@ -13,20 +13,38 @@ mkdir -p "$work"
 files=()
 while read -r f; do [[ $f =~ \.v$ ]] && files+=("$src/rtl/$f"); done <"$src/rtl/files.f"
 mapfile -t lines < <(python3 "$src/scripts/registry.py" --root "$src" lines --flow icarus)
-[ ${#lines[@]} -gt 0 ] || { echo "icarus.sh: no registry line has the icarus flow"; exit 1; }
+[ ${#lines[@]} -gt 0 ] || {
+  echo "icarus.sh: no registry line has the icarus flow"
+  exit 1
+}
 variants=()
 for line in "${lines[@]}"; do
   read -r name module _flows params <<<"$line"
   case $module in
-    acore_top) bench=acore_tb_icarus; args=(-P "$bench.SERIAL=0") ;;
-    acore_serial_top) bench=acore_tb_icarus; args=(-P "$bench.SERIAL=1") ;;
-    acore_apb) bench=acore_apb_tb_icarus; args=() ;;
-    *) echo "icarus.sh: $name: no Icarus bench for module $module"; exit 1 ;;
+    acore_top)
+      bench=acore_tb_icarus
+      args=(-P "$bench.SERIAL=0")
+      ;;
+    acore_serial_top)
+      bench=acore_tb_icarus
+      args=(-P "$bench.SERIAL=1")
+      ;;
+    acore_apb)
+      bench=acore_apb_tb_icarus
+      args=()
+      ;;
+    *)
+      echo "icarus.sh: $name: no Icarus bench for module $module"
+      exit 1
+      ;;
   esac
   for p in $params; do
     case ${p%%=*} in
       SERIAL | FOLD) args+=(-P "$bench.$p") ;;
-      *) echo "icarus.sh: $name: the bench runs the default widths only ($p)"; exit 1 ;;
+      *)
+        echo "icarus.sh: $name: the bench runs the default widths only ($p)"
+        exit 1
+        ;;
     esac
   done
   # -I: the modules include rtl/acore_derived.vh and the shell rtl/acore_apb_regs.vh.
@@ -52,7 +70,10 @@ status=0
 for frame in 0 1; do
   for v in "${variants[@]}"; do
     echo "$v frame $frame: $(tail -1 "$work/frame$frame/log_$v.txt")"
-    grep -q '^PASS$' "$work/frame$frame/log_$v.txt" || { tail -5 "$work/frame$frame/log_$v.txt"; status=1; }
+    grep -q '^PASS$' "$work/frame$frame/log_$v.txt" || {
+      tail -5 "$work/frame$frame/log_$v.txt"
+      status=1
+    }
   done
 done
 exit $status

@@ -19,12 +19,25 @@ mapfile -t files < <(grep -v '^#' files.f | grep '\.v$')
 fail=0
 out=""
 lint() { out=$(verilator --lint-only -Wall verilator.vlt "${files[@]}" "$@" 2>&1); }
-run() {  # run DESCRIPTION VERILATOR_ARGS...: status 1 on a failure
-  local name=$1; shift
-  if lint "$@"; then echo "lint ok:   $name"; else echo "lint FAIL: $name"; echo "$out"; fail=1; return 1; fi
+run() { # run DESCRIPTION VERILATOR_ARGS...: status 1 on a failure
+  local name=$1
+  shift
+  if lint "$@"; then echo "lint ok:   $name"; else
+    echo "lint FAIL: $name"
+    echo "$out"
+    fail=1
+    return 1
+  fi
 }
-gargs() { local p; for p in "$@"; do printf -- '-G%s\n' "$p"; done; }
-key() { local m=$1; shift; printf '%s %s' "$m" "$(printf '%s\n' "$@" | sort | paste -sd' ')"; }
+gargs() {
+  local p
+  for p in "$@"; do printf -- '-G%s\n' "$p"; done
+}
+key() {
+  local m=$1
+  shift
+  printf '%s %s' "$m" "$(printf '%s\n' "$@" | sort | paste -sd' ')"
+}
 # The messages of $out when every warning in it is a parameter rule instantiated in acore_apb itself
 # (nothing else printed as %Warning or %Error but Verilator's closing count).
 shell_rules_only() {
@@ -36,7 +49,7 @@ shell_rules_only() {
   grep '^%Warning-USERERROR' <<<"$out" | sed -E 's/^%Warning-USERERROR: [^:]+:[0-9]+:[0-9]+: //' | paste -sd';'
 }
 
-declare -A linted  # module and sorted parameters -> what linted it
+declare -A linted # module and sorted parameters -> what linted it
 for f in "${files[@]}"; do
   m=$(basename "$f" .v)
   if run "$m" --top-module "$m"; then linted[$(key "$m")]=$m; fi
@@ -44,7 +57,10 @@ done
 while read -r name module flows params; do
   [ -n "$name" ] || continue
   k=$(key "$module" $params)
-  if [ -n "${linted[$k]:-}" ]; then echo "lint ok:   $module $name (as ${linted[$k]})"; continue; fi
+  if [ -n "${linted[$k]:-}" ]; then
+    echo "lint ok:   $module $name (as ${linted[$k]})"
+    continue
+  fi
   mapfile -t g < <(gargs $params)
   if run "$module $name" --top-module "$module" "${g[@]}"; then linted[$k]="$module $name"; fi
 done <<<"$lines"
@@ -64,7 +80,9 @@ while read -r name module flows params; do
   elif why=$(shell_rules_only); then
     echo "lint n/a:  acore_apb around $name: the shell does not take it ($why)"
   else
-    echo "lint FAIL: acore_apb around $name"; echo "$out"; fail=1
+    echo "lint FAIL: acore_apb around $name"
+    echo "$out"
+    fail=1
   fi
 done <<<"$lines"
 exit $fail

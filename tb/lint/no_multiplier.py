@@ -18,6 +18,7 @@ between two inputs must fail the same check, so the check cannot pass on a desig
 Exit 0 when every build passes, 1 when one holds such a cell (its cells are listed) or Yosys fails,
 2 on bad usage or a malformed registry line (scripts/registry.py reads the registry).
 """
+
 import argparse
 import concurrent.futures
 import os
@@ -26,13 +27,24 @@ import sys
 import tempfile
 import time
 
-MODULES = ("acore_top", "acore_serial_top", "acore_apb", "acore_cordic", "acore_cordic_serial",
-           "acore_track", "acore_abz", "acore_uvw", "acore_spi_as5047", "acore_pwm", "acore_board")
+MODULES = (
+    "acore_top",
+    "acore_serial_top",
+    "acore_apb",
+    "acore_cordic",
+    "acore_cordic_serial",
+    "acore_track",
+    "acore_abz",
+    "acore_uvw",
+    "acore_spi_as5047",
+    "acore_pwm",
+    "acore_board",
+)
 CELLS = ("$mul", "$macc", "$div", "$mod", "$divfloor", "$modfloor", "$pow")
 
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
-import registry  # noqa: E402  (scripts/registry.py: the build registry's one reader)
+import registry
 
 
 def rtl_files(root):
@@ -49,10 +61,13 @@ def check(files, top, params, workdir):
     chp = "".join(f" -chparam {k} {v}" for k, v in params)
     sel = " ".join(f"t:{c}" for c in CELLS)
     log = os.path.join(workdir, f"{top}_{abs(hash(chp))}.log")
-    script = (f"read_verilog -sv {' '.join(files)}; hierarchy -check -top {top}{chp}; proc; "
-              f"tee -o {log} select -list {sel}; select -assert-none {sel}")
-    p = subprocess.run(["yosys", "-q", "-p", script], stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True)
+    script = (
+        f"read_verilog -sv {' '.join(files)}; hierarchy -check -top {top}{chp}; proc; "
+        f"tee -o {log} select -list {sel}; select -assert-none {sel}"
+    )
+    p = subprocess.run(
+        ["yosys", "-q", "-p", script], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
+    )
     if p.returncode == 0:
         return True, ""
     found = open(log).read().strip() if os.path.exists(log) else ""
@@ -61,7 +76,9 @@ def check(files, top, params, workdir):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+    ap.add_argument(
+        "--root", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    )
     ap.add_argument("--only", default="", help="comma-separated registry names (default: all)")
     ap.add_argument("--jobs", type=int, default=1)
     args = ap.parse_args()
@@ -74,8 +91,11 @@ def main():
         wanted = args.only.split(",")
         unknown = [w for w in wanted if w not in {b[0] for b in todo}]
         if unknown:
-            print(f"no_multiplier.py: not in rtl/configs.txt for {', '.join(MODULES)}: "
-                  f"{', '.join(unknown)}", file=sys.stderr)
+            print(
+                f"no_multiplier.py: not in rtl/configs.txt for {', '.join(MODULES)}: "
+                f"{', '.join(unknown)}",
+                file=sys.stderr,
+            )
             return 2
         todo = [b for b in todo if b[0] in wanted]
     files = rtl_files(args.root)
@@ -84,8 +104,10 @@ def main():
         # Negative control: a product of two inputs must be found.
         ctl = os.path.join(tmp, "mul_control.v")
         with open(ctl, "w") as f:
-            f.write("module mul_control(input wire [7:0] a, input wire [7:0] b, output wire [15:0] p);\n"
-                    "  assign p = a * b;\nendmodule\n")
+            f.write(
+                "module mul_control(input wire [7:0] a, input wire [7:0] b, output wire [15:0] p);\n"
+                "  assign p = a * b;\nendmodule\n"
+            )
         ok, _ = check([ctl], "mul_control", [], tmp)
         if ok:
             print("FAIL control: a product of two inputs was not found")

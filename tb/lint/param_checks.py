@@ -16,6 +16,7 @@
 
 Exit 0 when every check passes, 1 when one fails, 2 on bad usage or a malformed table row.
 """
+
 import argparse
 import concurrent.futures
 import os
@@ -24,9 +25,14 @@ import re
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "scripts"))
-import registry  # noqa: E402  (scripts/registry.py: the build registry and the RTL's parameters)
-from registry import rtl_files  # noqa: E402
+sys.path.insert(
+    0,
+    os.path.join(
+        os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "scripts"
+    ),
+)
+import registry
+from registry import rtl_files
 
 TOPS = ("acore_top", "acore_serial_top")
 # The register shell around either top (rtl/acore_apb.v): its defaults are a control too.
@@ -44,22 +50,53 @@ def run(cmd, cwd):
 
 def verilator(root, top, params):
     rtl = os.path.join(root, "rtl")
-    return run(["verilator", "--lint-only", "-Wall", "verilator.vlt", *rtl_files(root), "--top-module", top,
-                *[f"-G{k}={v}" for k, v in params]], rtl)
+    return run(
+        [
+            "verilator",
+            "--lint-only",
+            "-Wall",
+            "verilator.vlt",
+            *rtl_files(root),
+            "--top-module",
+            top,
+            *[f"-G{k}={v}" for k, v in params],
+        ],
+        rtl,
+    )
 
 
 def icarus(root, top, params):
     rtl = os.path.join(root, "rtl")
-    return run(["iverilog", "-g2012", "-o", os.devnull, "-s", top, *[f"-P{top}.{k}={v}" for k, v in params],
-                *rtl_files(root)], rtl)
+    return run(
+        [
+            "iverilog",
+            "-g2012",
+            "-o",
+            os.devnull,
+            "-s",
+            top,
+            *[f"-P{top}.{k}={v}" for k, v in params],
+            *rtl_files(root),
+        ],
+        rtl,
+    )
 
 
 def yosys(root, top, params):
     rtl = os.path.join(root, "rtl")
     # Yosys reads no negative decimal here: a negative value as its 32-bit two's complement.
-    chp = "".join(f" -chparam {k} {v if v >= 0 else f'32{chr(39)}h{v & 0xFFFFFFFF:x}'}" for k, v in params)
-    return run(["yosys", "-q", "-p", f"read_verilog -sv -defer {' '.join(rtl_files(root))}; hierarchy -top {top}{chp}"],
-               rtl)
+    chp = "".join(
+        f" -chparam {k} {v if v >= 0 else f'32{chr(39)}h{v & 0xFFFFFFFF:x}'}" for k, v in params
+    )
+    return run(
+        [
+            "yosys",
+            "-q",
+            "-p",
+            f"read_verilog -sv -defer {' '.join(rtl_files(root))}; hierarchy -top {top}{chp}",
+        ],
+        rtl,
+    )
 
 
 def rule_messages(root):
@@ -68,7 +105,7 @@ def rule_messages(root):
     msgs = {}
     for f in rtl_files(root):
         text = registry.with_includes(os.path.join(root, "rtl", f))
-        mod = re.search(r"^module (\w+)", text, re.M).group(1)
+        mod = re.search(r"^module (\w+)", text, re.MULTILINE).group(1)
         for m in re.finditer(r'\.MSG\("([^"]*)"\)\)\s*(\w+) \(\);', text):
             msgs[(mod, m.group(2))] = m.group(1)
     return msgs
@@ -111,13 +148,22 @@ def check_illegal(root, row, msgs):
     desc = f"{where} ({top} {' '.join(f'{k}={v}' for k, v in params)}): {module}.{rule}"
     rc, out = verilator(root, top, params)
     # %Warning-USERERROR: <file>: <MSG> (value V)\n ... : ... In instance <path>.<rule>
-    found = re.search(r"USERERROR: [^\n]*: %s \(value %d\)\n[^\n]*In instance [\w.]*\b%s\n" %
-                      (re.escape(msg), value, re.escape(rule)), out)
+    found = re.search(
+        r"USERERROR: [^\n]*: %s \(value %d\)\n[^\n]*In instance [\w.]*\b%s\n"
+        % (re.escape(msg), value, re.escape(rule)),
+        out,
+    )
     if rc == 0 or not found:
-        fails.append(f"{desc}: verilator (exit {rc}) did not stop with '{msg} (value {value})':\n{out[:1500]}")
+        fails.append(
+            f"{desc}: verilator (exit {rc}) did not stop with '{msg} (value {value})':\n{out[:1500]}"
+        )
     rc, out = icarus(root, top, params)
-    if rc == 0 or not re.search(r"`[\w.\[\]]*\b%s\.failed\.value\[%d\]'" % (re.escape(rule), value), out):
-        fails.append(f"{desc}: iverilog (exit {rc}) did not stop in {rule}.failed.value[{value}]:\n{out[:1500]}")
+    if rc == 0 or not re.search(
+        r"`[\w.\[\]]*\b%s\.failed\.value\[%d\]'" % (re.escape(rule), value), out
+    ):
+        fails.append(
+            f"{desc}: iverilog (exit {rc}) did not stop in {rule}.failed.value[{value}]:\n{out[:1500]}"
+        )
     rc, out = yosys(root, top, params)
     errors = re.findall(r"ERROR: (.*)", out)
     if rc == 0 or not errors or errors[0] != msg + ".":
@@ -155,15 +201,27 @@ def candidate_table(c):
         "XCENTER": [0, 1, 2],
         "COEF_F": [0, 1, 12, 15, c["REG_W"] - 1, c["REG_W"]],
         "ACC_G": [-1, 0, 4, 7, c["S_F"] - c["COEF_F"] - 1, c["S_F"] - c["COEF_F"]],
-        "ACC_I": [c["REG_W"] - c["COEF_F"], c["REG_W"] - c["COEF_F"] + 1, 6, 12,
-                  40 - c["COEF_F"] - c["ACC_G"], 41 - c["COEF_F"] - c["ACC_G"]],
+        "ACC_I": [
+            c["REG_W"] - c["COEF_F"],
+            c["REG_W"] - c["COEF_F"] + 1,
+            6,
+            12,
+            40 - c["COEF_F"] - c["ACC_G"],
+            41 - c["COEF_F"] - c["ACC_G"],
+        ],
         "K": [3, 4, 12, 16, 24, 25],
         "CORDIC_G": [-1, 0, 3, 8, 9],
         "Z_W": [c["ANGLE_W"] - 1, c["ANGLE_W"], 20, c["REG_W"] + 2, c["REG_W"] + 3],
         "ANGLE_W": [7, 8, 12, 16, 24, 25],
         "FOURIER_K": [-1, 0, 1, 8, 31, 32],
         "FOURIER_M": [3, 4, 12, c["K"], c["K"] + 1],
-        "FOURIER_CF": [c["REG_W"] - 2, c["REG_W"] - 1, 22, 40 - c["FOURIER_G"], 41 - c["FOURIER_G"]],
+        "FOURIER_CF": [
+            c["REG_W"] - 2,
+            c["REG_W"] - 1,
+            22,
+            40 - c["FOURIER_G"],
+            41 - c["FOURIER_G"],
+        ],
         "FOURIER_W": [7, 8, 16, c["REG_W"], c["REG_W"] + 1],
         "FOURIER_G": [-1, 0, 2, 8, 9],
         "ZERO": [-1, 0, 1, 1, 2],
@@ -183,13 +241,17 @@ def rtl_defaults(root):
     moved = list(candidate_table(top))
     missing = [p for p in moved if p not in top]
     if missing:
-        raise Usage(f"acore_top has no parameter {', '.join(missing)} (tb/lint/param_checks.py candidate_table)")
+        raise Usage(
+            f"acore_top has no parameter {', '.join(missing)} (tb/lint/param_checks.py candidate_table)"
+        )
     defaults = {p: top[p] for p in moved}
     names = {}
     for t in TOPS:
         have = registry.rtl_parameters(root, t)
         names[t] = [p for p in moved if p in have]
-        differ = [f"{p}={have[p]} (acore_top: {defaults[p]})" for p in names[t] if have[p] != defaults[p]]
+        differ = [
+            f"{p}={have[p]} (acore_top: {defaults[p]})" for p in names[t] if have[p] != defaults[p]
+        ]
         if differ:
             raise Usage(f"{t}'s defaults differ from acore_top's: {', '.join(differ)}")
     return defaults, names
@@ -234,12 +296,16 @@ def agree(args):
         legal += model_ok
         tag = "ok  " if model_ok == rtl_ok else "FAIL"
         what = "legal" if rtl_ok else "rejected"
-        print(f"{tag} {top} {' '.join(f'{k}={v}' for k, v in params) or '(defaults)'}: RTL {what}, model {m}")
+        print(
+            f"{tag} {top} {' '.join(f'{k}={v}' for k, v in params) or '(defaults)'}: RTL {what}, model {m}"
+        )
         if model_ok != rtl_ok:
             fails += 1
             print("     " + "\n     ".join(l for l in out.splitlines() if l.startswith("%"))[:1500])
-    print(f"{len(sets)} random parameter sets: {legal} legal, {len(sets) - legal} illegal by the model; "
-          f"{fails} disagreements")
+    print(
+        f"{len(sets)} random parameter sets: {legal} legal, {len(sets) - legal} illegal by the model; "
+        f"{fails} disagreements"
+    )
     if fails:
         return 1
     if min(legal, len(sets) - legal) < len(sets) // 4:
@@ -256,21 +322,30 @@ def illegal(args):
         results = list(ex.map(lambda r: check_illegal(args.root, r, msgs), rows))
     fails = [f for c in controls for f in c]
     for row, r in zip(rows, results):
-        print(f"{'ok  ' if not r else 'FAIL'} {row[1]} {row[2]}.{row[3]} = {row[4]}: "
-              f"{' '.join(f'{k}={v}' for k, v in row[5])}")
+        print(
+            f"{'ok  ' if not r else 'FAIL'} {row[1]} {row[2]}.{row[3]} = {row[4]}: "
+            f"{' '.join(f'{k}={v}' for k, v in row[5])}"
+        )
         fails += r
     for f in fails:
         print(f)
-    print(f"{len(rows)} illegal configurations, each rejected by verilator, iverilog and yosys with its rule: "
-          f"{len(rows) - sum(1 for r in results if r)} passed, {sum(1 for r in results if r)} failed; "
-          f"defaults of {', '.join(TOPS + SHELLS)} accepted: {'yes' if not any(controls) else 'NO'}")
+    print(
+        f"{len(rows)} illegal configurations, each rejected by verilator, iverilog and yosys with its rule: "
+        f"{len(rows) - sum(1 for r in results if r)} passed, {sum(1 for r in results if r)} failed; "
+        f"defaults of {', '.join(TOPS + SHELLS)} accepted: {'yes' if not any(controls) else 'NO'}"
+    )
     return 1 if fails else 0
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("mode", choices=("illegal", "agree"))
-    ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    ap.add_argument(
+        "--root",
+        default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+    )
     ap.add_argument("--validator", help="build/tb/acore_validate_params (agree)")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--sets", type=int, default=48)

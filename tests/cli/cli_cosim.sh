@@ -40,7 +40,7 @@ check calibrate 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs.hex"
 # The modules are looked for in $ACORE_RTL_DIR: an empty folder has none. Without the RTL in this
 # build, the build's own folder has none either, and the command says how to configure it in.
 mkdir "$tmp/empty"
-missing() {  # missing NAME MODULE COMMAND...: exit 2, the message names MODULE and its build command
+missing() { # missing NAME MODULE COMMAND...: exit 2, the message names MODULE and its build command
   local name=$1 module=$2
   shift 2
   check "$name" 2 "$@"
@@ -67,20 +67,26 @@ fi
 check cosim 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/cosim.json"
 check cosim-stalls 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.5 --json "$tmp/cosim2.json"
 check cosim-trace 0 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --trace "$tmp/wave.fst"
-[ -s "$tmp/wave.fst" ] || { echo "FAIL trace: no FST written"; fails=$((fails + 1)); }
+[ -s "$tmp/wave.fst" ] || {
+  echo "FAIL trace: no FST written"
+  fails=$((fails + 1))
+}
 check est-rtl 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine rtl --json "$tmp/rtl.json"
 check est-fixed 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json"
 check cosim-serial 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/cs.json"
 check cosim-serial-stalls 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.5 --seed 3 --json "$tmp/cs2.json"
 check cosim-serial-trace 0 "$bin" cosim --engine rtl-serial --regs "$tmp/regs.hex" --in "$tmp/val.csv" --trace "$tmp/wave_s.fst"
-[ -s "$tmp/wave_s.fst" ] || { echo "FAIL serial trace: no FST written"; fails=$((fails + 1)); }
+[ -s "$tmp/wave_s.fst" ] || {
+  echo "FAIL serial trace: no FST written"
+  fails=$((fails + 1))
+}
 check est-serial 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/val.csv" --engine rtl-serial --json "$tmp/rs.json"
 # The same image on the folded builds (a register image does not depend on FOLD).
 for n in 2 4 8; do
   check "cosim-fold$n" 0 "$bin" cosim --fold $n --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 0.3 --json "$tmp/cf$n.json"
 done
 check est-fold4 0 "$bin" estimate --engine rtl --fold 4 --regs "$tmp/regs.hex" --in "$tmp/val.csv" --json "$tmp/rf4.json"
-/usr/bin/python3 - "$tmp" <<'PY' && passes=$((passes + 1)) || { echo "FAIL json"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp" <<'PY' && passes=$((passes + 1)) || {
 import json, sys
 d = sys.argv[1]
 for name, engine in (("cosim.json", "rtl"), ("cosim2.json", "rtl"), ("cs.json", "rtl-serial"), ("cs2.json", "rtl-serial")):
@@ -96,6 +102,9 @@ rf4 = json.load(open(f"{d}/rf4.json"))
 assert rf4["error_deg"] == f["error_deg"] and rf4["fold"] == 4, (rf4, f["error_deg"])
 assert rs["error_deg"] == f["error_deg"] and rs["engine"] == "rtl-serial", (rs, f["error_deg"])
 PY
+  echo "FAIL json"
+  fails=$((fails + 1))
+}
 # Bad input: missing file, an image of another configuration (the RTL is built for the defaults).
 check missing-regs 2 "$bin" cosim --regs "$tmp/nope.hex" --in "$tmp/val.csv"
 check bad-backpressure 2 "$bin" cosim --regs "$tmp/regs.hex" --in "$tmp/val.csv" --backpressure 2

@@ -12,7 +12,7 @@ source "$(dirname "$0")/lib_cli.sh"
 
 # A two-channel sensor model (sim: constant speed) and the same sensor with an extra offset on sin
 # (real, holdout: a speed ramp through a reversal, a temperature ramp).
-scenario() {  # scenario TRAJECTORY EFFECTS
+scenario() { # scenario TRAJECTORY EFFECTS
   cat <<JSON
 {"channels": 2, "sigma_indep": 0.002,
  "sensor": [{"amplitude": 1, "offset": 0.01, "AF": [0, 0.01], "BF": [0, 0, 0.01]}, {"amplitude": 1.02}],

@@ -14,7 +14,7 @@ check calibrate 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs.hex" --j
 expect_text regs-words "$tmp/regs.hex" "atan(2^-15)"
 # The image's crc32 key is Python zlib's CRC-32 of the words as 32-bit little-endian integers (the
 # shell's CRC_EXPECTED); an image with a changed word is refused, naming the key's line.
-/usr/bin/python3 - "$tmp/regs.hex" <<'PY' || { echo "FAIL crc32-zlib"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/regs.hex" <<'PY' || {
 import re, sys, zlib
 text = open(sys.argv[1]).read()
 words = [int(m.group(1), 16) for m in re.finditer(r"^([0-9a-f]+)\s", text, re.M)]
@@ -22,6 +22,9 @@ key = int(re.search(r"^// acore: crc32=0x([0-9a-f]{8})$", text, re.M).group(1), 
 assert len(words) == 52, len(words)
 assert key == zlib.crc32(b"".join(w.to_bytes(4, "little") for w in words)), hex(key)
 PY
+  echo "FAIL crc32-zlib"
+  fails=$((fails + 1))
+}
 /usr/bin/python3 - "$tmp/regs.hex" "$tmp/flip.hex" <<'PY'
 import re, sys
 text = open(sys.argv[1]).read()
@@ -40,7 +43,7 @@ for f in engine samples error_deg uncorrected_error_deg rms max_abs mean zero_of
 # against theta_ref itself, the paper's Eq. 6 as printed: 8.54 / -6.94 uncorrected, <= 0.55 corrected.
 check calibrate-as-printed 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs0.hex" --zero-offset 0
 check estimate-as-printed 0 "$bin" estimate --regs "$tmp/regs0.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx0.json"
-/usr/bin/python3 - "$tmp/fx.json" "$tmp/fl.json" "$tmp/fx0.json" <<'PY' || { echo "FAIL accuracy"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/fx.json" "$tmp/fl.json" "$tmp/fx0.json" <<'PY' || {
 import json, math, sys
 for path in sys.argv[1:3]:
     j = json.load(open(path))
@@ -54,6 +57,9 @@ assert e["rms"] <= 0.55 and e["max_abs"] <= 2.4, e
 assert abs(u["rms"] - 8.54) < 0.05 and abs(u["mean"] + 6.94) < 0.05, u
 assert z["deg"] == 0 and z["code"] == 0, z
 PY
+  echo "FAIL accuracy"
+  fails=$((fails + 1))
+}
 expect_text angles-header "$tmp/angles.csv" "index,angle_rad,uncorrected_rad,region,flags,theta_ref,error_deg"
 check higher-degree 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs5.hex" --degree 5 --regions 8
 # Correction modes and widths (docs/datapath.md "Correction modes", "CORDIC widths"): the header records the
@@ -108,7 +114,8 @@ for cmd in "estimate --regs $tmp/regs.hex --in $tmp/val.csv --engine fixed" "cal
   if "$bin" $cmd --json - 2>/dev/null | /usr/bin/python3 -c "import json, sys; json.load(sys.stdin)"; then
     passes=$((passes + 1))
   else
-    echo "FAIL json-stdout: '$cmd --json -' does not print pure JSON"; fails=$((fails + 1))
+    echo "FAIL json-stdout: '$cmd --json -' does not print pure JSON"
+    fails=$((fails + 1))
   fi
 done
 

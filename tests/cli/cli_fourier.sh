@@ -19,14 +19,20 @@ expect_text last-word "$tmp/f21.hex" "fourier b_21"
 expect_text json-fourier "$tmp/cal.json" '"fourier"'
 check estimate-k21 0 "$bin" estimate --regs "$tmp/f21.hex" --in "$tmp/val.csv" --engine fixed --json "$tmp/fx.json"
 # The Fourier correction's accuracy target, at most 64 words: RMS <= 0.10, max <= 0.35 deg.
-/usr/bin/python3 - "$tmp/fx.json" "$tmp/cal.json" <<'PY' || { echo "FAIL accuracy"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/fx.json" "$tmp/cal.json" <<'PY' || {
 import json, sys
 e = json.load(open(sys.argv[1]))["error_deg"]
 assert e["rms"] <= 0.10 and e["max_abs"] <= 0.35, e
 assert json.load(open(sys.argv[2]))["words"] == 63
 PY
+  echo "FAIL accuracy"
+  fails=$((fails + 1))
+}
 check calibrate-default 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/plain.hex"
-if grep -q fourier "$tmp/plain.hex"; then echo "FAIL plain-image: fourier keys without --fourier"; fails=$((fails + 1)); else passes=$((passes + 1)); fi
+if grep -q fourier "$tmp/plain.hex"; then
+  echo "FAIL plain-image: fourier keys without --fourier"
+  fails=$((fails + 1))
+else passes=$((passes + 1)); fi
 
 check k-too-large 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --fourier 40
 check m-above-k 2 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/x.hex" --fourier 4 --fourier-iterations 20

@@ -22,7 +22,7 @@ done
 check json-stdout 0 "$bin" harmonics --spec "$spec" --json -
 cp "$tmp/out" "$tmp/stdout.json"
 expect_text json-stdout-table "$tmp/err" "order"
-/usr/bin/python3 - "$tmp/h.json" "$tmp/stdout.json" <<'PY' || { echo "FAIL eq33-numbers"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/h.json" "$tmp/stdout.json" <<'PY' || {
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
 assert a == b, "file and stdout JSON differ"
@@ -37,6 +37,9 @@ for k in (1, 5, 7, 11):
 for k in (2, 4, 8, 10, 14, 16):
     assert abs(h[k]["second_deg"] - h[k]["exact_deg"]) < 0.02 * h[k]["exact_deg"], h[k]
 PY
+  echo "FAIL eq33-numbers"
+  fails=$((fails + 1))
+}
 passes=$((passes + 1))
 
 # Plots (or a clear "skipped" when matplotlib is missing).
@@ -44,7 +47,10 @@ check plot 0 "$bin" harmonics --spec "$spec" --plot "$tmp/plot"
 expect_text plot-data "$tmp/plot/harmonics_curve.csv" "phi_deg,exact_deg"
 if /usr/bin/python3 -c 'import matplotlib, numpy' 2>/dev/null; then
   for f in harmonics_error.png harmonics_spectrum.png; do
-    if [ -s "$tmp/plot/$f" ]; then passes=$((passes + 1)); else echo "FAIL plot $f missing"; fails=$((fails + 1)); fi
+    if [ -s "$tmp/plot/$f" ]; then passes=$((passes + 1)); else
+      echo "FAIL plot $f missing"
+      fails=$((fails + 1))
+    fi
   done
 else
   expect_text plot-skipped "$tmp/out" "plot skipped"
@@ -57,17 +63,20 @@ expect_text mismatch-order "$tmp/mm_out.json" "\"order\": 8"
 # --attribute names the offset at order p and the amplitude mismatch at order 2p.
 echo '{"p": 2, "A0": 0.02, "B0": -0.01, "Ap": 1.03, "Bp": 0.97, "terms": [{"n": 5, "A": 0.01, "B": 0.01}]}' >"$tmp/at.json"
 check attribute 0 "$bin" harmonics --spec "$tmp/at.json" --attribute --json "$tmp/at_out.json"
-/usr/bin/python3 - "$tmp/at_out.json" <<'PY' || { echo "FAIL attribution"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/at_out.json" <<'PY' || {
 import json, sys
 a = {o["order"]: o["causes"] for o in json.load(open(sys.argv[1]))["attribution"]}
 assert a[2][0]["kind"] == "offset" and abs(a[2][0]["parameter"] - 0.02236) < 1e-3, a[2][0]
 assert a[4][0]["kind"] == "amplitude" and abs(a[4][0]["parameter"] - 0.06) < 2e-3, a[4][0]
 assert {c["signal_order"] for c in a[3] if c["kind"] == "harmonic"} == {1, 5}, a[3]
 PY
+  echo "FAIL attribution"
+  fails=$((fails + 1))
+}
 passes=$((passes + 1))
 
 # Bad specs: exit 2 and a message naming the field.
-bad() {  # bad NAME JSON FIELD_TEXT
+bad() { # bad NAME JSON FIELD_TEXT
   echo "$2" >"$tmp/bad.json"
   check "bad-$1" 2 "$bin" harmonics --spec "$tmp/bad.json"
   expect_text "bad-$1-message" "$tmp/err" "$3"

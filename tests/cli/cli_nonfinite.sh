@@ -35,8 +35,8 @@ put "$tmp/cal.csv" c3 nan "$tmp/c3.csv"
 put "$tmp/tmr.csv" cos inf "$tmp/cos.csv"
 put "$tmp/cal.csv" theta_ref -inf "$tmp/ref.csv"
 subs=("calibrate --out $tmp/x.hex --in" "estimate --regs $tmp/regs.hex --engine float --in"
-      "diagnose --sim $tmp/cal.csv --real" "diagnose --real $tmp/cal.csv --sim"
-      "diagnose --sim $tmp/cal.csv --real $tmp/cal.csv --holdout")
+  "diagnose --sim $tmp/cal.csv --real" "diagnose --real $tmp/cal.csv --sim"
+  "diagnose --sim $tmp/cal.csv --real $tmp/cal.csv --holdout")
 # cosim exists only in a build with the Verilated RTL.
 have_cosim=0
 "$bin" --help | grep -qw cosim && have_cosim=1

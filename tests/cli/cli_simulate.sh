@@ -26,9 +26,15 @@ for f in scenario samples seed channels uncorrected_error_deg rms max_abs mean; 
 done
 # Same seed, same file; another seed, another file.
 check paper-again 0 "$bin" simulate --scenario paper --samples 4096 --seed 7 --out "$tmp/paper2.csv"
-if cmp -s "$tmp/paper.csv" "$tmp/paper2.csv"; then passes=$((passes + 1)); else echo "FAIL deterministic: same seed, different files"; fails=$((fails + 1)); fi
+if cmp -s "$tmp/paper.csv" "$tmp/paper2.csv"; then passes=$((passes + 1)); else
+  echo "FAIL deterministic: same seed, different files"
+  fails=$((fails + 1))
+fi
 check paper-seed8 0 "$bin" simulate --scenario paper --samples 4096 --seed 8 --out "$tmp/paper3.csv"
-if cmp -s "$tmp/paper.csv" "$tmp/paper3.csv"; then echo "FAIL seed: seeds 7 and 8 gave the same file"; fails=$((fails + 1)); else passes=$((passes + 1)); fi
+if cmp -s "$tmp/paper.csv" "$tmp/paper3.csv"; then
+  echo "FAIL seed: seeds 7 and 8 gave the same file"
+  fails=$((fails + 1))
+else passes=$((passes + 1)); fi
 
 # Two channels, JSON to stdout, and a config written by --dump-config read back.
 check two-channel 0 "$bin" simulate --scenario paper --channels 2 --samples 100 --out "$tmp/two.csv" --json -

@@ -33,7 +33,7 @@ expect_text merge-names-shard "$tmp/err" "shards [1] of 2 are missing"
 check simulate 0 "$bin" simulate --scenario paper-noiseless --samples 8192 --seed 1 --out "$tmp/cal.csv"
 check calibrate 0 "$bin" calibrate --in "$tmp/cal.csv" --out "$tmp/regs.hex"
 check estimate 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/cal.csv" --engine fixed --json "$tmp/fx.json"
-/usr/bin/python3 - "$tmp/all/accuracy-0-of-1.jsonl" "$tmp/fx.json" <<'PY' || { echo "FAIL sweep-vs-estimate"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/all/accuracy-0-of-1.jsonl" "$tmp/fx.json" <<'PY' || {
 import json, sys
 rows = [json.loads(l) for l in open(sys.argv[1])]
 sweep = next(r for r in rows if r["params"] == "DEGREE=3 REGIONS=4")["accuracy"]["paper-noiseless"]["fixed"]
@@ -41,6 +41,9 @@ est = json.load(open(sys.argv[2]))["error_deg"]
 assert abs(sweep["rms"] - est["rms"]) < 0.01 * est["rms"] + 0.002, (sweep, est)
 assert abs(sweep["max_abs"] - est["max_abs"]) < 0.05 * est["max_abs"], (sweep, est)
 PY
+  echo "FAIL sweep-vs-estimate"
+  fails=$((fails + 1))
+}
 
 # Bad usage: exit 2 and a message naming the problem.
 check bad-shard 2 "$bin" sweep --quick --out "$tmp/x" --shard 2/2

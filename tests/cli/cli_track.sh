@@ -19,7 +19,7 @@ check estimate-ripple 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.cs
   --json "$tmp/e.json" --track-bandwidth 3000
 expect_text bandwidth-printed "$tmp/out" "tracking observer: code 3 = 2895"
 expect_text columns "$tmp/ang.csv" "index,angle_rad,uncorrected_rad,region,flags,theta_ref,error_deg,turns,angle_comp_rad,lot,velocity_rpm"
-/usr/bin/python3 - "$tmp/ang.csv" "$tmp/e.json" <<'PY' || { echo "FAIL ripple-velocity"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/ang.csv" "$tmp/e.json" <<'PY' || {
 import csv, json, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 v = [float(r["velocity_rpm"]) for r in rows]
@@ -43,12 +43,15 @@ ve = j["velocity_error_rpm"]
 assert set(ve) >= {"rms", "max_abs", "mean"} and ve["rms"] < 3 and abs(ve["mean"]) < 0.5, ve
 assert j["track"]["code"] == 3, j["track"]
 PY
+  echo "FAIL ripple-velocity"
+  fails=$((fails + 1))
+}
 # Compensation: looking 20 samples ahead at constant speed, angle_comp_rad is the reference 20
 # samples later (within the estimator's error, 0.05 deg here).
 check simulate-const 0 "$bin" simulate --scenario ideal --profile constant --speed-rpm 60000 \
   --sample-rate 1000000 --samples 20000 --out "$tmp/c.csv"
 check estimate-lead 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/c.csv" --out "$tmp/cang.csv" --track-lead 20
-/usr/bin/python3 - "$tmp/cang.csv" <<'PY' || { echo "FAIL compensation"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/cang.csv" <<'PY' || {
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 worst = 0
@@ -58,12 +61,15 @@ for i in range(5000, len(rows) - 20):
 # Uncompensated the lag would be 20 samples x 0.36 deg/sample = 7.2 deg.
 assert worst < 0.05, worst
 PY
+  echo "FAIL compensation"
+  fails=$((fails + 1))
+}
 # Refused: a bandwidth outside the codes, a negative one, a bandwidth without t, LEAD out of range,
 # an unknown profile, a ripple of 200 %.
 check bw-too-high 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.csv" --track-bandwidth 1e6
 expect_text bw-too-high-msg "$tmp/err" "bandwidth 1000000.000000 Hz is outside"
 check bw-negative 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.csv" --track-bandwidth -5
-grep -v '^#' "$tmp/cal.csv" | cut -d, -f2- > "$tmp/not.csv"
+grep -v '^#' "$tmp/cal.csv" | cut -d, -f2- >"$tmp/not.csv"
 check bw-without-t 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/not.csv" --track-bandwidth 100
 expect_text bw-without-t-msg "$tmp/err" "--track-bandwidth needs the recording's t column"
 check lead-too-far 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.csv" --track-lead 300
@@ -71,13 +77,16 @@ check profile-unknown 2 "$bin" simulate --scenario paper --profile zigzag --spee
 check ripple-too-big 2 "$bin" simulate --scenario paper --profile ripple --speed-rpm 10 --ripple 2 --ripple-hz 5 --out "$tmp/x.csv"
 check step-profile 0 "$bin" simulate --scenario ideal --profile step --speed-rpm 600 --speed-end-rpm -600 \
   --sample-rate 10000 --samples 2000 --out "$tmp/s.csv"
-/usr/bin/python3 - "$tmp/s.csv" <<'PY' || { echo "FAIL step-profile"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp/s.csv" <<'PY' || {
 import csv, math, sys
 rows = [r for r in csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#"))][1:]
 th = [float(r[1]) for r in rows]
 # 600 rpm = 10 rev/s forward for 0.1 s, then back: 1 turn out, 1 turn back.
 assert abs(th[1000] - 2 * math.pi) < 1e-9 and abs(th[-1] - 2 * math.pi * 1e-3) < 1e-6, (th[1000], th[-1])
 PY
+  echo "FAIL step-profile"
+  fails=$((fails + 1))
+}
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -54,7 +54,9 @@ for sc in paper tmr; do
     check "$sc-estimate160-$g" 0 "$bin" estimate --regs "$tmp/$sc-160.hex" --in "$tmp/$sc-val160-$g.csv" --json "$tmp/b.json"
     # The 160 deg reference offset: within 1.1x of the aligned calibration (a reference zero anywhere costs nothing).
     if within "$(rms "$tmp/b.json")" "$(rms "$tmp/a.json")" 1.1; then passes=$((passes + 1)); else
-      echo "FAIL $sc-160-within-1.1x at gain $g: $(rms "$tmp/b.json") vs $(rms "$tmp/a.json")"; fails=$((fails + 1)); fi
+      echo "FAIL $sc-160-within-1.1x at gain $g: $(rms "$tmp/b.json") vs $(rms "$tmp/a.json")"
+      fails=$((fails + 1))
+    fi
   done
 done
 # The calibration before the zero offset (fit against theta_ref itself) fails that comparison.
@@ -62,7 +64,9 @@ check absorbed 0 "$bin" calibrate --in "$tmp/tmr-cal160.csv" --out "$tmp/abs.hex
 check absorbed-estimate 0 "$bin" estimate --regs "$tmp/abs.hex" --in "$tmp/tmr-val160-0.7.csv" --json "$tmp/c.json"
 check aligned-estimate 0 "$bin" estimate --regs "$tmp/tmr.hex" --in "$tmp/tmr-val-0.7.csv" --json "$tmp/a.json"
 if within "$(rms "$tmp/c.json")" "$(rms "$tmp/a.json")" 1.1; then
-  echo "FAIL absorbed: the negative control passes"; fails=$((fails + 1)); else passes=$((passes + 1)); fi
+  echo "FAIL absorbed: the negative control passes"
+  fails=$((fails + 1))
+else passes=$((passes + 1)); fi
 
 # Amplitude: the angle-domain correction without polynomial stays at the calibration point's error.
 check tmr-fourier 0 "$bin" calibrate --in "$tmp/tmr-cal160.csv" --out "$tmp/f4.hex" --correction none --fourier 4 --zero-word
@@ -70,7 +74,9 @@ for g in 0.7 1.3; do
   check "fourier-1" 0 "$bin" estimate --regs "$tmp/f4.hex" --in "$tmp/tmr-val160-1.csv" --json "$tmp/a.json"
   check "fourier-$g" 0 "$bin" estimate --regs "$tmp/f4.hex" --in "$tmp/tmr-val160-$g.csv" --json "$tmp/b.json"
   if within "$(rms "$tmp/b.json")" "$(rms "$tmp/a.json")" 1.05; then passes=$((passes + 1)); else
-    echo "FAIL fourier-amplitude $g: $(rms "$tmp/b.json") vs $(rms "$tmp/a.json")"; fails=$((fails + 1)); fi
+    echo "FAIL fourier-amplitude $g: $(rms "$tmp/b.json") vs $(rms "$tmp/a.json")"
+    fails=$((fails + 1))
+  fi
 done
 
 # The ZERO word: one more word, the last; every engine reports the same reference-frame error.
@@ -88,7 +94,7 @@ for img in zw paper-160; do
       --json "$tmp/$img-$e.json" --out "$tmp/$img-$e.csv"
   done
 done
-/usr/bin/python3 - "$tmp" $engines <<'PY' || { echo "FAIL engines-agree"; fails=$((fails + 1)); }
+/usr/bin/python3 - "$tmp" $engines <<'PY' || {
 import json, sys
 tmp, engines = sys.argv[1], sys.argv[2:]
 ref = json.load(open(f"{tmp}/paper-160-fixed.json"))
@@ -110,6 +116,9 @@ for img in ("zw", "paper-160"):
         if e.startswith("rtl"):
             assert col(f"{tmp}/{img}-{e}.csv") == col(f"{tmp}/{img}-fixed.csv"), (img, e)
 PY
+  echo "FAIL engines-agree"
+  fails=$((fails + 1))
+}
 
 # Bad input: exit 2, the message names the file, line and field.
 line=$(grep -n "zero_offset_rad=" "$tmp/zw.hex" | cut -d: -f1)

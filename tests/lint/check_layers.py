@@ -7,12 +7,15 @@ include cycle between files, a model header included without its folder ("errors
 "core/errors.hpp"), and an include that resolves to no file of the repository.
 usage: check_layers.py [ROOT]
 """
+
 import os
 import re
 import sys
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+ROOT = os.path.abspath(
+    sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
+)
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
 # Include roots of the build (CMake target_include_directories), searched after the file's own folder.
 ROOTS = ["model/ip", "model/lab", "model", "tests", "tb", "model/cli"]
 # Headers generated into the build tree (Verilated classes, generated tables): not checked.
@@ -33,9 +36,9 @@ def component(path, order):
     """The longest layer folder that holds path (relative), and its rank."""
     best = None
     for rank, folder in enumerate(order):
-        if path == folder or path.startswith(folder + "/"):
-            if best is None or len(folder) > len(best[1]):
-                best = (rank, folder)
+        inside = path == folder or path.startswith(folder + "/")
+        if inside and (best is None or len(folder) > len(best[1])):
+            best = (rank, folder)
     return best
 
 
@@ -49,7 +52,7 @@ def sources():
 
 
 def resolve(src, name):
-    for base in [os.path.dirname(src)] + ROOTS:
+    for base in [os.path.dirname(src), *ROOTS]:
         cand = os.path.normpath(os.path.join(base, name))
         if os.path.isfile(os.path.join(ROOT, cand)):
             return cand
@@ -74,18 +77,22 @@ def main():
                 continue
             dst = resolve(src, name)
             if dst is None:
-                errors.append(f"{src}:{line}: #include \"{name}\" resolves to no file of the repository")
+                errors.append(
+                    f'{src}:{line}: #include "{name}" resolves to no file of the repository'
+                )
                 continue
             graph[src].append((dst, line))
             there = component(dst, order)
             if dst.startswith(("model/ip/", "model/lab/")) and "/" not in name:
                 qualified = "/".join(dst.split("/")[2:])
-                errors.append(f"{src}:{line}: #include \"{name}\": name the folder (\"{qualified}\")")
+                errors.append(f'{src}:{line}: #include "{name}": name the folder ("{qualified}")')
             if there is None:
                 errors.append(f"{src}:{line}: {dst} is in no layer")
             elif there[0] > here[0]:
-                errors.append(f"{src}:{line}: upward include: {here[1]} may not include {there[1]} "
-                              f"(\"{name}\"; model/layers.txt lists {there[1]} above {here[1]})")
+                errors.append(
+                    f"{src}:{line}: upward include: {here[1]} may not include {there[1]} "
+                    f'("{name}"; model/layers.txt lists {there[1]} above {here[1]})'
+                )
     # Cycles between files (depth-first search, colours).
     state = {}
     stack = []
@@ -93,9 +100,9 @@ def main():
     def visit(node):
         state[node] = 1
         stack.append(node)
-        for nxt, line in graph.get(node, []):
+        for nxt, _line in graph.get(node, []):
             if state.get(nxt) == 1:
-                cyc = stack[stack.index(nxt):] + [nxt]
+                cyc = [*stack[stack.index(nxt) :], nxt]
                 errors.append("include cycle: " + " -> ".join(cyc))
             elif state.get(nxt) is None:
                 visit(nxt)
@@ -108,7 +115,9 @@ def main():
     for e in errors:
         print(e)
     n = sum(len(v) for v in graph.values())
-    print(f"check_layers: {len(graph)} files, {n} includes, {len(order)} layers, {len(errors)} problems")
+    print(
+        f"check_layers: {len(graph)} files, {n} includes, {len(order)} layers, {len(errors)} problems"
+    )
     return 1 if errors else 0
 
 

@@ -9,15 +9,20 @@ with that licence's identifier; pyproject.toml declares the same licence. Fails 
 each file that does not.
 usage: check_license.py [ROOT]
 """
+
 import os
 import re
 import subprocess
 import sys
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(
+    sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
+)
 # The licences this check knows: LICENSE's first line -> SPDX identifier.
 KNOWN = {"MIT License": "MIT"}
-SOURCE = re.compile(r"\.(v|vh|sv|cpp|hpp|h|py|sh|cmake|core|vlt|ys\.in|sdc)$|(^|/)CMakeLists\.txt$|^\.ci/run$")
+SOURCE = re.compile(
+    r"\.(v|vh|sv|cpp|hpp|h|py|sh|cmake|core|vlt|ys\.in|sdc)$|(^|/)CMakeLists\.txt$|^\.ci/run$"
+)
 SPDX = re.compile(r"SPDX-License-Identifier:\s*([\w.+-]+)")
 
 
@@ -33,8 +38,9 @@ def main():
         problems.append(f"LICENSE:1: '{lines[0] if lines else ''}' is none of {', '.join(KNOWN)}")
     if not any(re.match(r"Copyright \(c\) \d{4}(-\d{4})? \S", line) for line in lines):
         problems.append("LICENSE: no copyright line 'Copyright (c) YEAR HOLDER'")
-    files = subprocess.run(["git", "-C", ROOT, "ls-files"], capture_output=True, text=True,
-                           check=True).stdout.split()
+    files = subprocess.run(
+        ["git", "-C", ROOT, "ls-files"], capture_output=True, text=True, check=True
+    ).stdout.split()
     n = 0
     for f in files:
         if not SOURCE.search(f):
@@ -51,7 +57,7 @@ def main():
         elif spdx and m.group(1) != spdx:
             problems.append(f"{f}: SPDX-License-Identifier {m.group(1)}, LICENSE says {spdx}")
     py = open(os.path.join(ROOT, "pyproject.toml"), encoding="utf-8").read()
-    if spdx and not re.search(r'^license\s*=.*\b' + re.escape(spdx) + r'\b', py, re.M):
+    if spdx and not re.search(r"^license\s*=.*\b" + re.escape(spdx) + r"\b", py, re.MULTILINE):
         problems.append(f"pyproject.toml: its license is not {spdx}")
     for p in problems:
         print("check_license:", p)

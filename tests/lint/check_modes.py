@@ -18,13 +18,16 @@ and fails (exit 1), naming file:line, when:
     a mode constant or a name, or switches on it: every such decision reads the table's row.
 usage: check_modes.py [ROOT]
 """
+
 import os
 import re
 import sys
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(
+    sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
+)
 TABLE = "model/ip/core/correction_modes.hpp"
-ROW = re.compile(r'^\s*ROW\((\d+),\s*(k\w+),\s*"(\w+)"', re.M)
+ROW = re.compile(r'^\s*ROW\((\d+),\s*(k\w+),\s*"(\w+)"', re.MULTILINE)
 GENERATED_RTL = {"rtl/acore_modes.vh"}
 
 
@@ -48,7 +51,7 @@ def files_under(top, exts):
 def strip_comments(text, style):
     """Comments blanked (same length, newlines kept): a comment may name a mode's number."""
     pat = r"//[^\n]*|/\*.*?\*/" if style == "c" else r"#[^\n]*"
-    return re.sub(pat, lambda m: re.sub(r"[^\n]", " ", m.group(0)), text, flags=re.S)
+    return re.sub(pat, lambda m: re.sub(r"[^\n]", " ", m.group(0)), text, flags=re.DOTALL)
 
 
 def check_generated(modes, errors):
@@ -57,43 +60,57 @@ def check_generated(modes, errors):
     doc = read("docs/reports/correction_modes.md")
     for mid, _, name in modes:
         const = "ACORE_CORR_" + name.upper()
-        if not re.search(r"^localparam integer %s = %d;$" % (const, mid), vh, re.M):
-            errors.append(f"rtl/acore_modes.vh: no 'localparam integer {const} = {mid};' for mode {name} "
-                          f"(run scripts/gen_tables.sh)")
-        if not re.search(r"\bDEGREE_must_be_\d+_to_\d+_for_%s \(\);" % re.escape(name), checks):
-            errors.append(f"rtl/acore_mode_checks.vh: no DEGREE rule for mode {name} (run scripts/gen_tables.sh)")
+        if not re.search(r"^localparam integer %s = %d;$" % (const, mid), vh, re.MULTILINE):
+            errors.append(
+                f"rtl/acore_modes.vh: no 'localparam integer {const} = {mid};' for mode {name} "
+                f"(run scripts/gen_tables.sh)"
+            )
+        if not re.search(rf"\bDEGREE_must_be_\d+_to_\d+_for_{re.escape(name)} \(\);", checks):
+            errors.append(
+                f"rtl/acore_mode_checks.vh: no DEGREE rule for mode {name} (run scripts/gen_tables.sh)"
+            )
         if f"| `{name}` ({mid}) |" not in doc:
-            errors.append(f"docs/reports/correction_modes.md: no row for mode {name} ({mid}) "
-                          f"(run scripts/gen_tables.sh)")
+            errors.append(
+                f"docs/reports/correction_modes.md: no row for mode {name} ({mid}) "
+                f"(run scripts/gen_tables.sh)"
+            )
 
 
 def check_docs(modes, errors):
     text = read("docs/datapath.md")
-    m = re.search(r"^## Correction modes\n(.*?)(?=^## )", text, re.M | re.S)
+    m = re.search(r"^## Correction modes\n(.*?)(?=^## )", text, re.MULTILINE | re.DOTALL)
     if not m:
         errors.append("docs/datapath.md: no section '## Correction modes'")
     else:
         sec = m.group(1)
         where = f"docs/datapath.md:{line_of(text, m.start())}"
         if "<!-- figure: table docs/reports/correction_modes.md" not in sec:
-            errors.append(f"{where}: 'Correction modes' does not show the generated table "
-                          f"(a figure of docs/reports/correction_modes.md)")
+            errors.append(
+                f"{where}: 'Correction modes' does not show the generated table "
+                f"(a figure of docs/reports/correction_modes.md)"
+            )
         for _, _, name in modes:
             if f"`{name}`" not in sec:
                 errors.append(f"{where}: 'Correction modes' does not name mode `{name}`")
     arch = read("docs/architecture.md")
-    r = re.search(r"^\*\*A correction mode\.\*\*(.*?)(?=^\*\*|\Z)", arch, re.M | re.S)
+    r = re.search(r"^\*\*A correction mode\.\*\*(.*?)(?=^\*\*|\Z)", arch, re.MULTILINE | re.DOTALL)
     if not r:
         errors.append("docs/architecture.md: no recipe '**A correction mode.**'")
     elif TABLE not in r.group(1):
-        errors.append(f"docs/architecture.md:{line_of(arch, r.start())}: the recipe 'A correction mode' "
-                      f"does not name {TABLE}")
+        errors.append(
+            f"docs/architecture.md:{line_of(arch, r.start())}: the recipe 'A correction mode' "
+            f"does not name {TABLE}"
+        )
 
 
 # Verilog: CORRECTION / f_correction against a number, either side; a literal mode to a mode function.
-V_COMPARE = re.compile(r"\b(?:CORRECTION|f_correction)\s*(?:==|!=|<=|>=|<|>)\s*-?\d"
-                       r"|-?\d\s*(?:==|!=|<=|>=|<|>)\s*(?:CORRECTION|f_correction)\b")
-V_LITERAL_ARG = re.compile(r"\b(?:acore_terms|acore_correction_latency|acore_mode_\w+|acore_folded)\s*\(\s*-?\d")
+V_COMPARE = re.compile(
+    r"\b(?:CORRECTION|f_correction)\s*(?:==|!=|<=|>=|<|>)\s*-?\d"
+    r"|-?\d\s*(?:==|!=|<=|>=|<|>)\s*(?:CORRECTION|f_correction)\b"
+)
+V_LITERAL_ARG = re.compile(
+    r"\b(?:acore_terms|acore_correction_latency|acore_mode_\w+|acore_folded)\s*\(\s*-?\d"
+)
 
 
 def check_verilog(errors):
@@ -102,11 +119,15 @@ def check_verilog(errors):
             if rel in GENERATED_RTL:
                 continue
             text = strip_comments(read(rel), "c")
-            for pat, what in ((V_COMPARE, "compares the correction mode with a number"),
-                              (V_LITERAL_ARG, "passes a literal correction mode")):
+            for pat, what in (
+                (V_COMPARE, "compares the correction mode with a number"),
+                (V_LITERAL_ARG, "passes a literal correction mode"),
+            ):
                 for m in pat.finditer(text):
-                    errors.append(f"{rel}:{line_of(text, m.start())}: '{m.group(0).strip()}' {what}: "
-                                  f"use the table's constants ACORE_CORR_* (rtl/acore_modes.vh)")
+                    errors.append(
+                        f"{rel}:{line_of(text, m.start())}: '{m.group(0).strip()}' {what}: "
+                        f"use the table's constants ACORE_CORR_* (rtl/acore_modes.vh)"
+                    )
 
 
 # C++: a correction compared with anything but through the table, or switched on.
@@ -127,8 +148,10 @@ def check_cpp(errors):
             text = strip_comments(read(rel), "c")
             for pat in CPP_PATTERNS:
                 for m in pat.finditer(text):
-                    errors.append(f"{rel}:{line_of(text, m.start())}: '{m.group(0).strip()}' decides on the "
-                                  f"correction mode outside its table: read its row ({TABLE})")
+                    errors.append(
+                        f"{rel}:{line_of(text, m.start())}: '{m.group(0).strip()}' decides on the "
+                        f"correction mode outside its table: read its row ({TABLE})"
+                    )
 
 
 def main():
@@ -145,8 +168,10 @@ def main():
     check_cpp(errors)
     for e in errors:
         print(e)
-    print(f"check_modes: {len(modes)} correction modes ({', '.join(n for _, _, n in modes)}); "
-          f"{len(errors)} problem(s)")
+    print(
+        f"check_modes: {len(modes)} correction modes ({', '.join(n for _, _, n in modes)}); "
+        f"{len(errors)} problem(s)"
+    )
     return 1 if errors else 0
 
 

@@ -11,24 +11,35 @@ at least one path. Paths under build/, out/ or .venv/ are not the repository's a
 Fails (exit 1) listing file:line: token for each path that names nothing.
 usage: check_paths.py [ROOT]
 """
+
 import fnmatch
 import os
 import re
 import subprocess
 import sys
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(
+    sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
+)
 TOPS = ("rtl", "model", "tb", "tests", "synth", "scripts", "python", "docs", "cmake", ".ci")
 TOP_FILES = ("README.md", "CMakeLists.txt", "pyproject.toml", "LICENSE")
 # A path token: a top folder, then path characters (placeholders and braces included).
-TOKEN = re.compile(r"(?<![\w./<>{}*-])((?:" + "|".join(re.escape(t) for t in TOPS) +
-                   r")/[\w./<>{}*,+-]*)")
+TOKEN = re.compile(
+    r"(?<![\w./<>{}*-])((?:" + "|".join(re.escape(t) for t in TOPS) + r")/[\w./<>{}*,+-]*)"
+)
 # Text that names generated or external places, not repository paths.
-SKIP_PREFIX = ("build/", "out/", ".venv/", os.path.join("synth", "build", ""))  # synth.sh writes there
+SKIP_PREFIX = (
+    "build/",
+    "out/",
+    ".venv/",
+    os.path.join("synth", "build", ""),
+)  # synth.sh writes there
 
 
 def tracked():
-    out = subprocess.run(["git", "-C", ROOT, "ls-files", "-z"], capture_output=True, text=True, check=True)
+    out = subprocess.run(
+        ["git", "-C", ROOT, "ls-files", "-z"], capture_output=True, text=True, check=True
+    )
     return [f for f in out.stdout.split("\0") if f]
 
 
@@ -38,7 +49,7 @@ def expand_braces(s):
         return [s]
     out = []
     for alt in m.group(1).split(","):
-        out += expand_braces(s[:m.start()] + alt + s[m.end():])
+        out += expand_braces(s[: m.start()] + alt + s[m.end() :])
     return out
 
 
@@ -51,12 +62,12 @@ def clean(tok):
 
 
 def to_glob(p):
-    p = re.sub(r"<[^<>/]*>", "*", p)      # <name>
-    p = re.sub(r"\{[^{},/]*\}", "*", p)    # {name}: a format field, not alternatives
+    p = re.sub(r"<[^<>/]*>", "*", p)  # <name>
+    p = re.sub(r"\{[^{},/]*\}", "*", p)  # {name}: a format field, not alternatives
     # An upper-case word as a part of a name is a placeholder (DESIGN.json, acore_rtl_NAME.so).
     p = re.sub(r"(?<![a-z0-9])[A-Z][A-Z_]{2,}(?![a-z0-9])", "*", p)
     if p.endswith("_"):
-        p += "*"                          # a prefix: nextpnr_<design>
+        p += "*"  # a prefix: nextpnr_<design>
     return p
 
 

@@ -16,6 +16,7 @@ checked-in place-and-route logs (the tools' own device databases): every log of 
 logic cells, block RAMs and hard multipliers out of the capacity the table states. Exit 1 on any
 failure, listing each.
 """
+
 import glob
 import os
 import re
@@ -24,9 +25,11 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(
+    sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
+)
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import registry  # noqa: E402
+import registry
 
 HEAD = "default acore_top sim,formal tags=demo,fast-sim\n"
 # (registry text after the first line, what `registry.py lines` prints for it when legal or (line,
@@ -35,37 +38,79 @@ CASES = [
     ("x acore_top sim,lint R_SHIFT=-1 SCALE_G=-1\n", "x acore_top sim,lint R_SHIFT=-1 SCALE_G=-1"),
     ("x acore_apb lint,pnr,pnr_up5k SERIAL=1\n", "x acore_apb lint,hx8k,up5k SERIAL=1"),
     ("x acore_fold_mul sim tags=test_fold_mul F=2\n", "x acore_fold_mul sim F=2"),
-    ("x acore_top sim\ny acore_top lint\nx acore_top lint DEGREE=1\n", (4, r"name 'x': already on line 2")),
-    ("x acore_top sim,pnr2\n", (2, r"flows: 'pnr2' is not a flow \(known: sim, lint, icarus, formal, generic")),
+    (
+        "x acore_top sim\ny acore_top lint\nx acore_top lint DEGREE=1\n",
+        (4, r"name 'x': already on line 2"),
+    ),
+    (
+        "x acore_top sim,pnr2\n",
+        (2, r"flows: 'pnr2' is not a flow \(known: sim, lint, icarus, formal, generic"),
+    ),
     ("x acore_top sim,hx8k,pnr\n", (2, r"flows: 'hx8k' named twice \(aliases included\)")),
     ("x acore_top sim tags=fast\n", (2, r"tags: 'fast' is not a tag \(known: demo, fast-sim")),
     ("x acore_top sim tags=long-proof\n", (2, r"tags: 'long-proof' needs the formal flow")),
     ("x acore_top lint tags=demo\n", (2, r"tags: 'demo' needs the sim flow")),
     ("x acore_top sim tags=demo,demo\n", (2, r"tags: 'demo' named twice")),
-    ("x acore_fold_mul sim tags=test_nope\n", (2, r"tags: 'test_nope': no bench tb/\*/test_nope.cpp")),
+    (
+        "x acore_fold_mul sim tags=test_nope\n",
+        (2, r"tags: 'test_nope': no bench tb/\*/test_nope.cpp"),
+    ),
     ("x acore_top sim DEGREE=1 tags=demo\n", (2, r"tags: 'tags=...' comes right after the flows")),
     ("x acore_top sim DEGREE=x\n", (2, r"parameter 'DEGREE=x' is not PARAM=integer")),
     ("x acore_top sim DEGREE=1 DEGREE=2\n", (2, r"parameter DEGREE set twice")),
     ("x acore_top sim degree=1\n", (2, r"parameter 'degree=1' is not PARAM=integer")),
-    ("fold2_pnr acore_top sim\n", (2, r"name 'fold2_pnr': '_pnr' ends the placed designs' report names")),
+    (
+        "fold2_pnr acore_top sim\n",
+        (2, r"name 'fold2_pnr': '_pnr' ends the placed designs' report names"),
+    ),
     ("x_up5k acore_top sim\n", (2, r"name 'x_up5k': '_up5k' ends")),
     ("X acore_top sim\n", (2, r"name 'X': lower case letters")),
     ("x acore-top sim\n", (2, r"module 'acore-top' is not a Verilog module name")),
     ("x acore_top\n", (2, r"expected 'name module flows \[tags=T,...\] \[PARAM=value ...\]'")),
     (" x acore_top sim\n", (2, r"expected .* starting in column 1")),
 ]
-FIRST_NOT_DEFAULT = ("poly acore_top sim\n", (1, r"the first line must be 'default acore_top FLOWS'"))
+FIRST_NOT_DEFAULT = (
+    "poly acore_top sim\n",
+    (1, r"the first line must be 'default acore_top FLOWS'"),
+)
 # (devices table edit: old text, new text, message regex)
 DEVICE_CASES = [
-    ('pnr_cell = "ICESTORM_LC"', 'pnr_cel = "ICESTORM_LC"', r"synth/devices.toml:\d+: \[family.ice40\] has no field 'pnr_cell'"),
-    ('suffix = "_up5k"', 'suffix = "_pnr"', r"synth/devices.toml:\d+: suffix '_pnr': also device hx8k's"),
-    ('default_device = "hx8k"', 'default_device = "hx9k"', r"synth/devices.toml:\d+: default_device: 'hx9k' is not a device"),
-    ('family = "ecp5"', 'family = "xilinx"', r"synth/devices.toml:\d+: family: 'xilinx' is not a family with a place"),
-    ('{ label = "LUT4", count = ["lut"] },\n  { label = "DFF"', '{ label = "LUT4", count = ["lut6"] },\n  { label = "DFF"',
-     r"synth/devices.toml:\d+: columns: LUT4: 'lut6' is not a cell class of the family"),
-    ('aliases = ["pnr_up5k"]', 'aliases = ["pnr"]', r"synth/devices.toml:\d+: aliases: 'pnr' is already an alias of device hx8k"),
-    ('dsp = 8, user_io = 39', 'dsp = -8, user_io = 39', r"synth/devices.toml:\d+: capacity: dsp: expected a count >= 0"),
-    ('seed = 1', 'seed = "1"', r"synth/devices.toml:\d+: seed: expected int"),
+    (
+        'pnr_cell = "ICESTORM_LC"',
+        'pnr_cel = "ICESTORM_LC"',
+        r"synth/devices.toml:\d+: \[family.ice40\] has no field 'pnr_cell'",
+    ),
+    (
+        'suffix = "_up5k"',
+        'suffix = "_pnr"',
+        r"synth/devices.toml:\d+: suffix '_pnr': also device hx8k's",
+    ),
+    (
+        'default_device = "hx8k"',
+        'default_device = "hx9k"',
+        r"synth/devices.toml:\d+: default_device: 'hx9k' is not a device",
+    ),
+    (
+        'family = "ecp5"',
+        'family = "xilinx"',
+        r"synth/devices.toml:\d+: family: 'xilinx' is not a family with a place",
+    ),
+    (
+        '{ label = "LUT4", count = ["lut"] },\n  { label = "DFF"',
+        '{ label = "LUT4", count = ["lut6"] },\n  { label = "DFF"',
+        r"synth/devices.toml:\d+: columns: LUT4: 'lut6' is not a cell class of the family",
+    ),
+    (
+        'aliases = ["pnr_up5k"]',
+        'aliases = ["pnr"]',
+        r"synth/devices.toml:\d+: aliases: 'pnr' is already an alias of device hx8k",
+    ),
+    (
+        "dsp = 8, user_io = 39",
+        "dsp = -8, user_io = 39",
+        r"synth/devices.toml:\d+: capacity: dsp: expected a count >= 0",
+    ),
+    ("seed = 1", 'seed = "1"', r"synth/devices.toml:\d+: seed: expected int"),
 ]
 
 fails = []
@@ -79,7 +124,11 @@ def scratch(tmp, registry_text, devices_text=None):
         os.makedirs(os.path.join(tmp, d), exist_ok=True)
     open(os.path.join(tmp, "rtl", "configs.txt"), "w").write(registry_text)
     shutil.copy(os.path.join(ROOT, "rtl", "files.f"), os.path.join(tmp, "rtl"))
-    dt = devices_text if devices_text is not None else open(os.path.join(ROOT, "synth", "devices.toml")).read()
+    dt = (
+        devices_text
+        if devices_text is not None
+        else open(os.path.join(ROOT, "synth", "devices.toml")).read()
+    )
     open(os.path.join(tmp, "synth", "devices.toml"), "w").write(dt)
     for pcf in glob.glob(os.path.join(ROOT, "synth", "*.pcf")):
         shutil.copy(pcf, os.path.join(tmp, "synth"))
@@ -91,18 +140,23 @@ def scratch(tmp, registry_text, devices_text=None):
 
 
 def run_registry(tmp, *args):
-    return subprocess.run([sys.executable, os.path.join(tmp, "scripts", "registry.py"), "--root", tmp, *args],
-                          capture_output=True, text=True)
+    return subprocess.run(
+        [sys.executable, os.path.join(tmp, "scripts", "registry.py"), "--root", tmp, *args],
+        capture_output=True,
+        text=True,
+    )
 
 
 def expect_error(what, p, line, pattern, path="rtl/configs.txt"):
     where = f"{path}:{line}: " if line else ""
     if p.returncode != 2 or not re.search(re.escape(where) + pattern, p.stderr):
-        fails.append(f"{what}: expected exit 2 and '{where}{pattern}', got exit {p.returncode}: {p.stderr.strip()!r}")
+        fails.append(
+            f"{what}: expected exit 2 and '{where}{pattern}', got exit {p.returncode}: {p.stderr.strip()!r}"
+        )
 
 
 def check_lines(tmp):
-    for body, bad in CASES + [FIRST_NOT_DEFAULT]:
+    for body, bad in [*CASES, FIRST_NOT_DEFAULT]:
         text = body if (body, bad) == FIRST_NOT_DEFAULT else HEAD + body
         scratch(tmp, text)
         what = f"registry line {body.strip()!r}"
@@ -111,14 +165,20 @@ def check_lines(tmp):
             if isinstance(bad, tuple):
                 expect_error(f"{what} ({cmd[0]})", p, *bad)
             elif p.returncode != 0:
-                fails.append(f"{what} ({cmd[0]}): legal, but exit {p.returncode}: {p.stderr.strip()}")
+                fails.append(
+                    f"{what} ({cmd[0]}): legal, but exit {p.returncode}: {p.stderr.strip()}"
+                )
         if isinstance(bad, tuple):
             continue
         out = run_registry(tmp, "lines").stdout.splitlines()
         want = bad
         if out[-1:] != [want]:
             fails.append(f"{what}: `registry.py lines` gave {out[-1:]}, expected [{want!r}]")
-        cm = open(os.path.join(tmp, "out.cmake")).read() if os.path.exists(os.path.join(tmp, "out.cmake")) else ""
+        cm = (
+            open(os.path.join(tmp, "out.cmake")).read()
+            if os.path.exists(os.path.join(tmp, "out.cmake"))
+            else ""
+        )
         if "R_SHIFT" in body and 'set(ACORE_REG_PARAMS_x "R_SHIFT=-1;SCALE_G=-1")' not in cm:
             fails.append(f"{what}: the CMake file lacks the negative values:\n{cm}")
         if "test_fold_mul" in body and 'set(ACORE_REG_TAGGED_test_fold_mul "x")' not in cm:
@@ -132,20 +192,29 @@ def check_cmake(tmp):
     if not cmake:
         fails.append("cmake not found")
         return
-    for body, bad in (("x acore_top sim tags=fast\n", (2, r"tags: 'fast' is not a tag")),
-                      ("x acore_top sim,lint R_SHIFT=-1\n", None)):
+    for body, bad in (
+        ("x acore_top sim tags=fast\n", (2, r"tags: 'fast' is not a tag")),
+        ("x acore_top sim,lint R_SHIFT=-1\n", None),
+    ):
         scratch(tmp, HEAD + body)
         open(os.path.join(tmp, "CMakeLists.txt"), "w").write(
             "cmake_minimum_required(VERSION 3.22)\nproject(registry_check NONE)\ninclude(cmake/AcoreRegistry.cmake)\n"
-            'message(STATUS "params of x: ${ACORE_REG_PARAMS_x}; tagged demo: ${ACORE_REG_TAGGED_demo}")\n')
-        p = subprocess.run([cmake, "-S", tmp, "-B", os.path.join(tmp, "build")], capture_output=True, text=True)
+            'message(STATUS "params of x: ${ACORE_REG_PARAMS_x}; tagged demo: ${ACORE_REG_TAGGED_demo}")\n'
+        )
+        p = subprocess.run(
+            [cmake, "-S", tmp, "-B", os.path.join(tmp, "build")], capture_output=True, text=True
+        )
         if bad:
             if p.returncode == 0 or not re.search(r"rtl/configs.txt:2: " + bad[1], p.stderr):
-                fails.append(f"cmake on {body.strip()!r}: expected a failed configuration naming rtl/configs.txt:2, "
-                             f"got exit {p.returncode}:\n{p.stderr[-1500:]}")
+                fails.append(
+                    f"cmake on {body.strip()!r}: expected a failed configuration naming rtl/configs.txt:2, "
+                    f"got exit {p.returncode}:\n{p.stderr[-1500:]}"
+                )
         elif p.returncode != 0 or "params of x: R_SHIFT=-1; tagged demo: default" not in p.stdout:
-            fails.append(f"cmake on {body.strip()!r}: expected the line's values, got exit {p.returncode}:\n"
-                         f"{p.stdout[-1000:]}{p.stderr[-1000:]}")
+            fails.append(
+                f"cmake on {body.strip()!r}: expected the line's values, got exit {p.returncode}:\n"
+                f"{p.stdout[-1000:]}{p.stderr[-1000:]}"
+            )
 
 
 def check_devices(tmp):
@@ -157,8 +226,10 @@ def check_devices(tmp):
         scratch(tmp, HEAD, base.replace(old, new, 1))
         p = run_registry(tmp, "lines")
         if p.returncode != 2 or not re.search(pattern, p.stderr):
-            fails.append(f"devices table with {new!r}: expected exit 2 and '{pattern}', got exit {p.returncode}: "
-                         f"{p.stderr.strip()!r}")
+            fails.append(
+                f"devices table with {new!r}: expected exit 2 and '{pattern}', got exit {p.returncode}: "
+                f"{p.stderr.strip()!r}"
+            )
 
 
 def check_capacities():
@@ -174,13 +245,18 @@ def check_capacities():
                 continue
             text = open(log).read()
             seen += 1
-            for key, line in (("logic_cells", dev.family.pnr_cell), ("bram_blocks", dev.family.pnr_bram),
-                              ("dsp", dev.family.pnr_dsp)):
-                totals = {int(t) for t in re.findall(r"%s:\s+\d+/\s*(\d+)" % re.escape(line), text)}
+            for key, line in (
+                ("logic_cells", dev.family.pnr_cell),
+                ("bram_blocks", dev.family.pnr_bram),
+                ("dsp", dev.family.pnr_dsp),
+            ):
+                totals = {int(t) for t in re.findall(rf"{re.escape(line)}:\s+\d+/\s*(\d+)", text)}
                 want = {dev.capacity[key]} if dev.capacity[key] or totals else set()
                 if totals != want:
-                    fails.append(f"{os.path.relpath(log, ROOT)}: {line} out of {sorted(totals)}, synth/devices.toml "
-                                 f"{dev.name} capacity {key} = {dev.capacity[key]}")
+                    fails.append(
+                        f"{os.path.relpath(log, ROOT)}: {line} out of {sorted(totals)}, synth/devices.toml "
+                        f"{dev.name} capacity {key} = {dev.capacity[key]}"
+                    )
     if seen < 10:
         fails.append(f"only {seen} place-and-route logs found in synth/reports")
     return seen
@@ -189,8 +265,8 @@ def check_capacities():
 def check_header():
     """The registry's header documents every tag the reader knows."""
     head = "".join(l for l in open(registry.registry_path(ROOT)) if l.startswith("#"))
-    for t in list(registry.TAGS) + ["test_<bench>"]:
-        if not re.search(r"^#\s+" + re.escape(t) + r"\s", head, re.M):
+    for t in [*list(registry.TAGS), "test_<bench>"]:
+        if not re.search(r"^#\s+" + re.escape(t) + r"\s", head, re.MULTILINE):
             fails.append(f"rtl/configs.txt: the header does not document the tag {t}")
 
 
@@ -205,8 +281,10 @@ def main():
     for f in fails:
         print("FAIL", f)
     n = len(CASES) + 1 + 2 + len(DEVICE_CASES)
-    print(f"{n} registry and devices-table cases, {logs} place-and-route logs against the capacities: "
-          f"{len(fails)} failure(s)")
+    print(
+        f"{n} registry and devices-table cases, {logs} place-and-route logs against the capacities: "
+        f"{len(fails)} failure(s)"
+    )
     return 1 if fails else 0
 
 

@@ -13,17 +13,20 @@ spans units, e.g. test_zero_offset in ip/calibration). The RTL engine (model/rtl
 the co-sim benches of tb/, not here.
 usage: check_unit_tests.py [ROOT]
 """
+
 import os
 import re
 import sys
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(
+    sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
+)
 MODEL_DIRS = ["model/ip", "model/lab"]
 
 # Units without a test file of their own, and why. Keep this list short and every reason true.
 EXCEPTIONS = {
     "errors": "core/errors.hpp declares the two exception types and nothing else: no behaviour "
-              "to test; the exit statuses they select are asserted by every CLI test",
+    "to test; the exit statuses they select are asserted by every CLI test",
 }
 
 
@@ -56,7 +59,7 @@ def test_files():
     out = set()
     for top in MODEL_DIRS:
         lib = os.path.basename(top)
-        for dp, dn, fn in os.walk(os.path.join(ROOT, "tests", lib)):
+        for dp, _dn, fn in os.walk(os.path.join(ROOT, "tests", lib)):
             for f in fn:
                 if f.startswith("test_") and f.endswith(".cpp"):
                     out.add(os.path.relpath(os.path.join(dp, f), os.path.join(ROOT, "tests"))[:-4])
@@ -75,14 +78,18 @@ def main():
         where = ", ".join(sorted(files))
         if unit in EXCEPTIONS:
             if name in tests:
-                errors.append(f"{unit}: tests/{name}.cpp exists, remove the stale exception in "
-                              f"tests/lint/check_unit_tests.py")
+                errors.append(
+                    f"{unit}: tests/{name}.cpp exists, remove the stale exception in "
+                    f"tests/lint/check_unit_tests.py"
+                )
             continue
         if name not in tests:
             errors.append(f"{unit} ({where}): no tests/{name}.cpp")
     for name in sorted(tests):
         if os.path.dirname(name) not in model_folders:
-            errors.append(f"tests/{name}.cpp: tests/{os.path.dirname(name)}/ mirrors no folder of model/")
+            errors.append(
+                f"tests/{name}.cpp: tests/{os.path.dirname(name)}/ mirrors no folder of model/"
+            )
     for name in sorted(tests - set(listed)):
         errors.append(f"tests/{name}.cpp is not listed in ACORE_UNIT_TESTS of tests/CMakeLists.txt")
     for name in sorted(set(listed) - tests):
@@ -92,9 +99,11 @@ def main():
     for e in errors:
         print("check_unit_tests:", e)
     tested = len([u for u in found if u not in EXCEPTIONS])
-    print(f"check_unit_tests: {len(found)} units, {tested} with a registered test, "
-          f"{len(EXCEPTIONS)} exceptions ({', '.join(sorted(EXCEPTIONS))}); "
-          f"{len(errors)} problem(s)")
+    print(
+        f"check_unit_tests: {len(found)} units, {tested} with a registered test, "
+        f"{len(EXCEPTIONS)} exceptions ({', '.join(sorted(EXCEPTIONS))}); "
+        f"{len(errors)} problem(s)"
+    )
     return 1 if errors else 0
 
 
