@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""The demo's Table 3 and error plot (`anglecore demo`) in Python: .venv/bin/python docs/python_example.py [PNG]"""
+"""The demo's Table 3 and error plot (`anglecore demo`) in Python:
+.venv/bin/python docs/python_example.py [PNG]"""
 
 import sys
 

@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""estimate() of the Python package on 1 M samples from numpy against the C++ batch benchmark, in one
+"""\
+estimate() of the Python package on 1 M samples from numpy against the C++ batch benchmark, in one
 run, and their ratio (target: within 1.2x of BM_EstimateFixedBatch, the same work in C++).
 
     cmake --build build --target bench_estimator && .venv/bin/python scripts/bench_python.py
 
-Prints the fastest of --reps runs (ms per 1 M samples; the minimum, as the machine may be shared) of BM_FixedChain (the batch chain on ready codes),
-BM_EstimateFixedBatch (codes + chain + angles + errors: what estimate runs) and of
-anglecore.estimate(img, rec, engine="fixed", uncorrected=False) timed with time.perf_counter.
+Prints the fastest of --reps runs (ms per 1 M samples; the minimum, as the machine may be shared) of
+BM_FixedChain (the batch chain on ready codes), BM_EstimateFixedBatch (codes + chain + angles +
+errors: what estimate runs) and of anglecore.estimate(img, rec, engine="fixed", uncorrected=False)
+timed with time.perf_counter.
 """
 
 import argparse
@@ -57,7 +59,8 @@ def main() -> None:
     py = min(times)
     cpp = cpp_fastest(a.build / "tests" / "bench" / "bench_estimator", a.reps)
     print(
-        f"samples {N}, fastest of {a.reps} runs each (ms; Python median {statistics.median(times):.2f}):"
+        f"samples {N}, fastest of {a.reps} runs each (ms; Python median "
+        f"{statistics.median(times):.2f}):"
     )
     print(f"  C++ BM_FixedChain          {cpp['BM_FixedChain']:8.2f}  (batch chain on ready codes)")
     print(f"  C++ BM_EstimateFixedBatch  {cpp['BM_EstimateFixedBatch']:8.2f}  (estimate's work)")

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Design-space sweep, hardware half: area and clock rate of every configuration a sweep shard built.
+"""Design-space sweep, hardware half: area and clock rate of every configuration a sweep shard
+built.
 
 usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
   ROOT   the repository (rtl/files.f)
@@ -14,10 +15,11 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
          register file's host read-back port excluded (reported in "stages"); for a folded top
          (FOLD > 1, made to fit) the whole top placed and routed in the same kind of pin wrapper
          ("whole": {"lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}, "slowest": "acore_top").
-         Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage, FOLD 1)
-         also get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of rtl/acore_serial_top.v with the
-         same parameters, placed and routed whole (it fits the HX8K); cycles = its CYCLES localparam
-         as Verilator elaborates it (scripts/registry.py rtl_constants).
+         Configurations the serial core implements (1-D polynomial, no XCENTER, no Fourier stage,
+         FOLD 1) also get "serial": {"lut4", "dff", "bram", "fmax_mhz", "cycles"} of
+         rtl/acore_serial_top.v with the same parameters, placed and routed whole (it fits the
+         HX8K); cycles = its CYCLES localparam as Verilator elaborates it
+         (scripts/registry.py rtl_constants).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
 """
@@ -53,8 +55,8 @@ def synth_area(root, params):
                 os.path.join(tmp, "log"),
                 "-p",
                 (
-                    f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top {chp}; "
-                    f"{fam.yosys_command('acore_top')}; tee -q -o {stat} stat"
+                    f"read_verilog -sv {' '.join(rtl_files(root))}; hierarchy -top acore_top "
+                    f"{chp}; {fam.yosys_command('acore_top')}; tee -q -o {stat} stat"
                 ),
             ],
             stdout=subprocess.DEVNULL,
@@ -137,7 +139,8 @@ def measure(root, cache, params):
         and int(p.get("XCENTER", 0)) == 0
         and int(p.get("FOURIER_K", 0)) == 0
     ):
-        # The serial core has the pipelined top's parameters but those of the correction modes and FOLD.
+        # The serial core has the pipelined top's parameters but those of the correction modes
+        # and FOLD.
         serial = [
             (k, int(v))
             for k, v in p.items()
@@ -214,7 +217,8 @@ def main():
                     f"({time.time() - t0:.0f} s)",
                     file=sys.stderr,
                 )
-            except Exception as e:  # noqa: BLE001 (one failed configuration must not lose the others)
+            except Exception as e:  # noqa: BLE001
+                # One failed configuration must not lose the others.
                 print(f"[{done}/{len(configs)}] {futs[fut]}: FAILED: {e}", file=sys.stderr)
                 out.write(json.dumps({"final_params": futs[fut], "error": str(e)}) + "\n")
 

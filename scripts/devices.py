@@ -118,8 +118,8 @@ class Device:
         return sorted(glob.glob(os.path.join(root, self.constraints)))
 
     def constraint_ports(self, path):
-        """The port bits a constraint file places (the family's constraint_pin on each line, comments
-        stripped)."""
+        """The port bits a constraint file places (the family's constraint_pin on each line,
+        comments stripped)."""
         placed = set()
         pat = re.compile(self.family.constraint_pin)
         for line in open(path):
@@ -149,9 +149,10 @@ class Device:
         """Why the device cannot be placed on this machine ("" when it can)."""
         if shutil.which(self.family.pnr):
             return ""
+        untested = " (the row has datasheet fields only: no report made with it yet)"
         return (
-            f"device {self.name} ({self.title}): its place-and-route program {self.family.pnr} is not "
-            f"installed{'' if self.tested else ' (the row has datasheet fields only: no report made with it yet)'}"
+            f"device {self.name} ({self.title}): its place-and-route program {self.family.pnr} is "
+            f"not installed{'' if self.tested else untested}"
         )
 
 
@@ -186,7 +187,8 @@ class Table:
 
 
 def article(text):
-    """'a' or 'an' before a device's name, by its sound (an acronym's letters are spelt: "an HX8K")."""
+    """'a' or 'an' before a device's name, by its sound (an acronym's letters are spelt:
+    "an HX8K")."""
     acronym = len(text) > 1 and text[:2].upper() == text[:2] and text[:1].isalpha()
     return ("an " if text[:1] in ("AEFHILMNORSX" if acronym else "aeiouAEIOU") else "a ") + text
 
@@ -318,13 +320,15 @@ def _load(root):
         for k in d:
             if k not in DEVICE_FIELDS:
                 raise DevicesError(
-                    f"{where(t, k)}: {k}: unknown field of a device (known: {', '.join(DEVICE_FIELDS)})"
+                    f"{where(t, k)}: {k}: unknown field of a device (known: "
+                    f"{', '.join(DEVICE_FIELDS)})"
                 )
         fam = families.get(d["family"])
         if fam is None or not fam.placed:
             raise DevicesError(
                 f"{where(t, 'family')}: family: '{d['family']}' is not a family with a "
-                f"place-and-route program (those: {', '.join(f for f in families if families[f].placed)})"
+                "place-and-route program (those: "
+                f"{', '.join(f for f in families if families[f].placed)})"
             )
         for k in CAPACITY:
             v = d["capacity"].get(k)
@@ -343,7 +347,8 @@ def _load(root):
             )
         if not re.fullmatch(r"_[a-z0-9_]+", d["suffix"]):
             raise DevicesError(
-                f"{where(t, 'suffix')}: suffix: '{d['suffix']}': '_' then lower case letters and digits"
+                f"{where(t, 'suffix')}: suffix: '{d['suffix']}': '_' then lower "
+                "case letters and digits"
             )
         if d["bare_suffix"] and not re.fullmatch(r"_[a-z0-9_]+", d["bare_suffix"]):
             raise DevicesError(
@@ -365,14 +370,15 @@ def _load(root):
         for a in dev.aliases:
             if not re.fullmatch(NAME, a) or a in seen:
                 raise DevicesError(
-                    f"{where(t, 'aliases')}: aliases: '{a}' is {'already ' + seen[a] if a in seen else 'not a flow name'}"
+                    f"{where(t, 'aliases')}: aliases: '{a}' is "
+                    f"{'already ' + seen[a] if a in seen else 'not a flow name'}"
                 )
             seen[a] = f"an alias of device {dev.name}"
         for s in {dev.suffix, dev.bare_suffix} - {""}:
             if suffixes.get(s, dev.name) != dev.name:
                 raise DevicesError(
-                    f"{where(t, 'suffix')}: suffix '{s}': also device {suffixes[s]}'s (report names "
-                    "would collide)"
+                    f"{where(t, 'suffix')}: suffix '{s}': also device {suffixes[s]}'s "
+                    "(report names would collide)"
                 )
             suffixes[s] = dev.name
         if not dev.bare_suffix:
@@ -384,8 +390,8 @@ def _load(root):
         )
     if flow["default_device"] not in devices:
         raise DevicesError(
-            f"{where('flow', 'default_device')}: default_device: '{flow['default_device']}' is not a "
-            f"device (devices: {', '.join(devices)})"
+            f"{where('flow', 'default_device')}: default_device: '{flow['default_device']}' is not "
+            f"a device (devices: {', '.join(devices)})"
         )
     return Table(flow, families, devices)
 

@@ -501,9 +501,12 @@ def demo_record(root, anglecore):
     ).stdout.strip()
     data = {
         "command": DEMO_COMMAND,
-        "how": "scripts/doc_figures.py demo-record build/anglecore: runs `anglecore demo --no-plots` "
-        "in an empty folder and keeps its stdout, out/demo/summary.json and out/demo/report.md; "
-        "CTest doc_demo_report runs it again and requires the same output bit for bit",
+        "how": (
+            "scripts/doc_figures.py demo-record build/anglecore: runs `anglecore demo --no-plots` "
+            "in an empty folder and keeps its stdout, out/demo/summary.json and "
+            "out/demo/report.md; CTest doc_demo_report runs it again and requires the "
+            "same output bit for bit"
+        ),
         "commit": commit,
         "date": datetime.date.today().isoformat(),
         "stdout": stdout.splitlines(),

@@ -562,7 +562,7 @@ def reset_value(r):
     return None
 
 
-# ---- rtl/<owner>_regs.vh: the owner's view ----------------------------------------------------------
+# ---- rtl/<owner>_regs.vh: the owner's view -------------------------------------------------------
 
 
 def owner_ports(blk):
@@ -658,8 +658,8 @@ def block_params(blk):
                     p,
                     d,
                     (
-                        f"the {'lowest' if side == 'lo' else 'highest'} value {f.reg.name}.{f.name} "
-                        f"accepts"
+                        f"the {'lowest' if side == 'lo' else 'highest'} value "
+                        f"{f.reg.name}.{f.name} accepts"
                     ),
                     p,
                 )
@@ -686,8 +686,14 @@ def gen_vh(blk):
             "//",
             [
                 *provenance(blk),
-                f"The register map of {RTL}/{blk.owner}.v, included inside it (after the parameters and",
-                "localparams its registers read): <REG>_<FIELD> is a field's lsb, <REG>_<FIELD>_W its width",
+                (
+                    f"The register map of {RTL}/{blk.owner}.v, included inside it "
+                    "(after the parameters and"
+                ),
+                (
+                    "localparams its registers read): <REG>_<FIELD> is a field's lsb, "
+                    "<REG>_<FIELD>_W its width"
+                ),
                 "(fields wider than a bit); then a wire per port of its register block",
                 f"({RTL}/{blk.owner}_regblock.v) and the block's instance u_regs.",
             ],
@@ -749,14 +755,16 @@ def gen_vh(blk):
     ports = owner_ports(blk)
     out.append(f"\n// ---- the register block ({RTL}/{blk.owner}_regblock.v) ----\n")
     out.append(
-        "// APB: the owner drives rg_psel (its PSEL for the block's addresses) and returns rg_prdata\n"
+        "// APB: the owner drives rg_psel (its PSEL for the block's addresses) "
+        "and returns rg_prdata\n"
         "// (zero unless the block answers a read) and rg_pslverr; PREADY is always high.\n"
     )
     out.append("wire rg_psel;\nwire [31:0] rg_prdata;\nwire rg_pslverr;\n")
     out.append("// A wire per field port: the owner drives the inputs (live values, set, lock).\n")
     for _port, wire, dirn, rng, comment in ports:
         out.append(
-            f"wire {rng + ' ' if rng else ''}{wire};  // {'in: ' if dirn == 'input' else ''}{comment}\n"
+            f"wire {rng + ' ' if rng else ''}{wire};  // "
+            f"{'in: ' if dirn == 'input' else ''}{comment}\n"
         )
     params = block_params(blk)
     out.append(f"{blk.owner}_regblock #(\n")
@@ -778,7 +786,7 @@ def gen_vh(blk):
     return "".join(out)
 
 
-# ---- rtl/<owner>_regblock.v: the register block -----------------------------------------------------
+# ---- rtl/<owner>_regblock.v: the register block --------------------------------------------------
 
 
 def gen_regblock(blk):
@@ -792,15 +800,16 @@ def gen_regblock(blk):
             "//",
             provenance(blk)
             + textwrap.wrap(
-                f"{mod}: the registers of {RTL}/{blk.owner}.v ({blk.doc}), an APB4 slave. It decodes the "
-                "address and reads in the setup phase (PSEL && !PENABLE), so the access phase returns "
-                "registered data (a window's word from the owner's memory, read the clock after the setup "
-                "phase) with zero wait states; a write takes effect at the end of its access phase. PSLVERR "
-                "(with PRDATA 0 and no effect) answers: an address outside the map or not word-aligned, a "
-                "write with PSTRB other than 4'b1111, a write to a read-only register, a value outside its "
-                "field's range, and a locked field or window (decided in the setup phase). The owner keeps "
-                "the behaviour: it drives the live values, the W1C set inputs and the locks, and uses the "
-                "values, the strobes and the W1 pulses.",
+                f"{mod}: the registers of {RTL}/{blk.owner}.v ({blk.doc}), an APB4 slave. It "
+                "decodes the address and reads in the setup phase (PSEL && !PENABLE), so the "
+                "access phase returns registered data (a window's word from the owner's memory, "
+                "read the clock after the setup phase) with zero wait states; a write takes effect "
+                "at the end of its access phase. PSLVERR (with PRDATA 0 and no effect) answers: an "
+                "address outside the map or not word-aligned, a write with PSTRB other than "
+                "4'b1111, a write to a read-only register, a value outside its field's range, and "
+                "a locked field or window (decided in the setup phase). The owner keeps the "
+                "behaviour: it drives the live values, the W1C set inputs and the locks, and uses "
+                "the values, the strobes and the W1 pulses.",
                 96,
             ),
         ),
@@ -816,7 +825,8 @@ def gen_regblock(blk):
         )
     )
     o.append(
-        "\n) (\n  input  wire clk_i,\n  // Synchronous, active high: every flop to its reset value.\n"
+        "\n) (\n  input  wire clk_i,\n"
+        "  // Synchronous, active high: every flop to its reset value.\n"
         "  input  wire rst_i,\n  // APB4 slave (PREADY is the owner's: always high).\n"
         "  input  wire psel_i,\n  input  wire penable_i,\n  input  wire pwrite_i,\n"
         "  input  wire [APB_AW-1:0] paddr_i,\n  input  wire [31:0] pwdata_i,\n"
@@ -826,7 +836,8 @@ def gen_regblock(blk):
         # (A port's range cannot name the body's localparams: the window's address width inline.)
         rng = re.sub(r"\[(\w+)_ADDR_W-1:0\]", r"[((\1_SIZE > 1) ? $clog2(\1_SIZE) : 1)-1:0]", rng)
         o.append(
-            f",\n  // {comment}\n  {dirn + ' ' if dirn == 'input' else dirn} wire {rng + ' ' if rng else ''}{port}"
+            f",\n  // {comment}\n  {dirn + ' ' if dirn == 'input' else dirn} wire "
+            f"{rng + ' ' if rng else ''}{port}"
         )
     o.append("\n);\n\n")
     # Localparams.
@@ -836,14 +847,16 @@ def gen_regblock(blk):
     ro = sum(1 << r.idx() for r in plain if not r.writable())
     wr = sum(1 << r.idx() for r in plain if r.writable())
     o.append(
-        f"  localparam [63:0] REGS_RO = 64'h{ro:016X};\n  localparam [63:0] REGS_WR = 64'h{wr:016X};\n"
+        f"  localparam [63:0] REGS_RO = 64'h{ro:016X};\n"
+        f"  localparam [63:0] REGS_WR = 64'h{wr:016X};\n"
     )
     for f in blk.fields():
         if f.reg.kind == "reg":
             o.append(f"  localparam integer {f.lp()} = {f.lsb};\n")
     for w in wins:
         o.append(
-            f"  localparam integer {w.name}_ADDR_W = ({w.name}_SIZE > 1) ? $clog2({w.name}_SIZE) : 1;\n"
+            f"  localparam integer {w.name}_ADDR_W = ({w.name}_SIZE > 1) ? "
+            f"$clog2({w.name}_SIZE) : 1;\n"
         )
     for r in blk.regs:
         if r.kind == "const" and all(isnum(f.reset) for f in r.fields):
@@ -854,7 +867,8 @@ def gen_regblock(blk):
     rst_lps = [f for f in stored if not isnum(f.reset) or not isinstance(f.width(), int)]
     if rst_lps:
         o.append(
-            "  // Reset values of fields whose reset or width is a parameter (the field's low bits).\n"
+            "  // Reset values of fields whose reset or width is a parameter "
+            "(the field's low bits).\n"
         )
     for f in rst_lps:
         v = f.reset if not isnum(f.reset) else str(int(f.reset, 0))
@@ -865,7 +879,8 @@ def gen_regblock(blk):
     o.append("\n  // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).\n")
     o.append(
         f"  acore_check #(.OK(APB_AW >= {min_aw} && APB_AW <= 32), .VALUE(APB_AW),\n"
-        f'    .MSG("illegal parameter: APB_AW must be {min_aw}..32 (the map reaches 0x{top - 1:03X})"))\n'
+        f'    .MSG("illegal parameter: APB_AW must be {min_aw}..32 (the map reaches '
+        f'0x{top - 1:03X})"))\n'
         f"    APB_AW_must_be_{min_aw}_to_32 ();\n"
     )
     for p, _d, what, _ in params:
@@ -877,8 +892,10 @@ def gen_regblock(blk):
             )
     for w in wins:
         o.append(
-            f"  acore_check #(.OK({w.name}_SIZE >= 1 && {w.name}_SIZE <= {w.words}), .VALUE({w.name}_SIZE),\n"
-            f'    .MSG("illegal parameter: {w.name}_SIZE must be 1..{w.words} (the {w.name} window)"))\n'
+            f"  acore_check #(.OK({w.name}_SIZE >= 1 && {w.name}_SIZE <= {w.words}), "
+            f".VALUE({w.name}_SIZE),\n"
+            f'    .MSG("illegal parameter: {w.name}_SIZE must be 1..{w.words} (the '
+            f'{w.name} window)"))\n'
             f"    {w.name}_SIZE_must_be_1_to_{w.words} ();\n"
         )
     for f in blk.fields():
@@ -907,7 +924,8 @@ def gen_regblock(blk):
         aw = w.words.bit_length() + 1  # byte address bits of the window
         o.append(
             f"  // {n}: address bits [{aw - 1}:2] index a word, the bits above select the window.\n"
-            f"  // (The width is kept positive for an illegal APB_AW, so that its rule reports it.)\n"
+            "  // (The width is kept positive for an illegal APB_AW, so that "
+            "its rule reports it.)\n"
             f"  localparam integer {n}_SEL_W = (APB_AW > {aw}) ? APB_AW - {aw} : 1;\n"
             f"  localparam integer {n}_SEL_I = {w.offset} >> {aw};\n"
             f"  localparam [{n}_SEL_W-1:0] {n}_SEL = {n}_SEL_I[{n}_SEL_W-1:0];\n"
@@ -1048,8 +1066,10 @@ def gen_regblock(blk):
     o.append("      default: rd_d = 32'd0;\n    endcase\n  end\n")
     # Setup flops.
     o.append(
-        "\n  // Setup phase: the answer (error, register data, or a window's word next clock) and which\n"
-        "  // register an error-free write will change: the access phase's write enables are one gate\n"
+        "\n  // Setup phase: the answer (error, register data, or a window's word "
+        "next clock) and which\n"
+        "  // register an error-free write will change: the access phase's write "
+        "enables are one gate\n"
         "  // from these flops, so the address decode stays off the data registers' enables.\n"
         "  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);\n"
         "  wire ok_reg_wr = ok_wr & in_regs;\n"
@@ -1093,10 +1113,12 @@ def gen_regblock(blk):
     for w in wins:
         lw, fw = w.name.lower(), w.fields[0].vwidth()
         o.append(
-            f"  // {w.name}: every setup phase reads the word (used only for a read of the window): the\n"
+            f"  // {w.name}: every setup phase reads the word (used only for a read "
+            "of the window): the\n"
             f"  // address decode stays off the memory's read enable.\n"
             f"  assign {lw}_re_o = setup;\n  assign {lw}_addr_o = {lw}_idx[{w.name}_ADDR_W-1:0];\n"
-            f"  assign {lw}_we_o = access & w_{lw}_q;\n  assign {lw}_wdata_o = pwdata_i[{fw}-1:0];\n"
+            f"  assign {lw}_we_o = access & w_{lw}_q;\n"
+            f"  assign {lw}_wdata_o = pwdata_i[{fw}-1:0];\n"
         )
     for r in wregs:
         o.append(f"  wire wr_{r.name.lower()} = access & w_{r.name.lower()}_q;\n")
@@ -1163,7 +1185,7 @@ def gen_regblock(blk):
     return "".join(o)
 
 
-# ---- C++ ------------------------------------------------------------------------------------------
+# ---- C++ -----------------------------------------------------------------------------------------
 
 
 def camel(name):
@@ -1182,8 +1204,14 @@ def gen_hpp(blk):
             "//",
             [
                 *provenance(blk),
-                f"The register map of {RTL}/{blk.owner}.v ({blk.doc}): byte addresses and bit fields. A",
-                "one-bit field is its mask; a wider one has <Field>Shift, and with fixed bits <Field>Mask",
+                (
+                    f"The register map of {RTL}/{blk.owner}.v ({blk.doc}): byte "
+                    "addresses and bit fields. A"
+                ),
+                (
+                    "one-bit field is its mask; a wider one has <Field>Shift, and with "
+                    "fixed bits <Field>Mask"
+                ),
                 "(in place) and <Field>Bits; a range gives <Field>Min and <Field>Max, fixed point",
                 "<Field>Frac (fraction bits).",
             ],
@@ -1240,7 +1268,7 @@ def gen_hpp(blk):
     return "".join(out)
 
 
-# ---- the doc page ---------------------------------------------------------------------------------
+# ---- the doc page --------------------------------------------------------------------------------
 
 
 def md_escape(text):
@@ -1257,8 +1285,9 @@ def field_meaning(f):
     if f.range:
         lo, hi, word = f.range
         text += (
-            f" Range {lo}..{hi}{' (the whole word: the bits above the field must be 0)' if word else ''}"
-            f": a write outside it is an error without effect."
+            " Range "
+            f"{lo}..{hi}{' (the whole word: the bits above the field must be 0)' if word else ''}: "
+            "a write outside it is an error without effect."
         )
     if f.frac is not None:
         text += f" Unsigned, {f.frac} fraction bits (0..{fmt_frac(f)})."
@@ -1274,7 +1303,8 @@ def gen_md(blk):
     out = [
         f"# {blk.title}\n\n",
         (
-            f"<!-- Generated by scripts/gen_apb_regs.py from {blk.path}: do not edit. Regenerate with\n"
+            f"<!-- Generated by scripts/gen_apb_regs.py from {blk.path}: do not "
+            "edit. Regenerate with\n"
             f"     {COMMAND} -->\n\n"
         ),
     ]
@@ -1304,7 +1334,8 @@ def gen_md(blk):
         else:
             reset = "parameters"
         out.append(
-            f"| {addr} | [{name}](#{r.name.lower()}) | {r.access} | {reset} | {md_escape(r.summary)} |\n"
+            f"| {addr} | [{name}](#{r.name.lower()}) | {r.access} | {reset} | "
+            f"{md_escape(r.summary)} |\n"
         )
     for r in blk.regs:
         addr = (
@@ -1317,7 +1348,8 @@ def gen_md(blk):
         out.append("| bits | field | access | reset | meaning |\n|---|---|---|---|---|\n")
         for f in sorted(r.fields, key=lambda x: -x.lsb if isinstance(x.msb, int) else 0):
             out.append(
-                f"| {f.bits()} | {f.name} | {f.access} | {f.reset} | {md_escape(field_meaning(f))} |\n"
+                f"| {f.bits()} | {f.name} | {f.access} | {f.reset} | "
+                f"{md_escape(field_meaning(f))} |\n"
             )
     if blk.irq:
         (st, en, pend), _ = blk.irq

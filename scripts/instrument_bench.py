@@ -456,7 +456,8 @@ def score(args):
         if args.verbose:
             print(
                 f"{c['name']:32s} {c['unit']:2s} {c['print']:6s} -> {'+'.join(named) or top1:40s} "
-                f"{'ok' if ok else 'WRONG'} shrink {shrink if shrink is not None else float('nan'):.3f}"
+                f"{'ok' if ok else 'WRONG'} shrink "
+                f"{shrink if shrink is not None else float('nan'):.3f}"
             )
     print(f"{'case':24s} {'n':>3s} {'top-1':>6s} {'median shrink':>14s}")
     for label, (n, ok, sh) in rows.items():

@@ -5,7 +5,8 @@ its analytic solution for the cylinder), for tests/lab/physics/physics_field_vs_
 
 usage: magpylib_field.py IN.json OUT.json
 IN:  {"cases": [{"radius_m": R, "height_m": h, "br_T": Br, "points": [[x, y, z], ...]}, ...]}
-     (the magnet frame of model/lab/physics/physics_magnet.hpp: axis z, centre at the origin, M along +x)
+     (the magnet frame of model/lab/physics/physics_magnet.hpp: axis z, centre at the origin,
+     M along +x)
 OUT: {"magpylib": VERSION, "cases": [{"B_T": [[Bx, By, Bz], ...]}, ...]}
 Run it with the interpreter of the virtual environment scripts/setup.sh makes (.venv/bin/python).
 """

@@ -13,15 +13,18 @@ usage: registry.py lines [--flow F[,F...]] [--module M] [--names N[,N...]] [--ta
          the line's parameters, "PARAM=value ..." (empty for none)
        registry.py cmake OUT
          writes OUT, the CMake file cmake/AcoreRegistry.cmake includes: ACORE_REG_NAMES, and per
-         line ACORE_REG_MODULE_<name>, ACORE_REG_FLOWS_<name>, ACORE_REG_PARAMS_<name> (PARAM=value),
-         ACORE_REG_TAGS_<name>; per tag ACORE_REG_TAGGED_<tag> (the names carrying it)
+         line ACORE_REG_MODULE_<name>, ACORE_REG_FLOWS_<name>, ACORE_REG_PARAMS_<name>
+         (PARAM=value), ACORE_REG_TAGS_<name>; per tag ACORE_REG_TAGGED_<tag> (the names
+         carrying it)
        registry.py synth [--names N[,N...]] [--flows F[,F...]]
-         the designs scripts/synth.sh builds, one per line: "design top source flows [PARAM=value ...]"
-         (source: the synth/ file defining top, '-' for a module of rtl/files.f; flows: the families
-         and devices of synth/devices.toml it is synthesized for or placed on, comma-separated)
+         the designs scripts/synth.sh builds, one per line:
+         "design top source flows [PARAM=value ...]" (source: the synth/ file defining top, '-' for
+         a module of rtl/files.f; flows: the families and devices of synth/devices.toml it is
+         synthesized for or placed on, comma-separated)
        registry.py synth-tasks [--names N[,N...]] [--flows F[,F...]]
          scripts/synth.sh's runs of those designs, tab-separated, one per line:
-           yosys FAMILY DESIGN REPORT NETLIST TOP SOURCE SYNTH_COMMAND PARAMS   (NETLIST '-': area only)
+           yosys FAMILY DESIGN REPORT NETLIST TOP SOURCE SYNTH_COMMAND PARAMS
+             (NETLIST '-': area only)
            place DEVICE DESIGN LOG SHORT_NAME
          (exit 2 when a device's place-and-route program is not installed)
        registry.py pnr-command DEVICE DESIGN
@@ -36,11 +39,11 @@ Synthesis rules (scripts/synth.sh; the registry's header states them for its rea
   DEVICE (hx8k, up5k, ...)  the module in the device's pin wrapper (its `wrapper`, e.g.
                           <module>_pinwrap, a module of synth/*.v given the line's parameters),
                           synthesized for the device's family and placed and routed on it: design
-                          <name><suffix>, reports <family>_<name><suffix>.txt, nextpnr_<name><suffix>.log.
-                          A module without that wrapper is placed as it is (an error where the device
-                          requires its wrapper): design <name><bare_suffix>. Pins: the device's first
-                          constraint file that places every port of the placed design, unconstrained
-                          otherwise.
+                          <name><suffix>, reports <family>_<name><suffix>.txt,
+                          nextpnr_<name><suffix>.log. A module without that wrapper is placed as it
+                          is (an error where the device requires its wrapper): design
+                          <name><bare_suffix>. Pins: the device's first constraint file that places
+                          every port of the placed design, unconstrained otherwise.
 """
 
 import functools
@@ -64,7 +67,8 @@ BASE_FLOWS = ("sim", "lint", "icarus", "formal")
 TAGS = {
     "demo": "sim",  # built with the anglecore command: `anglecore demo`'s RTL rows, tb/bench
     "fast-sim": "sim",  # Verilated with -O3 (the long regressions run it)
-    "long-cosim": "sim",  # a 10^7-sample co-sim of its own, CTest cosim_long.<name> (configuration Long)
+    # a 10^7-sample co-sim of its own, CTest cosim_long.<name> (configuration Long)
+    "long-cosim": "sim",
     "long-proof": "formal",  # its formal proof runs long: CTest configuration Long, label long
 }
 BENCH_TAG = r"test_[a-z0-9_]+"
@@ -158,7 +162,8 @@ def _load(root):
         name, module, flow_text = f[0], f[1], f[2]
         if not re.fullmatch(r"[a-z][a-z0-9_]*", name):
             raise RegistryError(
-                f"{where}: name '{name}': lower case letters, digits and '_', starting with a letter"
+                f"{where}: name '{name}': lower case letters, digits and '_', "
+                "starting with a letter"
             )
         for s in suffixes:
             if name.endswith(s):
@@ -224,7 +229,8 @@ def select(root, flows=None, module=None, names=None, tag=None):
         for n in names:
             if n not in known:
                 raise RegistryError(
-                    f"unknown configuration '{n}' (rtl/configs.txt names: {', '.join(sorted(known))})"
+                    f"unknown configuration '{n}' (rtl/configs.txt names: "
+                    f"{', '.join(sorted(known))})"
                 )
     if flows:
         t = table(root)
@@ -337,7 +343,8 @@ def rtl_parameters(root, module, params=()):
 
 
 def rtl_constants(root, module, params=()):
-    """Every integer parameter and localparam of the elaborated module (WORDS, LATENCY, CYCLES, ...)."""
+    """Every integer parameter and localparam of the elaborated module
+    (WORDS, LATENCY, CYCLES, ...)."""
     header, local, _ = _elaborate(os.path.abspath(root), module, tuple(params))
     return dict(header, **local)
 
@@ -372,8 +379,9 @@ def module_source(root, module):
 
 
 def with_includes(path, seen=()):
-    """The file's text with each `include "X" replaced by X's text (searched beside the file, then in
-    rtl/: the tops and the pin wrappers declare the datapath parameters with rtl/acore_datapath_params.vh)."""
+    """The file's text with each `include "X" replaced by X's text (searched beside the file, then
+    in rtl/: the tops and the pin wrappers declare the datapath parameters with
+    rtl/acore_datapath_params.vh)."""
     text = open(path).read()
     rtl = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(path))), "rtl")
 
@@ -457,9 +465,9 @@ def synth_designs(root, names=None, flows=None):
         for d in bare:
             if d.wrapper_required:
                 raise RegistryError(
-                    f"{l.where}: flow {d.name}: no module {d.wrapper_module(l.module)} in synth/*.v "
-                    f"(the {d.title} in {d.package} has {d.capacity['user_io']} user pins: the "
-                    "design is placed in that wrapper)"
+                    f"{l.where}: flow {d.name}: no module {d.wrapper_module(l.module)} in "
+                    f"synth/*.v (the {d.title} in {d.package} has {d.capacity['user_io']} user "
+                    "pins: the design is placed in that wrapper)"
                 )
         own = [d.name for d in bare if not d.bare_suffix]
         if area or own:
@@ -620,7 +628,8 @@ def pnr_result(path, dev):
 
 
 def pnr_constrained(path, dev):
-    """True when the log's run had a constraint file, False when not, None when the log does not say."""
+    """True when the log's run had a constraint file, False when not, None when the log does not
+    say."""
     if not dev.family.unconstrained_log or not os.path.exists(path):
         return None
     return re.search(dev.family.unconstrained_log, open(path).read()) is None

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""The tracking observer's figures through the CLI (`anglecore simulate` + `calibrate` + `estimate`):
+"""The tracking observer's figures through the CLI (`anglecore simulate` + `calibrate` +
+`estimate`):
 
   1. residual lag of the compensated angle (estimate --track-lead D: the angle D samples after the
      sample it was estimated from) at 10 and 60 krpm, 1 MS/s, D = 1 and 10 samples, against the
@@ -13,8 +14,8 @@
 
 usage: track_measure.py ANGLECORE [--out DIR] [--plot PNG]
 Writes DIR/track_measure.md (a table per measurement, with the commands) and prints it.
-Runs on both sensors: `ideal` (the observer's own error) and `paper` (the paper scenario: its residual
-systematic error and noise pass into the velocity).
+Runs on both sensors: `ideal` (the observer's own error) and `paper` (the paper scenario: its
+residual systematic error and noise pass into the velocity).
 """
 
 import argparse
@@ -97,7 +98,10 @@ def main():
         md += [
             "## Residual lag of the compensated angle (1 MS/s, bandwidth code 6 = 3.6 kHz)",
             "",
-            "| sensor | speed | D (samples) | lag without compensation | residual mean | residual RMS | residual max |",
+            (
+                "| sensor | speed | D (samples) | lag without compensation | residual mean | "
+                "residual RMS | residual max |"
+            ),
             "|---|---|---|---|---|---|---|",
         ]
         for sc in ("ideal", "paper"):
@@ -162,7 +166,10 @@ def main():
         md += [
             "## Velocity on 3000 rpm with a 2 % speed ripple at 40 Hz (1 MS/s)",
             "",
-            "| sensor | bandwidth | vs reference through the observer: RMS / max / mean | vs the profile's speed: RMS / max |",
+            (
+                "| sensor | bandwidth | vs reference through the observer: RMS / max / mean | vs "
+                "the profile's speed: RMS / max |"
+            ),
             "|---|---|---|---|",
         ]
         plot_data = {}
@@ -223,14 +230,18 @@ def main():
                 rms, mx, _ = stats([v[i] - true[i] for i in range(settle, len(v))])
                 md.append(
                     f"| {sc} | {j['track']['bandwidth_hz']:.0f} Hz (code {j['track']['code']}) | "
-                    f"{ve['rms']:.2f} / {ve['max_abs']:.2f} / {ve['mean']:+.3f} rpm | {rms:.2f} / {mx:.2f} rpm |"
+                    f"{ve['rms']:.2f} / {ve['max_abs']:.2f} / {ve['mean']:+.3f} rpm | "
+                    f"{rms:.2f} / {mx:.2f} rpm |"
                 )
                 plot_data[(sc, bw)] = (v, true, j["track"]["bandwidth_hz"])
         md.append("")
 
         # 3. Velocity noise against a finite difference of the same bandwidth.
         md += [
-            "## Velocity noise at constant speed (3000 rpm, 1 MS/s) vs a finite difference of equal bandwidth",
+            (
+                "## Velocity noise at constant speed (3000 rpm, 1 MS/s) vs a finite "
+                "difference of equal bandwidth"
+            ),
             "",
             "| sensor | code | observer RMS | finite difference (N) RMS | ratio |",
             "|---|---|---|---|---|",
@@ -297,7 +308,8 @@ def main():
                     return math.sqrt(sum((x - m) ** 2 for x in xs) / len(xs))
 
                 md.append(
-                    f"| {sc}-indep | {code} | {sd(ob):.2f} rpm | {sd(fd):.2f} rpm (N = {n}) | {sd(fd) / sd(ob):.2f} |"
+                    f"| {sc}-indep | {code} | {sd(ob):.2f} rpm | {sd(fd):.2f} rpm (N = {n}) | "
+                    f"{sd(fd) / sd(ob):.2f} |"
                 )
         md.append("")
 

@@ -322,10 +322,10 @@ def estimate(
 
     Every engine runs through the command's own dispatch (run_engine): float (the double model on
     the image's dequantized coefficients), fixed (bit-accurate), rtl (the Verilated pipelined top,
-    folded to `fold` clocks a sample), rtl-serial (the serial core). The RTL engines load the run-time
-    modules of a CMake build: from rtl_dir when given, else $ACORE_RTL_DIR, else the build/rtl/
-    folder the set-up named; RtlNotBuilt (its message gives the command) when the module is not
-    there. trace: an FST waveform of the RTL run.
+    folded to `fold` clocks a sample), rtl-serial (the serial core). The RTL engines load the
+    run-time modules of a CMake build: from rtl_dir when given, else $ACORE_RTL_DIR, else the
+    build/rtl/ folder the set-up named; RtlNotBuilt (its message gives the command) when the module
+    is not there. trace: an FST waveform of the RTL run.
 
     fixed with uncorrected=False takes the fast path: the bit-accurate batch straight on the
     recording's arrays (no copy; the GIL is released), the same angles bit for bit."""

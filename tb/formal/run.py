@@ -19,9 +19,9 @@ rtl_constants), never from a second table.
 to find a counterexample: exit 0 when it does (the property can fail), 1 when the bug goes unseen.
 
 Abstraction: the arithmetic (every stage instance of the datapath: pre-filter, scalers, region
-select, correction, CORDIC, Fourier, delay lines, register files) is cut (Yosys `cutpoint`: its outputs
-become free values each clock). The properties are about the valid/ready control and the output
-registers, which are kept, so any behaviour of the cut values is covered.
+select, correction, CORDIC, Fourier, delay lines, register files) is cut (Yosys `cutpoint`: its
+outputs become free values each clock). The properties are about the valid/ready control and the
+output registers, which are kept, so any behaviour of the cut values is covered.
 Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
 """
 
@@ -190,7 +190,8 @@ def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, 
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
         s.append(f"cutpoint -undef @cut_{m}" if False else f"cutpoint @cut_{m}")
-    # (opt_clean first: it merges the aliases of a tap wire, which connect -set would otherwise cut.)
+    # (opt_clean first: it merges the aliases of a tap wire, which connect -set
+    # would otherwise cut.)
     s += ["flatten", "opt_clean"]
     for w, src in taps:
         s.append(f"connect -set {w} {src}")
@@ -247,7 +248,10 @@ def main(argv):
         new, n = re.subn(pat, rep, text)
         if n != 1:
             print(
-                f"run.py: mutant {a.mutant}: pattern found {n} times in rtl/{fname} (expected once)",
+                (
+                    f"run.py: mutant {a.mutant}: pattern found {n} times in "
+                    f"rtl/{fname} (expected once)"
+                ),
                 file=sys.stderr,
             )
             return 2

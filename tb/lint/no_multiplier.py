@@ -105,7 +105,8 @@ def main():
         ctl = os.path.join(tmp, "mul_control.v")
         with open(ctl, "w") as f:
             f.write(
-                "module mul_control(input wire [7:0] a, input wire [7:0] b, output wire [15:0] p);\n"
+                "module mul_control(input wire [7:0] a, input wire [7:0] b, "
+                "output wire [15:0] p);\n"
                 "  assign p = a * b;\nendmodule\n"
             )
         ok, _ = check([ctl], "mul_control", [], tmp)

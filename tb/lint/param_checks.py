@@ -3,16 +3,16 @@
 """Parameter rules of the RTL, checked against every tool and against the model.
 
   param_checks.py illegal [--root DIR] [--jobs N]
-      Every row of tb/lint/illegal_params.txt (an illegal configuration and the rule it breaks) must stop
-      Verilator (--lint-only -Wall), Icarus (iverilog elaboration) and Yosys (read_verilog -sv;
+      Every row of tb/lint/illegal_params.txt (an illegal configuration and the rule it breaks) must
+      stop Verilator (--lint-only -Wall), Icarus (iverilog elaboration) and Yosys (read_verilog -sv;
       hierarchy) with that rule's message (rtl/acore_check.v): Verilator names the rule's instance
       and the value, Icarus the instance and the value, Yosys the rule's text. Each top's defaults
       must pass all three (the control), and so must the APB shell's.
   param_checks.py agree --validator BIN [--root DIR] [--jobs N] [--sets N] [--seed S]
       N random parameter sets around the limits (half for each top), each judged by
-      `verilator --lint-only -Wall` and by the model's DatapathConfig::validate() for that top (BIN is
-      build/tb/acore_validate_params): 0 accepted by the RTL but rejected by the model, 0 the other
-      way, and both verdicts must occur (at least a quarter each).
+      `verilator --lint-only -Wall` and by the model's DatapathConfig::validate() for that top (BIN
+      is build/tb/acore_validate_params): 0 accepted by the RTL but rejected by the model, 0 the
+      other way, and both verdicts must occur (at least a quarter each).
 
 Exit 0 when every check passes, 1 when one fails, 2 on bad usage or a malformed table row.
 """
@@ -155,14 +155,16 @@ def check_illegal(root, row, msgs):
     )
     if rc == 0 or not found:
         fails.append(
-            f"{desc}: verilator (exit {rc}) did not stop with '{msg} (value {value})':\n{out[:1500]}"
+            f"{desc}: verilator (exit {rc}) did not stop with '{msg} (value {value})':\n"
+            f"{out[:1500]}"
         )
     rc, out = icarus(root, top, params)
     if rc == 0 or not re.search(
         r"`[\w.\[\]]*\b%s\.failed\.value\[%d\]'" % (re.escape(rule), value), out
     ):
         fails.append(
-            f"{desc}: iverilog (exit {rc}) did not stop in {rule}.failed.value[{value}]:\n{out[:1500]}"
+            f"{desc}: iverilog (exit {rc}) did not stop in {rule}.failed.value[{value}]:\n"
+            f"{out[:1500]}"
         )
     rc, out = yosys(root, top, params)
     errors = re.findall(r"ERROR: (.*)", out)
@@ -242,7 +244,8 @@ def rtl_defaults(root):
     missing = [p for p in moved if p not in top]
     if missing:
         raise Usage(
-            f"acore_top has no parameter {', '.join(missing)} (tb/lint/param_checks.py candidate_table)"
+            f"acore_top has no parameter {', '.join(missing)} "
+            "(tb/lint/param_checks.py candidate_table)"
         )
     defaults = {p: top[p] for p in moved}
     names = {}
@@ -297,14 +300,15 @@ def agree(args):
         tag = "ok  " if model_ok == rtl_ok else "FAIL"
         what = "legal" if rtl_ok else "rejected"
         print(
-            f"{tag} {top} {' '.join(f'{k}={v}' for k, v in params) or '(defaults)'}: RTL {what}, model {m}"
+            f"{tag} {top} {' '.join(f'{k}={v}' for k, v in params) or '(defaults)'}: "
+            f"RTL {what}, model {m}"
         )
         if model_ok != rtl_ok:
             fails += 1
             print("     " + "\n     ".join(l for l in out.splitlines() if l.startswith("%"))[:1500])
     print(
-        f"{len(sets)} random parameter sets: {legal} legal, {len(sets) - legal} illegal by the model; "
-        f"{fails} disagreements"
+        f"{len(sets)} random parameter sets: {legal} legal, {len(sets) - legal} illegal by the "
+        f"model; {fails} disagreements"
     )
     if fails:
         return 1
@@ -330,9 +334,10 @@ def illegal(args):
     for f in fails:
         print(f)
     print(
-        f"{len(rows)} illegal configurations, each rejected by verilator, iverilog and yosys with its rule: "
-        f"{len(rows) - sum(1 for r in results if r)} passed, {sum(1 for r in results if r)} failed; "
-        f"defaults of {', '.join(TOPS + SHELLS)} accepted: {'yes' if not any(controls) else 'NO'}"
+        f"{len(rows)} illegal configurations, each rejected by verilator, iverilog and yosys with "
+        f"its rule: {len(rows) - sum(1 for r in results if r)} passed, "
+        f"{sum(1 for r in results if r)} failed; defaults of {', '.join(TOPS + SHELLS)} accepted: "
+        f"{'yes' if not any(controls) else 'NO'}"
     )
     return 1 if fails else 0
 

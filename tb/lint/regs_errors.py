@@ -199,7 +199,8 @@ def main():
             and all(os.path.getmtime(os.path.join(work, rel)) == t for rel, t in stamp.items())
         )
         print(
-            f"{'ok  ' if good else 'FAIL'} {desc}:{line} {repl or '(deleted)'!r}: exit {rc}: {err.strip()}"
+            f"{'ok  ' if good else 'FAIL'} {desc}:{line} {repl or '(deleted)'!r}: "
+            f"exit {rc}: {err.strip()}"
         )
         fails += [] if good else [f"{desc}:{line}"]
         with open(path, "w") as f:

@@ -16,7 +16,8 @@ ROOT = os.path.abspath(
     sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
 )
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
-# Include roots of the build (CMake target_include_directories), searched after the file's own folder.
+# Include roots of the build (CMake target_include_directories), searched after the file's own
+# folder.
 ROOTS = ["model/ip", "model/lab", "model", "tests", "tb", "model/cli"]
 # Headers generated into the build tree (Verilated classes, generated tables): not checked.
 GENERATED = re.compile(r"^V[A-Za-z0-9_]*\.h$|_generated\.hpp$")
@@ -116,7 +117,8 @@ def main():
         print(e)
     n = sum(len(v) for v in graph.values())
     print(
-        f"check_layers: {len(graph)} files, {n} includes, {len(order)} layers, {len(errors)} problems"
+        f"check_layers: {len(graph)} files, {n} includes, {len(order)} layers, "
+        f"{len(errors)} problems"
     )
     return 1 if errors else 0
 

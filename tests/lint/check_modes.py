@@ -67,7 +67,8 @@ def check_generated(modes, errors):
             )
         if not re.search(rf"\bDEGREE_must_be_\d+_to_\d+_for_{re.escape(name)} \(\);", checks):
             errors.append(
-                f"rtl/acore_mode_checks.vh: no DEGREE rule for mode {name} (run scripts/gen_tables.sh)"
+                f"rtl/acore_mode_checks.vh: no DEGREE rule for mode {name} (run "
+                "scripts/gen_tables.sh)"
             )
         if f"| `{name}` ({mid}) |" not in doc:
             errors.append(
@@ -103,7 +104,8 @@ def check_docs(modes, errors):
         )
 
 
-# Verilog: CORRECTION / f_correction against a number, either side; a literal mode to a mode function.
+# Verilog: CORRECTION / f_correction against a number, either side; a literal mode to a mode
+# function.
 V_COMPARE = re.compile(
     r"\b(?:CORRECTION|f_correction)\s*(?:==|!=|<=|>=|<|>)\s*-?\d"
     r"|-?\d\s*(?:==|!=|<=|>=|<|>)\s*(?:CORRECTION|f_correction)\b"

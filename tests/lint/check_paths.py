@@ -6,9 +6,9 @@ Reads every file git tracks (text only) and every token that starts with a top-l
 repository (rtl/, model/, tb/, tests/, synth/, scripts/, python/, docs/, cmake/, .ci/) or names a
 top-level file (README.md, CMakeLists.txt, pyproject.toml, LICENSE): the token must name a file or
 folder of the checkout. Placeholders are patterns: `<name>`, `NAME` in upper case after a separator
-and `*` match any part of one name, `{a,b}` each alternative, `.{hpp,cpp}` each; a pattern must match
-at least one path. Paths under build/, out/ or .venv/ are not the repository's and are not read.
-Fails (exit 1) listing file:line: token for each path that names nothing.
+and `*` match any part of one name, `{a,b}` each alternative, `.{hpp,cpp}` each; a pattern must
+match at least one path. Paths under build/, out/ or .venv/ are not the repository's and are not
+read. Fails (exit 1) listing file:line: token for each path that names nothing.
 usage: check_paths.py [ROOT]
 """
 

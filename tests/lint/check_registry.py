@@ -5,16 +5,16 @@
   check_registry.py ROOT
 
 Feeds scripts/registry.py registries with one malformed line each (a negative-value parameter, which
-is legal, a duplicate name, an unknown flow, an unknown tag, a tag whose flow is missing, tags out of
-place, a bad parameter, a name ending in a report suffix, ...) in a scratch copy of the repository's
-registry files: each malformed one must stop `registry.py lines` and `registry.py cmake` with exit 2
-and the message naming rtl/configs.txt, the line and the field; the legal ones must come out as
-written. Then a CMake configuration including cmake/AcoreRegistry.cmake must fail on a malformed line
-with that message, and pass on a legal one with the values registry.py gave. Malformed devices tables
-stop the reader with synth/devices.toml's line and field. Finally the table's capacities against the
-checked-in place-and-route logs (the tools' own device databases): every log of a device reports its
-logic cells, block RAMs and hard multipliers out of the capacity the table states. Exit 1 on any
-failure, listing each.
+is legal, a duplicate name, an unknown flow, an unknown tag, a tag whose flow is missing, tags out
+of place, a bad parameter, a name ending in a report suffix, ...) in a scratch copy of the
+repository's registry files: each malformed one must stop `registry.py lines` and `registry.py
+cmake` with exit 2 and the message naming rtl/configs.txt, the line and the field; the legal ones
+must come out as written. Then a CMake configuration including cmake/AcoreRegistry.cmake must fail
+on a malformed line with that message, and pass on a legal one with the values registry.py gave.
+Malformed devices tables stop the reader with synth/devices.toml's line and field. Finally the
+table's capacities against the checked-in place-and-route logs (the tools' own device databases):
+every log of a device reports its logic cells, block RAMs and hard multipliers out of the capacity
+the table states. Exit 1 on any failure, listing each.
 """
 
 import glob
@@ -151,7 +151,8 @@ def expect_error(what, p, line, pattern, path="rtl/configs.txt"):
     where = f"{path}:{line}: " if line else ""
     if p.returncode != 2 or not re.search(re.escape(where) + pattern, p.stderr):
         fails.append(
-            f"{what}: expected exit 2 and '{where}{pattern}', got exit {p.returncode}: {p.stderr.strip()!r}"
+            f"{what}: expected exit 2 and '{where}{pattern}', got exit {p.returncode}: "
+            f"{p.stderr.strip()!r}"
         )
 
 
@@ -186,8 +187,8 @@ def check_lines(tmp):
 
 
 def check_cmake(tmp):
-    """A configuration including cmake/AcoreRegistry.cmake fails on a malformed line with the reader's
-    message and passes on a legal one with its values."""
+    """A configuration including cmake/AcoreRegistry.cmake fails on a malformed line with the
+    reader's message and passes on a legal one with its values."""
     cmake = shutil.which("cmake")
     if not cmake:
         fails.append("cmake not found")
@@ -198,8 +199,10 @@ def check_cmake(tmp):
     ):
         scratch(tmp, HEAD + body)
         open(os.path.join(tmp, "CMakeLists.txt"), "w").write(
-            "cmake_minimum_required(VERSION 3.22)\nproject(registry_check NONE)\ninclude(cmake/AcoreRegistry.cmake)\n"
-            'message(STATUS "params of x: ${ACORE_REG_PARAMS_x}; tagged demo: ${ACORE_REG_TAGGED_demo}")\n'
+            "cmake_minimum_required(VERSION 3.22)\nproject(registry_check NONE)\n"
+            "include(cmake/AcoreRegistry.cmake)\n"
+            'message(STATUS "params of x: ${ACORE_REG_PARAMS_x}; tagged demo: '
+            '${ACORE_REG_TAGGED_demo}")\n'
         )
         p = subprocess.run(
             [cmake, "-S", tmp, "-B", os.path.join(tmp, "build")], capture_output=True, text=True
@@ -207,8 +210,8 @@ def check_cmake(tmp):
         if bad:
             if p.returncode == 0 or not re.search(r"rtl/configs.txt:2: " + bad[1], p.stderr):
                 fails.append(
-                    f"cmake on {body.strip()!r}: expected a failed configuration naming rtl/configs.txt:2, "
-                    f"got exit {p.returncode}:\n{p.stderr[-1500:]}"
+                    f"cmake on {body.strip()!r}: expected a failed configuration naming "
+                    f"rtl/configs.txt:2, got exit {p.returncode}:\n{p.stderr[-1500:]}"
                 )
         elif p.returncode != 0 or "params of x: R_SHIFT=-1; tagged demo: default" not in p.stdout:
             fails.append(
@@ -227,8 +230,8 @@ def check_devices(tmp):
         p = run_registry(tmp, "lines")
         if p.returncode != 2 or not re.search(pattern, p.stderr):
             fails.append(
-                f"devices table with {new!r}: expected exit 2 and '{pattern}', got exit {p.returncode}: "
-                f"{p.stderr.strip()!r}"
+                f"devices table with {new!r}: expected exit 2 and '{pattern}', got exit "
+                f"{p.returncode}: {p.stderr.strip()!r}"
             )
 
 
@@ -254,8 +257,8 @@ def check_capacities():
                 want = {dev.capacity[key]} if dev.capacity[key] or totals else set()
                 if totals != want:
                     fails.append(
-                        f"{os.path.relpath(log, ROOT)}: {line} out of {sorted(totals)}, synth/devices.toml "
-                        f"{dev.name} capacity {key} = {dev.capacity[key]}"
+                        f"{os.path.relpath(log, ROOT)}: {line} out of {sorted(totals)}, "
+                        f"synth/devices.toml {dev.name} capacity {key} = {dev.capacity[key]}"
                     )
     if seen < 10:
         fails.append(f"only {seen} place-and-route logs found in synth/reports")
@@ -282,8 +285,8 @@ def main():
         print("FAIL", f)
     n = len(CASES) + 1 + 2 + len(DEVICE_CASES)
     print(
-        f"{n} registry and devices-table cases, {logs} place-and-route logs against the capacities: "
-        f"{len(fails)} failure(s)"
+        f"{n} registry and devices-table cases, {logs} place-and-route logs against the "
+        f"capacities: {len(fails)} failure(s)"
     )
     return 1 if fails else 0
 
