@@ -54,3 +54,13 @@ function(acore_strip_runtime target)
   set_property(TARGET ${target} PROPERTY SOURCES ${srcs})
   target_link_libraries(${target} PRIVATE acore_vlt_runtime)
 endfunction()
+# Verilator's run-once code of a target (constructors, initial values, trace set-up: the sources
+# verilate() gives no OPT_FAST flags) compiled as one translation unit at LEVEL, as Verilator's own
+# __ALL.cpp does, instead of one compiler run per file that parses the same headers again; the
+# per-sample code keeps its OPT_FAST level, file by file (sources with flags of their own stay out of
+# a unity build), and HARNESS, the target's own source, Release's -O3.
+function(acore_unity_slow target level harness)
+  target_compile_options(${target} PRIVATE ${level})
+  set_source_files_properties(${harness} TARGET_DIRECTORY ${target} PROPERTIES COMPILE_OPTIONS -O3)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+endfunction()
