@@ -63,6 +63,12 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         p = lambda n: os.path.join(tmp, n)
         regs = {}
+
+        def estimate(sc, rec, out, *opts):
+            """anglecore estimate of a recording with the sensor's image, the angles to OUT."""
+            cmd = [a.anglecore, "estimate", "--regs", regs[sc], "--in", rec, "--out", out, *opts]
+            return run(cmd, log)
+
         for sc in ("ideal", "paper"):
             run(
                 [
@@ -130,21 +136,7 @@ def main():
                 )
                 for d in (1, 10):
                     ang = p(f"{sc}_{rpm}_{d}.ang.csv")
-                    run(
-                        [
-                            a.anglecore,
-                            "estimate",
-                            "--regs",
-                            regs[sc],
-                            "--in",
-                            rec,
-                            "--out",
-                            ang,
-                            "--track-lead",
-                            str(d),
-                        ],
-                        log,
-                    )
+                    estimate(sc, rec, ang, "--track-lead", str(d))
                     rows = read(ang)
                     settle = 20000
                     res = [
@@ -202,23 +194,7 @@ def main():
             )
             for bw in (200, 1000):
                 ang, js = p(f"{sc}_rip_{bw}.csv"), p(f"{sc}_rip_{bw}.json")
-                out = run(
-                    [
-                        a.anglecore,
-                        "estimate",
-                        "--regs",
-                        regs[sc],
-                        "--in",
-                        rec,
-                        "--out",
-                        ang,
-                        "--track-bandwidth",
-                        str(bw),
-                        "--json",
-                        js,
-                    ],
-                    log,
-                )
+                out = estimate(sc, rec, ang, "--track-bandwidth", str(bw), "--json", js)
                 j = json.load(open(js))
                 ve = j["velocity_error_rpm"]
                 rows = read(ang)
@@ -271,21 +247,7 @@ def main():
             )
             for code_bw in (900, 3600):
                 ang = p(f"{sc}_const_{code_bw}.csv")
-                out = run(
-                    [
-                        a.anglecore,
-                        "estimate",
-                        "--regs",
-                        regs[sc],
-                        "--in",
-                        rec,
-                        "--out",
-                        ang,
-                        "--track-bandwidth",
-                        str(code_bw),
-                    ],
-                    log,
-                )
+                out = estimate(sc, rec, ang, "--track-bandwidth", str(code_bw))
                 code = int(out.split("code ")[1].split()[0])
                 wn = 2**-code / math.sqrt(2)
                 n = 1
