@@ -340,16 +340,14 @@ function integer acore_track_latency(input integer f_loop_clocks);
 endfunction
 // The time-shared observer (SERIAL = 1: one adder, the shifts one bit a clock): clocks from a sample
 // taken to its result, which are also its clocks per sample (it takes the next sample in the clock
-// its result appears). Its fixed schedule (rtl/acore_track.v): 6 clocks to the error and the
-// prediction; the shift phase, to the slowest code's integral shift (2 K_MAX + 1 shifts) and one
-// clock more; one clearing the accumulator; v * D over the D_W = LEAD_W + 10 bits of D with the
-// compensated angle added in two more; the rounding in two; at least until the loss-of-tracking
-// comparison has seen e's P_W - 1 bits below its sign; and the output register.
+// its result appears). Its fixed schedule (rtl/acore_track.v): 4 clocks to the prediction and the
+// error; the loop, P_W - 1 shifts of the error (its bits leave one a clock for the loss-of-tracking
+// comparison) and two pauses for the updates; one clearing the accumulator; v * D over the
+// D_W = LEAD_W + 10 bits of D with the compensated angle added in two more steps; three for the
+// rounding; the output register.
 function integer acore_track_serial_cycles(input integer f_angle_w, input integer f_frac_w,
                                            input integer f_lead_w);
-  acore_track_serial_cycles = 1 + (
-      (6 + (2 * acore_track_k_max(f_frac_w) + 2) + 1 + (f_lead_w + 10 + 2) + 2 > 6 + f_angle_w + f_frac_w) ?
-      6 + (2 * acore_track_k_max(f_frac_w) + 2) + 1 + (f_lead_w + 10 + 2) + 2 : 6 + f_angle_w + f_frac_w);
+  acore_track_serial_cycles = 4 + (f_angle_w + f_frac_w + 1) + 1 + (f_lead_w + 10 + 2) + 3 + 1;
 endfunction
 // The latency the observer compensates (COMP_LATENCY), in whole samples: a top's LATENCY in clocks
 // over its clocks per sample at full rate, rounded down (the rest of a sample, and the observer's

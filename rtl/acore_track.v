@@ -276,122 +276,104 @@ module acore_track #(
 
     end else begin : g_ser
     // ---- time-shared: one adder, a fixed schedule of acore_track_serial_cycles() clocks ----
-    // The same arithmetic as above on one TW-bit adder, sum = t + B, B one of phi (x), v, e,
-    // ~theta, half or 0; its result goes to the accumulator t or to x, v, e. The turn count is a
-    // counter of its own beside it: t's two bits above phi (zero before each sum that moves phi)
-    // hold the carry, -1, 0 or +1 turn. Per sample, the clock count c (1 in the clock after the
-    // sample is taken):
-    //   1..3   t = 0, t = phi, t = phi + v: the prediction, written to phi and the turn count
-    //   4      t + ~theta = ~(theta - pred): e (low P_W bits) into the shift register e_q
-    //   5..6   t = 0, t = pred
-    //   7 + s  e_q holds e >>> s (one shift a clock); at s = k: phi = pred + e_q (the first sample:
-    //          phi = theta at s = 0, the turn count stays 0); then t = 0, t = v, and at s = 2k + 1:
-    //          v = v + e_q (the first sample: v stays 0). The bits of e leave e_q at e_q[0] one a
-    //          clock: loss of tracking is a bit-serial comparison of them with the threshold.
-    //   H0..HL v * D + (phi + half) * 2^LEAD_F modulo 2^M_W by Horner over D's bits, most
-    //          significant first: t = (t + d_j v) * 2, with t + phi and t + half inserted where
-    //          LEAD_F doublings remain; bits LEAD_F + FRAC_W .. M_W-1 are the compensated angle
-    //   QL-1..QL  t = phi + half: the rounded angle and turn count; every output register written
-    // The shifts of e and the doublings of t are one bit a clock (no barrel shifter, no
-    // multiplier); registers with an enable and a synchronous reset cost no logic on iCE40. The
-    // schedule's controls are decoded a clock ahead and registered. A sample is taken when the
-    // schedule is idle and the output register free (or being read).
+    // The same arithmetic as above on one TW-bit adder, sum = t + B with B one of phi (x_q), v,
+    // ~theta, half or 0, and one register t that holds the sums and shifts right one bit a clock.
+    // The turn count is a counter beside it: the two bits of sum above phi (zero in t before each
+    // sum that moves phi) are its carry, -1, 0 or +1 turn. Per sample, after the clock taking it:
+    //   S1..S3  t = 0, t = phi, t = phi + v: the prediction, written to phi and the turn count
+    //   S4      t = ~(t + ~theta) = theta - pred: the error e
+    //   loop    t shifts right (arithmetic) one bit a clock, P_W - 1 shifts: after s shifts it holds
+    //           e >>> s. At s = k a pause: phi = t + phi (the first sample: phi = theta at s = 0,
+    //           the turn count stays 0); at s = 2k + 1 a pause: v = t + v (not the first sample).
+    //           The bits of e leave t at t[0], one a shift: loss of tracking is their bit-serial
+    //           comparison with the threshold, least significant first.
+    //   product t = 0, then v * D + (phi + half) * 2^LEAD_F least significant bit of D first:
+    //           t = (t + d_j v) >>> 1 (the bit leaving t enters tf_q), with t + phi and t + half
+    //           inserted after LEAD_F steps; {t, tf_q} is then the whole sum, whose bits
+    //           LEAD_F + FRAC_W .. M_W - 1 are the compensated angle
+    //   R1..R3  t = 0, t = phi, t = phi + half: the rounded angle and turn count; every output
+    //           register written
+    // No barrel shifter, no multiplier, two operands on the adder's B input (phi, v) beside two
+    // constants; registers with an enable and a synchronous reset cost no logic on iCE40. A
+    // sample is taken when the schedule is idle and the output register free (or being read).
     localparam integer TW = (M_W > P_W + 2) ? M_W : P_W + 2;
-    localparam integer H0 = 7 + 2 * K_MAX + 2;        // t cleared for v * D
-    localparam integer HL = H0 + D_W + 2;             // v * D's last step: the compensated angle
-    localparam integer QL = LATENCY - 1;              // the rounding's last: the outputs
-    localparam integer C_W = $clog2(QL + 2);
-    localparam integer HI_X = D_W - 1 - LEAD_F;       // the Horner step adding phi (half next)
+    localparam integer S_W = $clog2(P_W + D_W + 2);
+    localparam integer LOOP_END = P_W - 2;            // the last shift of the loop phase
+    localparam integer PROD_END = D_W + 1;            // the product's last step
+    localparam [S_W-1:0] S_LOOP_END = LOOP_END[S_W-1:0], S_PEND = PROD_END[S_W-1:0];
+    localparam [S_W-1:0] S_F = FRAC_W[S_W-1:0];       // e's first bit above the threshold's LSB
+    localparam [S_W-1:0] S_LF = LEAD_F[S_W-1:0], S_LH = S_LF + 1'b1;
+    // D's bits in the order the product takes them, two zeros where phi and half are added.
+    localparam integer LO_M = (1 << LEAD_F) - 1;
+    localparam integer HI_M = ((1 << (D_W + 2)) - 1) & ~((1 << (LEAD_F + 2)) - 1);
+    wire [D_W+1:0] w = ({2'b00, d} & LO_M[D_W+1:0]) | ({d, 2'b00} & HI_M[D_W+1:0]);
+    wire [(1 << S_W)-1:0] w_pad = {{((1 << S_W) - D_W - 2){1'b0}}, w};
 
     reg             busy_q;
-    reg [C_W-1:0]   c_q;
+    reg             p1, p2, p3, p4, pl, pc, ph, r1, r2, r3;  // the schedule's phases (one hot)
+    reg [S_W-1:0]   s_q;       // shifts in the loop; steps in the product
+    reg             xd_q, vd_q;  // the loop's phi and v updates done
     reg [3:0]       k_q;       // the code, latched with the sample
     reg             started_q;
     reg             g_q;       // LOT: the comparison so far
     reg [ANGLE_W-1:0] th_q;
     reg [TW-1:0]    t_q;
+    reg [D_W-1:0]   tf_q;      // the product's bits below t
     reg [P_W-1:0]   x_q;       // phi
     reg [TURN_W-1:0] turns_q;
     reg [P_W-1:0]   v_q;       // velocity, signed
-    reg [P_W-1:0]   e_q;       // the error, shifted right one bit a clock from c = 7
     reg [ANGLE_W-1:0] comp_q;  // the compensated angle until the outputs are written
 
     assign in_ready_o = !rst_i && !busy_q && (!out_valid_o || out_ready_i);
     wire take = in_valid_i && in_ready_o;
 
-    // ---- the schedule: the controls of count n (the next clock's c) ----
-    wire [C_W-1:0] n = take ? {{(C_W - 1){1'b0}}, 1'b1} : c_q + 1'b1;
-    wire n_busy = take || (busy_q && c_q != QL[C_W-1:0]);
-    wire [3:0] kx = started_q ? k_q : 4'd0;  // the first sample: e unshifted
-    wire [C_W-1:0] n_x = 7 + {{(C_W - 4){1'b0}}, kx};           // phi = pred + (e >>> k)
-    wire [C_W-1:0] n_v = 8 + {{(C_W - 5){1'b0}}, k_q, 1'b0};    // v = v + (e >>> (2k + 1))
-    wire [C_W-1:0] hi = n - (H0[C_W-1:0] + 1'b1);                // the Horner step
-    wire n_horner = n > H0[C_W-1:0] && n <= HL[C_W-1:0];
-    wire n_ins_x = n_horner && hi == HI_X[C_W-1:0];
-    wire n_ins_h = n_horner && hi == HI_X[C_W-1:0] + 1'b1;
-    // The bit of D a Horner step adds: D_W - 1 - step before the insertion, D_W + 1 - step after.
-    wire [C_W-1:0] j = (hi < HI_X[C_W-1:0]) ? D_W[C_W-1:0] - 1'b1 - hi : D_W[C_W-1:0] + 1'b1 - hi;
-    wire n_dj = n_horner && !n_ins_x && !n_ins_h && d[j[$clog2(D_W)-1:0]];
-    wire n_dbl = n_horner && !n_ins_x && !n_ins_h && j != 0;
-    localparam [C_W-1:0] N1 = 1, N2 = 2, N3 = 3, N4 = 4, N5 = 5, N6 = 6;
-    localparam integer LOT_END = P_W - 2;  // e's bits 0 .. P_W-2 are compared (P_W-1 is s)
-    localparam [C_W-1:0] N7 = 7, L_F = FRAC_W[C_W-1:0], L_E = LOT_END[C_W-1:0];
-    wire [C_W-1:0] lot_i = n - N7;  // the bit of e at e_q[0] in clock n
-    reg op_x, op_v, op_e, op_t, op_h, t_clr, dbl, wr_p, wr_x, wr_v, ld_e, sh_e, g_init, g_or, g_cmp;
-    reg thr_b, wr_c, wr_o;
-    always @(posedge clk_i) begin
-      if (rst_i) begin
-        {op_x, op_v, op_e, op_t, op_h, t_clr, dbl, wr_p, wr_x, wr_v, ld_e, sh_e} <= 12'd0;
-        {g_init, g_or, g_cmp, thr_b, wr_c, wr_o} <= 6'd0;
-      end else begin
-        op_x <= n_busy && (n == N2 || n == N6 || n == QL[C_W-1:0] - 1'b1 || n_ins_x);
-        op_v <= n_busy && (n == N3 || n == n_x + N2 || n_dj);
-        op_e <= n_busy && (n == n_x || (started_q && n == n_v));
-        op_t <= n_busy && n == N4;
-        op_h <= n_busy && (n == QL[C_W-1:0] || n_ins_h);
-        t_clr <= n_busy && (n == N1 || n == N5 || n == n_x + 1'b1 || n == H0[C_W-1:0] ||
-                            n == HL[C_W-1:0]);
-        dbl <= n_busy && n_dbl;
-        wr_p <= n_busy && n == N3;
-        wr_x <= n_busy && n == n_x;
-        wr_v <= n_busy && started_q && n == n_v;
-        ld_e <= n_busy && n == N4;
-        sh_e <= n_busy && n > N6;
-        g_init <= n_busy && n == N5;
-        g_or <= n_busy && n > N6 && lot_i < L_F;
-        g_cmp <= n_busy && n > N6 && lot_i >= L_F && lot_i <= L_E;
-        thr_b <= lot_thr_i[lot_i[$clog2(ANGLE_W)-1:0] - FRAC_W[$clog2(ANGLE_W)-1:0]];
-        wr_c <= n_busy && n == HL[C_W-1:0];
-        wr_o <= n_busy && n == QL[C_W-1:0];
-      end
-    end
+    // ---- the phases' operations ----
+    wire [S_W-1:0] kx = started_q ? {{(S_W - 4){1'b0}}, k_q} : {S_W{1'b0}};
+    wire at_x = pl && !xd_q && s_q == kx;                                  // phi = pred + e >>> k
+    wire at_v = pl && xd_q && !vd_q && s_q == {{(S_W - 5){1'b0}}, k_q, 1'b1};  // v += e >>> 2k+1
+    wire l_sh = pl && !at_x && !at_v;
+    wire ins_x = ph && s_q == S_LF;
+    wire ins_h = ph && s_q == S_LH;
+    wire p_sh = ph && !ins_x && !ins_h;
+    wire op_x = p2 || at_x || ins_x || r2;
+    wire op_v = p3 || at_v || (p_sh && w_pad[s_q]);
+    wire op_t = p4;
+    wire op_h = ins_h || r3;
 
     // ---- the adder: t + B ----
-    wire sx = (op_v & v_q[P_W-1]) | (op_e & e_q[P_W-1]);  // B's sign above phi
+    wire sx = op_v & v_q[P_W-1];  // B's sign above phi
     wire [TW-1:0] b = {{(TW - P_W){sx}},
-                       ({P_W{op_x}} & x_q) | ({P_W{op_v}} & v_q) | ({P_W{op_e}} & e_q) |
+                       ({P_W{op_x}} & x_q) | ({P_W{op_v}} & v_q) |
                        ({P_W{op_t}} & {~th_q, {FRAC_W{1'b1}}}) | ({P_W{op_h}} & half)};
     wire [TW-1:0] sum = t_q + b;
     // The turn count moved by the carry above phi (two bits: -1, 0 or +1).
     wire [1:0] dlt = sum[P_W+1:P_W];
     wire [TURN_W-1:0] turns_sum = turns_q + {{(TURN_W - 1){dlt[1]}}, dlt[0]};
+    // sum shifted right: in the loop e's sign (bit P_W-1) fills the bits above it.
+    wire [TW-1:0] sum_sh = {pl ? {(TW - P_W + 1){sum[P_W-1]}} : {sum[TW-1], sum[TW-1:P_W]},
+                            sum[P_W-1:1]};
 
     // Loss of tracking, e > thr * 2^FRAC_W or e < -thr * 2^FRAC_W, bit-serially from the least
-    // significant bit of e: with s its sign and u = e (s = 0) or ~e = -e - 1 (s = 1), it is
-    // {u's bits FRAC_W .. P_W-2, s | e's low bits} > {thr, 0}: g starts as s, ORs e's low FRAC_W
-    // bits, then takes each higher bit's comparison (a bit that differs decides over the lower).
-    wire e_s = e_q[P_W-1];
-    wire u_b = e_q[0] ^ e_s;
-    always @(posedge clk_i) begin
-      if (g_init) g_q <= e_s;
-      else if (g_or) g_q <= g_q | e_q[0];
-      else if (g_cmp) g_q <= (u_b & ~thr_b) | (~(u_b ^ thr_b) & g_q);
-    end
+    // significant bit of e (t[0] at shift s is e's bit s): with sg its sign and u = e (sg = 0) or
+    // ~e = -e - 1 (sg = 1), it is {u's bits FRAC_W .. P_W-2, sg | e's low bits} > {thr, 0}: g
+    // starts as sg, ORs e's low FRAC_W bits, then takes each higher bit's comparison (a bit that
+    // differs decides over the lower ones).
+    wire sg = t_q[P_W-1];
+    wire u_b = t_q[0] ^ sg;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [S_W-1:0] thr_i = s_q - S_F;  // its low bits index the threshold
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire thr_b = lot_thr_i[thr_i[$clog2(ANGLE_W)-1:0]];
+    always @(posedge clk_i)
+      if (l_sh) begin
+        if (s_q < S_F) g_q <= ((s_q == 0) ? sg : g_q) | t_q[0];
+        else g_q <= (u_b & ~thr_b) | (~(u_b ^ thr_b) & g_q);
+      end
 
     always @(posedge clk_i) begin
       if (rst_i) begin
         busy_q <= 1'b0;
-        c_q <= {C_W{1'b0}};
+        {p1, p2, p3, p4, pl, pc, ph, r1, r2, r3} <= 10'd0;
         started_q <= 1'b0;
         x_q <= {P_W{1'b0}};
         turns_q <= {TURN_W{1'b0}};
@@ -404,17 +386,26 @@ module acore_track #(
         out_lot_o <= 1'b0;
       end else begin
         if (out_valid_o && out_ready_i) out_valid_o <= 1'b0;
-        busy_q <= n_busy;
-        if (n_busy) c_q <= n;
+        if (take) busy_q <= 1'b1;
+        if (r3) busy_q <= 1'b0;
+        p1 <= take;
+        p2 <= p1;
+        p3 <= p2;
+        p4 <= p3;
+        pl <= p4 || (pl && !(l_sh && s_q == S_LOOP_END));
+        pc <= l_sh && s_q == S_LOOP_END;
+        ph <= pc || (ph && s_q != S_PEND);
+        r1 <= ph && s_q == S_PEND;
+        r2 <= r1;
+        r3 <= r2;
         if (take) begin
           k_q <= k;
           th_q <= in_angle_i;
         end
-        if (wr_p || wr_x) x_q <= sum[P_W-1:0];
-        if (wr_p || (wr_x && started_q)) turns_q <= turns_sum;
-        if (wr_v) v_q <= sum[P_W-1:0];
-        if (wr_c) comp_q <= sum[M_W-1:LEAD_F+FRAC_W];
-        if (wr_o) begin
+        if (p3 || at_x) x_q <= sum[P_W-1:0];
+        if (p3 || (at_x && started_q)) turns_q <= turns_sum;
+        if (at_v && started_q) v_q <= sum[P_W-1:0];
+        if (r3) begin
           started_q <= 1'b1;
           out_valid_o <= 1'b1;
           out_angle_o <= sum[P_W-1:FRAC_W];
@@ -425,19 +416,22 @@ module acore_track #(
         end
       end
     end
-    // The accumulator and the error register (no reset: each sample clears or loads them first).
-    // Doubling moves the bits below M_W only (v * D is taken modulo 2^M_W).
-    if (TW > M_W) begin : g_t_hi
-      always @(posedge clk_i)
-        if (t_clr) t_q[TW-1:M_W] <= {(TW - M_W){1'b0}};
-        else t_q[TW-1:M_W] <= sum[TW-1:M_W];
-    end
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [TW+D_W-1:0] t_all = {t_q, tf_q};  // the compensated angle is its middle
+    /* verilator lint_on UNUSEDSIGNAL */
+    // The schedule's counter, t and the product's low bits (no reset: each sample sets them first).
     always @(posedge clk_i) begin
-      if (t_clr) t_q[M_W-1:0] <= {M_W{1'b0}};
-      else if (dbl) t_q[M_W-1:0] <= {sum[M_W-2:0], 1'b0};
-      else t_q[M_W-1:0] <= sum[M_W-1:0];
-      if (ld_e) e_q <= ~sum[P_W-1:0];
-      else if (sh_e) e_q <= {e_q[P_W-1], e_q[P_W-1:1]};
+      if (p4 || pc) s_q <= {S_W{1'b0}};
+      else if (l_sh || ph) s_q <= s_q + 1'b1;
+      if (p4) {xd_q, vd_q} <= 2'b00;
+      if (at_x) xd_q <= 1'b1;
+      if (at_v) vd_q <= 1'b1;
+      if (p1 || pc || r1) t_q <= {TW{1'b0}};
+      else if (l_sh || p_sh) t_q <= sum_sh;
+      else if (p4) t_q <= ~sum;
+      else if (!at_x && !at_v) t_q <= sum;
+      if (p_sh) tf_q <= {sum[0], tf_q[D_W-1:1]};
+      if (r1) comp_q <= t_all[LEAD_F+P_W-1:LEAD_F+FRAC_W];
     end
     end
   endgenerate

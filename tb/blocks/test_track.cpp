@@ -85,7 +85,7 @@ void run(const TrackConfig& c, uint64_t seed) {
     std::deque<TrackOutput> expect;
     size_t next = 0;
     int idle = 0;
-    while ((next < in.size() || !expect.empty()) && idle < 100) {
+    while ((next < in.size() || !expect.empty()) && idle < 200) {
       const bool offer = next < in.size() && (rng() % 4 != 0);
       top->clk_i = 0;
       top->in_valid_i = offer;
