@@ -329,14 +329,16 @@ module acore_track #(
 
     // ---- the phases' operations ----
     wire [S_W-1:0] kx = started_q ? {{(S_W - 4){1'b0}}, k_q} : {S_W{1'b0}};
-    wire at_x = pl && !xd_q && s_q == kx;                                  // phi = pred + e >>> k
-    wire at_v = pl && xd_q && !vd_q && s_q == {{(S_W - 5){1'b0}}, k_q, 1'b1};  // v += e >>> 2k+1
+    // The counter's comparisons, registered from its next value (a shorter clock period).
+    reg eq_x, eq_v, eq_lf, eq_lh, eq_lend, eq_pend, lt_f, eq_0, w_b, thr_b;
+    wire at_x = pl && !xd_q && eq_x;  // phi = pred + e >>> k
+    wire at_v = pl && xd_q && !vd_q && eq_v;  // v = v + e >>> (2k + 1)
     wire l_sh = pl && !at_x && !at_v;
-    wire ins_x = ph && s_q == S_LF;
-    wire ins_h = ph && s_q == S_LH;
+    wire ins_x = ph && eq_lf;
+    wire ins_h = ph && eq_lh;
     wire p_sh = ph && !ins_x && !ins_h;
     wire op_x = p2 || at_x || ins_x || r2;
-    wire op_v = p3 || at_v || (p_sh && w_pad[s_q]);
+    wire op_v = p3 || at_v || (p_sh && w_b);
     wire op_t = p4;
     wire op_h = ins_h || r3;
 
@@ -360,13 +362,9 @@ module acore_track #(
     // differs decides over the lower ones).
     wire sg = t_q[P_W-1];
     wire u_b = t_q[0] ^ sg;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [S_W-1:0] thr_i = s_q - S_F;  // its low bits index the threshold
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire thr_b = lot_thr_i[thr_i[$clog2(ANGLE_W)-1:0]];
     always @(posedge clk_i)
       if (l_sh) begin
-        if (s_q < S_F) g_q <= ((s_q == 0) ? sg : g_q) | t_q[0];
+        if (lt_f) g_q <= (eq_0 ? sg : g_q) | t_q[0];
         else g_q <= (u_b & ~thr_b) | (~(u_b ^ thr_b) & g_q);
       end
 
@@ -392,10 +390,10 @@ module acore_track #(
         p2 <= p1;
         p3 <= p2;
         p4 <= p3;
-        pl <= p4 || (pl && !(l_sh && s_q == S_LOOP_END));
-        pc <= l_sh && s_q == S_LOOP_END;
-        ph <= pc || (ph && s_q != S_PEND);
-        r1 <= ph && s_q == S_PEND;
+        pl <= p4 || (pl && !(l_sh && eq_lend));
+        pc <= l_sh && eq_lend;
+        ph <= pc || (ph && !eq_pend);
+        r1 <= ph && eq_pend;
         r2 <= r1;
         r3 <= r2;
         if (take) begin
@@ -420,9 +418,22 @@ module acore_track #(
     wire [TW+D_W-1:0] t_all = {t_q, tf_q};  // the compensated angle is its middle
     /* verilator lint_on UNUSEDSIGNAL */
     // The schedule's counter, t and the product's low bits (no reset: each sample sets them first).
+    wire [S_W-1:0] s_n = (p4 || pc) ? {S_W{1'b0}} : (l_sh || ph) ? s_q + 1'b1 : s_q;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [S_W-1:0] thr_i = s_n - S_F;  // its low bits index the threshold
+    /* verilator lint_on UNUSEDSIGNAL */
     always @(posedge clk_i) begin
-      if (p4 || pc) s_q <= {S_W{1'b0}};
-      else if (l_sh || ph) s_q <= s_q + 1'b1;
+      s_q <= s_n;
+      eq_x <= s_n == kx;
+      eq_v <= s_n == {{(S_W - 5){1'b0}}, k_q, 1'b1};
+      eq_lf <= s_n == S_LF;
+      eq_lh <= s_n == S_LH;
+      eq_lend <= s_n == S_LOOP_END;
+      eq_pend <= s_n == S_PEND;
+      lt_f <= s_n < S_F;
+      eq_0 <= s_n == {S_W{1'b0}};
+      w_b <= w_pad[s_n];
+      thr_b <= lot_thr_i[thr_i[$clog2(ANGLE_W)-1:0]];
       if (p4) {xd_q, vd_q} <= 2'b00;
       if (at_x) xd_q <= 1'b1;
       if (at_v) vd_q <= 1'b1;
