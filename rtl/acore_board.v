@@ -21,7 +21,8 @@
 //
 // The observer (rtl/acore_track.v) takes every sample of the estimator (its in_ready is the
 // estimator's out_ready; it is high whenever the estimator can deliver, so the estimator never
-// stalls) and its outputs are always taken. The estimator's angle is also on pins (angle_o,
+// stalls: the time-shared observer is chosen only when its schedule fits in a sample's clocks) and
+// its outputs are always taken. The estimator's angle is also on pins (angle_o,
 // out_valid_o) for a logic analyser or a second consumer, the observer's on trk_*_o.
 //
 // WHICH ANGLE FEEDS THE DRIVE. ABZ and UVW take the compensated angle: the tracked angle
@@ -122,9 +123,13 @@ module acore_board #(
 
   // The observer: its turn count and LEAD as wide as their fields (TRK_POSITION.TURNS, TRK_LEAD);
   // the loop over two clocks when the estimator delivers a sample every CYCLES >= 2 clocks (a
-  // shorter clock period, nothing lost), and the estimator's LATENCY in whole samples compensated.
+  // shorter clock period, nothing lost), time-shared on one adder when it delivers one every
+  // acore_track_serial_cycles() clocks or fewer often (the serial core: a quarter of the area), and
+  // the estimator's LATENCY in whole samples compensated.
   localparam integer TRK_TURN_W = TRK_POSITION_TURNS_W;
   localparam integer TRK_LOOP_CLOCKS = (CYCLES >= 2) ? 2 : 1;
+  localparam integer TRK_SERIAL =
+      (CYCLES >= acore_track_serial_cycles(ANGLE_W, TRK_FRAC_W, TRK_LEAD_LEAD_W)) ? 1 : 0;
   localparam integer COMP_LATENCY = acore_comp_latency(LATENCY, CYCLES);
   localparam integer TRK_P_W = ANGLE_W + TRK_FRAC_W;
 
@@ -199,7 +204,8 @@ module acore_board #(
   wire [TRK_TURN_W-1:0] trk_turns;
   acore_track #(
     .ANGLE_W(ANGLE_W), .FRAC_W(TRK_FRAC_W), .TURN_W(TRK_TURN_W), .COMP_LATENCY(COMP_LATENCY),
-    .LEAD_W(TRK_LEAD_LEAD_W), .LEAD_F(TRK_LEAD_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS)
+    .LEAD_W(TRK_LEAD_LEAD_W), .LEAD_F(TRK_LEAD_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS),
+    .SERIAL(TRK_SERIAL)
   ) u_track (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(est_valid), .in_ready_o(trk_ready),
     .in_angle_i(est_angle), .bw_i(rg_trk_bw_bw), .lead_i(rg_trk_lead_lead),
