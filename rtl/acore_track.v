@@ -329,18 +329,13 @@ module acore_track #(
 
     // ---- the phases' operations ----
     wire [S_W-1:0] kx = started_q ? {{(S_W - 4){1'b0}}, k_q} : {S_W{1'b0}};
-    // The counter's comparisons, registered from its next value (a shorter clock period).
-    reg eq_x, eq_v, eq_lf, eq_lh, eq_lend, eq_pend, lt_f, eq_0, w_b, thr_b;
-    wire at_x = pl && !xd_q && eq_x;  // phi = pred + e >>> k
-    wire at_v = pl && xd_q && !vd_q && eq_v;  // v = v + e >>> (2k + 1)
+    // Each clock's operations are registered from the phases' and the counter's next values (the
+    // adder's operand select is then one LUT level from flops): at_x phi = pred + e >>> k, at_v
+    // v = v + e >>> (2k + 1), ins_x_n / ins_h_n the product's additions of phi and half, p_sh its
+    // other steps; l_sh the loop's shifts.
+    reg eq_lend, eq_pend, lt_f, eq_0, thr_b;
+    reg at_x, at_v, p_sh, op_x, op_v, op_t, op_h;
     wire l_sh = pl && !at_x && !at_v;
-    wire ins_x = ph && eq_lf;
-    wire ins_h = ph && eq_lh;
-    wire p_sh = ph && !ins_x && !ins_h;
-    wire op_x = p2 || at_x || ins_x || r2;
-    wire op_v = p3 || at_v || (p_sh && w_b);
-    wire op_t = p4;
-    wire op_h = ins_h || r3;
 
     // ---- the adder: t + B ----
     wire sx = op_v & v_q[P_W-1];  // B's sign above phi
@@ -419,24 +414,40 @@ module acore_track #(
     /* verilator lint_on UNUSEDSIGNAL */
     // The schedule's counter, t and the product's low bits (no reset: each sample sets them first).
     wire [S_W-1:0] s_n = (p4 || pc) ? {S_W{1'b0}} : (l_sh || ph) ? s_q + 1'b1 : s_q;
+    wire pl_n = p4 || (pl && !(l_sh && eq_lend));
+    wire ph_n = pc || (ph && !eq_pend);
+    wire xd_n = !p4 && (xd_q || at_x);
+    wire vd_n = !p4 && (vd_q || at_v);
+    wire at_x_n = pl_n && !xd_n && s_n == kx;
+    wire at_v_n = pl_n && xd_n && !vd_n && s_n == {{(S_W - 5){1'b0}}, k_q, 1'b1};
+    wire ins_x_n = ph_n && s_n == S_LF;
+    wire ins_h_n = ph_n && s_n == S_LH;
+    wire p_sh_n = ph_n && !ins_x_n && !ins_h_n;
+    always @(posedge clk_i) begin
+      if (rst_i) begin
+        {at_x, at_v, p_sh, op_x, op_v, op_t, op_h} <= 7'd0;
+      end else begin
+        at_x <= at_x_n;
+        at_v <= at_v_n;
+        p_sh <= p_sh_n;
+        op_x <= p1 || at_x_n || ins_x_n || r1;
+        op_v <= p2 || at_v_n || (p_sh_n && w_pad[s_n]);
+        op_t <= p3;
+        op_h <= ins_h_n || r2;
+      end
+    end
     /* verilator lint_off UNUSEDSIGNAL */
     wire [S_W-1:0] thr_i = s_n - S_F;  // its low bits index the threshold
     /* verilator lint_on UNUSEDSIGNAL */
     always @(posedge clk_i) begin
       s_q <= s_n;
-      eq_x <= s_n == kx;
-      eq_v <= s_n == {{(S_W - 5){1'b0}}, k_q, 1'b1};
-      eq_lf <= s_n == S_LF;
-      eq_lh <= s_n == S_LH;
       eq_lend <= s_n == S_LOOP_END;
       eq_pend <= s_n == S_PEND;
       lt_f <= s_n < S_F;
       eq_0 <= s_n == {S_W{1'b0}};
-      w_b <= w_pad[s_n];
       thr_b <= lot_thr_i[thr_i[$clog2(ANGLE_W)-1:0]];
-      if (p4) {xd_q, vd_q} <= 2'b00;
-      if (at_x) xd_q <= 1'b1;
-      if (at_v) vd_q <= 1'b1;
+      xd_q <= xd_n;
+      vd_q <= vd_n;
       if (p1 || pc || r1) t_q <= {TW{1'b0}};
       else if (l_sh || p_sh) t_q <= sum_sh;
       else if (p4) t_q <= ~sum;
