@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The tracking observer (rtl/acore_track.v) against the model (model/ip/stages/tracker.cpp) bit for
 // bit, in the registry's parameter sets Verilated by tb/CMakeLists.txt (lines track, track_a20,
-// track_l2: the loop over two clocks; track_s_a20, track_s_f0: time-shared, one adder; the same
-// outputs):
+// track_l2: the loop over two clocks; track_s: time-shared, one adder, at the 20-bit widths with
+// LEAD_F = 0; the same outputs):
 // every output word (angle, compensated angle, velocity, turns, LOT) of every sample, with random
 // input gaps and output stalls, on an angle stream that accelerates, reverses, carries noise and
 // jumps (LOT raised and cleared), at several bandwidth codes, LEAD and threshold values, with
@@ -19,8 +19,7 @@
 #include "Vtrack.h"
 #include "Vtrack_a20.h"
 #include "Vtrack_l2.h"
-#include "Vtrack_s_a20.h"
-#include "Vtrack_s_f0.h"
+#include "Vtrack_s.h"
 #include "core/fixed_point.hpp"
 #include "stages/tracker.hpp"
 
@@ -134,8 +133,7 @@ void run(const TrackConfig& c, uint64_t seed) {
 TEST(Track, RtlEqualsModel) { run<Vtrack>(ACORE_TRACK_CONFIG(TRACK), 1); }
 TEST(Track, RtlEqualsModelA20) { run<Vtrack_a20>(ACORE_TRACK_CONFIG(TRACK_A20), 2); }
 TEST(Track, RtlEqualsModelLoop2) { run<Vtrack_l2>(ACORE_TRACK_CONFIG(TRACK_L2), 3); }
-TEST(Track, RtlEqualsModelSerialA20) { run<Vtrack_s_a20>(ACORE_TRACK_CONFIG(TRACK_S_A20), 4); }
-TEST(Track, RtlEqualsModelSerialLeadF0) { run<Vtrack_s_f0>(ACORE_TRACK_CONFIG(TRACK_S_F0), 5); }
+TEST(Track, RtlEqualsModelSerial) { run<Vtrack_s>(ACORE_TRACK_CONFIG(TRACK_S), 4); }
 
 }  // namespace
 }  // namespace acore
