@@ -38,7 +38,10 @@
 // clocks later (loop register; rounding and v * D in partial sums; output register), four with
 // LOOP_CLOCKS = 2, which also keeps in_ready_o low for the clock after a sample is taken. The pipeline stalls as a whole when the output is
 // held: in_ready_o = !rst_i && !(out_valid_o && !out_ready_i) (&& not the update clock with
-// LOOP_CLOCKS = 2). rst_i is synchronous, active high.
+// LOOP_CLOCKS = 2). SERIAL = 1 (time-shared, below): the result acore_track_serial_cycles() clocks
+// after the sample, in_ready_o low until then (a sample every that many clocks at most); bw_i is
+// latched with each sample, lead_i and lot_thr_i are read during its schedule (static registers).
+// rst_i is synchronous, active high.
 `resetall
 `default_nettype none
 
