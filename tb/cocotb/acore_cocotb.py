@@ -481,9 +481,9 @@ class As5047Master:
             d.sclk_i.value = 1
             d.mosi_i.value = word >> i & 1
             await ClockCycles(self.clk, self.half)
+            got = got << 1 | _int(d.miso_o)  # sampled at the falling edge
             d.sclk_i.value = 0
             await ClockCycles(self.clk, self.half)
-            got = got << 1 | _int(d.miso_o)
         await ClockCycles(self.clk, self.half)
         d.csn_i.value = 1
         await ClockCycles(self.clk, 2 * self.half)  # CSn high time
@@ -506,9 +506,9 @@ class QuadratureDecoder:
     count, and at each clock with Z high the count then. A clock where A and B both change is an
     error (a lost edge)."""
 
-    def __init__(self, dut, clk):
+    def __init__(self, dut, clk, count: int = 0):
         self.dut, self.clk = dut, clk
-        self.count = 0
+        self.count = count
         self.z_counts: list[int] = []
         self.errors = 0
         self.edges = 0

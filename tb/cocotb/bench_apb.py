@@ -5,10 +5,9 @@ the CRC check, the status window set), then the scenario's codes in with random 
 output stalls; every output against the Python package's bit-accurate model on the same codes and
 tagged with the committed bank."""
 
+import acore_cocotb as acb
 import cocotb
 from cocotb.clock import Clock
-
-import acore_cocotb as acb
 
 
 @cocotb.test()
