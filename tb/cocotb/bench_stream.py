@@ -5,7 +5,6 @@ stalls, every output against the Python package's bit-accurate model on the same
 
 import acore_cocotb as acb
 import cocotb
-from cocotb.clock import Clock
 
 
 @cocotb.test()
@@ -16,14 +15,7 @@ async def top_against_model(dut):
     img = ac.read_image(s.image)
     codes = acb.stimulus(img, s)
     exp = acb.reference(img, codes, s)
-    Clock(dut.clk_i, 10, unit="ns").start()
-    lo, hi = acb.status_window(img)
-    dut.mag_lo_i.value = lo
-    dut.mag_hi_i.value = hi
-    dut.reg_we_i.value = 0
-    dut.in_valid_i.value = 0
-    dut.out_ready_i.value = 0
-    await acb.reset(dut, dut.clk_i)
+    await acb.start_top(dut, img)
     await acb.write_host_port(dut, dut.clk_i, acb.image_words(img, s))
     c = s.consts
     # Every sample at its full-rate period, stretched by the gaps and stalls, plus the latency.
