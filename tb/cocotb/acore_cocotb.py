@@ -24,7 +24,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 # --- pytest side: the registry line, its image, the build ------------------------------------
 

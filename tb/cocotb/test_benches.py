@@ -137,6 +137,15 @@ def test_bench(request, bench, name):
     run_bench(request.config, bench, name)
 
 
+def test_image_refused():
+    """A bench refuses an image calibrated for another configuration (degree 5 on `default`)."""
+    import anglecore as ac
+
+    img = ac.calibrate(ac.simulate("paper", samples=3600, seed=101), degree=5)
+    with pytest.raises(ValueError, match=r"degree=5 \(build: DEGREE=3\)"):
+        acb.check_image(img, acb.registry_line("default"))
+
+
 def test_doc_example(request):
     """docs/cocotb_example.py, the user's own check of docs/cocotb.md, passes on acore_top."""
     docs = os.path.join(acb.ROOT, "docs")
