@@ -21,7 +21,7 @@ import xml.etree.ElementTree as ET
 import acore_cocotb as acb
 import pytest
 
-# bench module -> (registry lines, default samples, the module's clock budget factor)
+# bench module -> the registry lines it runs on (rtl/configs.txt names)
 BENCHES = {
     "bench_stream": ["default", "fold8", "serial"],
     "bench_apb": ["apb"],
