@@ -9,7 +9,7 @@
 //                 |        |            +--> TRK_VELOCITY, TRK_POSITION (APB)
 //                 |        +--angle (ANGLEUNC)--+--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
 //                 |        compensated (ANGLECOM), loss of tracking --+
-//   APB --+--> the board's registers (0x060..0x087, rtl/acore_board_regblock.v): ABZ_N .. TRK_POSITION
+//   APB --+--> the board's registers (0x060..0x08B, rtl/acore_board_regblock.v): ABZ_N .. ABZ_HYS
 //         +--> every other address: the shell
 //
 // THE REGISTERS. The board's registers are generated, with their widths, ranges and reset values,
@@ -31,7 +31,7 @@
 // (at 60 krpm one sample of the serial core at 50 MHz, 221 kS/s, is 1.6 degrees of mechanical
 // angle, times the pole pairs electrically); the AS5047P feeds its ABI and UVW from the DAEC-compensated angle for the
 // same reason. The compensated angle is the observer's filtered angle, so ABZ also sees less noise
-// than the raw estimate (its one-LSB hysteresis handles the rest).
+// than the raw estimate (its hysteresis, ABZ_HYS, handles the rest).
 //
 // SPI (AS5047P registers): ANGLECOM = the compensated angle, ANGLEUNC = the estimator's angle,
 // DIAAGC.LF = not loss of tracking (the AS5047P's LF: 1 when the angle is valid, its loop
@@ -231,9 +231,10 @@ module acore_board #(
   // count 0..4N-1).
   wire [ABZ_N_N_W:0] abz_count;
   wire abz_settled;
-  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W)) u_abz (
+  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W), .HYS_W(ABZ_HYS_WIDTH_W)) u_abz (
     .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle), .n_i(rg_abz_n_n),
-    .index_i(rg_abz_index_pos), .spacing_i(rg_abz_spacing_spacing), .a_o(a_o), .b_o(b_o), .z_o(z_o),
+    .index_i(rg_abz_index_pos), .spacing_i(rg_abz_spacing_spacing), .hys_i(rg_abz_hys_width),
+    .a_o(a_o), .b_o(b_o), .z_o(z_o),
     .count_o(abz_count), .settled_o(abz_settled));
   wire [2:0] uvw_sector;
   wire uvw_valid;

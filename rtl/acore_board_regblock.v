@@ -74,7 +74,11 @@ module acore_board_regblock #(
   // TRK_POSITION.TURNS: the hardware's value
   input  wire [15:0] trk_position_turns_i,
   // TRK_POSITION.ANGLE: the hardware's value
-  input  wire [15:0] trk_position_angle_i
+  input  wire [15:0] trk_position_angle_i,
+  // ABZ_HYS.WIDTH: the value
+  output wire [7:0] abz_hys_width_o,
+  // ABZ_HYS.WIDTH: written in this clock
+  output wire abz_hys_width_we_o
 );
 
   // Word indices (byte address / 4), the register sets, field positions.
@@ -88,8 +92,9 @@ module acore_board_regblock #(
   localparam [5:0] R_TRK_LOT = 6'h1F;
   localparam [5:0] R_TRK_VELOCITY = 6'h20;
   localparam [5:0] R_TRK_POSITION = 6'h21;
+  localparam [5:0] R_ABZ_HYS = 6'h22;
   localparam [63:0] REGS_RO = 64'h0000000300000000;
-  localparam [63:0] REGS_WR = 64'h00000000FF000000;
+  localparam [63:0] REGS_WR = 64'h00000004FF000000;
   localparam integer ABZ_N_N = 0;
   localparam integer ABZ_INDEX_POS = 0;
   localparam integer ABZ_SPACING_SPACING = 0;
@@ -101,6 +106,7 @@ module acore_board_regblock #(
   localparam integer TRK_VELOCITY_VELOCITY = 0;
   localparam integer TRK_POSITION_TURNS = 16;
   localparam integer TRK_POSITION_ANGLE = 0;
+  localparam integer ABZ_HYS_WIDTH = 0;
   // Reset values of fields whose reset or width is a parameter (the field's low bits).
   localparam [31:0] UVW_OFFSET_OFFSET_RST = 0;
   localparam [31:0] TRK_LOT_THRESHOLD_RST = 4096;
@@ -128,6 +134,7 @@ module acore_board_regblock #(
   reg [3:0] trk_bw_bw_q;
   reg [7:0] trk_lead_lead_q;
   reg [TRK_LOT_W-1:0] trk_lot_threshold_q;
+  reg [7:0] abz_hys_width_q;
 
   // ---- decode and read in the setup phase ----
   wire setup = psel_i & ~penable_i;
@@ -183,6 +190,7 @@ module acore_board_regblock #(
         rd_d[TRK_POSITION_TURNS +: 16] = trk_position_turns_i;
         rd_d[TRK_POSITION_ANGLE +: 16] = trk_position_angle_i;
       end
+      R_ABZ_HYS: rd_d[ABZ_HYS_WIDTH +: 8] = abz_hys_width_q;
       default: rd_d = 32'd0;
     endcase
   end
@@ -193,7 +201,7 @@ module acore_board_regblock #(
   wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);
   wire ok_reg_wr = ok_wr & in_regs;
   reg err_q, w_abz_n_q, w_abz_index_q, w_abz_spacing_q, w_uvw_pp_q, w_uvw_offset_q;
-  reg w_trk_bw_q, w_trk_lead_q, w_trk_lot_q;
+  reg w_trk_bw_q, w_trk_lead_q, w_trk_lot_q, w_abz_hys_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
     if (setup) begin
@@ -207,6 +215,7 @@ module acore_board_regblock #(
       w_trk_bw_q <= ok_reg_wr & (ridx == R_TRK_BW) & ~range_err;
       w_trk_lead_q <= ok_reg_wr & (ridx == R_TRK_LEAD);
       w_trk_lot_q <= ok_reg_wr & (ridx == R_TRK_LOT);
+      w_abz_hys_q <= ok_reg_wr & (ridx == R_ABZ_HYS);
     end
   end
 
@@ -222,6 +231,7 @@ module acore_board_regblock #(
   wire wr_trk_bw = access & w_trk_bw_q;
   wire wr_trk_lead = access & w_trk_lead_q;
   wire wr_trk_lot = access & w_trk_lot_q;
+  wire wr_abz_hys = access & w_abz_hys_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       abz_n_n_q <= 13'd1024;
@@ -232,6 +242,7 @@ module acore_board_regblock #(
       trk_bw_bw_q <= 4'd6;
       trk_lead_lead_q <= 8'd0;
       trk_lot_threshold_q <= TRK_LOT_THRESHOLD_RST[TRK_LOT_W-1:0];
+      abz_hys_width_q <= 8'd2;
     end else begin
       if (wr_abz_n) begin
         abz_n_n_q <= pwdata_i[ABZ_N_N +: 13];
@@ -257,6 +268,9 @@ module acore_board_regblock #(
       if (wr_trk_lot) begin
         trk_lot_threshold_q <= pwdata_i[TRK_LOT_THRESHOLD +: TRK_LOT_W];
       end
+      if (wr_abz_hys) begin
+        abz_hys_width_q <= pwdata_i[ABZ_HYS_WIDTH +: 8];
+      end
     end
   end
   assign abz_n_n_o = abz_n_n_q;
@@ -275,6 +289,8 @@ module acore_board_regblock #(
   assign trk_lead_lead_we_o = wr_trk_lead;
   assign trk_lot_threshold_o = trk_lot_threshold_q;
   assign trk_lot_threshold_we_o = wr_trk_lot;
+  assign abz_hys_width_o = abz_hys_width_q;
+  assign abz_hys_width_we_o = wr_abz_hys;
 
 endmodule
 

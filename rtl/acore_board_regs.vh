@@ -17,10 +17,11 @@ localparam [5:0] R_TRK_LEAD = 6'h1E;
 localparam [5:0] R_TRK_LOT = 6'h1F;
 localparam [5:0] R_TRK_VELOCITY = 6'h20;
 localparam [5:0] R_TRK_POSITION = 6'h21;
+localparam [5:0] R_ABZ_HYS = 6'h22;
 // The registers the block answers, one bit per word index: read only, writable, either.
 localparam [63:0] REGS_RO = 64'h0000000300000000;
-localparam [63:0] REGS_WR = 64'h00000000FF000000;
-localparam [63:0] REGS_ALL = 64'h00000003FF000000;
+localparam [63:0] REGS_WR = 64'h00000004FF000000;
+localparam [63:0] REGS_ALL = 64'h00000007FF000000;
 // Fields.
 localparam integer ABZ_N_N = 0, ABZ_N_N_W = 13;
 localparam integer ABZ_INDEX_POS = 0, ABZ_INDEX_POS_W = 14;
@@ -33,6 +34,7 @@ localparam integer TRK_LOT_THRESHOLD = 0, TRK_LOT_THRESHOLD_W = TRK_LOT_W;
 localparam integer TRK_VELOCITY_VELOCITY = 0, TRK_VELOCITY_VELOCITY_W = 32;
 localparam integer TRK_POSITION_TURNS = 16, TRK_POSITION_TURNS_W = 16;
 localparam integer TRK_POSITION_ANGLE = 0, TRK_POSITION_ANGLE_W = 16;
+localparam integer ABZ_HYS_WIDTH = 0, ABZ_HYS_WIDTH_W = 8;
 // Ranges (a write outside is refused).
 localparam integer ABZ_N_N_MIN = 1, ABZ_N_N_MAX = 4096;
 localparam integer UVW_PP_POLE_PAIRS_MIN = 1, UVW_PP_POLE_PAIRS_MAX = 16;
@@ -45,6 +47,7 @@ localparam [31:0] UVW_OFFSET_RESET = 32'h00000000;
 localparam [31:0] TRK_BW_RESET = 32'h00000006;
 localparam [31:0] TRK_LEAD_RESET = 32'h00000000;
 localparam [31:0] TRK_LOT_RESET = 32'h00001000;
+localparam [31:0] ABZ_HYS_RESET = 32'h00000002;
 
 // ---- the register block (rtl/acore_board_regblock.v) ----
 // APB: the owner drives rg_psel (its PSEL for the block's addresses) and returns rg_prdata
@@ -72,6 +75,8 @@ wire rg_trk_lot_threshold_we;  // TRK_LOT.THRESHOLD: written in this clock
 wire [31:0] rg_trk_velocity_velocity;  // in: TRK_VELOCITY.VELOCITY: the hardware's value
 wire [15:0] rg_trk_position_turns;  // in: TRK_POSITION.TURNS: the hardware's value
 wire [15:0] rg_trk_position_angle;  // in: TRK_POSITION.ANGLE: the hardware's value
+wire [7:0] rg_abz_hys_width;  // ABZ_HYS.WIDTH: the value
+wire rg_abz_hys_width_we;  // ABZ_HYS.WIDTH: written in this clock
 acore_board_regblock #(
   .APB_AW(APB_AW),
   .ANGLE_W(ANGLE_W),
@@ -107,5 +112,7 @@ acore_board_regblock #(
   .trk_lot_threshold_we_o(rg_trk_lot_threshold_we),
   .trk_velocity_velocity_i(rg_trk_velocity_velocity),
   .trk_position_turns_i(rg_trk_position_turns),
-  .trk_position_angle_i(rg_trk_position_angle)
+  .trk_position_angle_i(rg_trk_position_angle),
+  .abz_hys_width_o(rg_abz_hys_width),
+  .abz_hys_width_we_o(rg_abz_hys_width_we)
 );

@@ -6,7 +6,9 @@
 //     edges; after every catch-up its count equals floor(angle 4N / 2^ANGLE_W) (with the one-LSB
 //     hysteresis rule in closed form), no step ever changes A and B together (a lost count), no two
 //     edges are closer than the spacing register, the catch-up takes the shorter way at the full
-//     rate, and Z rises exactly when the decoder passes the index count, once a turn;
+//     rate, and Z rises exactly when the decoder passes the index count, once a turn; a +-1 LSB
+//     dither anywhere moves no edge at the reset hysteresis; a change of N re-homes at once with
+//     A/B held, then legal single steps only;
 //   - UVW (rtl/acore_uvw.v): every angle of the turn for several pole-pair counts and offsets
 //     against the six-step sectors in closed form (integer arithmetic on 6e against the turn);
 //   - SPI (rtl/acore_spi_as5047.v): an SPI mode-1 master at clk/4 .. clk/10 sending the frames open
@@ -84,11 +86,14 @@ struct AbzBench {
   int64_t index = 0;
   int64_t z_rises = 0, z_bad = 0;
   int z_prev = 0;
-  AbzBench(int64_t n_, int64_t index_, int spacing, uint64_t seed) : n(n_), index(index_) {
+  int64_t hys = 2;
+  AbzBench(int64_t n_, int64_t index_, int spacing, uint64_t seed, int64_t hys_ = 2)
+      : n(n_), index(index_), hys(hys_) {
     top = make<Vstage_abz>(ctx, seed);
     top->n_i = static_cast<uint32_t>(n);
     top->index_i = static_cast<uint32_t>(index);
     top->spacing_i = static_cast<uint32_t>(spacing);
+    top->hys_i = static_cast<uint32_t>(hys);
     top->angle_valid_i = 0;
     top->rst_i = 1;
     tick(*top);
@@ -125,9 +130,16 @@ struct AbzBench {
   }
 };
 
-// floor(a 4N / T) and floor((a + 1) 4N / T) mod 4N: the hysteresis band's two counts.
+// floor(a 4N / T): the count of an angle.
 int64_t count_lo(int64_t a, int64_t n) { return (a * 4 * n) >> kAbzAngleW; }
-int64_t count_hi(int64_t a, int64_t n) { return (((a + 1) * 4 * n) >> kAbzAngleW) % (4 * n); }
+// Hysteresis as a window: the previous count holds while it lies within h LSBs of the angle, that
+// is while some angle of a - h .. a + h (round the turn) has that count; otherwise the angle's
+// count.
+int64_t next_count(int64_t a, int64_t n, int64_t h, int64_t previous) {
+  for (int64_t x = a - h; x <= a + h; ++x)
+    if (count_lo(((x % kTurn) + kTurn) % kTurn, n) == previous) return previous;
+  return count_lo(a, n);
+}
 // The shorter way from c to t modulo m (a half turn goes forward).
 int64_t distance(int64_t c, int64_t t, int64_t m) {
   const int64_t d = ((t - c) % m + m) % m;
@@ -160,8 +172,7 @@ TEST_P(Abz, DecoderCountEqualsFloorAfterEveryCatchUpWithoutLostCounts) {
         default:
           a = (k / 4) % 2 ? kTurn - 1 : 0;
       }
-      const int64_t lo = count_lo(a, n), hi = count_hi(a, n);
-      const int64_t next = expected == hi ? hi : lo;
+      const int64_t next = next_count(a, n, b.hys, expected);
       const int64_t dist = distance(expected, next, 4 * n);
       b.angle(static_cast<uint32_t>(a));
       const uint64_t took = b.settle(100 + 4 * n * spacing + 64);
@@ -214,10 +225,10 @@ TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
   for (int64_t c = 1; c <= fwd_pos; ++c) passes += (c % (4 * n)) == index;
   EXPECT_EQ(b.z_rises, passes);
   run(2, -1);
-  // Backwards the band's upper count may hold (approached from above): lo or hi.
+  // Backwards a count within the hysteresis window may hold (approached from above).
   const int64_t a = ((unwrapped % kTurn) + kTurn) % kTurn;
   const int64_t wrapped = b.wrapped();
-  EXPECT_TRUE(wrapped == count_lo(a, n) || wrapped == count_hi(a, n)) << wrapped;
+  EXPECT_EQ(next_count(a, n, b.hys, wrapped), wrapped);
   EXPECT_EQ(b.dec.lost, 0);
   // The count ran at the full rate (one edge a clock) whenever the angle asked for more.
   if (step * 4 * n > kTurn) EXPECT_EQ(b.dec.min_gap, 1u);
@@ -227,31 +238,54 @@ TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
   EXPECT_TRUE(b.dec.pos == lo_unwrapped || b.dec.pos == lo_unwrapped + 1) << b.dec.pos;
 }
 
-TEST_P(Abz, OneLsbDitherAtRestHoldsTheCount) {
+// A dither over 2d + 1 neighbouring LSBs (+-d) centred anywhere, at a hysteresis of 2d: once the
+// count stands on one of its values, no edge at all. Centres on every offset around count
+// boundaries and at random; without hysteresis the same dither across a boundary does move edges
+// (the bench can tell).
+TEST_P(Abz, DitherWithinTheHysteresisMovesNoEdgeAnywhere) {
   const int64_t n = GetParam();
   std::mt19937_64 rng(3000 + n);
-  AbzBench b(n, 0, 1, rng());
-  // An angle a whose next LSB crosses a count boundary.
-  int64_t a = static_cast<int64_t>(rng() % (kTurn - 2));
-  while (count_lo(a + 1, n) == count_lo(a, n)) a = (a + 1) % (kTurn - 2);
-  b.angle(static_cast<uint32_t>(a));
-  b.settle(1u << 30);
-  ASSERT_EQ(b.wrapped(), count_lo(a, n));
-  b.angle(static_cast<uint32_t>(a + 1));
-  b.settle(1u << 30);
-  ASSERT_EQ(b.wrapped(), count_lo(a + 1, n));
-  const int64_t edges = b.dec.edges;
-  for (int k = 0; k < 200; ++k) {
-    b.angle(static_cast<uint32_t>(a + (k % 2 == 0 ? 0 : 1)));
-    for (int j = 0; j < 20; ++j) b.step();
+  int64_t moved = 0, unhysteretic_edges = 0;
+  for (int64_t d : {1, 3}) {
+    for (int pos = 0; pos < 10; ++pos) {
+      // A count boundary bnd (count_lo(bnd - 1) != count_lo(bnd)) and a centre near it, or
+      // anywhere.
+      int64_t bnd = 1 + static_cast<int64_t>(rng() % (kTurn - 8));
+      while (count_lo(bnd - 1, n) == count_lo(bnd, n)) bnd = 1 + (bnd % (kTurn - 8));
+      const int64_t centre =
+          pos < 8 ? bnd - d - 1 + pos % (2 * d + 2) : static_cast<int64_t>(rng() % kTurn);
+      for (int64_t h : {2 * d, int64_t{0}}) {
+        if (h == 0 && (d != 1 || pos >= 8)) continue;
+        AbzBench b(n, 0, 1, rng(), h);
+        auto dither = [&] {
+          const int64_t x = centre + static_cast<int64_t>(rng() % (2 * d + 1)) - d;
+          return static_cast<uint32_t>(((x % kTurn) + kTurn) % kTurn);
+        };
+        // From half a turn away onto one of the dither's values: the count is that value's.
+        b.angle(static_cast<uint32_t>((centre + kTurn / 2) % kTurn));
+        b.settle(1u << 30);
+        const uint32_t first = dither();
+        b.angle(first);
+        b.settle(1u << 30);
+        ASSERT_EQ(b.top->count_o, static_cast<uint32_t>(count_lo(first, n)));
+        const int64_t edges = b.dec.edges;
+        for (int k = 0; k < 500; ++k) {
+          b.angle(dither());
+          b.step();
+          b.step();
+        }
+        b.settle(1u << 30);
+        if (h > 0)
+          moved += b.dec.edges - edges;
+        else
+          unhysteretic_edges += b.dec.edges - edges;
+        EXPECT_EQ(b.dec.lost, 0);
+      }
+    }
   }
-  EXPECT_EQ(b.dec.edges, edges) << "dithering by one LSB moved the count";
-  // Two LSBs down leave the band: the count follows.
-  if (a >= 1 && count_lo(a - 1, n) != count_lo(a + 1, n)) {
-    b.angle(static_cast<uint32_t>(a - 1));
-    b.settle(1u << 30);
-    EXPECT_EQ(b.wrapped(), count_lo(a - 1, n));
-  }
+  EXPECT_EQ(moved, 0) << "a dither within the hysteresis moved the count";
+  // Centres bnd - 1 and bnd straddle the boundary: without hysteresis A or B toggles.
+  EXPECT_GT(unhysteretic_edges, 0);
 }
 
 TEST_P(Abz, MinimumSpacingHoldsAfterAJump) {
@@ -286,6 +320,81 @@ TEST(AbzRange, OutOfRangeNIsClamped) {
     b.settle(1u << 30);
     EXPECT_EQ(b.wrapped(), count_lo(a, n_eff)) << n_in;
   }
+}
+
+// Moves down and up by a few LSBs at N = 1024 (a count is 16 LSBs): the count holds exactly while
+// the angle is within the hysteresis of its interval, and lands on floor(angle 4N / T) otherwise
+// (280 then 271: count 17, then 16 without hysteresis, 17 held with 1 LSB or more).
+TEST(AbzHysteresis, SmallMovesFollowTheWindowRuleExactly) {
+  const int64_t n = 1024;
+  std::mt19937_64 rng(3100);
+  for (int64_t h : {0, 1, 3}) {
+    AbzBench b(n, 0, 1, rng(), h);
+    b.angle(280);
+    b.settle(1u << 30);
+    ASSERT_EQ(b.top->count_o, 17u);
+    b.angle(271);
+    b.settle(1u << 30);
+    EXPECT_EQ(b.top->count_o, h == 0 ? 16u : 17u) << "hysteresis " << h;
+    int64_t expected = b.top->count_o, wrong = 0;
+    int64_t a = 271;
+    for (int k = 0; k < 2000; ++k) {
+      a = (a + static_cast<int64_t>(rng() % 33) - 16 + kTurn) % kTurn;
+      expected = next_count(a, n, h, expected);
+      b.angle(static_cast<uint32_t>(a));
+      b.settle(1u << 30);
+      wrong += static_cast<int64_t>(b.top->count_o) != expected;
+    }
+    EXPECT_EQ(wrong, 0) << "hysteresis " << h;
+    EXPECT_EQ(b.dec.lost, 0);
+  }
+}
+
+// A change of N alone (no new angle): in the clock it changes and until the new count is known,
+// A and B hold; then the count stands on the value with the old count's two low bits nearest the
+// new floor, and walks there in at most two single steps: the decoder sees no illegal step, moves
+// by exactly that walk, and the count is floor(angle 4N' / T) within N_W + 8 clocks.
+TEST(AbzNChange, ReHomesAtOnceWithAandBHeldThenSingleSteps) {
+  std::mt19937_64 rng(3200);
+  const std::vector<std::pair<int64_t, int64_t>> changes = {
+      {1024, 1000},           {1000, 1024}, {3, 1 << (kAbzNW - 1)},
+      {1 << (kAbzNW - 1), 1}, {360, 7},     {7, 360}};
+  int64_t held_bad = 0, late = 0, wrong = 0, walk_bad = 0, lost = 0;
+  for (const auto& [n1, n2] : changes) {
+    for (int k = 0; k < 12; ++k) {
+      AbzBench b(n1, 0, 1, rng());
+      const int64_t a = static_cast<int64_t>(rng() % kTurn);
+      b.angle(static_cast<uint32_t>(a));
+      b.settle(1u << 30);
+      const int64_t c_old = b.top->count_o;
+      const int64_t pos0 = b.dec.pos;
+      const int ab = b.top->a_o * 2 + b.top->b_o;
+      b.top->n_i = static_cast<uint32_t>(n2);
+      const int64_t lo = count_lo(a, n2);
+      const int64_t d = ((c_old - lo) % 4 + 4) % 4;
+      // A and B hold while the new product is computed (N_W + 3 clocks at least).
+      for (int j = 0; j < kAbzNW + 3; ++j) {
+        b.step();
+        held_bad += b.top->a_o * 2 + b.top->b_o != ab;
+      }
+      const uint64_t took = b.settle(64) + kAbzNW + 3;
+      // d = 2 is half the turn at N = 1: the shorter way's tie goes forward.
+      const int64_t walk = d == 3 ? 1 : (d == 2 && n2 == 1) ? 2 : -d;
+      walk_bad += b.dec.pos - pos0 != walk;
+      lost += b.dec.lost;
+    }
+  }
+  EXPECT_EQ(held_bad, 0);
+  EXPECT_EQ(late, 0);
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(walk_bad, 0);
+  EXPECT_EQ(lost, 0);
+  // Before any angle a change of N moves nothing.
+  AbzBench b(1024, 0, 1, 5);
+  b.top->n_i = 5;
+  for (int j = 0; j < 40; ++j) b.step();
+  EXPECT_EQ(b.dec.edges, 0);
+  EXPECT_EQ(b.top->count_o, 0u);
 }
 
 // ---- UVW ----------------------------------------------------------------------------------------
@@ -630,23 +739,40 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
   EXPECT_EQ(mismatches, 0);
 }
 
-// The ABZ count after every catch-up equals the model's target (the same walk as the first test,
-// the expectation now from model/ip/stages/interfaces.hpp).
+// The ABZ count after every catch-up equals the model's (model/ip/stages/interfaces.hpp): random
+// moves and jumps at several hysteresis widths, N changed now and then (the count re-homed as
+// AbzCounter::rehome() puts it, then walked to the model's target).
 TEST(AbzCosim, CountMatchesTheModelTarget) {
   std::mt19937_64 rng(26);
+  int64_t mismatches = 0, checks = 0;
   for (int64_t n :
        {int64_t{1}, int64_t{3}, int64_t{1000}, int64_t{1024}, int64_t{1} << (kAbzNW - 1)}) {
-    AbzBench b(n, 0, 1, rng());
-    int64_t target = 0, mismatches = 0;
-    for (int k = 0; k < 200; ++k) {
-      const uint64_t a = k % 2 ? rng() % kTurn : (b.top->angle_i + rng() % 3 + kTurn - 1) % kTurn;
-      target = abz_target(a, kAbzAngleW, n, target);
-      b.angle(static_cast<uint32_t>(a));
-      b.settle(1u << 30);
-      mismatches += b.wrapped() != target;
+    for (int64_t h : {0, 1, 2, 9}) {
+      AbzBench b(n, 0, 1, rng(), h);
+      AbzCounter model(n, 1);
+      int64_t n_cur = n;
+      uint64_t a = 0;
+      for (int k = 0; k < 200; ++k) {
+        if (k % 50 == 49) {
+          n_cur = 1 + static_cast<int64_t>(rng() % (int64_t{1} << (kAbzNW - 1)));
+          b.top->n_i = static_cast<uint32_t>(n_cur);
+          b.step();  // (settled_o is the outputs' as of the last clock)
+          model.rehome(n_cur, abz_count_of(a, kAbzAngleW, n_cur));
+        } else {
+          a = k % 2 ? rng() % kTurn : (b.top->angle_i + rng() % 5 + kTurn - 2) % kTurn;
+          model.set_target(abz_target(a, kAbzAngleW, n_cur, h, model.target()));
+          b.angle(static_cast<uint32_t>(a));
+        }
+        b.settle(1u << 30);
+        while (model.step() != 0) {
+        }
+        mismatches += static_cast<int64_t>(b.top->count_o) != model.count();
+        ++checks;
+      }
     }
-    EXPECT_EQ(mismatches, 0) << n;
   }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(checks, 4000);
 }
 
 // UVW against the model on random angles, offsets and pole pairs.

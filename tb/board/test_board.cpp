@@ -336,7 +336,7 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     const int64_t wrapped = ((bb.pos % (4 * abz_n)) + 4 * abz_n) % (4 * abz_n);
     EXPECT_EQ(wrapped, target) << "ABZ before output " << bb.trk.size() - 1;
     ++res.abz_checks;
-    target = abz_target(bb.trk.back().angle_comp, 16, abz_n, target);
+    target = abz_target(bb.trk.back().angle_comp, 16, abz_n, bd::kAbzHysReset, target);
   };
   const auto check_reads = [&](size_t k) {  // after k samples, the stream paused
     for (int i = 0; i < 600; ++i) b.tick();
@@ -474,9 +474,9 @@ TEST(Board, InterfacesFollowTheCompensatedAngle) {
     for (int i = 0; i < 3 * 4 * n + 100; ++i) b.tick();
     ASSERT_EQ(b.trk.size(), static_cast<size_t>(samples));
     const uint32_t com = b.trk.back().angle_comp;
-    target = abz_target(com, 16, n, target);
-    // The N write re-homed the count at the first angle, without edges: the drive homes its
-    // decoder once, as after power-up (here to the model's count; an SPI read would give it).
+    target = abz_target(com, 16, n, bd::kAbzHysReset, target);
+    // N was written before the first angle (the count stays 0 until one arrives): the drive
+    // homes its decoder once, as after power-up (here to the model's count; an SPI read gives it).
     if (k == 0) b.pos = target;
     const int64_t wrapped = ((b.pos % (4 * n)) + 4 * n) % (4 * n);
     ASSERT_EQ(wrapped, target) << "sample " << k << " angle " << com;

@@ -15,7 +15,8 @@ constexpr uint32_t kAddrSpace = 0x1000;
 
 // ABZ_N (RW): ABZ quadrature: pulses a turn.
 constexpr uint32_t kAbzN = 0x060;
-// N [12:0] (RW): A/B periods a turn (4N counts a turn). A new N re-homes the count without edges.
+// N [12:0] (RW): A/B periods a turn (4N counts a turn). A new N re-homes the count at once without
+// an edge: A and B hold, then at most two single steps reach the new count.
 constexpr int kAbzNNShift = 0;
 constexpr uint32_t kAbzNNMask = 0x1FFFu;
 constexpr int kAbzNNBits = 13;
@@ -118,5 +119,17 @@ constexpr int kTrkPositionTurnsBits = 16;
 constexpr int kTrkPositionAngleShift = 0;
 constexpr uint32_t kTrkPositionAngleMask = 0xFFFFu;
 constexpr int kTrkPositionAngleBits = 16;
+
+// ABZ_HYS (RW): ABZ quadrature: the hysteresis.
+constexpr uint32_t kAbzHys = 0x088;
+// WIDTH [7:0] (RW): The count holds while the angle stays within WIDTH angle LSBs of the count's
+// own interval (0: none). A dither over D + 1 neighbouring LSBs moves no edge when WIDTH >= D: the
+// reset, 2, holds a +-1 LSB dither still wherever it sits.
+constexpr int kAbzHysWidthShift = 0;
+constexpr uint32_t kAbzHysWidthMask = 0xFFu;
+constexpr int kAbzHysWidthBits = 8;
+constexpr uint32_t kAbzHysReset = 0x2u;
+// The bits that read back.
+constexpr uint32_t kAbzHysReadMask = 0xFFu;
 
 }  // namespace acore::board

@@ -27,15 +27,25 @@ int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n) {
   return static_cast<int64_t>(p >> (angle_w - 2));
 }
 
-int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_target) {
+int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t hys, int64_t previous_target) {
   const int64_t lo = abz_count_of(angle, angle_w, n);
-  const uint64_t a = angle & ((uint64_t{1} << angle_w) - 1);
-  uint64_t p = 0;
-  for (int i = 0; i < board::kAbzNNBits; ++i)
-    if ((static_cast<uint64_t>(n) >> i) & 1) p += a << i;
-  int64_t hi = static_cast<int64_t>((p + static_cast<uint64_t>(n)) >> (angle_w - 2));
-  if (hi == 4 * n) hi = 0;
-  return (previous_target == hi && hi != lo) ? hi : lo;
+  if (hys < 0 || hys >= (int64_t{1} << (angle_w - 2)))
+    throw InputError("ABZ: hysteresis must be 0.." +
+                     std::to_string((int64_t{1} << (angle_w - 2)) - 1) +
+                     " angle LSBs at an angle width of " + std::to_string(angle_w) + ", not " +
+                     std::to_string(hys));
+  const uint64_t h = static_cast<uint64_t>(hys);
+  const int64_t first = abz_count_of(angle - h, angle_w, n);  // abz_count_of wraps the angle
+  const int64_t last = abz_count_of(angle + h, angle_w, n);
+  const bool inside = first <= last ? previous_target >= first && previous_target <= last
+                                    : previous_target >= first || previous_target <= last;
+  return inside ? previous_target : lo;
+}
+
+int64_t abz_rehome(int64_t count, int64_t target, int64_t n) {
+  const int64_t m = 4 * n;
+  const int64_t d = ((count - target) % 4 + 4) % 4;
+  return ((target + (d == 3 ? -1 : d)) % m + m) % m;
 }
 
 AbzPins abz_pins(int64_t count, int64_t index) {
@@ -58,6 +68,13 @@ int AbzCounter::step() {
   count_ = ((count_ + dir) % m + m) % m;
   wait_ = spacing_ - 1;
   return dir;
+}
+
+void AbzCounter::rehome(int64_t n, int64_t target) {
+  check_abz(16, n);
+  count_ = abz_rehome(count_, target, n);
+  n_ = n;
+  target_ = target;
 }
 
 UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs) {

@@ -25,10 +25,16 @@ namespace acore {
 // floor(angle 4N / 2^angle_w): the count of an angle (0 .. 4N-1). Throws InputError on N outside
 // its range or an angle_w outside 2..32.
 int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n);
-// The target after a new angle given the previous target: the count of angle + 1 LSB (mod 4N)
-// when the previous target is that count (the one-LSB hysteresis band), the angle's count
-// otherwise.
-int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_target);
+// The target after a new angle given the previous target, with a hysteresis of `hys` angle LSBs:
+// the previous target holds while it is one of the counts the window angle - hys .. angle + hys
+// touches (round the turn: abz_count_of(angle - hys) .. abz_count_of(angle + hys)), otherwise the
+// target is the angle's count. hys = 0: the angle's count. Throws InputError on hys outside
+// 0 .. 2^(angle_w-2) - 1 (the window stays below a quarter turn).
+int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t hys, int64_t previous_target);
+// A change of N re-homes the count without an edge: the count keeps its two low bits (A and B
+// hold) and takes the value nearest the new target (target + d, d = (count - target) mod 4 in
+// 0..2, or target - 1 for d = 3, round the new turn of 4n counts); it then walks to the target.
+int64_t abz_rehome(int64_t count, int64_t target, int64_t n);
 // A quadrature pair from a count: A = c1 ^ c0, B = c1 (Gray 00, 10, 11, 01 forward).
 struct AbzPins {
   bool a, b, z;
@@ -40,6 +46,8 @@ class AbzCounter {
  public:
   AbzCounter(int64_t n, int spacing);
   void set_target(int64_t target) { target_ = target; }
+  // A new N (acore_abz.v's re-homing): the count as abz_rehome() puts it, the target given.
+  void rehome(int64_t n, int64_t target);
   // One clock: a step toward the target (the shorter way, a half turn forward) when the spacing
   // since the last edge has passed. Returns +1, -1 or 0.
   int step();
