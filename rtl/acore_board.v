@@ -244,7 +244,7 @@ module acore_board #(
     .sector_o(uvw_sector), .valid_o(uvw_valid));
   wire spi_frame;
   wire [2:0] spi_errfl;
-  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2)) u_spi (
+  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2), .SCLK_MIN(4)) u_spi (
     .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
     .miso_oe_o(miso_oe_o), .angle_unc_i(unc_q), .angle_com_i(com_q), .mag_i(14'd0), .agc_i(8'd0),
     .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(lot_q), .frame_o(spi_frame),

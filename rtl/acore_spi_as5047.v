@@ -16,20 +16,25 @@
 //   0x3FFE ANGLEUNC  the uncompensated angle's upper 14 bits
 //   0x3FFF ANGLECOM  the compensated angle's upper 14 bits
 // Errors: a frame whose parity is odd sets PARERR and is ignored; a frame that is not 16 clocks
-// long sets FRERR and is ignored; a read of another address, or a write command (this port has no
+// long, or follows a CSn gap shorter than 2 clocks (below), sets FRERR and is ignored; a read of another address, or a write command (this port has no
 // writable register; the data frame that follows it is consumed), sets INVCOMM. NOP, address 0,
 // is no command whether R/W is set or not (0x0000 is the frame drivers send to collect an answer). EF, bit 14 of every
 // answer, is high while ERRFL holds an error, so the answer after a refused frame carries it (its
 // data is then NOP's 0), until ERRFL is read.
 //
-// One clock domain: SCLK, CSn and MOSI are oversampled through SYNC flops each (clk_i at least 4
-// times SCLK). MOSI is taken at the synchronized falling edge, the same stage as SCLK's, so it is
-// the value the master held across that edge. The next MISO bit is presented after each falling
-// edge (SYNC + 1 clocks later, so the master's hold is met) and is stable until the next one, a
-// full SCLK period: with SCLK = clk/4 and SYNC = 2 it settles a clock before it is sampled. The
-// answer word follows its register while CSn is high and freezes when CSn falls (the angle is
-// the one at the start of the frame that carries it); the first falling SCLK edge must come at
-// least SYNC + 2 clocks after CSn falls (the AS5047P's own t_L, 350 ns, is longer above 12 MHz).
+// One clock domain: SCLK, CSn and MOSI are oversampled through SYNC flops each. MOSI is taken at
+// the synchronized falling edge, the same stage as SCLK's, so it is the value the master held
+// across that edge. The next MISO bit is presented SYNC + 1 clocks after each falling edge (so the
+// master's hold is met) and is stable until SYNC + 1 clocks after the next one: the master samples
+// it right when the SCLK period is at least SYNC + 2 clocks (one clock of set-up). That is the
+// port's timing rule, and SCLK_MIN, the shortest SCLK period (in clocks) the port is built for,
+// must meet it: SCLK_MIN >= SYNC + 2, refused at elaboration otherwise (SYNC = 2 takes SCLK up to
+// clk/4, SYNC = 3 clk/5, SYNC = 4 clk/6). The answer word follows its register while CSn is high
+// and freezes when CSn falls (the angle is the one at the start of the frame that carries it).
+// CSn timing, in clocks of clk_i: the first falling SCLK edge at least SYNC + 2 clocks after CSn
+// falls (the AS5047P's own t_L, 350 ns, is longer above 12 MHz); CSn high at least 2 clocks
+// between frames (the answer is loaded in the second). A frame after a shorter gap is a framing
+// error, detected: its answer is {PAR, EF, 0} (0xC000), its command is ignored, FRERR is set.
 `resetall
 `default_nettype none
 
@@ -37,7 +42,9 @@ module acore_spi_as5047 #(
   // Bits of the angle inputs (at least the 14 the frame carries: their upper 14 bits are sent).
   parameter integer ANGLE_W = 16,
   // Synchronizer flops on SCLK, CSn and MOSI.
-  parameter integer SYNC = 2
+  parameter integer SYNC = 2,
+  // The shortest SCLK period the port is built for, in clocks of clk_i: at least SYNC + 2.
+  parameter integer SCLK_MIN = 4
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -65,21 +72,26 @@ module acore_spi_as5047 #(
     .MSG("illegal parameter: ANGLE_W must be 14..32 (the frame carries 14 bits)")) ANGLE_W_must_be_14_to_32 ();
   acore_check #(.OK(SYNC >= 2 && SYNC <= 4), .VALUE(SYNC),
     .MSG("illegal parameter: SYNC must be 2..4")) SYNC_must_be_2_to_4 ();
+  acore_check #(.OK(SCLK_MIN >= SYNC + 2), .VALUE(SCLK_MIN),
+    .MSG("illegal parameter: SCLK_MIN must be >= SYNC + 2 (MISO moves SYNC + 1 clocks after SCLK falls)"))
+    SCLK_MIN_must_be_at_least_SYNC_plus_2 ();
 
   localparam [13:0] A_NOP = 14'h0000, A_ERRFL = 14'h0001, A_DIAAGC = 14'h3FFC, A_MAG = 14'h3FFD,
                     A_ANGLEUNC = 14'h3FFE, A_ANGLECOM = 14'h3FFF;
 
   // ---- synchronizers (idle: SCLK low, CSn high) and edges ----
-  reg [SYNC:0] sclk_s, csn_s;
+  // (CSn one stage longer: a falling edge sees whether CSn was high for two clocks before it.)
+  reg [SYNC:0] sclk_s;
+  reg [SYNC+1:0] csn_s;
   reg [SYNC-1:0] mosi_s;
   always @(posedge clk_i) begin
     if (rst_i) begin
       sclk_s <= {(SYNC+1){1'b0}};
-      csn_s <= {(SYNC+1){1'b1}};
+      csn_s <= {(SYNC+2){1'b1}};
       mosi_s <= {SYNC{1'b0}};
     end else begin
       sclk_s <= {sclk_s[SYNC-1:0], sclk_i};
-      csn_s <= {csn_s[SYNC-1:0], csn_i};
+      csn_s <= {csn_s[SYNC:0], csn_i};
       mosi_s <= {mosi_s[SYNC-2:0], mosi_i};
     end
   end
@@ -88,6 +100,8 @@ module acore_spi_as5047 #(
   wire mosi = mosi_s[SYNC-1];
   wire cs_fall = csn_s[SYNC] & ~csn_s[SYNC-1];
   wire cs_rise = ~csn_s[SYNC] & csn_s[SYNC-1];
+  // CSn was high for one clock only: the answer of the frame before was not loaded.
+  wire cs_short = cs_fall & ~csn_s[SYNC+1];
 
   // ---- the answer of the next frame ----
   reg [2:0] errfl_q;   // {PARERR, INVCOMM, FRERR}
@@ -110,6 +124,7 @@ module acore_spi_as5047 #(
   reg [15:0] rx_q, tx_q;
   reg [4:0] bits_q;    // saturates at 17: too long
   reg wr_data_q;       // the next frame is a write's data frame
+  reg short_q;         // this frame followed a CSn gap of one clock: a framing error
   wire parity_ok = ~^rx_q;
   wire read = rx_q[14];
   wire [13:0] addr = rx_q[13:0];
@@ -119,23 +134,27 @@ module acore_spi_as5047 #(
   // NOP (address 0) is no command either way: the frame drivers send to collect an answer is 0x0000.
   wire nop = (addr == A_NOP);
   wire write = ~read & ~nop;
-  wire [2:0] err_new = (bits_q != 5'd16) ? 3'b001 : ~parity_ok ? 3'b100 :
+  wire [2:0] err_new = (bits_q != 5'd16 || short_q) ? 3'b001 : ~parity_ok ? 3'b100 :
                        wr_data_q ? 3'b000 : (write | ~known) ? 3'b010 : 3'b000;
-  wire cmd_ok = cs_rise & (bits_q == 5'd16) & parity_ok & ~wr_data_q;
-  // ERRFL's own answer clears it when the frame carrying it starts.
-  wire clear_errfl = cs_fall & (ans_q == 3'd1);
+  wire cmd_ok = cs_rise & (bits_q == 5'd16) & ~short_q & parity_ok & ~wr_data_q;
+  // ERRFL's own answer clears it when the frame carrying it starts (not after a short gap: the
+  // frame then carries 0xC000 instead).
+  wire clear_errfl = cs_fall & (ans_q == 3'd1) & ~cs_short;
   always @(posedge clk_i) begin
     if (rst_i) begin
       errfl_q <= 3'd0;
       ans_q <= 3'd0;
       bits_q <= 5'd0;
       wr_data_q <= 1'b0;
+      short_q <= 1'b0;
       frame_o <= 1'b0;
       tx_q <= 16'd0;
     end else begin
       frame_o <= cs_rise;
       if (!sel) tx_q <= answer;
+      else if (cs_short) tx_q <= 16'hC000;  // EF with even parity, data 0
       else if (fall) tx_q <= {tx_q[14:0], 1'b0};
+      if (cs_fall) short_q <= cs_short;
       if (cs_fall) bits_q <= 5'd0;
       else if (fall && bits_q != 5'd17) bits_q <= bits_q + 5'd1;
       errfl_q <= (clear_errfl ? 3'd0 : errfl_q) | (cs_rise ? err_new : 3'd0);

@@ -15,7 +15,8 @@
 //     motor-control drivers send to an AS5047P (SimpleFOC's MagneticSensorSPI: the read command
 //     0x3FFF | R | parity, then a NOP frame whose answer is the angle; ODrive: 0xFFFF every cycle,
 //     the answer's parity and error flag checked), reads the angle; parity errors, framing errors
-//     and invalid commands are refused and reported in ERRFL and the error flag.
+//     (a CSn gap of one clock included) and invalid commands are refused and reported in ERRFL and
+//     the error flag; MISO moves SYNC + 1 clocks after each falling SCLK edge.
 #include <gtest/gtest.h>
 #include <verilated.h>
 
@@ -640,6 +641,68 @@ TEST(SpiAs5047, FramingAndInvalidCommandsAndDiagnostics) {
   EXPECT_FALSE((m.frame(0x0000) >> 14) & 1);
 }
 
+// The port's timing rule (rtl/acore_spi_as5047.v): MISO moves SYNC + 1 clocks after each falling
+// SCLK edge, so at the shortest SCLK period the line is built for (SCLK_MIN >= SYNC + 2 clocks) a
+// mode-1 master sampling at the falling edge sees each bit a clock after it settled.
+TEST(SpiTiming, MisoMovesSyncPlusOneClocksAfterTheFallingEdge) {
+  constexpr int kSync = ACORE_STAGE_SPI_SYNC, kSclkMin = ACORE_STAGE_SPI_SCLK_MIN;
+  static_assert(kSclkMin >= kSync + 2, "the registry line must obey the port's rule");
+  SpiMaster m(31);
+  m.angle(0, 0x5555);  // ANGLECOM's 14 bits alternate: MISO toggles at every bit
+  m.frame(as5047::with_even_parity(0x7FFF));
+  auto& top = *m.top;
+  top.csn_i = 0;
+  m.clocks(m.lead);
+  std::vector<int> delays;
+  int last_fall = -1, t = 0, prev = top.miso_o;
+  for (int i = 0; i < 16; ++i) {
+    for (int level : {1, 0}) {
+      top.sclk_i = level;
+      if (level == 0) last_fall = t;
+      for (int c = 0; c < kSclkMin / 2; ++c) {
+        tick(top);
+        ++t;
+        if (top.miso_o != prev && last_fall >= 0) delays.push_back(t - last_fall);
+        prev = top.miso_o;
+      }
+    }
+  }
+  top.csn_i = 1;
+  m.clocks(8);
+  ASSERT_GE(delays.size(), 10u);
+  for (int d : delays) {
+    EXPECT_EQ(d, kSync + 1);
+    EXPECT_LE(d, kSclkMin - 1) << "MISO must settle a clock before the next falling edge";
+  }
+}
+
+// CSn high for one clock between frames (below the port's minimum of two): the frame after it
+// answers 0xC000 (EF set, parity even, no data) instead of a stale register, its command is
+// ignored, and ERRFL.FRERR reports it; two clocks are enough.
+TEST(SpiAs5047, ShortCsnGapIsAFramingErrorNotAWrongAnswer) {
+  SpiMaster m(32);
+  m.angle(0x1111, 0xBEEF);
+  // (SpiMaster::frame() holds CSn high for `gap` clocks after its frame.)
+  m.gap = 1;
+  m.frame(as5047::with_even_parity(0x7FFF));  // read ANGLECOM, then CSn high for one clock
+  m.gap = 8;
+  const uint16_t bad = m.frame(as5047::with_even_parity(0x7FFE));  // then ANGLEUNC, too soon
+  EXPECT_EQ(bad, 0xC000) << "EF with even parity, no data";
+  const uint16_t after = m.frame(as5047::with_even_parity(0x4001));  // read ERRFL
+  EXPECT_EQ(after, 0xC000) << "the refused frame's command read nothing (NOP, EF)";
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(as5047::kFrErr));
+  // Two clocks: every answer right.
+  for (int k = 0; k < 20; ++k) {
+    m.gap = 2;
+    m.frame(as5047::with_even_parity(0x7FFF));
+    const uint16_t com = m.frame(as5047::with_even_parity(0x7FFE));
+    EXPECT_EQ(com, as5047::with_even_parity(static_cast<uint16_t>(top14(0xBEEF)))) << k;
+  }
+  m.gap = 8;
+  m.frame(0x0000);
+  EXPECT_EQ(m.top->errfl_o, 0);
+}
+
 // ---- PWM (AS5047P frame) --------------------------------------------------------------------
 TEST(Pwm, InputCaptureDecoderRecoversTheAngle) {
   std::mt19937_64 rng(41);
@@ -727,14 +790,18 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
     if (rng() % 8 == 0) cmd ^= static_cast<uint16_t>(1u << (rng() % 16));
     const int bits = rng() % 16 == 0 ? 13 + static_cast<int>(rng() % 3) : 16;
     m.half = 2 + static_cast<int>(rng() % 3);
-    m.gap = 6 + static_cast<int>(rng() % 6);
+    // The CSn gap before this frame (the one the previous frame left): now and then one clock,
+    // below the port's minimum of two.
+    const bool short_gap = m.gap < 2;
+    m.gap = rng() % 10 == 0 ? 1 : 2 + static_cast<int>(rng() % 8);
     const uint16_t got = m.frame(cmd, bits);
-    const uint16_t want = model.frame(cmd, in, bits);
+    const uint16_t want = model.frame(cmd, in, bits, short_gap);
     mismatches += got != want;
     if (got != want && mismatches < 5)
       ADD_FAILURE() << "frame " << k << " cmd " << std::hex << cmd << " bits " << std::dec << bits
                     << ": rtl " << std::hex << got << " model " << want;
-    mismatches += m.top->errfl_o != model.errfl();
+    // (ERRFL takes the frame's errors SYNC + 1 clocks after CSn rises: after a gap that long.)
+    if (m.gap >= ACORE_STAGE_SPI_SYNC + 2) mismatches += m.top->errfl_o != model.errfl();
   }
   EXPECT_EQ(mismatches, 0);
 }

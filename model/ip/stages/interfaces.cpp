@@ -111,7 +111,7 @@ uint16_t with_even_parity(uint16_t word15) {
 }
 }  // namespace as5047
 
-uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits) {
+uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool short_gap) {
   using namespace as5047;
   // The answer, from the register chosen by the previous frame, as the frame starts.
   uint16_t data = 0;
@@ -136,17 +136,20 @@ uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits) {
       break;
   }
   const bool ef = errfl_ != 0;
-  const uint16_t answer = with_even_parity(static_cast<uint16_t>((ef ? 0x4000 : 0) | data));
-  if (answer_reg_ == kErrfl) errfl_ = 0;  // read clears
+  const uint16_t answer = short_gap
+                              ? uint16_t{0xC000}
+                              : with_even_parity(static_cast<uint16_t>((ef ? 0x4000 : 0) | data));
+  if (answer_reg_ == kErrfl && !short_gap) errfl_ = 0;  // read clears
   // The command at the end of the frame.
   const uint16_t addr = mosi & 0x3FFF;
   const bool read = (mosi >> 14) & 1;
   const bool known = addr == kNop || addr == kErrfl || addr == kDiaagc || addr == kMag ||
                      addr == kAngleUnc || addr == kAngleCom;
   const bool write = !read && addr != kNop;
-  if (bits != 16) {
+  if (bits != 16 || short_gap) {
     errfl_ |= kFrErr;
     answer_reg_ = kNop;
+    if (bits == 16) write_data_ = false;
   } else if (!parity_even(mosi)) {
     errfl_ |= kParErr;
     answer_reg_ = kNop;

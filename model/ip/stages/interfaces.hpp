@@ -93,10 +93,11 @@ struct As5047Inputs {
 
 // The port at frame level: frame() takes the master's word and clock count and returns the word
 // the port sent (the answer prepared by the previous frame, from `in` as it is when this frame
-// starts).
+// starts). short_gap: CSn was high for less than 2 clocks before this frame (the RTL's minimum):
+// a framing error, the frame answers 0xC000 (EF, even parity, data 0) and its command is ignored.
 class As5047Port {
  public:
-  uint16_t frame(uint16_t mosi, const As5047Inputs& in, int bits = 16);
+  uint16_t frame(uint16_t mosi, const As5047Inputs& in, int bits = 16, bool short_gap = false);
   uint16_t errfl() const { return errfl_; }
 
  private:
