@@ -477,23 +477,46 @@ struct SpiMaster {
   int lead = 2;  // clocks from CSn low to the first rising SCLK edge
   int gap = 8;   // clocks CSn stays high between frames
   uint64_t frames = 0, oe_bad = 0;
+  // The registers the port's settings are (the board's IF_ZERO, IF_CTRL, ABZ_N, UVW_PP, ABZ_HYS at
+  // their reset values): a write strobe high before a clock edge loads them at it.
+  As5047Config regs;
   explicit SpiMaster(uint64_t seed) {
     top = make<Vstage_spi>(ctx, seed);
     top->csn_i = 1;
     top->sclk_i = 0;
     top->mosi_i = 0;
     top->rst_i = 1;
+    drive_regs();
     tick(*top);
     tick(*top);
     top->rst_i = 0;
-    for (int k = 0; k < 8; ++k) tick(*top);
+    clocks(8);
+  }
+  void drive_regs() {
+    top->cfg_zero_i = regs.zero;
+    top->cfg_dir_i = regs.dir;
+    top->cfg_daec_i = regs.daec;
+    top->cfg_n_i = static_cast<uint32_t>(regs.n);
+    top->cfg_pp_i = static_cast<uint32_t>(regs.pole_pairs);
+    top->cfg_hys_i = static_cast<uint32_t>(regs.hys);
   }
   void angle(uint32_t unc, uint32_t com) {
     top->angle_unc_i = unc;
     top->angle_com_i = com;
   }
   void clocks(int k) {
-    for (int i = 0; i < k; ++i) tick(*top);
+    for (int i = 0; i < k; ++i) {
+      As5047Config next = regs;
+      if (top->cfg_zero_we_o) next.zero = static_cast<uint16_t>(top->cfg_zero_o);
+      if (top->cfg_dir_we_o) next.dir = top->cfg_dir_o;
+      if (top->cfg_daec_we_o) next.daec = top->cfg_daec_o;
+      if (top->cfg_n_we_o) next.n = top->cfg_n_o;
+      if (top->cfg_pp_we_o) next.pole_pairs = top->cfg_pp_o;
+      if (top->cfg_hys_we_o) next.hys = top->cfg_hys_o;
+      tick(*top);
+      regs = next;
+      drive_regs();
+    }
   }
   // One mode-1 frame of `bits` bits (16 normally): MOSI changes on the rising edge, MISO is
   // sampled on the falling edge, MSB first.
@@ -616,8 +639,8 @@ TEST(SpiAs5047, FramingAndInvalidCommandsAndDiagnostics) {
   m.frame(with_parity(0x4000 | 0x1234));
   m.frame(with_parity(0x4001));
   EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x2u);
-  // A write command: INVCOMM (no writable register), its data frame consumed.
-  m.frame(with_parity(0x0016));
+  // A write command to a read-only register: INVCOMM, its data frame consumed.
+  m.frame(with_parity(0x3FFD));
   m.frame(with_parity(0x0FFF));
   m.frame(with_parity(0x4001));
   EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x2u);
@@ -703,6 +726,70 @@ TEST(SpiAs5047, ShortCsnGapIsAFramingErrorNotAWrongAnswer) {
   EXPECT_EQ(m.top->errfl_o, 0);
 }
 
+// The datasheet's write sequence on the settings: a write command, then the data frame (answered
+// with the register's old content), then any frame (answered with the new content); the values the
+// board's registers take, from the datasheet's tables: ZPOS in ZPOSM/ZPOSL, DIR and DAECDIS in
+// SETTINGS1, UVWPP (pole pairs - 1), HYS (3, 2, 1, 0 LSBs of 2^-11 turn) and ABIRES (decimal
+// 1000 500 400 300 200 100 50 25, binary 1024 512 256) in SETTINGS2; PROG without OTP.
+TEST(SpiAs5047, WritesFollowTheDatasheetSequenceAndTables) {
+  SpiMaster m(33);
+  m.angle(0x1234, 0xBEEF);
+  const auto write = [&](uint16_t reg, uint16_t value) -> std::pair<unsigned, unsigned> {
+    m.frame(with_parity(reg));  // R/W = 0
+    const uint16_t old_value = m.frame(with_parity(value));
+    const uint16_t new_value = m.frame(0x0000);
+    EXPECT_EQ(ones(old_value) & 1, 0);
+    EXPECT_EQ(ones(new_value) & 1, 0);
+    return {old_value & 0x3FFFu, new_value & 0x3FFFu};
+  };
+  // ZPOS = 0x2A5C: ZPOSM takes bits 13:6, ZPOSL bits 5:0 (and its two error enables, kept).
+  EXPECT_EQ(write(0x0016, 0x2A5C >> 6), std::make_pair(0u, static_cast<unsigned>(0x2A5C >> 6)));
+  EXPECT_EQ(write(0x0017, 0xC0 | (0x2A5C & 0x3F)),
+            std::make_pair(0u, static_cast<unsigned>(0xC0 | (0x2A5C & 0x3F))));
+  EXPECT_EQ(m.regs.zero, 0x2A5C);
+  // SETTINGS1 at reset: bit 0 reads 1, ABIBIN 1 (AngleCore's ABZ_N reset 1024 is binary's 0).
+  // DIR = 1, DAECDIS = 1, ABIBIN = 0 (decimal: N 1024 reads as 1000's code, 0, and becomes 1000).
+  EXPECT_EQ(write(0x0018, 0x04 | 0x10), std::make_pair(0x21u, 0x15u));
+  EXPECT_TRUE(m.regs.dir);
+  EXPECT_FALSE(m.regs.daec);
+  EXPECT_EQ(m.regs.n, 1000);
+  // SETTINGS2: UVWPP 4 (5 pole pairs), HYS 1 (2 LSBs of 2^-11 turn), ABIRES 1 (decimal: 500).
+  const unsigned s2 = (1u << 5) | (1u << 3) | 4u;
+  // Its reset reads ABIRES 0 (N 1000 now), HYS 2 (ABZ_HYS 2 is one LSB rounded up), UVWPP 0.
+  EXPECT_EQ(write(0x0019, static_cast<uint16_t>(s2)), std::make_pair((2u << 3), s2));
+  EXPECT_EQ(m.regs.pole_pairs, 5);
+  EXPECT_EQ(m.regs.hys, 2 << (kSpiAngleW - 11));
+  EXPECT_EQ(m.regs.n, 500);
+  // Every decimal and binary code.
+  const int64_t decimal[8] = {1000, 500, 400, 300, 200, 100, 50, 25};
+  for (int code = 0; code < 8; ++code) {
+    write(0x0019, static_cast<uint16_t>(code << 5));
+    EXPECT_EQ(m.regs.n, decimal[code]) << code;
+  }
+  write(0x0018, 0x20);  // ABIBIN = 1: N 25 (code 7) reads as binary's last code, 256
+  EXPECT_EQ(m.regs.n, 256);
+  for (int code = 0; code < 3; ++code) {
+    write(0x0019, static_cast<uint16_t>(code << 5));
+    EXPECT_EQ(m.regs.n, 1024 >> code) << code;
+  }
+  // UVWPP 7 is 7 pole pairs, as 6; HYS 3 is none.
+  write(0x0019, 0x7 | (3 << 3));
+  EXPECT_EQ(m.regs.pole_pairs, 7);
+  EXPECT_EQ(m.regs.hys, 0);
+  // PROG: PROGEN and PROGVER kept, OTPREF and PROGOTP act at once and read 0 (no OTP); the
+  // settings are untouched by a "programming".
+  EXPECT_EQ(write(0x0003, 0x01).second, 0x01u);
+  EXPECT_EQ(write(0x0003, 0x08 | 0x01).second, 0x01u) << "PROGOTP done at once";
+  EXPECT_EQ(write(0x0003, 0x40 | 0x04).second, 0x40u);
+  EXPECT_EQ(m.regs.zero, 0x2A5C);
+  EXPECT_EQ(m.regs.pole_pairs, 7);
+  // Dataselect (SETTINGS1 bit 6): 0x3FFF reads ANGLEUNC's angle.
+  write(0x0018, 0x20 | 0x40);
+  m.frame(with_parity(0x7FFF));
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, top14(0x1234));
+  EXPECT_EQ(m.top->errfl_o, 0) << "no write above was refused";
+}
+
 // ---- PWM (AS5047P frame) --------------------------------------------------------------------
 TEST(Pwm, InputCaptureDecoderRecoversTheAngle) {
   std::mt19937_64 rng(41);
@@ -767,7 +854,10 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
   As5047Port model;
   As5047Inputs in;
   in.angle_w = kSpiAngleW;
-  const uint16_t regs[] = {0x0000, 0x0001, 0x3FFC, 0x3FFD, 0x3FFE, 0x3FFF, 0x0016, 0x1234};
+  const uint16_t regs[] = {0x0000, 0x0001, 0x0003, 0x0016, 0x0017, 0x0018,
+                           0x0019, 0x3FFC, 0x3FFD, 0x3FFE, 0x3FFF, 0x1234};
+  int config_mismatches = 0, n_changes = 0, zero_changes = 0;
+  As5047Config last;
   int mismatches = 0;
   for (int k = 0; k < 3000; ++k) {
     in.angle_com = rng() & ((1u << kSpiAngleW) - 1);
@@ -785,8 +875,10 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
     m.top->dos_i = in.dos;
     m.top->ovf_i = in.ovf;
     m.top->lot_i = in.lot;
+    // Reads, writes (a command, or a data frame after one: any 8-bit value) of every register.
     uint16_t cmd = as5047::with_even_parity(
-        static_cast<uint16_t>(regs[rng() % 8] | ((rng() % 4) ? 0x4000 : 0)));
+        rng() % 4 == 0 ? static_cast<uint16_t>(rng() & 0xFF)
+                       : static_cast<uint16_t>(regs[rng() % 12] | ((rng() % 3) ? 0x4000 : 0)));
     if (rng() % 8 == 0) cmd ^= static_cast<uint16_t>(1u << (rng() % 16));
     const int bits = rng() % 16 == 0 ? 13 + static_cast<int>(rng() % 3) : 16;
     m.half = 2 + static_cast<int>(rng() % 3);
@@ -800,10 +892,23 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
     if (got != want && mismatches < 5)
       ADD_FAILURE() << "frame " << k << " cmd " << std::hex << cmd << " bits " << std::dec << bits
                     << ": rtl " << std::hex << got << " model " << want;
-    // (ERRFL takes the frame's errors SYNC + 1 clocks after CSn rises: after a gap that long.)
-    if (m.gap >= ACORE_STAGE_SPI_SYNC + 2) mismatches += m.top->errfl_o != model.errfl();
+    // (ERRFL and a write take the frame SYNC + 1 clocks after CSn rises: after a gap that long.)
+    if (m.gap >= ACORE_STAGE_SPI_SYNC + 2) {
+      mismatches += m.top->errfl_o != model.errfl();
+      const As5047Config& r = m.regs;
+      const As5047Config& c = model.config;
+      n_changes += r.n != last.n;
+      zero_changes += r.zero != last.zero;
+      last = r;
+      config_mismatches += r.zero != c.zero || r.dir != c.dir || r.daec != c.daec || r.n != c.n ||
+                           r.pole_pairs != c.pole_pairs || r.hys != c.hys;
+    }
   }
   EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(config_mismatches, 0);
+  // The run wrote the settings: N and the zero changed many times.
+  EXPECT_GT(n_changes, 10);
+  EXPECT_GT(zero_changes, 10);
 }
 
 // The ABZ count after every catch-up equals the model's (model/ip/stages/interfaces.hpp): random

@@ -132,4 +132,27 @@ constexpr uint32_t kAbzHysReset = 0x2u;
 // The bits that read back.
 constexpr uint32_t kAbzHysReadMask = 0xFFu;
 
+// IF_ZERO (RW): Drive interfaces: the zero position.
+constexpr uint32_t kIfZero = 0x08C;
+// ZERO [13:0] (RW): The angle (2^-14 turn) subtracted from the angle ANGLECOM, ANGLEUNC, ABZ and
+// UVW give, as the AS5047P's ZPOS.
+constexpr int kIfZeroZeroShift = 0;
+constexpr uint32_t kIfZeroZeroMask = 0x3FFFu;
+constexpr int kIfZeroZeroBits = 14;
+constexpr uint32_t kIfZeroReset = 0x0u;
+// The bits that read back.
+constexpr uint32_t kIfZeroReadMask = 0x3FFFu;
+
+// IF_CTRL (RW): Drive interfaces: direction and compensation.
+constexpr uint32_t kIfCtrl = 0x090;
+// DIR [0] (RW): 1: the interfaces' angle counts the other way (its negative after the zero), as
+// the AS5047P's DIR.
+constexpr uint32_t kIfCtrlDir = 1u << 0;
+// DAEC [1] (RW): 1: ANGLECOM, ABZ and UVW take the observer's compensated angle; 0: the
+// estimator's angle (ANGLEUNC's), as the AS5047P's DAECDIS = 1.
+constexpr uint32_t kIfCtrlDaec = 1u << 1;
+constexpr uint32_t kIfCtrlReset = 0x2u;
+// The bits that read back.
+constexpr uint32_t kIfCtrlReadMask = 0x3u;
+
 }  // namespace acore::board

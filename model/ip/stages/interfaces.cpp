@@ -111,30 +111,102 @@ uint16_t with_even_parity(uint16_t word15) {
 }
 }  // namespace as5047
 
-uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool short_gap) {
+namespace as5047 {
+int64_t abires_n(bool binary, int code) {
+  static const int64_t decimal[8] = {1000, 500, 400, 300, 200, 100, 50, 25};
+  if (binary) return code == 0 ? 1024 : code == 1 ? 512 : 256;
+  return decimal[code & 7];
+}
+int abires_code(bool binary, int64_t n) {
+  const int last = binary ? 2 : 7;
+  for (int c = 0; c <= last; ++c)
+    if (n >= abires_n(binary, c)) return c;
+  return last;
+}
+}  // namespace as5047
+
+uint16_t As5047Port::read_register(uint16_t addr, const As5047Inputs& in) const {
   using namespace as5047;
-  // The answer, from the register chosen by the previous frame, as the frame starts.
-  uint16_t data = 0;
-  switch (answer_reg_) {
+  const auto top14 = [&](uint64_t a) {
+    return static_cast<uint16_t>((a >> (in.angle_w - 14)) & 0x3FFF);
+  };
+  switch (addr) {
     case kErrfl:
-      data = errfl_;
-      break;
+      return errfl_;
+    case kProg:
+      return static_cast<uint16_t>((progver_ << 6) | (progen_ ? 1 : 0));
+    case kZposm:
+      return static_cast<uint16_t>((config.zero >> 6) & 0xFF);
+    case kZposl:
+      return static_cast<uint16_t>((error_enables_ << 6) | (config.zero & 0x3F));
+    case kSettings1:
+      return static_cast<uint16_t>((pwmon_ << 7) | (dataselect_ << 6) | (abibin_ << 5) |
+                                   ((config.daec ? 0 : 1) << 4) | (uvw_abi_ << 3) |
+                                   (config.dir << 2) | 1);
+    case kSettings2: {
+      const int pp = config.pole_pairs >= 7   ? 6
+                     : config.pole_pairs == 0 ? 0
+                                              : config.pole_pairs - 1;
+      const int64_t lsb = int64_t{1} << (in.angle_w - 11);
+      const int64_t lsbs = (config.hys + lsb - 1) / lsb;
+      const int hys = lsbs >= 3 ? 0 : static_cast<int>(3 - lsbs);
+      return static_cast<uint16_t>((abires_code(abibin_, config.n) << 5) | (hys << 3) | pp);
+    }
     case kDiaagc:
-      data = static_cast<uint16_t>((in.los << 11) | (in.dos << 10) | (in.ovf << 9) |
+      return static_cast<uint16_t>((in.los << 11) | (in.dos << 10) | (in.ovf << 9) |
                                    ((in.lot ? 0 : 1) << 8) | in.agc);
-      break;
     case kMag:
-      data = in.mag & 0x3FFF;
-      break;
+      return in.mag & 0x3FFF;
     case kAngleUnc:
-      data = static_cast<uint16_t>((in.angle_unc >> (in.angle_w - 14)) & 0x3FFF);
-      break;
+      return top14(in.angle_unc);
     case kAngleCom:
-      data = static_cast<uint16_t>((in.angle_com >> (in.angle_w - 14)) & 0x3FFF);
+      return top14(dataselect_ ? in.angle_unc : in.angle_com);
+    default:
+      return 0;
+  }
+}
+
+void As5047Port::write_register(uint16_t addr, uint16_t data, int angle_w) {
+  using namespace as5047;
+  switch (addr) {
+    case kProg:
+      progen_ = data & 1;
+      progver_ = (data >> 6) & 1;
       break;
+    case kZposm:
+      config.zero = static_cast<uint16_t>(((data & 0xFF) << 6) | (config.zero & 0x3F));
+      break;
+    case kZposl:
+      config.zero = static_cast<uint16_t>((config.zero & 0x3FC0) | (data & 0x3F));
+      error_enables_ = (data >> 6) & 3;
+      break;
+    case kSettings1: {
+      const bool bin = (data >> 5) & 1;
+      if (bin != abibin_) config.n = abires_n(bin, abires_code(abibin_, config.n));
+      config.dir = (data >> 2) & 1;
+      config.daec = !((data >> 4) & 1);
+      uvw_abi_ = (data >> 3) & 1;
+      abibin_ = bin;
+      dataselect_ = (data >> 6) & 1;
+      pwmon_ = (data >> 7) & 1;
+      break;
+    }
+    case kSettings2: {
+      const int pp = data & 7;
+      config.pole_pairs = pp == 7 ? 7 : pp + 1;
+      config.hys = static_cast<int64_t>(3 - ((data >> 3) & 3)) << (angle_w - 11);
+      config.n = abires_n(abibin_, (data >> 5) & 7);
+      break;
+    }
     default:
       break;
   }
+}
+
+uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool short_gap) {
+  using namespace as5047;
+  // The answer, from the register chosen by the previous frame, as the frame starts.
+  const uint16_t data = read_register(answer_reg_, in);
   const bool ef = errfl_ != 0;
   const uint16_t answer = short_gap
                               ? uint16_t{0xC000}
@@ -143,8 +215,10 @@ uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool
   // The command at the end of the frame.
   const uint16_t addr = mosi & 0x3FFF;
   const bool read = (mosi >> 14) & 1;
-  const bool known = addr == kNop || addr == kErrfl || addr == kDiaagc || addr == kMag ||
-                     addr == kAngleUnc || addr == kAngleCom;
+  const bool writable =
+      addr == kProg || addr == kZposm || addr == kZposl || addr == kSettings1 || addr == kSettings2;
+  const bool known = writable || addr == kNop || addr == kErrfl || addr == kDiaagc ||
+                     addr == kMag || addr == kAngleUnc || addr == kAngleCom;
   const bool write = !read && addr != kNop;
   if (bits != 16 || short_gap) {
     errfl_ |= kFrErr;
@@ -155,12 +229,15 @@ uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool
     answer_reg_ = kNop;
     write_data_ = false;
   } else if (write_data_) {
+    // The data frame: the register written, its new content answered next.
     write_data_ = false;
-    answer_reg_ = kNop;
+    if (write_reg_ != kNop) write_register(write_reg_, mosi & 0xFF, in.angle_w);
+    answer_reg_ = write_reg_;
   } else {
-    if (write || !known) errfl_ |= kInvComm;
+    if (!known || (write && !writable)) errfl_ |= kInvComm;
     write_data_ = write;
-    answer_reg_ = (read && known) ? addr : kNop;
+    write_reg_ = write && writable ? addr : kNop;
+    answer_reg_ = (read && known) || (write && writable) ? addr : kNop;
   }
   // The answer the master received: only the bits it clocked.
   return bits >= 16 ? answer : static_cast<uint16_t>(answer >> (16 - bits));
