@@ -220,20 +220,24 @@ module acore_board #(
   assign trk_velocity_o = trk_velocity;
   assign trk_turns_o = trk_turns;
   assign trk_lot_o = trk_lot;
-  // The interfaces' angle (IF_ZERO, IF_CTRL: the AS5047P's ZPOS, DIR, DAECDIS): the compensated
-  // angle (or with DAEC 0 the estimator's last), the zero taken away, negated with DIR.
-  wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
-  wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
-  wire [ANGLE_W-1:0] if_angle = rg_if_ctrl_dir ? if_zero - if_src : if_src - if_zero;
-  wire [ANGLE_W-1:0] if_unc = rg_if_ctrl_dir ? if_zero - unc_q : unc_q - if_zero;
-  // The interfaces' angle and the loss of tracking last delivered (ANGLECOM, DIAAGC.LF).
-  reg [ANGLE_W-1:0] com_q;
+  // The compensated angle and the loss of tracking last delivered (ANGLECOM, DIAAGC.LF).
+  reg [ANGLE_W-1:0] trk_q;
   reg lot_q;
   always @(posedge clk_i) begin
     if (rst_i) lot_q <= 1'b0;
     else if (trk_valid) lot_q <= trk_lot;
   end
-  always @(posedge clk_i) if (trk_valid) com_q <= if_angle;
+  always @(posedge clk_i) if (trk_valid) trk_q <= trk_angle;
+  // The interfaces' angle (IF_ZERO, IF_CTRL: the AS5047P's ZPOS, DIR, DAECDIS): the compensated
+  // angle (with DAEC 0 the estimator's last), the zero taken away, negated with DIR. ABZ and UVW
+  // take it with each observer output; the SPI port reads it at once (a new zero or direction
+  // shows in the next ANGLECOM, as on the AS5047P).
+  wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
+  wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
+  wire [ANGLE_W-1:0] com_src = rg_if_ctrl_daec ? trk_q : unc_q;
+  wire [ANGLE_W-1:0] if_angle = rg_if_ctrl_dir ? if_zero - if_src : if_src - if_zero;
+  wire [ANGLE_W-1:0] if_com = rg_if_ctrl_dir ? if_zero - com_src : com_src - if_zero;
+  wire [ANGLE_W-1:0] if_unc = rg_if_ctrl_dir ? if_zero - unc_q : unc_q - if_zero;
 
   // ---- the interfaces ----
   // Their inputs as wide as their registers' fields (ABZ_INDEX.POS has one bit more than N: a
@@ -257,7 +261,7 @@ module acore_board #(
   acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2), .SCLK_MIN(4), .N_W(ABZ_N_N_W),
     .PP_W(UVW_PP_POLE_PAIRS_W), .HYS_W(ABZ_HYS_WIDTH_W)) u_spi (
     .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
-    .miso_oe_o(miso_oe_o), .angle_unc_i(if_unc), .angle_com_i(com_q), .mag_i(14'd0), .agc_i(8'd0),
+    .miso_oe_o(miso_oe_o), .angle_unc_i(if_unc), .angle_com_i(if_com), .mag_i(14'd0), .agc_i(8'd0),
     .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(lot_q),
     .cfg_zero_i(rg_if_zero_zero), .cfg_dir_i(rg_if_ctrl_dir), .cfg_daec_i(rg_if_ctrl_daec),
     .cfg_n_i(rg_abz_n_n), .cfg_pp_i(rg_uvw_pp_pole_pairs), .cfg_hys_i(rg_abz_hys_width),

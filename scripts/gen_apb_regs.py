@@ -642,7 +642,13 @@ def owner_ports(blk):
                         (f"{s}_hw_we_i", f"rg_{s}_hw_we", "input", "", f"{desc}: {f.hw} writes")
                     )
                     out.append(
-                        (f"{s}_hw_d_i", f"rg_{s}_hw_d", "input", d, f"{desc}: the value {f.hw} writes")
+                        (
+                            f"{s}_hw_d_i",
+                            f"rg_{s}_hw_d",
+                            "input",
+                            d,
+                            f"{desc}: the value {f.hw} writes",
+                        )
                     )
             elif f.access == "W1C":
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: the sticky value"))
