@@ -9,7 +9,7 @@
 //                 |        |            +--> TRK_VELOCITY, TRK_POSITION (APB)
 //                 |        +--angle (ANGLEUNC)--+--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
 //                 |        compensated (ANGLECOM), loss of tracking --+
-//   APB --+--> the board's registers (0x060..0x08B, rtl/acore_board_regblock.v): ABZ_N .. ABZ_HYS
+//   APB --+--> the board's registers (0x060..0x093, rtl/acore_board_regblock.v): ABZ_N .. IF_CTRL
 //         +--> every other address: the shell
 //
 // THE REGISTERS. The board's registers are generated, with their widths, ranges and reset values,
