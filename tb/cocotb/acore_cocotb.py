@@ -552,8 +552,9 @@ def spi_angle(angle: int, angle_w: int) -> int:
     return angle >> (angle_w - 14) if angle_w >= 14 else angle << (14 - angle_w)
 
 
-def abz_counts(angle: int, angle_w: int, n: int) -> set[int]:
-    """The counts a caught-up ABZ output may rest at for this angle (rtl/acore_abz.v: floor(angle
-    4N / 2^ANGLE_W), or the next count up by its one-LSB hysteresis)."""
+def abz_counts(angle: int, angle_w: int, n: int, hys: int) -> set[int]:
+    """The counts a caught-up ABZ output may rest at for this angle (rtl/acore_abz.v: the count
+    holds on any count the window angle - HYS .. angle + HYS touches, else lands on floor(angle
+    4N / 2^ANGLE_W))."""
     t = 1 << angle_w
-    return {angle * 4 * n // t, ((angle + 1) * 4 * n // t) % (4 * n)}
+    return {((a % t) * 4 * n // t) for a in range(angle - hys, angle + hys + 1)}
