@@ -19,16 +19,23 @@
 // arrives while one is computed waits, and a newer one replaces it (latest wins), so the target
 // follows the stream N_W + 3 clocks late at any sample rate.
 //
-// Hysteresis (one angle LSB): with lo = floor(angle 4N / T) and hi = floor((angle + 1) 4N / T)
-// (T = 2^ANGLE_W, hi = 4N wraps to 0), the target stays where it is when it equals hi, and is lo
-// otherwise. An angle dithering by one LSB across a count boundary (a, a+1 with lo(a+1) = hi(a))
-// therefore holds the count still instead of toggling A or B at the sample rate; any move of more
-// than one LSB downwards, and every move upwards, lands on lo exactly.
+// Hysteresis (HYS angle LSBs, the hys_i input, as the AS5047P's HYS): the count holds while the
+// angle lies within HYS LSBs of the count's own interval, that is while the target t is one of
+// the counts the window angle - HYS .. angle + HYS touches (lo(angle - HYS) <= t <= lo(angle + HYS)
+// round the turn, lo(x) = floor(x 4N / 2^ANGLE_W)); any other angle lands on lo(angle) exactly.
+// So an angle dithering over D + 1 neighbouring LSBs (+-D/2) moves no edge once the count stands
+// on any of them when HYS >= D, wherever the dither sits: +-1 LSB needs HYS >= 2 (the board's
+// reset). HYS = 0: the count is lo(angle), no hysteresis. HYS is at most 2^HYS_W - 1 < 2^ANGLE_W / 4
+// (HYS_W <= ANGLE_W - 2), so the window never covers half a turn.
 //
-// N changes: a new N re-homes the count to the new target at once, without edges (a decoder
-// re-homes on Z or on an absolute read, as after power-up). N outside 1 .. NMAX is clamped (the
-// register shell refuses such a write). Z is high while the count equals INDEX (0 .. 4N-1; an
-// INDEX >= 4N never fires): one count, a quarter period of A, once a turn in either direction.
+// N changes: the count re-homes, without an edge, in the clock N changes its value: A and B hold
+// (the count keeps its two low bits) while the latest angle is converted with the new N (no new
+// sample is needed), then the count is set to the value with those low bits nearest the new
+// target (at most two counts away) and walks there in legal single steps (a decoder re-homes on
+// Z or on an absolute read, as after power-up). A/B never change together. N outside 1 .. NMAX is
+// clamped (the register shell refuses such a write). Z is high while the count equals INDEX
+// (0 .. 4N-1; an INDEX >= 4N never fires): one count, a quarter period of A, once a turn in either
+// direction.
 `resetall
 `default_nettype none
 
@@ -38,7 +45,9 @@ module acore_abz #(
   // Bits of the N input: N = 1 .. 2^(N_W-1) pulses a turn (at least 2; the board's is ABZ_N.N's).
   parameter integer N_W = 13,
   // Bits of the minimum edge spacing (clocks).
-  parameter integer SP_W = 16
+  parameter integer SP_W = 16,
+  // Bits of the hysteresis width (angle LSBs): 1 .. ANGLE_W - 2 (the board's is ABZ_HYS.WIDTH's).
+  parameter integer HYS_W = 8
 ) (
   input  wire               clk_i,
   // Synchronous, active high: count 0 (A = B = 0), no target.
@@ -47,10 +56,11 @@ module acore_abz #(
   input  wire               angle_valid_i,
   input  wire [ANGLE_W-1:0] angle_i,
   // Pulses a turn (1 .. 2^(N_W-1), clamped), the index count (0 .. 4N-1), the minimum clocks
-  // between two edges (0 and 1 both mean one edge a clock).
+  // between two edges (0 and 1 both mean one edge a clock), the hysteresis in angle LSBs.
   input  wire [N_W-1:0]     n_i,
   input  wire [N_W:0]       index_i,
   input  wire [SP_W-1:0]    spacing_i,
+  input  wire [HYS_W-1:0]   hys_i,
   // Registered quadrature and index (one clock after the count).
   output reg                a_o,
   output reg                b_o,
@@ -64,6 +74,7 @@ module acore_abz #(
   localparam integer C_W = N_W + 1;          // a count, 0 .. 4 NMAX - 1
   localparam integer M_W = N_W + 2;          // 4N itself (and a signed difference of counts)
   localparam integer P_W = ANGLE_W + N_W;    // angle N
+  localparam integer Q_W = HYS_W + N_W;      // HYS N
   localparam integer NMAX = 1 << (N_W - 1);
   localparam integer LATENCY = N_W + 3;      // clocks from an accepted angle to its target
 
@@ -73,38 +84,56 @@ module acore_abz #(
     .MSG("illegal parameter: N_W must be 2..16 (N up to 2^(N_W-1) pulses a turn)")) N_W_must_be_2_to_16 ();
   acore_check #(.OK(SP_W >= 1 && SP_W <= 24), .VALUE(SP_W),
     .MSG("illegal parameter: SP_W must be 1..24")) SP_W_must_be_1_to_24 ();
+  acore_check #(.OK(HYS_W >= 1 && HYS_W <= ANGLE_W - 2), .VALUE(HYS_W),
+    .MSG("illegal parameter: HYS_W must be 1..ANGLE_W-2 (the window stays below a quarter turn)"))
+    HYS_W_must_be_1_to_ANGLE_W_minus_2 ();
 
   // ---- N clamped to 1 .. NMAX ----
   localparam [N_W-1:0] NMAX_V = NMAX[N_W-1:0];
   localparam [N_W-1:0] ONE_N = {{(N_W-1){1'b0}}, 1'b1};
   wire [N_W-1:0] n_clamped = (n_i == {N_W{1'b0}}) ? ONE_N : (n_i > NMAX_V) ? NMAX_V : n_i;
 
-  // ---- the target: angle N, one bit of N a clock, MSB first ----
+  // ---- N: the one in use, and a change seen in the clock it happens ----
+  reg [N_W-1:0] n_cur_q;
+  reg have_q;                    // an angle has arrived since reset
+  wire n_change = (n_clamped != n_cur_q);
+
+  // ---- the target: angle N and HYS N, one bit of N a clock, MSB first ----
   reg pend_q, run_q, res_q;
   reg [ANGLE_W-1:0] ang_q, a_run_q;
-  reg [N_W-1:0] n_run_q, nsh_q, n_cur_q;
+  reg [HYS_W-1:0] h_run_q;
+  reg [N_W-1:0] n_run_q, nsh_q;
   reg [P_W-1:0] acc_q;
+  reg [Q_W-1:0] hacc_q;
   reg [$clog2(N_W + 1)-1:0] k_q;
   wire [P_W-1:0] addend = nsh_q[N_W-1] ? {{N_W{1'b0}}, a_run_q} : {P_W{1'b0}};
+  wire [Q_W-1:0] haddend = nsh_q[N_W-1] ? {{N_W{1'b0}}, h_run_q} : {Q_W{1'b0}};
+  // A new N converts the latest angle again (the count re-homes on that result).
+  wire redo = n_change & have_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       pend_q <= 1'b0;
       run_q <= 1'b0;
       res_q <= 1'b0;
+      have_q <= 1'b0;
     end else begin
       res_q <= 1'b0;
-      if (angle_valid_i) pend_q <= 1'b1;
+      if (angle_valid_i) have_q <= 1'b1;
+      if (angle_valid_i || redo) pend_q <= 1'b1;
       else if (!run_q) pend_q <= 1'b0;
       if (!run_q && (pend_q || angle_valid_i)) begin
         run_q <= 1'b1;
         k_q <= N_W[$clog2(N_W + 1)-1:0];
         a_run_q <= angle_valid_i ? angle_i : ang_q;
+        h_run_q <= hys_i;
         n_run_q <= n_clamped;
         nsh_q <= n_clamped;
         acc_q <= {P_W{1'b0}};
-        pend_q <= 1'b0;
+        hacc_q <= {Q_W{1'b0}};
+        pend_q <= redo;
       end else if (run_q) begin
         acc_q <= {acc_q[P_W-2:0], 1'b0} + addend;
+        hacc_q <= {hacc_q[Q_W-2:0], 1'b0} + haddend;
         nsh_q <= {nsh_q[N_W-2:0], 1'b0};
         k_q <= k_q - 1'b1;
         if (k_q == 1) begin
@@ -116,23 +145,35 @@ module acore_abz #(
     if (angle_valid_i) ang_q <= angle_i;
   end
 
-  // lo = floor(P / 2^(ANGLE_W-2)), hi the same for angle + 1 (P + N), 4N wrapping to 0.
+  // lo = floor(P / 2^(ANGLE_W-2)) with P = angle N; the window's ends floor((P -+ Q) / 2^(ANGLE_W-2))
+  // with Q = HYS N, taken modulo 4N (P - Q may be negative, P + Q may pass a turn: one 4N added or
+  // taken away, as HYS < 2^ANGLE_W / 4).
+  localparam integer S_W = P_W + 1;          // P - Q signed (> -2^ANGLE_W N), P + Q unsigned (< 2^(ANGLE_W+1) N)
   wire [M_W-1:0] m4 = {n_run_q, 2'b00};
-  // (P + N <= 2^ANGLE_W N: no carry out of P_W bits.)
-  wire [P_W-1:0] p_hi = acc_q + {{ANGLE_W{1'b0}}, n_run_q};
-  wire [M_W-1:0] lo = acc_q[P_W-1:ANGLE_W-2];
-  wire [M_W-1:0] hi_raw = p_hi[P_W-1:ANGLE_W-2];
-  wire [M_W-1:0] hi = (hi_raw == m4) ? {M_W{1'b0}} : hi_raw;
-  // Registered once (the product's carry chain and the band's compare stay off the count's path).
+  wire [S_W-1:0] p_s = {1'b0, acc_q};
+  wire [S_W-1:0] q_s = {{(S_W-Q_W){1'b0}}, hacc_q};
+  // (Their bits below the count and the wrapped ends' bits above it are not needed.)
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [S_W-1:0] p_lo = p_s - q_s;
+  wire [S_W-1:0] p_hi = p_s + q_s;
+  wire [M_W:0] m4_s = {1'b0, m4};
+  wire [M_W:0] lm_raw = p_lo[S_W-1:ANGLE_W-2];   // signed, -4N < lm_raw < 4N
+  wire [M_W:0] lp_raw = p_hi[S_W-1:ANGLE_W-2];   // 0 <= lp_raw < 8N
+  wire [M_W:0] lm_w = lm_raw[M_W] ? lm_raw + m4_s : lm_raw;
+  wire [M_W:0] lp_w = (lp_raw >= m4_s) ? lp_raw - m4_s : lp_raw;
+  wire [M_W-1:0] lo = acc_q[P_W-1:ANGLE_W-2];      // < 4N: its top bit is 0
+  /* verilator lint_on UNUSEDSIGNAL */
+  // Registered once (the products' carry chains stay off the count's path).
   reg res2_q;
-  reg [M_W-1:0] lo_q, hi_q;
+  reg [C_W-1:0] lo_q, lm_q, lp_q;
   reg [N_W-1:0] n_res_q;
   always @(posedge clk_i) begin
     if (rst_i) res2_q <= 1'b0;
     else res2_q <= res_q;
     if (res_q) begin
-      lo_q <= lo;
-      hi_q <= hi;
+      lo_q <= lo[C_W-1:0];
+      lm_q <= lm_w[C_W-1:0];
+      lp_q <= lp_w[C_W-1:0];
       n_res_q <= n_run_q;
     end
   end
@@ -140,31 +181,50 @@ module acore_abz #(
   // ---- the count ----
   reg [C_W-1:0] cnt_q, tgt_q;
   reg [SP_W-1:0] sp_q;
+  reg rehome_q;                  // N changed: hold A/B until the first target with the new N
   wire [M_W-1:0] m4_cur = {n_cur_q, 2'b00};
   wire [M_W-1:0] m2_cur = {1'b0, n_cur_q, 1'b0};
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
   wire [M_W-1:0] diff0 = {1'b0, tgt_q} - cnt_w;          // modulo 2^M_W
   wire [M_W-1:0] diff = diff0[M_W-1] ? diff0 + m4_cur : diff0;  // modulo 4N
-  wire moving = (tgt_q != cnt_q);
+  wire moving = (tgt_q != cnt_q) & ~rehome_q;
   wire up = (diff <= m2_cur);
   wire [C_W-1:0] top_cnt = m4_cur[C_W-1:0] - 1'b1;
   wire [SP_W-1:0] sp_load = (spacing_i == {SP_W{1'b0}}) ? {SP_W{1'b0}} : spacing_i - 1'b1;
-  wire [C_W-1:0] new_tgt = (tgt_q == hi_q[C_W-1:0] && hi_q != lo_q) ? tgt_q : lo_q[C_W-1:0];
+  // The window lm .. lp round the turn holds the target.
+  wire in_win = (lm_q <= lp_q) ? (tgt_q >= lm_q && tgt_q <= lp_q) : (tgt_q >= lm_q || tgt_q <= lp_q);
+  wire [C_W-1:0] new_tgt = in_win ? tgt_q : lo_q;
+  // A result with the N in use (one converted before a change is dropped).
+  wire res_ok = res2_q & (n_res_q == n_cur_q) & ~n_change;
+  // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
+  // target lo: lo + d with d = (count - lo) mod 4 in 0 .. 2, or lo - 1 for d = 3, round the turn.
+  wire [1:0] dlow = cnt_q[1:0] - lo_q[1:0];
+  wire [M_W-1:0] m4_res = {n_res_q, 2'b00};
+  wire [M_W-1:0] lo_w = {1'b0, lo_q};
+  wire [M_W-1:0] home_up = lo_w + {{(M_W-2){1'b0}}, dlow};
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [M_W-1:0] home_w = (dlow == 2'd3) ? ((lo_q == {C_W{1'b0}}) ? m4_res - 1'b1 : lo_w - 1'b1) :
+                          (home_up >= m4_res) ? home_up - m4_res : home_up;  // < 4N
+  /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
       tgt_q <= {C_W{1'b0}};
       sp_q <= {SP_W{1'b0}};
       n_cur_q <= n_clamped;
+      rehome_q <= 1'b0;
     end else begin
       if (sp_q != {SP_W{1'b0}}) sp_q <= sp_q - 1'b1;
-      if (res2_q && n_res_q != n_cur_q) begin
-        // A new N: re-home without edges.
-        n_cur_q <= n_res_q;
-        cnt_q <= lo_q[C_W-1:0];
-        tgt_q <= lo_q[C_W-1:0];
+      if (n_change) begin
+        // A new N: A and B hold; without an angle yet the count is 0 and stays.
+        n_cur_q <= n_clamped;
+        rehome_q <= have_q;
+      end else if (res_ok && rehome_q) begin
+        rehome_q <= 1'b0;
+        cnt_q <= home_w[C_W-1:0];
+        tgt_q <= lo_q;
       end else begin
-        if (res2_q) tgt_q <= new_tgt;
+        if (res_ok) tgt_q <= new_tgt;
         if (moving && sp_q == {SP_W{1'b0}}) begin
           sp_q <= sp_load;
           if (up) cnt_q <= (cnt_q == top_cnt) ? {C_W{1'b0}} : cnt_q + 1'b1;
@@ -187,7 +247,7 @@ module acore_abz #(
     end
   end
   assign count_o = cnt_q;
-  assign settled_o = ~moving & ~pend_q & ~run_q & ~res_q & ~res2_q & ~angle_valid_i;
+  assign settled_o = ~moving & ~rehome_q & ~n_change & ~pend_q & ~run_q & ~res_q & ~res2_q & ~angle_valid_i;
 
 endmodule
 

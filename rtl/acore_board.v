@@ -9,7 +9,7 @@
 //                 |        |            +--> TRK_VELOCITY, TRK_POSITION (APB)
 //                 |        +--angle (ANGLEUNC)--+--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
 //                 |        compensated (ANGLECOM), loss of tracking --+
-//   APB --+--> the board's registers (0x060..0x087, rtl/acore_board_regblock.v): ABZ_N .. TRK_POSITION
+//   APB --+--> the board's registers (0x060..0x093, rtl/acore_board_regblock.v): ABZ_N .. IF_CTRL
 //         +--> every other address: the shell
 //
 // THE REGISTERS. The board's registers are generated, with their widths, ranges and reset values,
@@ -32,9 +32,12 @@
 // (at 60 krpm one sample of the serial core at 50 MHz, 221 kS/s, is 1.6 degrees of mechanical
 // angle, times the pole pairs electrically); the AS5047P feeds its ABI and UVW from the DAEC-compensated angle for the
 // same reason. The compensated angle is the observer's filtered angle, so ABZ also sees less noise
-// than the raw estimate (its one-LSB hysteresis handles the rest).
+// than the raw estimate (its hysteresis, ABZ_HYS, handles the rest).
 //
 // SPI (AS5047P registers): ANGLECOM = the compensated angle, ANGLEUNC = the estimator's angle,
+// both with the zero (IF_ZERO) taken away and negated with IF_CTRL.DIR, as ABZ and UVW take it;
+// the AS5047P's settings a driver writes (ZPOSM/ZPOSL, SETTINGS1/2) are the board's IF_ZERO,
+// IF_CTRL, ABZ_N, UVW_PP and ABZ_HYS (rtl/acore_spi_as5047.v has the mapping);
 // DIAAGC.LF = not loss of tracking (the AS5047P's LF: 1 when the angle is valid, its loop
 // settled; here 0 while the observer's error of the last sample exceeds TRK_LOT), MAGL/MAGH/COF =
 // the estimator's los/dos/ovf. The estimator has no magnitude output, so MAG and DIAAGC's AGC
@@ -224,36 +227,57 @@ module acore_board #(
   assign trk_turns_o = trk_turns;
   assign trk_lot_o = trk_lot;
   // The compensated angle and the loss of tracking last delivered (ANGLECOM, DIAAGC.LF).
-  reg [ANGLE_W-1:0] com_q;
+  reg [ANGLE_W-1:0] trk_q;
   reg lot_q;
   always @(posedge clk_i) begin
     if (rst_i) lot_q <= 1'b0;
     else if (trk_valid) lot_q <= trk_lot;
   end
-  always @(posedge clk_i) if (trk_valid) com_q <= trk_angle;
+  always @(posedge clk_i) if (trk_valid) trk_q <= trk_angle;
+  // The interfaces' angle (IF_ZERO, IF_CTRL: the AS5047P's ZPOS, DIR, DAECDIS): the compensated
+  // angle (with DAEC 0 the estimator's last), the zero taken away, negated with DIR. ABZ and UVW
+  // take it with each observer output; the SPI port reads it at once (a new zero or direction
+  // shows in the next ANGLECOM, as on the AS5047P).
+  wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
+  wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
+  wire [ANGLE_W-1:0] com_src = rg_if_ctrl_daec ? trk_q : unc_q;
+  wire [ANGLE_W-1:0] if_angle = rg_if_ctrl_dir ? if_zero - if_src : if_src - if_zero;
+  wire [ANGLE_W-1:0] if_com = rg_if_ctrl_dir ? if_zero - com_src : com_src - if_zero;
+  wire [ANGLE_W-1:0] if_unc = rg_if_ctrl_dir ? if_zero - unc_q : unc_q - if_zero;
 
   // ---- the interfaces ----
   // Their inputs as wide as their registers' fields (ABZ_INDEX.POS has one bit more than N: a
   // count 0..4N-1).
   wire [ABZ_N_N_W:0] abz_count;
   wire abz_settled;
-  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W)) u_abz (
-    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle), .n_i(rg_abz_n_n),
-    .index_i(rg_abz_index_pos), .spacing_i(rg_abz_spacing_spacing), .a_o(a_o), .b_o(b_o), .z_o(z_o),
+  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W), .HYS_W(ABZ_HYS_WIDTH_W)) u_abz (
+    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(if_angle), .n_i(rg_abz_n_n),
+    .index_i(rg_abz_index_pos), .spacing_i(rg_abz_spacing_spacing), .hys_i(rg_abz_hys_width),
+    .a_o(a_o), .b_o(b_o), .z_o(z_o),
     .count_o(abz_count), .settled_o(abz_settled));
   wire [2:0] uvw_sector;
   wire uvw_valid;
   acore_uvw #(.ANGLE_W(ANGLE_W), .PP_W(UVW_PP_POLE_PAIRS_W)) u_uvw (
-    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(trk_angle),
+    .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(if_angle),
     .pp_i(rg_uvw_pp_pole_pairs), .offset_i(rg_uvw_offset_offset), .u_o(u_o), .v_o(v_o), .w_o(w_o),
     .sector_o(uvw_sector), .valid_o(uvw_valid));
   wire spi_frame;
   wire [2:0] spi_errfl;
-  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2)) u_spi (
+  // The AS5047P's settings written over SPI are the board's registers (their hardware write ports).
+  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2), .SCLK_MIN(4), .N_W(ABZ_N_N_W),
+    .PP_W(UVW_PP_POLE_PAIRS_W), .HYS_W(ABZ_HYS_WIDTH_W)) u_spi (
     .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
-    .miso_oe_o(miso_oe_o), .angle_unc_i(unc_q), .angle_com_i(com_q), .mag_i(14'd0), .agc_i(8'd0),
-    .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(lot_q), .frame_o(spi_frame),
-    .errfl_o(spi_errfl));
+    .miso_oe_o(miso_oe_o), .angle_unc_i(if_unc), .angle_com_i(if_com), .mag_i(14'd0), .agc_i(8'd0),
+    .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(lot_q),
+    .cfg_zero_i(rg_if_zero_zero), .cfg_dir_i(rg_if_ctrl_dir), .cfg_daec_i(rg_if_ctrl_daec),
+    .cfg_n_i(rg_abz_n_n), .cfg_pp_i(rg_uvw_pp_pole_pairs), .cfg_hys_i(rg_abz_hys_width),
+    .cfg_zero_we_o(rg_if_zero_zero_hw_we), .cfg_zero_o(rg_if_zero_zero_hw_d),
+    .cfg_dir_we_o(rg_if_ctrl_dir_hw_we), .cfg_dir_o(rg_if_ctrl_dir_hw_d),
+    .cfg_daec_we_o(rg_if_ctrl_daec_hw_we), .cfg_daec_o(rg_if_ctrl_daec_hw_d),
+    .cfg_n_we_o(rg_abz_n_n_hw_we), .cfg_n_o(rg_abz_n_n_hw_d),
+    .cfg_pp_we_o(rg_uvw_pp_pole_pairs_hw_we), .cfg_pp_o(rg_uvw_pp_pole_pairs_hw_d),
+    .cfg_hys_we_o(rg_abz_hys_width_hw_we), .cfg_hys_o(rg_abz_hys_width_hw_d),
+    .frame_o(spi_frame), .errfl_o(spi_errfl));
 
 endmodule
 

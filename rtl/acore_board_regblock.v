@@ -41,6 +41,10 @@ module acore_board_regblock #(
   output wire [12:0] abz_n_n_o,
   // ABZ_N.N: written in this clock
   output wire abz_n_n_we_o,
+  // ABZ_N.N: the SPI port (AS5047P SETTINGS2.ABIRES, SETTINGS1.ABIBIN; rtl/acore_spi_as5047.v) writes
+  input  wire abz_n_n_hw_we_i,
+  // ABZ_N.N: the value the SPI port (AS5047P SETTINGS2.ABIRES, SETTINGS1.ABIBIN; rtl/acore_spi_as5047.v) writes
+  input  wire [12:0] abz_n_n_hw_d_i,
   // ABZ_INDEX.POS: the value
   output wire [13:0] abz_index_pos_o,
   // ABZ_INDEX.POS: written in this clock
@@ -53,6 +57,10 @@ module acore_board_regblock #(
   output wire [4:0] uvw_pp_pole_pairs_o,
   // UVW_PP.POLE_PAIRS: written in this clock
   output wire uvw_pp_pole_pairs_we_o,
+  // UVW_PP.POLE_PAIRS: the SPI port (AS5047P SETTINGS2.UVWPP; rtl/acore_spi_as5047.v) writes
+  input  wire uvw_pp_pole_pairs_hw_we_i,
+  // UVW_PP.POLE_PAIRS: the value the SPI port (AS5047P SETTINGS2.UVWPP; rtl/acore_spi_as5047.v) writes
+  input  wire [4:0] uvw_pp_pole_pairs_hw_d_i,
   // UVW_OFFSET.OFFSET: the value
   output wire [ANGLE_W-1:0] uvw_offset_offset_o,
   // UVW_OFFSET.OFFSET: written in this clock
@@ -74,7 +82,39 @@ module acore_board_regblock #(
   // TRK_POSITION.TURNS: the hardware's value
   input  wire [15:0] trk_position_turns_i,
   // TRK_POSITION.ANGLE: the hardware's value
-  input  wire [15:0] trk_position_angle_i
+  input  wire [15:0] trk_position_angle_i,
+  // ABZ_HYS.WIDTH: the value
+  output wire [7:0] abz_hys_width_o,
+  // ABZ_HYS.WIDTH: written in this clock
+  output wire abz_hys_width_we_o,
+  // ABZ_HYS.WIDTH: the SPI port (AS5047P SETTINGS2.HYS; rtl/acore_spi_as5047.v) writes
+  input  wire abz_hys_width_hw_we_i,
+  // ABZ_HYS.WIDTH: the value the SPI port (AS5047P SETTINGS2.HYS; rtl/acore_spi_as5047.v) writes
+  input  wire [7:0] abz_hys_width_hw_d_i,
+  // IF_ZERO.ZERO: the value
+  output wire [13:0] if_zero_zero_o,
+  // IF_ZERO.ZERO: written in this clock
+  output wire if_zero_zero_we_o,
+  // IF_ZERO.ZERO: the SPI port (AS5047P ZPOSM, ZPOSL; rtl/acore_spi_as5047.v) writes
+  input  wire if_zero_zero_hw_we_i,
+  // IF_ZERO.ZERO: the value the SPI port (AS5047P ZPOSM, ZPOSL; rtl/acore_spi_as5047.v) writes
+  input  wire [13:0] if_zero_zero_hw_d_i,
+  // IF_CTRL.DIR: the value
+  output wire if_ctrl_dir_o,
+  // IF_CTRL.DIR: written in this clock
+  output wire if_ctrl_dir_we_o,
+  // IF_CTRL.DIR: the SPI port (AS5047P SETTINGS1.DIR; rtl/acore_spi_as5047.v) writes
+  input  wire if_ctrl_dir_hw_we_i,
+  // IF_CTRL.DIR: the value the SPI port (AS5047P SETTINGS1.DIR; rtl/acore_spi_as5047.v) writes
+  input  wire if_ctrl_dir_hw_d_i,
+  // IF_CTRL.DAEC: the value
+  output wire if_ctrl_daec_o,
+  // IF_CTRL.DAEC: written in this clock
+  output wire if_ctrl_daec_we_o,
+  // IF_CTRL.DAEC: the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
+  input  wire if_ctrl_daec_hw_we_i,
+  // IF_CTRL.DAEC: the value the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
+  input  wire if_ctrl_daec_hw_d_i
 );
 
   // Word indices (byte address / 4), the register sets, field positions.
@@ -88,8 +128,11 @@ module acore_board_regblock #(
   localparam [5:0] R_TRK_LOT = 6'h1F;
   localparam [5:0] R_TRK_VELOCITY = 6'h20;
   localparam [5:0] R_TRK_POSITION = 6'h21;
+  localparam [5:0] R_ABZ_HYS = 6'h22;
+  localparam [5:0] R_IF_ZERO = 6'h23;
+  localparam [5:0] R_IF_CTRL = 6'h24;
   localparam [63:0] REGS_RO = 64'h0000000300000000;
-  localparam [63:0] REGS_WR = 64'h00000000FF000000;
+  localparam [63:0] REGS_WR = 64'h0000001CFF000000;
   localparam integer ABZ_N_N = 0;
   localparam integer ABZ_INDEX_POS = 0;
   localparam integer ABZ_SPACING_SPACING = 0;
@@ -101,6 +144,10 @@ module acore_board_regblock #(
   localparam integer TRK_VELOCITY_VELOCITY = 0;
   localparam integer TRK_POSITION_TURNS = 16;
   localparam integer TRK_POSITION_ANGLE = 0;
+  localparam integer ABZ_HYS_WIDTH = 0;
+  localparam integer IF_ZERO_ZERO = 0;
+  localparam integer IF_CTRL_DIR = 0;
+  localparam integer IF_CTRL_DAEC = 1;
   // Reset values of fields whose reset or width is a parameter (the field's low bits).
   localparam [31:0] UVW_OFFSET_OFFSET_RST = 0;
   localparam [31:0] TRK_LOT_THRESHOLD_RST = 4096;
@@ -128,6 +175,10 @@ module acore_board_regblock #(
   reg [3:0] trk_bw_bw_q;
   reg [7:0] trk_lead_lead_q;
   reg [TRK_LOT_W-1:0] trk_lot_threshold_q;
+  reg [7:0] abz_hys_width_q;
+  reg [13:0] if_zero_zero_q;
+  reg if_ctrl_dir_q;
+  reg if_ctrl_daec_q;
 
   // ---- decode and read in the setup phase ----
   wire setup = psel_i & ~penable_i;
@@ -183,6 +234,12 @@ module acore_board_regblock #(
         rd_d[TRK_POSITION_TURNS +: 16] = trk_position_turns_i;
         rd_d[TRK_POSITION_ANGLE +: 16] = trk_position_angle_i;
       end
+      R_ABZ_HYS: rd_d[ABZ_HYS_WIDTH +: 8] = abz_hys_width_q;
+      R_IF_ZERO: rd_d[IF_ZERO_ZERO +: 14] = if_zero_zero_q;
+      R_IF_CTRL: begin
+        rd_d[IF_CTRL_DIR] = if_ctrl_dir_q;
+        rd_d[IF_CTRL_DAEC] = if_ctrl_daec_q;
+      end
       default: rd_d = 32'd0;
     endcase
   end
@@ -193,7 +250,7 @@ module acore_board_regblock #(
   wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);
   wire ok_reg_wr = ok_wr & in_regs;
   reg err_q, w_abz_n_q, w_abz_index_q, w_abz_spacing_q, w_uvw_pp_q, w_uvw_offset_q;
-  reg w_trk_bw_q, w_trk_lead_q, w_trk_lot_q;
+  reg w_trk_bw_q, w_trk_lead_q, w_trk_lot_q, w_abz_hys_q, w_if_zero_q, w_if_ctrl_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
     if (setup) begin
@@ -207,6 +264,9 @@ module acore_board_regblock #(
       w_trk_bw_q <= ok_reg_wr & (ridx == R_TRK_BW) & ~range_err;
       w_trk_lead_q <= ok_reg_wr & (ridx == R_TRK_LEAD);
       w_trk_lot_q <= ok_reg_wr & (ridx == R_TRK_LOT);
+      w_abz_hys_q <= ok_reg_wr & (ridx == R_ABZ_HYS);
+      w_if_zero_q <= ok_reg_wr & (ridx == R_IF_ZERO);
+      w_if_ctrl_q <= ok_reg_wr & (ridx == R_IF_CTRL);
     end
   end
 
@@ -222,6 +282,9 @@ module acore_board_regblock #(
   wire wr_trk_bw = access & w_trk_bw_q;
   wire wr_trk_lead = access & w_trk_lead_q;
   wire wr_trk_lot = access & w_trk_lot_q;
+  wire wr_abz_hys = access & w_abz_hys_q;
+  wire wr_if_zero = access & w_if_zero_q;
+  wire wr_if_ctrl = access & w_if_ctrl_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       abz_n_n_q <= 13'd1024;
@@ -232,10 +295,15 @@ module acore_board_regblock #(
       trk_bw_bw_q <= 4'd6;
       trk_lead_lead_q <= 8'd0;
       trk_lot_threshold_q <= TRK_LOT_THRESHOLD_RST[TRK_LOT_W-1:0];
+      abz_hys_width_q <= 8'd2;
+      if_zero_zero_q <= 14'd0;
+      if_ctrl_dir_q <= 1'd0;
+      if_ctrl_daec_q <= 1'd1;
     end else begin
       if (wr_abz_n) begin
         abz_n_n_q <= pwdata_i[ABZ_N_N +: 13];
       end
+      if (abz_n_n_hw_we_i && !wr_abz_n) abz_n_n_q <= abz_n_n_hw_d_i;
       if (wr_abz_index) begin
         abz_index_pos_q <= pwdata_i[ABZ_INDEX_POS +: 14];
       end
@@ -245,6 +313,7 @@ module acore_board_regblock #(
       if (wr_uvw_pp) begin
         uvw_pp_pole_pairs_q <= pwdata_i[UVW_PP_POLE_PAIRS +: 5];
       end
+      if (uvw_pp_pole_pairs_hw_we_i && !wr_uvw_pp) uvw_pp_pole_pairs_q <= uvw_pp_pole_pairs_hw_d_i;
       if (wr_uvw_offset) begin
         uvw_offset_offset_q <= pwdata_i[UVW_OFFSET_OFFSET +: ANGLE_W];
       end
@@ -257,6 +326,20 @@ module acore_board_regblock #(
       if (wr_trk_lot) begin
         trk_lot_threshold_q <= pwdata_i[TRK_LOT_THRESHOLD +: TRK_LOT_W];
       end
+      if (wr_abz_hys) begin
+        abz_hys_width_q <= pwdata_i[ABZ_HYS_WIDTH +: 8];
+      end
+      if (abz_hys_width_hw_we_i && !wr_abz_hys) abz_hys_width_q <= abz_hys_width_hw_d_i;
+      if (wr_if_zero) begin
+        if_zero_zero_q <= pwdata_i[IF_ZERO_ZERO +: 14];
+      end
+      if (if_zero_zero_hw_we_i && !wr_if_zero) if_zero_zero_q <= if_zero_zero_hw_d_i;
+      if (wr_if_ctrl) begin
+        if_ctrl_dir_q <= pwdata_i[IF_CTRL_DIR];
+        if_ctrl_daec_q <= pwdata_i[IF_CTRL_DAEC];
+      end
+      if (if_ctrl_dir_hw_we_i && !wr_if_ctrl) if_ctrl_dir_q <= if_ctrl_dir_hw_d_i;
+      if (if_ctrl_daec_hw_we_i && !wr_if_ctrl) if_ctrl_daec_q <= if_ctrl_daec_hw_d_i;
     end
   end
   assign abz_n_n_o = abz_n_n_q;
@@ -275,6 +358,14 @@ module acore_board_regblock #(
   assign trk_lead_lead_we_o = wr_trk_lead;
   assign trk_lot_threshold_o = trk_lot_threshold_q;
   assign trk_lot_threshold_we_o = wr_trk_lot;
+  assign abz_hys_width_o = abz_hys_width_q;
+  assign abz_hys_width_we_o = wr_abz_hys;
+  assign if_zero_zero_o = if_zero_zero_q;
+  assign if_zero_zero_we_o = wr_if_zero;
+  assign if_ctrl_dir_o = if_ctrl_dir_q;
+  assign if_ctrl_dir_we_o = wr_if_ctrl;
+  assign if_ctrl_daec_o = if_ctrl_daec_q;
+  assign if_ctrl_daec_we_o = wr_if_ctrl;
 
 endmodule
 

@@ -17,10 +17,13 @@ localparam [5:0] R_TRK_LEAD = 6'h1E;
 localparam [5:0] R_TRK_LOT = 6'h1F;
 localparam [5:0] R_TRK_VELOCITY = 6'h20;
 localparam [5:0] R_TRK_POSITION = 6'h21;
+localparam [5:0] R_ABZ_HYS = 6'h22;
+localparam [5:0] R_IF_ZERO = 6'h23;
+localparam [5:0] R_IF_CTRL = 6'h24;
 // The registers the block answers, one bit per word index: read only, writable, either.
 localparam [63:0] REGS_RO = 64'h0000000300000000;
-localparam [63:0] REGS_WR = 64'h00000000FF000000;
-localparam [63:0] REGS_ALL = 64'h00000003FF000000;
+localparam [63:0] REGS_WR = 64'h0000001CFF000000;
+localparam [63:0] REGS_ALL = 64'h0000001FFF000000;
 // Fields.
 localparam integer ABZ_N_N = 0, ABZ_N_N_W = 13;
 localparam integer ABZ_INDEX_POS = 0, ABZ_INDEX_POS_W = 14;
@@ -33,6 +36,10 @@ localparam integer TRK_LOT_THRESHOLD = 0, TRK_LOT_THRESHOLD_W = TRK_LOT_W;
 localparam integer TRK_VELOCITY_VELOCITY = 0, TRK_VELOCITY_VELOCITY_W = 32;
 localparam integer TRK_POSITION_TURNS = 16, TRK_POSITION_TURNS_W = 16;
 localparam integer TRK_POSITION_ANGLE = 0, TRK_POSITION_ANGLE_W = 16;
+localparam integer ABZ_HYS_WIDTH = 0, ABZ_HYS_WIDTH_W = 8;
+localparam integer IF_ZERO_ZERO = 0, IF_ZERO_ZERO_W = 14;
+localparam integer IF_CTRL_DIR = 0;
+localparam integer IF_CTRL_DAEC = 1;
 // Ranges (a write outside is refused).
 localparam integer ABZ_N_N_MIN = 1, ABZ_N_N_MAX = 4096;
 localparam integer UVW_PP_POLE_PAIRS_MIN = 1, UVW_PP_POLE_PAIRS_MAX = 16;
@@ -45,6 +52,9 @@ localparam [31:0] UVW_OFFSET_RESET = 32'h00000000;
 localparam [31:0] TRK_BW_RESET = 32'h00000006;
 localparam [31:0] TRK_LEAD_RESET = 32'h00000000;
 localparam [31:0] TRK_LOT_RESET = 32'h00001000;
+localparam [31:0] ABZ_HYS_RESET = 32'h00000002;
+localparam [31:0] IF_ZERO_RESET = 32'h00000000;
+localparam [31:0] IF_CTRL_RESET = 32'h00000002;
 
 // ---- the register block (rtl/acore_board_regblock.v) ----
 // APB: the owner drives rg_psel (its PSEL for the block's addresses) and returns rg_prdata
@@ -55,12 +65,16 @@ wire rg_pslverr;
 // A wire per field port: the owner drives the inputs (live values, set, lock).
 wire [12:0] rg_abz_n_n;  // ABZ_N.N: the value
 wire rg_abz_n_n_we;  // ABZ_N.N: written in this clock
+wire rg_abz_n_n_hw_we;  // in: ABZ_N.N: the SPI port (AS5047P SETTINGS2.ABIRES, SETTINGS1.ABIBIN; rtl/acore_spi_as5047.v) writes
+wire [12:0] rg_abz_n_n_hw_d;  // in: ABZ_N.N: the value the SPI port (AS5047P SETTINGS2.ABIRES, SETTINGS1.ABIBIN; rtl/acore_spi_as5047.v) writes
 wire [13:0] rg_abz_index_pos;  // ABZ_INDEX.POS: the value
 wire rg_abz_index_pos_we;  // ABZ_INDEX.POS: written in this clock
 wire [15:0] rg_abz_spacing_spacing;  // ABZ_SPACING.SPACING: the value
 wire rg_abz_spacing_spacing_we;  // ABZ_SPACING.SPACING: written in this clock
 wire [4:0] rg_uvw_pp_pole_pairs;  // UVW_PP.POLE_PAIRS: the value
 wire rg_uvw_pp_pole_pairs_we;  // UVW_PP.POLE_PAIRS: written in this clock
+wire rg_uvw_pp_pole_pairs_hw_we;  // in: UVW_PP.POLE_PAIRS: the SPI port (AS5047P SETTINGS2.UVWPP; rtl/acore_spi_as5047.v) writes
+wire [4:0] rg_uvw_pp_pole_pairs_hw_d;  // in: UVW_PP.POLE_PAIRS: the value the SPI port (AS5047P SETTINGS2.UVWPP; rtl/acore_spi_as5047.v) writes
 wire [ANGLE_W-1:0] rg_uvw_offset_offset;  // UVW_OFFSET.OFFSET: the value
 wire rg_uvw_offset_offset_we;  // UVW_OFFSET.OFFSET: written in this clock
 wire [3:0] rg_trk_bw_bw;  // TRK_BW.BW: the value
@@ -72,6 +86,22 @@ wire rg_trk_lot_threshold_we;  // TRK_LOT.THRESHOLD: written in this clock
 wire [31:0] rg_trk_velocity_velocity;  // in: TRK_VELOCITY.VELOCITY: the hardware's value
 wire [15:0] rg_trk_position_turns;  // in: TRK_POSITION.TURNS: the hardware's value
 wire [15:0] rg_trk_position_angle;  // in: TRK_POSITION.ANGLE: the hardware's value
+wire [7:0] rg_abz_hys_width;  // ABZ_HYS.WIDTH: the value
+wire rg_abz_hys_width_we;  // ABZ_HYS.WIDTH: written in this clock
+wire rg_abz_hys_width_hw_we;  // in: ABZ_HYS.WIDTH: the SPI port (AS5047P SETTINGS2.HYS; rtl/acore_spi_as5047.v) writes
+wire [7:0] rg_abz_hys_width_hw_d;  // in: ABZ_HYS.WIDTH: the value the SPI port (AS5047P SETTINGS2.HYS; rtl/acore_spi_as5047.v) writes
+wire [13:0] rg_if_zero_zero;  // IF_ZERO.ZERO: the value
+wire rg_if_zero_zero_we;  // IF_ZERO.ZERO: written in this clock
+wire rg_if_zero_zero_hw_we;  // in: IF_ZERO.ZERO: the SPI port (AS5047P ZPOSM, ZPOSL; rtl/acore_spi_as5047.v) writes
+wire [13:0] rg_if_zero_zero_hw_d;  // in: IF_ZERO.ZERO: the value the SPI port (AS5047P ZPOSM, ZPOSL; rtl/acore_spi_as5047.v) writes
+wire rg_if_ctrl_dir;  // IF_CTRL.DIR: the value
+wire rg_if_ctrl_dir_we;  // IF_CTRL.DIR: written in this clock
+wire rg_if_ctrl_dir_hw_we;  // in: IF_CTRL.DIR: the SPI port (AS5047P SETTINGS1.DIR; rtl/acore_spi_as5047.v) writes
+wire rg_if_ctrl_dir_hw_d;  // in: IF_CTRL.DIR: the value the SPI port (AS5047P SETTINGS1.DIR; rtl/acore_spi_as5047.v) writes
+wire rg_if_ctrl_daec;  // IF_CTRL.DAEC: the value
+wire rg_if_ctrl_daec_we;  // IF_CTRL.DAEC: written in this clock
+wire rg_if_ctrl_daec_hw_we;  // in: IF_CTRL.DAEC: the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
+wire rg_if_ctrl_daec_hw_d;  // in: IF_CTRL.DAEC: the value the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
 acore_board_regblock #(
   .APB_AW(APB_AW),
   .ANGLE_W(ANGLE_W),
@@ -91,12 +121,16 @@ acore_board_regblock #(
   .pslverr_o(rg_pslverr),
   .abz_n_n_o(rg_abz_n_n),
   .abz_n_n_we_o(rg_abz_n_n_we),
+  .abz_n_n_hw_we_i(rg_abz_n_n_hw_we),
+  .abz_n_n_hw_d_i(rg_abz_n_n_hw_d),
   .abz_index_pos_o(rg_abz_index_pos),
   .abz_index_pos_we_o(rg_abz_index_pos_we),
   .abz_spacing_spacing_o(rg_abz_spacing_spacing),
   .abz_spacing_spacing_we_o(rg_abz_spacing_spacing_we),
   .uvw_pp_pole_pairs_o(rg_uvw_pp_pole_pairs),
   .uvw_pp_pole_pairs_we_o(rg_uvw_pp_pole_pairs_we),
+  .uvw_pp_pole_pairs_hw_we_i(rg_uvw_pp_pole_pairs_hw_we),
+  .uvw_pp_pole_pairs_hw_d_i(rg_uvw_pp_pole_pairs_hw_d),
   .uvw_offset_offset_o(rg_uvw_offset_offset),
   .uvw_offset_offset_we_o(rg_uvw_offset_offset_we),
   .trk_bw_bw_o(rg_trk_bw_bw),
@@ -107,5 +141,21 @@ acore_board_regblock #(
   .trk_lot_threshold_we_o(rg_trk_lot_threshold_we),
   .trk_velocity_velocity_i(rg_trk_velocity_velocity),
   .trk_position_turns_i(rg_trk_position_turns),
-  .trk_position_angle_i(rg_trk_position_angle)
+  .trk_position_angle_i(rg_trk_position_angle),
+  .abz_hys_width_o(rg_abz_hys_width),
+  .abz_hys_width_we_o(rg_abz_hys_width_we),
+  .abz_hys_width_hw_we_i(rg_abz_hys_width_hw_we),
+  .abz_hys_width_hw_d_i(rg_abz_hys_width_hw_d),
+  .if_zero_zero_o(rg_if_zero_zero),
+  .if_zero_zero_we_o(rg_if_zero_zero_we),
+  .if_zero_zero_hw_we_i(rg_if_zero_zero_hw_we),
+  .if_zero_zero_hw_d_i(rg_if_zero_zero_hw_d),
+  .if_ctrl_dir_o(rg_if_ctrl_dir),
+  .if_ctrl_dir_we_o(rg_if_ctrl_dir_we),
+  .if_ctrl_dir_hw_we_i(rg_if_ctrl_dir_hw_we),
+  .if_ctrl_dir_hw_d_i(rg_if_ctrl_dir_hw_d),
+  .if_ctrl_daec_o(rg_if_ctrl_daec),
+  .if_ctrl_daec_we_o(rg_if_ctrl_daec_we),
+  .if_ctrl_daec_hw_we_i(rg_if_ctrl_daec_hw_we),
+  .if_ctrl_daec_hw_d_i(rg_if_ctrl_daec_hw_d)
 );

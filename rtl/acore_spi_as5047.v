@@ -6,30 +6,64 @@
 // The frame (AS5047P datasheet, SPI interface): mode 1 (CPOL = 0, CPHA = 1: the master changes
 // MOSI on SCLK's rising edge and samples MISO on its falling edge), 16 bits MSB first, CSn low for
 // the frame. A command is {PAR, R/W, ADDR[13:0]}: PAR makes the 16 bits' parity even, R/W = 1 reads.
-// The answer to a read comes in the next frame, as {PAR, EF, DATA[13:0]} with even parity. The
-// registers:
+// The answer to a read comes in the next frame, as {PAR, EF, DATA[13:0]} with even parity. A write
+// is two frames (the datasheet's sequence): the command {PAR, 0, ADDR}, then the data frame
+// {PAR, x, DATA}; the data frame answers the register's old content, the frame after it the new.
+// The registers:
 //   0x0000 NOP       0
 //   0x0001 ERRFL     bit 2 PARERR, bit 1 INVCOMM, bit 0 FRERR; cleared by its own read
+//   0x0003 PROG      bit 0 PROGEN, bit 6 PROGVER kept and read back; OTPREF (bit 2) and PROGOTP
+//                    (bit 3) read 0: there is no OTP, the settings below are the datasheet's
+//                    volatile path (effective at once, lost at reset), and a programming
+//                    "finishes" at once (PROG reads PROGEN alone, as the datasheet's poll expects)
+//   0x0016 ZPOSM     bits 7:0 ZPOS[13:6]            } the board's IF_ZERO.ZERO (cfg_zero)
+//   0x0017 ZPOSL     bits 5:0 ZPOS[5:0]             }
+//                    bits 7:6 comp_l/h_error_en     kept and read back (no effect)
+//   0x0018 SETTINGS1 bit 0 reads 1, bit 1 reads 0 (factory bits, not written);
+//                    bit 2 DIR                      the board's IF_CTRL.DIR (cfg_dir)
+//                    bit 4 DAECDIS                  the board's IF_CTRL.DAEC, inverted (cfg_daec)
+//                    bit 5 ABIBIN                   ABIRES's table: 1 binary, 0 decimal (reset 1,
+//                                                   so that ABZ_N's reset 1024 reads ABIRES 0)
+//                    bit 6 Dataselect               1: 0x3FFF reads ANGLEUNC's angle
+//                    bits 3 UVW_ABI, 7 PWMon        kept and read back (both outputs are always on)
+//   0x0019 SETTINGS2 bits 2:0 UVWPP                 the board's UVW_PP = UVWPP + 1 (7 for 7);
+//                                                   read: pole pairs - 1, 6 from 7 pole pairs up
+//                    bits 4:3 HYS                   the board's ABZ_HYS = (3 - HYS) LSBs of 2^-11 turn
+//                                                   (HYS_SHIFT = ANGLE_W - 11 angle LSBs each);
+//                                                   read: 3 - ceil(ABZ_HYS / 2^HYS_SHIFT), at least 0
+//                    bits 7:5 ABIRES                the board's ABZ_N: decimal 1000 500 400 300 200
+//                                                   100 50 25, binary 1024 512 256 (256 for 3..7);
+//                                                   read: the first entry of the table not above N
+//                                                   (a change of ABIBIN alone rewrites N with it)
 //   0x3FFC DIAAGC    bit 11 MAGL (los_i), bit 10 MAGH (dos_i), bit 9 COF (ovf_i), bit 8 LF
 //                    (~lot_i: the angle is settled), bits 7:0 AGC (agc_i)
 //   0x3FFD MAG       mag_i
 //   0x3FFE ANGLEUNC  the uncompensated angle's upper 14 bits
-//   0x3FFF ANGLECOM  the compensated angle's upper 14 bits
-// Errors: a frame whose parity is odd sets PARERR and is ignored; a frame that is not 16 clocks
-// long sets FRERR and is ignored; a read of another address, or a write command (this port has no
-// writable register; the data frame that follows it is consumed), sets INVCOMM. NOP, address 0,
-// is no command whether R/W is set or not (0x0000 is the frame drivers send to collect an answer). EF, bit 14 of every
+//   0x3FFF ANGLECOM  the compensated angle's upper 14 bits (ANGLEUNC's with Dataselect)
+// A mapped setting is the board's register (one home: the APB reads and writes the same flop);
+// the port reads it on cfg_*_i and writes it through cfg_*_we_o / cfg_*_o in the clock CSn rises
+// after the data frame.
+// Errors: a frame whose parity is odd sets PARERR and is ignored (a data frame's too: nothing is
+// written); a frame that is not 16 clocks long, or follows a CSn gap shorter than 2 clocks
+// (below), sets FRERR and is ignored; a read of another address, or a write to a register that is
+// not writable (its data frame is consumed), sets INVCOMM. NOP, address 0, is no command whether
+// R/W is set or not (0x0000 is the frame drivers send to collect an answer). EF, bit 14 of every
 // answer, is high while ERRFL holds an error, so the answer after a refused frame carries it (its
 // data is then NOP's 0), until ERRFL is read.
 //
-// One clock domain: SCLK, CSn and MOSI are oversampled through SYNC flops each (clk_i at least 4
-// times SCLK). MOSI is taken at the synchronized falling edge, the same stage as SCLK's, so it is
-// the value the master held across that edge. The next MISO bit is presented after each falling
-// edge (SYNC + 1 clocks later, so the master's hold is met) and is stable until the next one, a
-// full SCLK period: with SCLK = clk/4 and SYNC = 2 it settles a clock before it is sampled. The
-// answer word follows its register while CSn is high and freezes when CSn falls (the angle is
-// the one at the start of the frame that carries it); the first falling SCLK edge must come at
-// least SYNC + 2 clocks after CSn falls (the AS5047P's own t_L, 350 ns, is longer above 12 MHz).
+// One clock domain: SCLK, CSn and MOSI are oversampled through SYNC flops each. MOSI is taken at
+// the synchronized falling edge, the same stage as SCLK's, so it is the value the master held
+// across that edge. The next MISO bit is presented SYNC + 1 clocks after each falling edge (so the
+// master's hold is met) and is stable until SYNC + 1 clocks after the next one: the master samples
+// it right when the SCLK period is at least SYNC + 2 clocks (one clock of set-up). That is the
+// port's timing rule, and SCLK_MIN, the shortest SCLK period (in clocks) the port is built for,
+// must meet it: SCLK_MIN >= SYNC + 2, refused at elaboration otherwise (SYNC = 2 takes SCLK up to
+// clk/4, SYNC = 3 clk/5, SYNC = 4 clk/6). The answer word follows its register while CSn is high
+// and freezes when CSn falls (the angle is the one at the start of the frame that carries it).
+// CSn timing, in clocks of clk_i: the first falling SCLK edge at least SYNC + 2 clocks after CSn
+// falls (the AS5047P's own t_L, 350 ns, is longer above 12 MHz); CSn high at least 2 clocks
+// between frames (the answer is loaded in the second). A frame after a shorter gap is a framing
+// error, detected: its answer is {PAR, EF, 0} (0xC000), its command is ignored, FRERR is set.
 `resetall
 `default_nettype none
 
@@ -37,7 +71,14 @@ module acore_spi_as5047 #(
   // Bits of the angle inputs (at least the 14 the frame carries: their upper 14 bits are sent).
   parameter integer ANGLE_W = 16,
   // Synchronizer flops on SCLK, CSn and MOSI.
-  parameter integer SYNC = 2
+  parameter integer SYNC = 2,
+  // The shortest SCLK period the port is built for, in clocks of clk_i: at least SYNC + 2.
+  parameter integer SCLK_MIN = 4,
+  // Bits of the mapped settings: ABZ N (at least 12: N up to 1024), UVW pole pairs (at least 4: up
+  // to 7), the ABZ hysteresis (at least ANGLE_W - 9: up to 3 2^(ANGLE_W-11)).
+  parameter integer N_W = 13,
+  parameter integer PP_W = 5,
+  parameter integer HYS_W = 8
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -56,6 +97,25 @@ module acore_spi_as5047 #(
   input  wire               dos_i,
   input  wire               ovf_i,
   input  wire               lot_i,
+  // The mapped settings (the board's registers): their values, and a write (one clock).
+  input  wire [13:0]        cfg_zero_i,
+  input  wire               cfg_dir_i,
+  input  wire               cfg_daec_i,
+  input  wire [N_W-1:0]     cfg_n_i,
+  input  wire [PP_W-1:0]    cfg_pp_i,
+  input  wire [HYS_W-1:0]   cfg_hys_i,
+  output wire               cfg_zero_we_o,
+  output wire [13:0]        cfg_zero_o,
+  output wire               cfg_dir_we_o,
+  output wire               cfg_dir_o,
+  output wire               cfg_daec_we_o,
+  output wire               cfg_daec_o,
+  output wire               cfg_n_we_o,
+  output wire [N_W-1:0]     cfg_n_o,
+  output wire               cfg_pp_we_o,
+  output wire [PP_W-1:0]    cfg_pp_o,
+  output wire               cfg_hys_we_o,
+  output wire [HYS_W-1:0]   cfg_hys_o,
   // A pulse at the end of each frame, and ERRFL (for status and tests).
   output reg                frame_o,
   output wire [2:0]         errfl_o
@@ -65,21 +125,40 @@ module acore_spi_as5047 #(
     .MSG("illegal parameter: ANGLE_W must be 14..32 (the frame carries 14 bits)")) ANGLE_W_must_be_14_to_32 ();
   acore_check #(.OK(SYNC >= 2 && SYNC <= 4), .VALUE(SYNC),
     .MSG("illegal parameter: SYNC must be 2..4")) SYNC_must_be_2_to_4 ();
+  acore_check #(.OK(SCLK_MIN >= SYNC + 2), .VALUE(SCLK_MIN),
+    .MSG("illegal parameter: SCLK_MIN must be >= SYNC + 2 (MISO moves SYNC + 1 clocks after SCLK falls)"))
+    SCLK_MIN_must_be_at_least_SYNC_plus_2 ();
+  acore_check #(.OK(N_W >= 12 && N_W <= 16), .VALUE(N_W),
+    .MSG("illegal parameter: N_W must be 12..16 (ABIRES's N up to 1024)")) N_W_must_be_12_to_16 ();
+  acore_check #(.OK(PP_W >= 4 && PP_W <= 8), .VALUE(PP_W),
+    .MSG("illegal parameter: PP_W must be 4..8 (UVWPP's 7 pole pairs)")) PP_W_must_be_4_to_8 ();
+  acore_check #(.OK(HYS_W >= ANGLE_W - 9 && HYS_W <= 24), .VALUE(HYS_W),
+    .MSG("illegal parameter: HYS_W must be ANGLE_W-9..24 (HYS's 3 LSBs of 2^-11 turn)"))
+    HYS_W_must_be_ANGLE_W_minus_9_to_24 ();
 
-  localparam [13:0] A_NOP = 14'h0000, A_ERRFL = 14'h0001, A_DIAAGC = 14'h3FFC, A_MAG = 14'h3FFD,
-                    A_ANGLEUNC = 14'h3FFE, A_ANGLECOM = 14'h3FFF;
+  localparam [13:0] A_NOP = 14'h0000, A_ERRFL = 14'h0001, A_PROG = 14'h0003, A_ZPOSM = 14'h0016,
+                    A_ZPOSL = 14'h0017, A_SET1 = 14'h0018, A_SET2 = 14'h0019, A_DIAAGC = 14'h3FFC,
+                    A_MAG = 14'h3FFD, A_ANGLEUNC = 14'h3FFE, A_ANGLECOM = 14'h3FFF;
+  // The registers as the answer selects them.
+  localparam [3:0] S_NOP = 4'd0, S_ERRFL = 4'd1, S_PROG = 4'd2, S_ZPOSM = 4'd3, S_ZPOSL = 4'd4,
+                   S_SET1 = 4'd5, S_SET2 = 4'd6, S_DIAAGC = 4'd7, S_MAG = 4'd8, S_ANGLEUNC = 4'd9,
+                   S_ANGLECOM = 4'd10;
+  // HYS's LSB, 2^-11 turn, in angle LSBs.
+  localparam integer HYS_SHIFT = ANGLE_W - 11;
 
   // ---- synchronizers (idle: SCLK low, CSn high) and edges ----
-  reg [SYNC:0] sclk_s, csn_s;
+  // (CSn one stage longer: a falling edge sees whether CSn was high for two clocks before it.)
+  reg [SYNC:0] sclk_s;
+  reg [SYNC+1:0] csn_s;
   reg [SYNC-1:0] mosi_s;
   always @(posedge clk_i) begin
     if (rst_i) begin
       sclk_s <= {(SYNC+1){1'b0}};
-      csn_s <= {(SYNC+1){1'b1}};
+      csn_s <= {(SYNC+2){1'b1}};
       mosi_s <= {SYNC{1'b0}};
     end else begin
       sclk_s <= {sclk_s[SYNC-1:0], sclk_i};
-      csn_s <= {csn_s[SYNC-1:0], csn_i};
+      csn_s <= {csn_s[SYNC:0], csn_i};
       mosi_s <= {mosi_s[SYNC-2:0], mosi_i};
     end
   end
@@ -88,18 +167,73 @@ module acore_spi_as5047 #(
   wire mosi = mosi_s[SYNC-1];
   wire cs_fall = csn_s[SYNC] & ~csn_s[SYNC-1];
   wire cs_rise = ~csn_s[SYNC] & csn_s[SYNC-1];
+  // CSn was high for one clock only: the answer of the frame before was not loaded.
+  wire cs_short = cs_fall & ~csn_s[SYNC+1];
+
+  // ---- the settings only the port keeps (no AngleCore equivalent) ----
+  reg progen_q, progver_q, abibin_q, dsel_q, uvwabi_q, pwmon_q;
+  reg [1:0] erren_q;   // ZPOSL's comp_l_error_en, comp_h_error_en
+
+  // ABIRES's tables: N of a code, and the code read for an N (the first entry not above N).
+  function integer abi_n_int(input bin, input [2:0] code);
+    begin
+      if (bin) abi_n_int = (code == 3'd0) ? 1024 : (code == 3'd1) ? 512 : 256;
+      else case (code)
+        3'd0: abi_n_int = 1000;
+        3'd1: abi_n_int = 500;
+        3'd2: abi_n_int = 400;
+        3'd3: abi_n_int = 300;
+        3'd4: abi_n_int = 200;
+        3'd5: abi_n_int = 100;
+        3'd6: abi_n_int = 50;
+        default: abi_n_int = 25;
+      endcase
+    end
+  endfunction
+  function [N_W-1:0] abi_n(input bin, input [2:0] code);
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [31:0] v;  // at most 1024: the bits above N_W are 0
+    /* verilator lint_on UNUSEDSIGNAL */
+    begin
+      v = abi_n_int(bin, code);
+      abi_n = v[N_W-1:0];
+    end
+  endfunction
+  function [2:0] abi_code(input bin, input [N_W-1:0] n);
+    integer c;
+    begin
+      // The first code of the table (largest N first) whose N is not above n; the last otherwise.
+      abi_code = bin ? 3'd2 : 3'd7;
+      for (c = 7; c >= 0; c = c - 1)
+        if ((bin == 1'b0 || c <= 2) && {{(32-N_W){1'b0}}, n} >= abi_n_int(bin, c[2:0])) abi_code = c[2:0];
+    end
+  endfunction
+  // HYS read back: 3 - ceil(width / 2^HYS_SHIFT), at least 0.
+  localparam [HYS_W:0] HYS_ROUND = (1 << HYS_SHIFT) - 1;
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [HYS_W:0] hys_up = {1'b0, cfg_hys_i} + HYS_ROUND;  // its bits below HYS_SHIFT: not needed
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [HYS_W-HYS_SHIFT:0] hys_lsbs = hys_up[HYS_W:HYS_SHIFT];
+  wire [1:0] hys_code = (hys_lsbs >= 3) ? 2'd0 : 2'd3 - hys_lsbs[1:0];
+  wire [2:0] uvwpp_code = (cfg_pp_i >= 7) ? 3'd6 : (cfg_pp_i == 0) ? 3'd0 : cfg_pp_i[2:0] - 3'd1;
+  wire [2:0] abires_code = abi_code(abibin_q, cfg_n_i);
 
   // ---- the answer of the next frame ----
   reg [2:0] errfl_q;   // {PARERR, INVCOMM, FRERR}
-  reg [2:0] ans_q;     // which register: 0 NOP, 1 ERRFL, 4 DIAAGC, 5 MAG, 6 ANGLEUNC, 7 ANGLECOM
+  reg [3:0] ans_q;     // which register (S_*)
   reg [13:0] data;
   always @(*) begin
     case (ans_q)
-      3'd1: data = {11'd0, errfl_q};
-      3'd4: data = {2'b00, los_i, dos_i, ovf_i, ~lot_i, agc_i};
-      3'd5: data = mag_i;
-      3'd6: data = angle_unc_i[ANGLE_W-1 -: 14];
-      3'd7: data = angle_com_i[ANGLE_W-1 -: 14];
+      S_ERRFL: data = {11'd0, errfl_q};
+      S_PROG: data = {7'd0, progver_q, 5'd0, progen_q};
+      S_ZPOSM: data = {6'd0, cfg_zero_i[13:6]};
+      S_ZPOSL: data = {6'd0, erren_q, cfg_zero_i[5:0]};
+      S_SET1: data = {6'd0, pwmon_q, dsel_q, abibin_q, ~cfg_daec_i, uvwabi_q, cfg_dir_i, 2'b01};
+      S_SET2: data = {6'd0, abires_code, hys_code, uvwpp_code};
+      S_DIAAGC: data = {2'b00, los_i, dos_i, ovf_i, ~lot_i, agc_i};
+      S_MAG: data = mag_i;
+      S_ANGLEUNC: data = angle_unc_i[ANGLE_W-1 -: 14];
+      S_ANGLECOM: data = dsel_q ? angle_unc_i[ANGLE_W-1 -: 14] : angle_com_i[ANGLE_W-1 -: 14];
       default: data = 14'd0;
     endcase
   end
@@ -110,44 +244,102 @@ module acore_spi_as5047 #(
   reg [15:0] rx_q, tx_q;
   reg [4:0] bits_q;    // saturates at 17: too long
   reg wr_data_q;       // the next frame is a write's data frame
+  reg [3:0] wr_reg_q;  // the register it writes (S_NOP: none, the data frame is consumed)
+  reg short_q;         // this frame followed a CSn gap of one clock: a framing error
   wire parity_ok = ~^rx_q;
   wire read = rx_q[14];
   wire [13:0] addr = rx_q[13:0];
-  wire known = (addr == A_NOP) | (addr == A_ERRFL) | (addr == A_DIAAGC) | (addr == A_MAG) |
-               (addr == A_ANGLEUNC) | (addr == A_ANGLECOM);
-  // Errors found at the end of this frame, as ERRFL bits.
+  wire [3:0] sel_reg = (addr == A_ERRFL) ? S_ERRFL : (addr == A_PROG) ? S_PROG :
+                       (addr == A_ZPOSM) ? S_ZPOSM : (addr == A_ZPOSL) ? S_ZPOSL :
+                       (addr == A_SET1) ? S_SET1 : (addr == A_SET2) ? S_SET2 :
+                       (addr == A_DIAAGC) ? S_DIAAGC : (addr == A_MAG) ? S_MAG :
+                       (addr == A_ANGLEUNC) ? S_ANGLEUNC : (addr == A_ANGLECOM) ? S_ANGLECOM : S_NOP;
   // NOP (address 0) is no command either way: the frame drivers send to collect an answer is 0x0000.
   wire nop = (addr == A_NOP);
+  wire known = nop | (sel_reg != S_NOP);
+  wire writable = (sel_reg == S_PROG) | (sel_reg == S_ZPOSM) | (sel_reg == S_ZPOSL) |
+                  (sel_reg == S_SET1) | (sel_reg == S_SET2);
   wire write = ~read & ~nop;
-  wire [2:0] err_new = (bits_q != 5'd16) ? 3'b001 : ~parity_ok ? 3'b100 :
-                       wr_data_q ? 3'b000 : (write | ~known) ? 3'b010 : 3'b000;
-  wire cmd_ok = cs_rise & (bits_q == 5'd16) & parity_ok & ~wr_data_q;
-  // ERRFL's own answer clears it when the frame carrying it starts.
-  wire clear_errfl = cs_fall & (ans_q == 3'd1);
+  // Errors found at the end of this frame, as ERRFL bits.
+  wire [2:0] err_new = (bits_q != 5'd16 || short_q) ? 3'b001 : ~parity_ok ? 3'b100 :
+                       wr_data_q ? 3'b000 : (~known | (write & ~writable)) ? 3'b010 : 3'b000;
+  wire frame_ok = cs_rise & (bits_q == 5'd16) & ~short_q & parity_ok;
+  wire cmd_ok = frame_ok & ~wr_data_q;
+  // The data frame of a write: the register written in the clock CSn rises.
+  wire wr_do = frame_ok & wr_data_q;
+  wire [7:0] wd = rx_q[7:0];  // the settings' data bits (the AS5047P's are 8 wide)
+  assign cfg_zero_we_o = wr_do & ((wr_reg_q == S_ZPOSM) | (wr_reg_q == S_ZPOSL));
+  assign cfg_zero_o = (wr_reg_q == S_ZPOSM) ? {wd[7:0], cfg_zero_i[5:0]} : {cfg_zero_i[13:6], wd[5:0]};
+  assign cfg_dir_we_o = wr_do & (wr_reg_q == S_SET1);
+  assign cfg_dir_o = wd[2];
+  assign cfg_daec_we_o = wr_do & (wr_reg_q == S_SET1);
+  assign cfg_daec_o = ~wd[4];
+  // N: from ABIRES (SETTINGS2), or re-read through the other table when SETTINGS1 changes ABIBIN.
+  assign cfg_n_we_o = wr_do & ((wr_reg_q == S_SET2) | ((wr_reg_q == S_SET1) & (wd[5] != abibin_q)));
+  assign cfg_n_o = (wr_reg_q == S_SET2) ? abi_n(abibin_q, wd[7:5]) : abi_n(wd[5], abires_code);
+  assign cfg_pp_we_o = wr_do & (wr_reg_q == S_SET2);
+  assign cfg_pp_o = (wd[2:0] == 3'd7) ? 7 : {{(PP_W-3){1'b0}}, wd[2:0]} + 1'b1;
+  assign cfg_hys_we_o = wr_do & (wr_reg_q == S_SET2);
+  assign cfg_hys_o = {{(HYS_W-2){1'b0}}, 2'd3 - wd[4:3]} << HYS_SHIFT;
+  // ERRFL's own answer clears it when the frame carrying it starts (not after a short gap: the
+  // frame then carries 0xC000 instead).
+  wire clear_errfl = cs_fall & (ans_q == S_ERRFL) & ~cs_short;
   always @(posedge clk_i) begin
     if (rst_i) begin
       errfl_q <= 3'd0;
-      ans_q <= 3'd0;
+      ans_q <= S_NOP;
       bits_q <= 5'd0;
       wr_data_q <= 1'b0;
+      wr_reg_q <= S_NOP;
+      short_q <= 1'b0;
       frame_o <= 1'b0;
       tx_q <= 16'd0;
+      progen_q <= 1'b0;
+      progver_q <= 1'b0;
+      abibin_q <= 1'b1;
+      dsel_q <= 1'b0;
+      uvwabi_q <= 1'b0;
+      pwmon_q <= 1'b0;
+      erren_q <= 2'd0;
     end else begin
       frame_o <= cs_rise;
       if (!sel) tx_q <= answer;
+      else if (cs_short) tx_q <= 16'hC000;  // EF with even parity, data 0
       else if (fall) tx_q <= {tx_q[14:0], 1'b0};
+      if (cs_fall) short_q <= cs_short;
       if (cs_fall) bits_q <= 5'd0;
       else if (fall && bits_q != 5'd17) bits_q <= bits_q + 5'd1;
       errfl_q <= (clear_errfl ? 3'd0 : errfl_q) | (cs_rise ? err_new : 3'd0);
+      if (wr_do) begin
+        case (wr_reg_q)
+          S_PROG: begin
+            progen_q <= wd[0];
+            progver_q <= wd[6];
+          end
+          S_ZPOSL: erren_q <= wd[7:6];
+          S_SET1: begin
+            uvwabi_q <= wd[3];
+            abibin_q <= wd[5];
+            dsel_q <= wd[6];
+            pwmon_q <= wd[7];
+          end
+          default: ;
+        endcase
+      end
       if (cs_rise) begin
         if (cmd_ok) begin
+          // A read: its register answers next. A write: the data frame answers the old content.
           wr_data_q <= write;
-          ans_q <= ~read ? 3'd0 : (addr == A_ERRFL) ? 3'd1 : (addr == A_DIAAGC) ? 3'd4 :
-                   (addr == A_MAG) ? 3'd5 : (addr == A_ANGLEUNC) ? 3'd6 : (addr == A_ANGLECOM) ? 3'd7 : 3'd0;
+          wr_reg_q <= (write & writable) ? sel_reg : S_NOP;
+          ans_q <= ((read & known) | (write & writable)) ? sel_reg : S_NOP;
+        end else if (wr_do) begin
+          // The data frame: the next frame answers the register's new content.
+          wr_data_q <= 1'b0;
+          ans_q <= wr_reg_q;
         end else begin
-          // A refused frame (or a write's data frame): the next answer is NOP's.
+          // A refused frame: the next answer is NOP's.
           if (bits_q == 5'd16) wr_data_q <= 1'b0;
-          ans_q <= 3'd0;
+          ans_q <= S_NOP;
         end
       end
     end

@@ -8,8 +8,9 @@ run, and their ratio (target: within 1.2x of BM_EstimateFixedBatch, the same wor
 
 Prints the fastest of --reps runs (ms per 1 M samples; the minimum, as the machine may be shared) of
 BM_FixedChain (the batch chain on ready codes), BM_EstimateFixedBatch (codes + chain + angles +
-errors: what estimate runs) and of anglecore.estimate(img, rec, engine="fixed", uncorrected=False)
-timed with time.perf_counter.
+errors: what estimate runs) and of anglecore.estimate(img, rec, engine="fixed", uncorrected=False,
+track=False) timed with time.perf_counter (without the tracking observer: the C++ benchmark runs
+none).
 """
 
 import argparse
@@ -50,11 +51,11 @@ def main() -> None:
     a = ap.parse_args()
     rec = ac.simulate("paper-noiseless", samples=N, seed=1)
     img = ac.calibrate(rec)
-    ac.estimate(img, rec, engine="fixed", uncorrected=False)  # warm-up
+    ac.estimate(img, rec, engine="fixed", uncorrected=False, track=False)  # warm-up
     times = []
     for _ in range(a.reps):
         t0 = time.perf_counter()
-        res = ac.estimate(img, rec, engine="fixed", uncorrected=False)
+        res = ac.estimate(img, rec, engine="fixed", uncorrected=False, track=False)
         times.append((time.perf_counter() - t0) * 1e3)
     py = min(times)
     cpp = cpp_fastest(a.build / "tests" / "bench" / "bench_estimator", a.reps)

@@ -96,6 +96,14 @@ KINDS = {
             "while its input rg_<reg>_<field>_lock is high; TEXT says when"
         ),
     ),
+    "hw": (
+        "hw TEXT",
+        (
+            "the owner also writes the RW field above: inputs rg_<reg>_<field>_hw_we and "
+            "rg_<reg>_<field>_hw_d (a value within the field's range; an APB write of its "
+            "register in the same clock wins); TEXT says who"
+        ),
+    ),
     "clears": (
         "clears REG",
         "the W1 field above clears every W1C field of REG (no port of its own)",
@@ -136,6 +144,7 @@ class Field:
         )
         self.range = None  # (lo, hi, word): lo/hi an int or a parameter name
         self.lock = None  # when the owner refuses it (text)
+        self.hw = None  # who else writes it (text): the hardware write port
         self.clears = None  # the register whose W1C fields a W1 field clears
         self.frac = None
         self.reg = None
@@ -442,6 +451,9 @@ def parse(root, rel):
                 attr_field(
                     ("RW", "W1"), "only an RW or W1 field (or a window) has a lock"
                 ).lock = rest
+        elif kind == "hw":
+            need(1, "text")
+            attr_field(("RW",), "only an RW field has a hardware write port").hw = rest
         elif kind == "clears":
             need(1)
             attr_field(("W1",), "only a W1 field clears").clears = args[0]
@@ -625,6 +637,19 @@ def owner_ports(blk):
                 out.append(
                     (f"{s}_we_o", f"rg_{s}_we", "output", "", f"{desc}: written in this clock")
                 )
+                if f.hw:
+                    out.append(
+                        (f"{s}_hw_we_i", f"rg_{s}_hw_we", "input", "", f"{desc}: {f.hw} writes")
+                    )
+                    out.append(
+                        (
+                            f"{s}_hw_d_i",
+                            f"rg_{s}_hw_d",
+                            "input",
+                            d,
+                            f"{desc}: the value {f.hw} writes",
+                        )
+                    )
             elif f.access == "W1C":
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: the sticky value"))
                 out.append(
@@ -1159,6 +1184,12 @@ def gen_regblock(blk):
                 )
                 o.append(f"        {f.port()}_q <= {src};\n")
             o.append("      end\n")
+            for f in rw:
+                if f.hw:
+                    o.append(
+                        f"      if ({f.port()}_hw_we_i && !wr_{r.name.lower()}) "
+                        f"{f.port()}_q <= {f.port()}_hw_d_i;\n"
+                    )
         for f in r.fields:
             if f.access != "W1C":
                 continue
@@ -1295,6 +1326,8 @@ def field_meaning(f):
         text += (
             f" A write {'of 1 ' if f.access == 'W1' else ''}is an error without effect {f.lock}."
         )
+    if f.hw:
+        text += f" Also written by {f.hw} (an APB write in the same clock wins)."
     return text
 
 

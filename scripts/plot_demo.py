@@ -4,7 +4,9 @@
 
 usage: /usr/bin/python3 scripts/plot_demo.py OUT_DIR
 Reads OUT_DIR/validation_angles.csv (theta_ref, s13, s24, y13, y24, err_uncorrected,
-err_float, err_fixed[, err_rtl]) and writes error_vs_angle.png, lissajous.png, histogram.png.
+err_float, err_fixed[, err_rtl]) and writes error_vs_angle.png, lissajous.png, histogram.png; and
+the drive outputs, OUT_DIR/velocity.csv (t_ms, velocity_rpm, reference_rpm, profile_rpm) and
+velocity_noise.csv (t_ms, observer_rpm, finite_difference_rpm), into velocity.png.
 """
 
 import csv
@@ -68,6 +70,33 @@ def main():
     ax[1].set_xlabel("error [deg]")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "histogram.png"), dpi=110)
+
+    v = load(os.path.join(out, "velocity.csv"))
+    n = load(os.path.join(out, "velocity_noise.csv"))
+    fig, ax = plt.subplots(3, 1, figsize=(9, 9))
+    ax[0].plot(v["t_ms"], v["velocity_rpm"], lw=0.8, label="observer (estimated angle)")
+    ax[0].plot(v["t_ms"], v["reference_rpm"], lw=0.8, ls="--", label="observer (reference angle)")
+    ax[0].plot(v["t_ms"], v["profile_rpm"], "k:", lw=0.8, label="profile speed")
+    ax[0].set_ylim(min(v["profile_rpm"]) - 150, max(v["profile_rpm"]) + 150)  # the settled loop
+    ax[0].set_ylabel("velocity [rpm]")
+    ax[0].set_title("Velocity against the reference (3000 rpm, 2 % ripple at 40 Hz)")
+    ax[0].legend(loc="lower right", fontsize=8)
+    ax[0].grid(alpha=0.3)
+    err = [a - b for a, b in zip(v["velocity_rpm"], v["reference_rpm"])]
+    ax[1].plot(v["t_ms"], err, lw=0.8)
+    ax[1].set_ylabel("error [rpm]")
+    ax[1].set_xlabel("time [ms]")
+    ax[1].set_title("Velocity error: estimated minus reference, through the same observer")
+    ax[1].grid(alpha=0.3)
+    ax[2].plot(n["t_ms"], n["finite_difference_rpm"], lw=0.8, label="finite difference")
+    ax[2].plot(n["t_ms"], n["observer_rpm"], lw=0.8, label="observer")
+    ax[2].set_ylabel("velocity [rpm]")
+    ax[2].set_xlabel("time [ms]")
+    ax[2].set_title("Velocity noise at constant speed, equal bandwidth")
+    ax[2].legend(loc="lower right", fontsize=8)
+    ax[2].grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "velocity.png"), dpi=110)
 
 
 if __name__ == "__main__":

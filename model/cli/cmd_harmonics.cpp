@@ -82,36 +82,20 @@ void write_plot(const HarmonicAnalysis& a, const std::string& dir, std::ostream&
     log << fmt::format("plots: {}/harmonics_spectrum.png, {}/harmonics_error.png\n", dir, dir);
 }
 
-// The inverse map on the exact spectrum: which signal imperfections could have made each order.
+// The inverse map on the exact spectrum (attribute_exact): which signal imperfections could have
+// made each order, the best three causes of each printed; the JSON is the library's.
 nlohmann::json print_attribution(const HarmonicAnalysis& a, std::ostream& os) {
-  std::vector<OrderAmplitude> spectrum;
-  for (const auto& h : a.harmonics) spectrum.push_back({h.order, h.exact * kDeg, 0, 0, 0});
-  AttributionOptions opt;
-  opt.p = a.spec.p;
-  opt.mechanical = false;
-  opt.include_dc = true;
-  nlohmann::json j = nlohmann::json::array();
+  const std::vector<OrderCauses> orders = attribute_exact(a);
   os << "attribution of the exact spectrum (orders >= 5% of the largest; best causes first):\n";
-  for (const auto& o : attribute(spectrum, opt)) {
-    nlohmann::json causes = nlohmann::json::array();
+  for (const auto& o : orders) {
     os << fmt::format("  order {:>3} ({:.4f} deg):\n", o.order, o.amplitude_deg);
-    for (size_t i = 0; i < o.causes.size(); ++i) {
+    for (size_t i = 0; i < o.causes.size() && i < 3; ++i) {
       const auto& c = o.causes[i];
-      if (i < 3)
-        os << fmt::format("      {:>5.1f}% explained, consistency {:.2f}: {}\n", 100 * c.explained,
-                          c.consistency, c.text);
-      causes.push_back({{"kind", c.kind},
-                        {"signal_order", c.signal_order},
-                        {"taylor_order", c.taylor_order},
-                        {"parameter_name", c.parameter_name},
-                        {"parameter", c.parameter},
-                        {"predicted_deg", c.predicted_deg},
-                        {"explained", c.explained},
-                        {"consistency", c.consistency}});
+      os << fmt::format("      {:>5.1f}% explained, consistency {:.2f}: {}\n", 100 * c.explained,
+                        c.consistency, c.text);
     }
-    j.push_back({{"order", o.order}, {"amplitude_deg", o.amplitude_deg}, {"causes", causes}});
   }
-  return j;
+  return attribution_json(orders);
 }
 
 void run_harmonics(const HarmonicsArgs& args) {

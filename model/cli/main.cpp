@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   CLI::App app{"AngleCore: angle-sensor calibration, estimation, co-simulation and diagnosis"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
+  app.set_version_flag("--version", "anglecore " ACORE_VERSION, "Print the version and exit");
   acore::cli::add_demo(app);
   acore::cli::add_simulate(app);
   acore::cli::add_calibrate(app);
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);

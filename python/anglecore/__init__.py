@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from importlib import metadata
 from typing import Any, Optional
 
 import numpy as np
@@ -41,6 +42,9 @@ __all__ = [
     "simulate",
     "simulate_physics",
 ]
+
+# The project's version (the top-level CMakeLists.txt's project(), its one source), as installed.
+__version__ = metadata.version("anglecore")
 
 RtlNotBuilt = _core.RtlNotBuilt  # a ValueError: an RTL engine's run-time module is not built
 RtlNotBuilt.__module__ = __name__
@@ -276,7 +280,11 @@ def calibrate(recording: Recording, **options: Any) -> RegisterImage:
 
 @dataclass
 class Estimate:
-    """estimate()'s result: per-sample arrays and the `estimate --json` object (.report)."""
+    """estimate()'s result: per-sample arrays and the `estimate --json` object (.report).
+
+    The drive outputs come from the tracking observer over `angle`, with estimate()'s observer
+    settings, as the command's --out columns: velocity (velocity_rpm), turns, angle_comp
+    (angle_comp_rad), lot. None when estimate() ran with track=False."""
 
     angle: np.ndarray  # rad, reference frame, [0, 2 pi)
     region: np.ndarray  # uint8
@@ -285,6 +293,10 @@ class Estimate:
     uncorrected: Optional[np.ndarray]  # rad, the chain without correction (None when not asked)
     uncorrected_error: Optional[np.ndarray]
     report: dict
+    velocity: Optional[np.ndarray] = None  # mechanical rpm (None without the recording's t)
+    turns: Optional[np.ndarray] = None  # int64: signed electrical turns, 0 at the first sample
+    angle_comp: Optional[np.ndarray] = None  # rad, [0, 2 pi): angle looked ahead by track_lead
+    lot: Optional[np.ndarray] = None  # uint8: 1 where the observer lost tracking
 
     @property
     def error_deg(self) -> Optional[dict]:
@@ -302,6 +314,17 @@ class Estimate:
     def zero_offset(self) -> dict:
         return self.report["zero_offset"]
 
+    @property
+    def track(self) -> Optional[dict]:
+        """The observer's settings and count of lost samples (the command's `track` object);
+        None without the recording's t."""
+        return self.report.get("track")
+
+    @property
+    def velocity_error_rpm(self) -> Optional[dict]:
+        """Velocity against p theta_ref through the same observer: {rms, max_abs, mean}, rpm."""
+        return self.report.get("velocity_error_rpm")
+
 
 def _check_recording(recording: Any) -> None:
     if not isinstance(recording, Recording):
@@ -317,6 +340,10 @@ def estimate(
     fold: int = 1,
     trace: Optional[os.PathLike | str] = None,
     rtl_dir: Optional[os.PathLike | str] = None,
+    track: bool = True,
+    track_bandwidth: Optional[float] = None,
+    track_lead: float = 0.0,
+    track_lot: Optional[int] = None,
 ) -> Estimate:
     """Runs an engine over a recording, as `anglecore estimate --engine ENGINE [--fold N]`.
 
@@ -328,7 +355,14 @@ def estimate(
     is not there. trace: an FST waveform of the RTL run.
 
     fixed with uncorrected=False takes the fast path: the bit-accurate batch straight on the
-    recording's arrays (no copy; the GIL is released), the same angles bit for bit."""
+    recording's arrays (no copy; the GIL is released), the same angles bit for bit.
+
+    The drive outputs (velocity, turns, angle_comp, lot; report's track and velocity_error_rpm)
+    come from the tracking observer over the angles, as `estimate --out`: track_bandwidth (Hz at
+    the recording's sample rate, from t: the nearest code; None: code 6), track_lead (samples
+    angle_comp looks ahead, 1/16 steps), track_lot (the loss-of-tracking threshold, angle LSBs;
+    None: 4096) are the command's --track-bandwidth, --track-lead, --track-lot. track=False skips
+    the observer (those fields None, the report without them)."""
     if not isinstance(image, RegisterImage):
         raise TypeError(f"expected an anglecore.RegisterImage, got {type(image).__name__}")
     _check_recording(recording)
@@ -360,14 +394,33 @@ def estimate(
     report = _core.estimate_report(
         image._img, engine, int(fold), len(recording), err, unc_err, int(np.count_nonzero(flags))
     )
-    return Estimate(angle, region, flags, err, unc, unc_err, report)
+    drive: dict[str, Any] = {}
+    if track:
+        has_ref = theta is not None or "t" in recording.columns
+        velocity, turns, comp, lot, extra = _core.track(
+            image._img,
+            angle,
+            recording.columns.get("t"),
+            theta,
+            p if has_ref else 1,
+            float(track_bandwidth or 0.0),
+            float(track_lead),
+            -1 if track_lot is None else int(track_lot),
+        )
+        report.update(extra)
+        drive = {"velocity": velocity, "turns": turns, "angle_comp": comp, "lot": lot}
+    return Estimate(angle, region, flags, err, unc, unc_err, report, **drive)
 
 
-def harmonics(spec: Any, grid: int = 0) -> dict:
+def harmonics(spec: Any, grid: int = 0, attribute: bool = False) -> dict:
     """Kuntz's predicted vs exact angle-error harmonics (`anglecore harmonics --json`) of a
-    signal spec: a dict {p, A0, B0, Ap, Bp, delta_p, terms: [...]} or a JSON file path."""
+    signal spec: a dict {p, A0, B0, Ap, Bp, delta_p, terms: [...]} or a JSON file path.
+    attribute=True adds "attribution" (`harmonics --attribute`): for each significant order of the
+    exact spectrum, the signal imperfections that can cause it, best first."""
     if isinstance(spec, os.PathLike):
         spec = os.fspath(spec)
+    if attribute:
+        return _core.harmonics_attributed(spec, int(grid))
     return _core.harmonics(spec, int(grid))
 
 

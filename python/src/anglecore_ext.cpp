@@ -11,6 +11,7 @@
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -23,6 +24,8 @@
 #include "diagnose/diagnose.hpp"
 #include "diagnose/physics_bench.hpp"
 #include "engine/estimator.hpp"
+#include "engine/track_series.hpp"
+#include "harmonics/harmonic_attribution.hpp"
 #include "harmonics/harmonics.hpp"
 #include "regmap/codec.hpp"
 #include "regmap/regimage.hpp"
@@ -226,6 +229,43 @@ nb::object estimate_report(const RegImage& img, const std::string& engine, int f
                                  err ? &st : nullptr, uncorrected_err ? &su : nullptr, flagged));
 }
 
+// The tracking observer over the estimated angles with the command's settings (track_series):
+// (velocity_rpm or None without t, turns, angle_comp, lot, the JSON fields the command adds:
+// track, velocity_error_rpm). t and theta_ref are the recording's columns (None when absent).
+nb::tuple track_py(const RegImage& img, InArray angle, std::optional<InArray> t,
+                   std::optional<InArray> theta, int periodicity, double bandwidth_hz, double lead,
+                   int64_t lot_threshold) {
+  const double fs = t ? sample_rate_of_times(t->data(), t->shape(0)) : 0;
+  TrackSettings ts;
+  ts.bandwidth_hz = bandwidth_hz;
+  ts.lead = lead;
+  if (lot_threshold >= 0)
+    ts.lot_threshold = static_cast<uint32_t>(std::min<int64_t>(lot_threshold, UINT32_MAX));
+  const std::vector<double> a(angle.data(), angle.data() + angle.shape(0));
+  std::vector<double> ref;
+  if (theta) {
+    if (theta->shape(0) != angle.shape(0))
+      throw InputError("estimate: theta_ref differs in length");
+    ref.assign(theta->data(), theta->data() + theta->shape(0));
+  }
+  if (t && t->shape(0) != angle.shape(0)) throw InputError("estimate: t differs in length");
+  nlohmann::json extra = nlohmann::json::object();
+  TrackedSeries tr;
+  {
+    nb::gil_scoped_release release;
+    tr = track_series(a, fs, periodicity, img.cfg.angle_w, ts);
+    if (fs > 0) {
+      extra["track"] = track_json(tr);
+      if (theta)
+        extra["velocity_error_rpm"] =
+            stats_json(error_stats(track_velocity_error_rpm(tr, ref, periodicity)));
+    }
+  }
+  nb::object rpm = tr.has_rate() ? to_numpy(std::move(tr.rpm)) : nb::none();
+  return nb::make_tuple(rpm, to_numpy(std::move(tr.turns)), to_numpy(std::move(tr.comp)),
+                        to_numpy(std::move(tr.lot)), to_python(extra));
+}
+
 // --- calibrate ---------------------------------------------------------------------------------
 
 // Options by their CLI names ('-' -> '_'), each into the same CalibrateSpec the CLI fills.
@@ -294,6 +334,20 @@ nb::object harmonics_py(nb::handle spec, int grid) {
   {
     nb::gil_scoped_release release;
     j = analyze(s, grid).to_json();
+  }
+  return to_python(j);
+}
+
+// `harmonics --attribute`'s JSON field "attribution" of the spec (attribute_exact).
+nb::object harmonics_attribution_py(nb::handle spec, int grid) {
+  const SignalSpec s = nb::isinstance<nb::str>(spec) ? load_signal_spec(nb::cast<std::string>(spec))
+                                                     : parse_signal_spec(to_json(spec));
+  nlohmann::json j;
+  {
+    nb::gil_scoped_release release;
+    const HarmonicAnalysis a = analyze(s, grid);
+    j = a.to_json();
+    j["attribution"] = attribution_json(attribute_exact(a));
   }
   return to_python(j);
 }
@@ -445,5 +499,9 @@ NB_MODULE(_core, m) {
         "error_deg"_a.noconvert().none(), "uncorrected_error_deg"_a.noconvert().none(),
         "flagged"_a);
   m.def("harmonics", &harmonics_py, "spec"_a, "grid"_a = 0);
+  m.def("harmonics_attributed", &harmonics_attribution_py, "spec"_a, "grid"_a = 0);
+  m.def("track", &track_py, "image"_a, "angle"_a.noconvert(), "t"_a.noconvert().none(),
+        "theta_ref"_a.noconvert().none(), "periodicity"_a, "bandwidth_hz"_a, "lead"_a,
+        "lot_threshold"_a);
   m.def("diagnose", &diagnose_py, "sim"_a, "real"_a, "holdout"_a.none(), "order"_a = 0);
 }

@@ -6,14 +6,17 @@
 //     edges; after every catch-up its count equals floor(angle 4N / 2^ANGLE_W) (with the one-LSB
 //     hysteresis rule in closed form), no step ever changes A and B together (a lost count), no two
 //     edges are closer than the spacing register, the catch-up takes the shorter way at the full
-//     rate, and Z rises exactly when the decoder passes the index count, once a turn;
+//     rate, and Z rises exactly when the decoder passes the index count, once a turn; a +-1 LSB
+//     dither anywhere moves no edge at the reset hysteresis; a change of N re-homes at once with
+//     A/B held, then legal single steps only;
 //   - UVW (rtl/acore_uvw.v): every angle of the turn for several pole-pair counts and offsets
 //     against the six-step sectors in closed form (integer arithmetic on 6e against the turn);
 //   - SPI (rtl/acore_spi_as5047.v): an SPI mode-1 master at clk/4 .. clk/10 sending the frames open
 //     motor-control drivers send to an AS5047P (SimpleFOC's MagneticSensorSPI: the read command
 //     0x3FFF | R | parity, then a NOP frame whose answer is the angle; ODrive: 0xFFFF every cycle,
 //     the answer's parity and error flag checked), reads the angle; parity errors, framing errors
-//     and invalid commands are refused and reported in ERRFL and the error flag.
+//     (a CSn gap of one clock included) and invalid commands are refused and reported in ERRFL and
+//     the error flag; MISO moves SYNC + 1 clocks after each falling SCLK edge.
 #include <gtest/gtest.h>
 #include <verilated.h>
 
@@ -84,11 +87,14 @@ struct AbzBench {
   int64_t index = 0;
   int64_t z_rises = 0, z_bad = 0;
   int z_prev = 0;
-  AbzBench(int64_t n_, int64_t index_, int spacing, uint64_t seed) : n(n_), index(index_) {
+  int64_t hys = 2;
+  AbzBench(int64_t n_, int64_t index_, int spacing, uint64_t seed, int64_t hys_ = 2)
+      : n(n_), index(index_), hys(hys_) {
     top = make<Vstage_abz>(ctx, seed);
     top->n_i = static_cast<uint32_t>(n);
     top->index_i = static_cast<uint32_t>(index);
     top->spacing_i = static_cast<uint32_t>(spacing);
+    top->hys_i = static_cast<uint32_t>(hys);
     top->angle_valid_i = 0;
     top->rst_i = 1;
     tick(*top);
@@ -125,9 +131,16 @@ struct AbzBench {
   }
 };
 
-// floor(a 4N / T) and floor((a + 1) 4N / T) mod 4N: the hysteresis band's two counts.
+// floor(a 4N / T): the count of an angle.
 int64_t count_lo(int64_t a, int64_t n) { return (a * 4 * n) >> kAbzAngleW; }
-int64_t count_hi(int64_t a, int64_t n) { return (((a + 1) * 4 * n) >> kAbzAngleW) % (4 * n); }
+// Hysteresis as a window: the previous count holds while it lies within h LSBs of the angle, that
+// is while some angle of a - h .. a + h (round the turn) has that count; otherwise the angle's
+// count.
+int64_t next_count(int64_t a, int64_t n, int64_t h, int64_t previous) {
+  for (int64_t x = a - h; x <= a + h; ++x)
+    if (count_lo(((x % kTurn) + kTurn) % kTurn, n) == previous) return previous;
+  return count_lo(a, n);
+}
 // The shorter way from c to t modulo m (a half turn goes forward).
 int64_t distance(int64_t c, int64_t t, int64_t m) {
   const int64_t d = ((t - c) % m + m) % m;
@@ -160,8 +173,7 @@ TEST_P(Abz, DecoderCountEqualsFloorAfterEveryCatchUpWithoutLostCounts) {
         default:
           a = (k / 4) % 2 ? kTurn - 1 : 0;
       }
-      const int64_t lo = count_lo(a, n), hi = count_hi(a, n);
-      const int64_t next = expected == hi ? hi : lo;
+      const int64_t next = next_count(a, n, b.hys, expected);
       const int64_t dist = distance(expected, next, 4 * n);
       b.angle(static_cast<uint32_t>(a));
       const uint64_t took = b.settle(100 + 4 * n * spacing + 64);
@@ -214,10 +226,10 @@ TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
   for (int64_t c = 1; c <= fwd_pos; ++c) passes += (c % (4 * n)) == index;
   EXPECT_EQ(b.z_rises, passes);
   run(2, -1);
-  // Backwards the band's upper count may hold (approached from above): lo or hi.
+  // Backwards a count within the hysteresis window may hold (approached from above).
   const int64_t a = ((unwrapped % kTurn) + kTurn) % kTurn;
   const int64_t wrapped = b.wrapped();
-  EXPECT_TRUE(wrapped == count_lo(a, n) || wrapped == count_hi(a, n)) << wrapped;
+  EXPECT_EQ(next_count(a, n, b.hys, wrapped), wrapped);
   EXPECT_EQ(b.dec.lost, 0);
   // The count ran at the full rate (one edge a clock) whenever the angle asked for more.
   if (step * 4 * n > kTurn) EXPECT_EQ(b.dec.min_gap, 1u);
@@ -227,31 +239,54 @@ TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
   EXPECT_TRUE(b.dec.pos == lo_unwrapped || b.dec.pos == lo_unwrapped + 1) << b.dec.pos;
 }
 
-TEST_P(Abz, OneLsbDitherAtRestHoldsTheCount) {
+// A dither over 2d + 1 neighbouring LSBs (+-d) centred anywhere, at a hysteresis of 2d: once the
+// count stands on one of its values, no edge at all. Centres on every offset around count
+// boundaries and at random; without hysteresis the same dither across a boundary does move edges
+// (the bench can tell).
+TEST_P(Abz, DitherWithinTheHysteresisMovesNoEdgeAnywhere) {
   const int64_t n = GetParam();
   std::mt19937_64 rng(3000 + n);
-  AbzBench b(n, 0, 1, rng());
-  // An angle a whose next LSB crosses a count boundary.
-  int64_t a = static_cast<int64_t>(rng() % (kTurn - 2));
-  while (count_lo(a + 1, n) == count_lo(a, n)) a = (a + 1) % (kTurn - 2);
-  b.angle(static_cast<uint32_t>(a));
-  b.settle(1u << 30);
-  ASSERT_EQ(b.wrapped(), count_lo(a, n));
-  b.angle(static_cast<uint32_t>(a + 1));
-  b.settle(1u << 30);
-  ASSERT_EQ(b.wrapped(), count_lo(a + 1, n));
-  const int64_t edges = b.dec.edges;
-  for (int k = 0; k < 200; ++k) {
-    b.angle(static_cast<uint32_t>(a + (k % 2 == 0 ? 0 : 1)));
-    for (int j = 0; j < 20; ++j) b.step();
+  int64_t moved = 0, unhysteretic_edges = 0;
+  for (int64_t d : {1, 3}) {
+    for (int pos = 0; pos < 10; ++pos) {
+      // A count boundary bnd (count_lo(bnd - 1) != count_lo(bnd)) and a centre near it, or
+      // anywhere.
+      int64_t bnd = 1 + static_cast<int64_t>(rng() % (kTurn - 8));
+      while (count_lo(bnd - 1, n) == count_lo(bnd, n)) bnd = 1 + (bnd % (kTurn - 8));
+      const int64_t centre =
+          pos < 8 ? bnd - d - 1 + pos % (2 * d + 2) : static_cast<int64_t>(rng() % kTurn);
+      for (int64_t h : {2 * d, int64_t{0}}) {
+        if (h == 0 && (d != 1 || pos >= 8)) continue;
+        AbzBench b(n, 0, 1, rng(), h);
+        auto dither = [&] {
+          const int64_t x = centre + static_cast<int64_t>(rng() % (2 * d + 1)) - d;
+          return static_cast<uint32_t>(((x % kTurn) + kTurn) % kTurn);
+        };
+        // From half a turn away onto one of the dither's values: the count is that value's.
+        b.angle(static_cast<uint32_t>((centre + kTurn / 2) % kTurn));
+        b.settle(1u << 30);
+        const uint32_t first = dither();
+        b.angle(first);
+        b.settle(1u << 30);
+        ASSERT_EQ(b.top->count_o, static_cast<uint32_t>(count_lo(first, n)));
+        const int64_t edges = b.dec.edges;
+        for (int k = 0; k < 500; ++k) {
+          b.angle(dither());
+          b.step();
+          b.step();
+        }
+        b.settle(1u << 30);
+        if (h > 0)
+          moved += b.dec.edges - edges;
+        else
+          unhysteretic_edges += b.dec.edges - edges;
+        EXPECT_EQ(b.dec.lost, 0);
+      }
+    }
   }
-  EXPECT_EQ(b.dec.edges, edges) << "dithering by one LSB moved the count";
-  // Two LSBs down leave the band: the count follows.
-  if (a >= 1 && count_lo(a - 1, n) != count_lo(a + 1, n)) {
-    b.angle(static_cast<uint32_t>(a - 1));
-    b.settle(1u << 30);
-    EXPECT_EQ(b.wrapped(), count_lo(a - 1, n));
-  }
+  EXPECT_EQ(moved, 0) << "a dither within the hysteresis moved the count";
+  // Centres bnd - 1 and bnd straddle the boundary: without hysteresis A or B toggles.
+  EXPECT_GT(unhysteretic_edges, 0);
 }
 
 TEST_P(Abz, MinimumSpacingHoldsAfterAJump) {
@@ -286,6 +321,81 @@ TEST(AbzRange, OutOfRangeNIsClamped) {
     b.settle(1u << 30);
     EXPECT_EQ(b.wrapped(), count_lo(a, n_eff)) << n_in;
   }
+}
+
+// Moves down and up by a few LSBs at N = 1024 (a count is 16 LSBs): the count holds exactly while
+// the angle is within the hysteresis of its interval, and lands on floor(angle 4N / T) otherwise
+// (280 then 271: count 17, then 16 without hysteresis, 17 held with 1 LSB or more).
+TEST(AbzHysteresis, SmallMovesFollowTheWindowRuleExactly) {
+  const int64_t n = 1024;
+  std::mt19937_64 rng(3100);
+  for (int64_t h : {0, 1, 3}) {
+    AbzBench b(n, 0, 1, rng(), h);
+    b.angle(280);
+    b.settle(1u << 30);
+    ASSERT_EQ(b.top->count_o, 17u);
+    b.angle(271);
+    b.settle(1u << 30);
+    EXPECT_EQ(b.top->count_o, h == 0 ? 16u : 17u) << "hysteresis " << h;
+    int64_t expected = b.top->count_o, wrong = 0;
+    int64_t a = 271;
+    for (int k = 0; k < 2000; ++k) {
+      a = (a + static_cast<int64_t>(rng() % 33) - 16 + kTurn) % kTurn;
+      expected = next_count(a, n, h, expected);
+      b.angle(static_cast<uint32_t>(a));
+      b.settle(1u << 30);
+      wrong += static_cast<int64_t>(b.top->count_o) != expected;
+    }
+    EXPECT_EQ(wrong, 0) << "hysteresis " << h;
+    EXPECT_EQ(b.dec.lost, 0);
+  }
+}
+
+// A change of N alone (no new angle): in the clock it changes and until the new count is known,
+// A and B hold; then the count stands on the value with the old count's two low bits nearest the
+// new floor, and walks there in at most two single steps: the decoder sees no illegal step, moves
+// by exactly that walk, and the count is floor(angle 4N' / T) within N_W + 8 clocks.
+TEST(AbzNChange, ReHomesAtOnceWithAandBHeldThenSingleSteps) {
+  std::mt19937_64 rng(3200);
+  const std::vector<std::pair<int64_t, int64_t>> changes = {
+      {1024, 1000},           {1000, 1024}, {3, 1 << (kAbzNW - 1)},
+      {1 << (kAbzNW - 1), 1}, {360, 7},     {7, 360}};
+  int64_t held_bad = 0, late = 0, wrong = 0, walk_bad = 0, lost = 0;
+  for (const auto& [n1, n2] : changes) {
+    for (int k = 0; k < 12; ++k) {
+      AbzBench b(n1, 0, 1, rng());
+      const int64_t a = static_cast<int64_t>(rng() % kTurn);
+      b.angle(static_cast<uint32_t>(a));
+      b.settle(1u << 30);
+      const int64_t c_old = b.top->count_o;
+      const int64_t pos0 = b.dec.pos;
+      const int ab = b.top->a_o * 2 + b.top->b_o;
+      b.top->n_i = static_cast<uint32_t>(n2);
+      const int64_t lo = count_lo(a, n2);
+      const int64_t d = ((c_old - lo) % 4 + 4) % 4;
+      // A and B hold while the new product is computed (N_W + 3 clocks at least).
+      for (int j = 0; j < kAbzNW + 3; ++j) {
+        b.step();
+        held_bad += b.top->a_o * 2 + b.top->b_o != ab;
+      }
+      const uint64_t took = b.settle(64) + kAbzNW + 3;
+      // d = 2 is half the turn at N = 1: the shorter way's tie goes forward.
+      const int64_t walk = d == 3 ? 1 : (d == 2 && n2 == 1) ? 2 : -d;
+      walk_bad += b.dec.pos - pos0 != walk;
+      lost += b.dec.lost;
+    }
+  }
+  EXPECT_EQ(held_bad, 0);
+  EXPECT_EQ(late, 0);
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(walk_bad, 0);
+  EXPECT_EQ(lost, 0);
+  // Before any angle a change of N moves nothing.
+  AbzBench b(1024, 0, 1, 5);
+  b.top->n_i = 5;
+  for (int j = 0; j < 40; ++j) b.step();
+  EXPECT_EQ(b.dec.edges, 0);
+  EXPECT_EQ(b.top->count_o, 0u);
 }
 
 // ---- UVW ----------------------------------------------------------------------------------------
@@ -367,23 +477,46 @@ struct SpiMaster {
   int lead = 2;  // clocks from CSn low to the first rising SCLK edge
   int gap = 8;   // clocks CSn stays high between frames
   uint64_t frames = 0, oe_bad = 0;
+  // The registers the port's settings are (the board's IF_ZERO, IF_CTRL, ABZ_N, UVW_PP, ABZ_HYS at
+  // their reset values): a write strobe high before a clock edge loads them at it.
+  As5047Config regs;
   explicit SpiMaster(uint64_t seed) {
     top = make<Vstage_spi>(ctx, seed);
     top->csn_i = 1;
     top->sclk_i = 0;
     top->mosi_i = 0;
     top->rst_i = 1;
+    drive_regs();
     tick(*top);
     tick(*top);
     top->rst_i = 0;
-    for (int k = 0; k < 8; ++k) tick(*top);
+    clocks(8);
+  }
+  void drive_regs() {
+    top->cfg_zero_i = regs.zero;
+    top->cfg_dir_i = regs.dir;
+    top->cfg_daec_i = regs.daec;
+    top->cfg_n_i = static_cast<uint32_t>(regs.n);
+    top->cfg_pp_i = static_cast<uint32_t>(regs.pole_pairs);
+    top->cfg_hys_i = static_cast<uint32_t>(regs.hys);
   }
   void angle(uint32_t unc, uint32_t com) {
     top->angle_unc_i = unc;
     top->angle_com_i = com;
   }
   void clocks(int k) {
-    for (int i = 0; i < k; ++i) tick(*top);
+    for (int i = 0; i < k; ++i) {
+      As5047Config next = regs;
+      if (top->cfg_zero_we_o) next.zero = static_cast<uint16_t>(top->cfg_zero_o);
+      if (top->cfg_dir_we_o) next.dir = top->cfg_dir_o;
+      if (top->cfg_daec_we_o) next.daec = top->cfg_daec_o;
+      if (top->cfg_n_we_o) next.n = top->cfg_n_o;
+      if (top->cfg_pp_we_o) next.pole_pairs = top->cfg_pp_o;
+      if (top->cfg_hys_we_o) next.hys = top->cfg_hys_o;
+      tick(*top);
+      regs = next;
+      drive_regs();
+    }
   }
   // One mode-1 frame of `bits` bits (16 normally): MOSI changes on the rising edge, MISO is
   // sampled on the falling edge, MSB first.
@@ -506,8 +639,8 @@ TEST(SpiAs5047, FramingAndInvalidCommandsAndDiagnostics) {
   m.frame(with_parity(0x4000 | 0x1234));
   m.frame(with_parity(0x4001));
   EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x2u);
-  // A write command: INVCOMM (no writable register), its data frame consumed.
-  m.frame(with_parity(0x0016));
+  // A write command to a read-only register: INVCOMM, its data frame consumed.
+  m.frame(with_parity(0x3FFD));
   m.frame(with_parity(0x0FFF));
   m.frame(with_parity(0x4001));
   EXPECT_EQ(m.frame(0x0000) & 0x3FFF, 0x2u);
@@ -529,6 +662,132 @@ TEST(SpiAs5047, FramingAndInvalidCommandsAndDiagnostics) {
     EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(mag));
   }
   EXPECT_FALSE((m.frame(0x0000) >> 14) & 1);
+}
+
+// The port's timing rule (rtl/acore_spi_as5047.v): MISO moves SYNC + 1 clocks after each falling
+// SCLK edge, so at the shortest SCLK period the line is built for (SCLK_MIN >= SYNC + 2 clocks) a
+// mode-1 master sampling at the falling edge sees each bit a clock after it settled.
+TEST(SpiTiming, MisoMovesSyncPlusOneClocksAfterTheFallingEdge) {
+  constexpr int kSync = ACORE_STAGE_SPI_SYNC, kSclkMin = ACORE_STAGE_SPI_SCLK_MIN;
+  static_assert(kSclkMin >= kSync + 2, "the registry line must obey the port's rule");
+  SpiMaster m(31);
+  m.angle(0, 0x5555);  // ANGLECOM's 14 bits alternate: MISO toggles at every bit
+  m.frame(as5047::with_even_parity(0x7FFF));
+  auto& top = *m.top;
+  top.csn_i = 0;
+  m.clocks(m.lead);
+  std::vector<int> delays;
+  int last_fall = -1, t = 0, prev = top.miso_o;
+  for (int i = 0; i < 16; ++i) {
+    for (int level : {1, 0}) {
+      top.sclk_i = level;
+      if (level == 0) last_fall = t;
+      for (int c = 0; c < kSclkMin / 2; ++c) {
+        tick(top);
+        ++t;
+        if (top.miso_o != prev && last_fall >= 0) delays.push_back(t - last_fall);
+        prev = top.miso_o;
+      }
+    }
+  }
+  top.csn_i = 1;
+  m.clocks(8);
+  ASSERT_GE(delays.size(), 10u);
+  for (int d : delays) {
+    EXPECT_EQ(d, kSync + 1);
+    EXPECT_LE(d, kSclkMin - 1) << "MISO must settle a clock before the next falling edge";
+  }
+}
+
+// CSn high for one clock between frames (below the port's minimum of two): the frame after it
+// answers 0xC000 (EF set, parity even, no data) instead of a stale register, its command is
+// ignored, and ERRFL.FRERR reports it; two clocks are enough.
+TEST(SpiAs5047, ShortCsnGapIsAFramingErrorNotAWrongAnswer) {
+  SpiMaster m(32);
+  m.angle(0x1111, 0xBEEF);
+  // (SpiMaster::frame() holds CSn high for `gap` clocks after its frame.)
+  m.gap = 1;
+  m.frame(as5047::with_even_parity(0x7FFF));  // read ANGLECOM, then CSn high for one clock
+  m.gap = 8;
+  const uint16_t bad = m.frame(as5047::with_even_parity(0x7FFE));  // then ANGLEUNC, too soon
+  EXPECT_EQ(bad, 0xC000) << "EF with even parity, no data";
+  const uint16_t after = m.frame(as5047::with_even_parity(0x4001));  // read ERRFL
+  EXPECT_EQ(after, 0xC000) << "the refused frame's command read nothing (NOP, EF)";
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(as5047::kFrErr));
+  // Two clocks: every answer right.
+  for (int k = 0; k < 20; ++k) {
+    m.gap = 2;
+    m.frame(as5047::with_even_parity(0x7FFF));
+    const uint16_t com = m.frame(as5047::with_even_parity(0x7FFE));
+    EXPECT_EQ(com, as5047::with_even_parity(static_cast<uint16_t>(top14(0xBEEF)))) << k;
+  }
+  m.gap = 8;
+  m.frame(0x0000);
+  EXPECT_EQ(m.top->errfl_o, 0);
+}
+
+// The datasheet's write sequence on the settings: a write command, then the data frame (answered
+// with the register's old content), then any frame (answered with the new content); the values the
+// board's registers take, from the datasheet's tables: ZPOS in ZPOSM/ZPOSL, DIR and DAECDIS in
+// SETTINGS1, UVWPP (pole pairs - 1), HYS (3, 2, 1, 0 LSBs of 2^-11 turn) and ABIRES (decimal
+// 1000 500 400 300 200 100 50 25, binary 1024 512 256) in SETTINGS2; PROG without OTP.
+TEST(SpiAs5047, WritesFollowTheDatasheetSequenceAndTables) {
+  SpiMaster m(33);
+  m.angle(0x1234, 0xBEEF);
+  const auto write = [&](uint16_t reg, uint16_t value) -> std::pair<unsigned, unsigned> {
+    m.frame(with_parity(reg));  // R/W = 0
+    const uint16_t old_value = m.frame(with_parity(value));
+    const uint16_t new_value = m.frame(0x0000);
+    EXPECT_EQ(ones(old_value) & 1, 0);
+    EXPECT_EQ(ones(new_value) & 1, 0);
+    return {old_value & 0x3FFFu, new_value & 0x3FFFu};
+  };
+  // ZPOS = 0x2A5C: ZPOSM takes bits 13:6, ZPOSL bits 5:0 (and its two error enables, kept).
+  EXPECT_EQ(write(0x0016, 0x2A5C >> 6), std::make_pair(0u, static_cast<unsigned>(0x2A5C >> 6)));
+  EXPECT_EQ(write(0x0017, 0xC0 | (0x2A5C & 0x3F)),
+            std::make_pair(0u, static_cast<unsigned>(0xC0 | (0x2A5C & 0x3F))));
+  EXPECT_EQ(m.regs.zero, 0x2A5C);
+  // SETTINGS1 at reset: bit 0 reads 1, ABIBIN 1 (AngleCore's ABZ_N reset 1024 is binary's 0).
+  // DIR = 1, DAECDIS = 1, ABIBIN = 0 (decimal: N 1024 reads as 1000's code, 0, and becomes 1000).
+  EXPECT_EQ(write(0x0018, 0x04 | 0x10), std::make_pair(0x21u, 0x15u));
+  EXPECT_TRUE(m.regs.dir);
+  EXPECT_FALSE(m.regs.daec);
+  EXPECT_EQ(m.regs.n, 1000);
+  // SETTINGS2: UVWPP 4 (5 pole pairs), HYS 1 (2 LSBs of 2^-11 turn), ABIRES 1 (decimal: 500).
+  const unsigned s2 = (1u << 5) | (1u << 3) | 4u;
+  // Its reset reads ABIRES 0 (N 1000 now), HYS 2 (ABZ_HYS 2 is one LSB rounded up), UVWPP 0.
+  EXPECT_EQ(write(0x0019, static_cast<uint16_t>(s2)), std::make_pair((2u << 3), s2));
+  EXPECT_EQ(m.regs.pole_pairs, 5);
+  EXPECT_EQ(m.regs.hys, 2 << (kSpiAngleW - 11));
+  EXPECT_EQ(m.regs.n, 500);
+  // Every decimal and binary code.
+  const int64_t decimal[8] = {1000, 500, 400, 300, 200, 100, 50, 25};
+  for (int code = 0; code < 8; ++code) {
+    write(0x0019, static_cast<uint16_t>(code << 5));
+    EXPECT_EQ(m.regs.n, decimal[code]) << code;
+  }
+  write(0x0018, 0x20);  // ABIBIN = 1: N 25 (code 7) reads as binary's last code, 256
+  EXPECT_EQ(m.regs.n, 256);
+  for (int code = 0; code < 3; ++code) {
+    write(0x0019, static_cast<uint16_t>(code << 5));
+    EXPECT_EQ(m.regs.n, 1024 >> code) << code;
+  }
+  // UVWPP 7 is 7 pole pairs, as 6; HYS 3 is none.
+  write(0x0019, 0x7 | (3 << 3));
+  EXPECT_EQ(m.regs.pole_pairs, 7);
+  EXPECT_EQ(m.regs.hys, 0);
+  // PROG: PROGEN and PROGVER kept, OTPREF and PROGOTP act at once and read 0 (no OTP); the
+  // settings are untouched by a "programming".
+  EXPECT_EQ(write(0x0003, 0x01).second, 0x01u);
+  EXPECT_EQ(write(0x0003, 0x08 | 0x01).second, 0x01u) << "PROGOTP done at once";
+  EXPECT_EQ(write(0x0003, 0x40 | 0x04).second, 0x40u);
+  EXPECT_EQ(m.regs.zero, 0x2A5C);
+  EXPECT_EQ(m.regs.pole_pairs, 7);
+  // Dataselect (SETTINGS1 bit 6): 0x3FFF reads ANGLEUNC's angle.
+  write(0x0018, 0x20 | 0x40);
+  m.frame(with_parity(0x7FFF));
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, top14(0x1234));
+  EXPECT_EQ(m.top->errfl_o, 0) << "no write above was refused";
 }
 
 // ---- PWM (AS5047P frame) --------------------------------------------------------------------
@@ -595,7 +854,10 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
   As5047Port model;
   As5047Inputs in;
   in.angle_w = kSpiAngleW;
-  const uint16_t regs[] = {0x0000, 0x0001, 0x3FFC, 0x3FFD, 0x3FFE, 0x3FFF, 0x0016, 0x1234};
+  const uint16_t regs[] = {0x0000, 0x0001, 0x0003, 0x0016, 0x0017, 0x0018,
+                           0x0019, 0x3FFC, 0x3FFD, 0x3FFE, 0x3FFF, 0x1234};
+  int config_mismatches = 0, n_changes = 0, zero_changes = 0;
+  As5047Config last;
   int mismatches = 0;
   for (int k = 0; k < 3000; ++k) {
     in.angle_com = rng() & ((1u << kSpiAngleW) - 1);
@@ -613,40 +875,76 @@ TEST(SpiAs5047, RandomFramesMatchTheModel) {
     m.top->dos_i = in.dos;
     m.top->ovf_i = in.ovf;
     m.top->lot_i = in.lot;
+    // Reads, writes (a command, or a data frame after one: any 8-bit value) of every register.
     uint16_t cmd = as5047::with_even_parity(
-        static_cast<uint16_t>(regs[rng() % 8] | ((rng() % 4) ? 0x4000 : 0)));
+        rng() % 4 == 0 ? static_cast<uint16_t>(rng() & 0xFF)
+                       : static_cast<uint16_t>(regs[rng() % 12] | ((rng() % 3) ? 0x4000 : 0)));
     if (rng() % 8 == 0) cmd ^= static_cast<uint16_t>(1u << (rng() % 16));
     const int bits = rng() % 16 == 0 ? 13 + static_cast<int>(rng() % 3) : 16;
     m.half = 2 + static_cast<int>(rng() % 3);
-    m.gap = 6 + static_cast<int>(rng() % 6);
+    // The CSn gap before this frame (the one the previous frame left): now and then one clock,
+    // below the port's minimum of two.
+    const bool short_gap = m.gap < 2;
+    m.gap = rng() % 10 == 0 ? 1 : 2 + static_cast<int>(rng() % 8);
     const uint16_t got = m.frame(cmd, bits);
-    const uint16_t want = model.frame(cmd, in, bits);
+    const uint16_t want = model.frame(cmd, in, bits, short_gap);
     mismatches += got != want;
     if (got != want && mismatches < 5)
       ADD_FAILURE() << "frame " << k << " cmd " << std::hex << cmd << " bits " << std::dec << bits
                     << ": rtl " << std::hex << got << " model " << want;
-    mismatches += m.top->errfl_o != model.errfl();
+    // (ERRFL and a write take the frame SYNC + 1 clocks after CSn rises: after a gap that long.)
+    if (m.gap >= ACORE_STAGE_SPI_SYNC + 2) {
+      mismatches += m.top->errfl_o != model.errfl();
+      const As5047Config& r = m.regs;
+      const As5047Config& c = model.config;
+      n_changes += r.n != last.n;
+      zero_changes += r.zero != last.zero;
+      last = r;
+      config_mismatches += r.zero != c.zero || r.dir != c.dir || r.daec != c.daec || r.n != c.n ||
+                           r.pole_pairs != c.pole_pairs || r.hys != c.hys;
+    }
   }
   EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(config_mismatches, 0);
+  // The run wrote the settings: N and the zero changed many times.
+  EXPECT_GT(n_changes, 10);
+  EXPECT_GT(zero_changes, 10);
 }
 
-// The ABZ count after every catch-up equals the model's target (the same walk as the first test,
-// the expectation now from model/ip/stages/interfaces.hpp).
+// The ABZ count after every catch-up equals the model's (model/ip/stages/interfaces.hpp): random
+// moves and jumps at several hysteresis widths, N changed now and then (the count re-homed as
+// AbzCounter::rehome() puts it, then walked to the model's target).
 TEST(AbzCosim, CountMatchesTheModelTarget) {
   std::mt19937_64 rng(26);
+  int64_t mismatches = 0, checks = 0;
   for (int64_t n :
        {int64_t{1}, int64_t{3}, int64_t{1000}, int64_t{1024}, int64_t{1} << (kAbzNW - 1)}) {
-    AbzBench b(n, 0, 1, rng());
-    int64_t target = 0, mismatches = 0;
-    for (int k = 0; k < 200; ++k) {
-      const uint64_t a = k % 2 ? rng() % kTurn : (b.top->angle_i + rng() % 3 + kTurn - 1) % kTurn;
-      target = abz_target(a, kAbzAngleW, n, target);
-      b.angle(static_cast<uint32_t>(a));
-      b.settle(1u << 30);
-      mismatches += b.wrapped() != target;
+    for (int64_t h : {0, 1, 2, 9}) {
+      AbzBench b(n, 0, 1, rng(), h);
+      AbzCounter model(n, 1);
+      int64_t n_cur = n;
+      uint64_t a = 0;
+      for (int k = 0; k < 200; ++k) {
+        if (k % 50 == 49) {
+          n_cur = 1 + static_cast<int64_t>(rng() % (int64_t{1} << (kAbzNW - 1)));
+          b.top->n_i = static_cast<uint32_t>(n_cur);
+          b.step();  // (settled_o is the outputs' as of the last clock)
+          model.rehome(n_cur, abz_count_of(a, kAbzAngleW, n_cur));
+        } else {
+          a = k % 2 ? rng() % kTurn : (b.top->angle_i + rng() % 5 + kTurn - 2) % kTurn;
+          model.set_target(abz_target(a, kAbzAngleW, n_cur, h, model.target()));
+          b.angle(static_cast<uint32_t>(a));
+        }
+        b.settle(1u << 30);
+        while (model.step() != 0) {
+        }
+        mismatches += static_cast<int64_t>(b.top->count_o) != model.count();
+        ++checks;
+      }
     }
-    EXPECT_EQ(mismatches, 0) << n;
   }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(checks, 4000);
 }
 
 // UVW against the model on random angles, offsets and pole pairs.

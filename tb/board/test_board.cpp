@@ -193,7 +193,7 @@ TEST(Board, InterfaceRegistersThroughApb) {
   EXPECT_FALSE(b.apb(true, bd::kUvwPp, pp_max, nullptr));
   EXPECT_FALSE(b.apb(false, bd::kUvwPp, 0, &v));
   EXPECT_EQ(v, pp_max);
-  for (uint32_t addr : {bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwOffset, bd::kTrkLot}) {
+  for (uint32_t addr : {bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwOffset, bd::kTrkLot, bd::kIfZero}) {
     EXPECT_FALSE(b.apb(true, addr, 0x1234, nullptr));
     EXPECT_FALSE(b.apb(false, addr, 0, &v));
     EXPECT_EQ(v, 0x1234u) << addr;
@@ -233,8 +233,9 @@ TEST(Board, EveryAddressIsAnsweredByOneMap) {
       sh::kCtrl,        sh::kStatus,    sh::kIrq,     sh::kMagLo,    sh::kMagHi,
       sh::kCrcExpected, sh::kCrcShadow, sh::kCrcRef,  sh::kCrcScrub, sh::kScrubPasses};
   const std::vector<uint32_t> board = {
-      bd::kAbzN,  bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwPp,       bd::kUvwOffset,
-      bd::kTrkBw, bd::kTrkLead,  bd::kTrkLot,     bd::kTrkVelocity, bd::kTrkPosition};
+      bd::kAbzN,   bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwPp,       bd::kUvwOffset,
+      bd::kTrkBw,  bd::kTrkLead,  bd::kTrkLot,     bd::kTrkVelocity, bd::kTrkPosition,
+      bd::kAbzHys, bd::kIfZero,   bd::kIfCtrl};
   uint32_t cfg1 = 0;
   ASSERT_FALSE(b.apb(false, sh::kConfig1, 0, &cfg1));
   const uint32_t words = (cfg1 & sh::kConfig1WordsMask) >> sh::kConfig1WordsShift;
@@ -336,7 +337,7 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     const int64_t wrapped = ((bb.pos % (4 * abz_n)) + 4 * abz_n) % (4 * abz_n);
     EXPECT_EQ(wrapped, target) << "ABZ before output " << bb.trk.size() - 1;
     ++res.abz_checks;
-    target = abz_target(bb.trk.back().angle_comp, 16, abz_n, target);
+    target = abz_target(bb.trk.back().angle_comp, 16, abz_n, bd::kAbzHysReset, target);
   };
   const auto check_reads = [&](size_t k) {  // after k samples, the stream paused
     for (int i = 0; i < 600; ++i) b.tick();
@@ -474,9 +475,9 @@ TEST(Board, InterfacesFollowTheCompensatedAngle) {
     for (int i = 0; i < 3 * 4 * n + 100; ++i) b.tick();
     ASSERT_EQ(b.trk.size(), static_cast<size_t>(samples));
     const uint32_t com = b.trk.back().angle_comp;
-    target = abz_target(com, 16, n, target);
-    // The N write re-homed the count at the first angle, without edges: the drive homes its
-    // decoder once, as after power-up (here to the model's count; an SPI read would give it).
+    target = abz_target(com, 16, n, bd::kAbzHysReset, target);
+    // N was written before the first angle (the count stays 0 until one arrives): the drive
+    // homes its decoder once, as after power-up (here to the model's count; an SPI read gives it).
     if (k == 0) b.pos = target;
     const int64_t wrapped = ((b.pos % (4 * n)) + 4 * n) % (4 * n);
     ASSERT_EQ(wrapped, target) << "sample " << k << " angle " << com;
@@ -497,6 +498,129 @@ TEST(Board, InterfacesFollowTheCompensatedAngle) {
   }
   EXPECT_EQ(samples, 40);
   EXPECT_GT(angles.size(), 30u) << "the estimator's angle moved";
+}
+
+// The AS5047P configuration a drive's driver does at start-up, through the board's SPI pins with
+// the framings of SimpleFOC's AS5047 driver (its constants: reads 0xC017/0x4016/0xC018/0x4019, the
+// answer collected with 0xFFFF; writes 0x8016/0x0017/0x0018/0x8019, then the data word with its
+// parity) and ODrive's read (0xFFFF every transfer, each answer's parity and EF checked), written
+// from the datasheet: the zero written to ZPOS moves ANGLECOM by exactly that amount, DIR reverses
+// it, ABIRES with ABIBIN sets the pulses a turn the ABZ decoder counts; every setting is the
+// board's register (APB reads what SPI wrote) and the data frame answers the old content.
+TEST(Board, SpiConfigurationRoundTripWithDriverFramings) {
+  Board b;
+  load_identity(b);
+  if (HasFatalFailure()) return;
+  const auto parity_ok = [](uint16_t w) { return as5047::parity_even(w); };
+  // ODrive: one transfer, the answer (to the previous command) checked.
+  int refused = 0;
+  const auto odrive = [&](uint16_t cmd) {
+    const uint16_t a = b.spi_frame(cmd);
+    refused += !parity_ok(a) || ((a >> 14) & 1);
+    return static_cast<uint16_t>(a & 0x3FFF);
+  };
+  // SimpleFOC: spi_transfer16 then nop() (0xFFFF) for a read; command then data for a write.
+  const auto calc_parity = [](uint16_t d) { return as5047::with_even_parity(d & 0x7FFF); };
+  const auto sf_read = [&](uint16_t cmd) {
+    b.spi_frame(cmd);
+    return static_cast<uint16_t>(b.spi_frame(0xFFFF) & 0x3FFF);
+  };
+  const auto sf_write = [&](uint16_t cmd, uint16_t data) {
+    b.spi_frame(cmd);
+    return static_cast<uint16_t>(b.spi_frame(calc_parity(data)) & 0x3FFF);  // the old content
+  };
+  // Samples of a vector at angle th (turns), the stream then paused: the observer's compensated
+  // angle of the last sample, from the board's own outputs.
+  const auto samples = [&](double th, int count) {
+    for (int k = 0; k < count; ++k) {
+      b.top->c1_i = static_cast<uint32_t>(unit_code(std::cos(2 * M_PI * th))) & 0xFFFF;
+      b.top->c2_i = static_cast<uint32_t>(unit_code(std::sin(2 * M_PI * th))) & 0xFFFF;
+      b.top->c3_i = static_cast<uint32_t>(unit_code(-std::cos(2 * M_PI * th))) & 0xFFFF;
+      b.top->c4_i = static_cast<uint32_t>(unit_code(-std::sin(2 * M_PI * th))) & 0xFFFF;
+      b.top->in_valid_i = 1;
+      while (!b.top->in_ready_o) b.tick();
+      b.tick();
+      b.top->in_valid_i = 0;
+      for (int i = 0; i < 400; ++i) b.tick();
+    }
+    for (int i = 0; i < 5000; ++i) b.tick();  // ABZ caught up
+    return b.trk.back().angle_comp;
+  };
+  // The observer at its fastest bandwidth: it settles within a few samples.
+  ASSERT_FALSE(b.apb(true, bd::kTrkBw, static_cast<uint32_t>(TrackConfig::kMin), nullptr));
+  const uint32_t com = samples(0.3, 40);
+  odrive(0xFFFF);
+  EXPECT_EQ(odrive(0xFFFF), com >> 2) << "ANGLECOM before any setting";
+  // setZero(z): read ZPOSL (for its error-enable bits), write ZPOSM, write ZPOSL.
+  const uint16_t z = 0x1A2B;
+  EXPECT_EQ(sf_read(0xC017), 0u);
+  EXPECT_EQ(sf_write(0x8016, (z >> 6) & 0xFF), 0u) << "the data frame answers the old ZPOSM";
+  EXPECT_EQ(sf_write(0x0017, z & 0x3F), 0u);
+  uint32_t v = 0;
+  EXPECT_FALSE(b.apb(false, bd::kIfZero, 0, &v));
+  EXPECT_EQ(v, z) << "ZPOS is the board's IF_ZERO";
+  // getZero() reads it back; then ANGLECOM has moved by exactly z (ODrive's read).
+  b.spi_frame(0x4016);
+  const uint16_t zposm = static_cast<uint16_t>(b.spi_frame(0xC017) & 0xFF);
+  const uint16_t zposl = static_cast<uint16_t>(b.spi_frame(0xFFFF) & 0x3F);
+  EXPECT_EQ((zposm << 6) | zposl, z);
+  odrive(0xFFFF);
+  const uint16_t zeroed = odrive(0xFFFF);
+  EXPECT_EQ(zeroed, ((com >> 2) - z) & 0x3FFF) << "ANGLECOM = angle - ZPOS";
+  // DIR (SETTINGS1 bit 2, read-modify-write as the driver's writeSettings1): the angle counts the
+  // other way: -(angle - ZPOS), within the LSB the 16-bit angle has below the 14 bits.
+  uint16_t s1 = sf_read(0xC018);
+  EXPECT_EQ(s1 & 1, 1) << "SETTINGS1 bit 0 reads 1";
+  s1 = static_cast<uint16_t>(s1 | 0x04);
+  sf_write(0x0018, s1);
+  odrive(0xFFFF);
+  const uint16_t reversed = odrive(0xFFFF);
+  EXPECT_EQ(reversed, ((z << 2) - com) >> 2 & 0x3FFF);
+  const int diff = (reversed + zeroed) & 0x3FFF;
+  EXPECT_TRUE(diff == 0 || diff == 0x3FFF) << "DIR negates: " << reversed << " vs " << zeroed;
+  EXPECT_FALSE(b.apb(false, bd::kIfCtrl, 0, &v));
+  EXPECT_EQ(v & bd::kIfCtrlDir, bd::kIfCtrlDir);
+  // Back to DIR 0, zero 0, then setABIResolution(AS5047_ABI_2048): ABIBIN 1, ABIRES 1: 512 pulses.
+  sf_write(0x0018, static_cast<uint16_t>(s1 & ~0x04));
+  sf_write(0x8016, 0);
+  sf_write(0x0017, 0);
+  s1 = sf_read(0xC018);
+  sf_write(0x0018, static_cast<uint16_t>((s1 | 0x20) & ~0x08));
+  uint16_t s2 = sf_read(0x4019);
+  s2 = static_cast<uint16_t>((s2 & ~0xE0) | (1 << 5));
+  sf_write(0x8019, s2);
+  EXPECT_EQ(sf_read(0x4019), s2) << "SETTINGS2 reads back";
+  EXPECT_FALSE(b.apb(false, bd::kAbzN, 0, &v));
+  EXPECT_EQ(v, 512u) << "ABIRES is the board's ABZ_N";
+  // A quarter turn in small steps: the decoder counts 4 N / 4 = N counts (one count of hysteresis
+  // and rounding either way); then AS5047_ABI_4000 (decimal, code 0): 1000 pulses.
+  for (int64_t n : {int64_t{512}, int64_t{1000}}) {
+    if (n == 1000) {
+      s1 = sf_read(0xC018);
+      sf_write(0x0018, static_cast<uint16_t>(s1 & ~0x20));
+      s2 = sf_read(0x4019);
+      sf_write(0x8019, static_cast<uint16_t>(s2 & ~0xE0));
+      EXPECT_FALSE(b.apb(false, bd::kAbzN, 0, &v));
+      EXPECT_EQ(v, 1000u);
+    }
+    const uint32_t start = samples(0.3, 20);
+    const int64_t pos0 = b.pos;
+    for (int k = 1; k < 25; ++k) samples(0.3 + 0.01 * k, 1);
+    const uint32_t end = samples(0.55, 20);
+    // (The angles stay within 0.4 .. 0.75 turn: no wrap between start and end.)
+    const auto counts = [&](int64_t pulses) {
+      return ((static_cast<int64_t>(end) * 4 * pulses) >> 16) -
+             ((static_cast<int64_t>(start) * 4 * pulses) >> 16);
+    };
+    const int64_t expected = counts(n);
+    EXPECT_NEAR(static_cast<double>(b.pos - pos0), static_cast<double>(expected), 1.0) << n;
+    // About a quarter turn, either way round (the estimator's angle convention), and not the
+    // count AngleCore's reset N would give.
+    EXPECT_GT(std::llabs(expected), 4 * n / 5) << n;
+    EXPECT_LT(std::llabs(expected), 6 * n / 5) << n;
+    EXPECT_GT(std::llabs(b.pos - pos0 - counts(1024)), 2) << n;
+  }
+  EXPECT_EQ(refused, 0) << "ODrive refused no answer";
 }
 
 }  // namespace

@@ -73,6 +73,34 @@ grep -v '^#' "$tmp/cal.csv" | cut -d, -f2- >"$tmp/not.csv"
 check bw-without-t 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/not.csv" --track-bandwidth 100
 expect_text bw-without-t-msg "$tmp/err" "--track-bandwidth needs the recording's t column"
 check lead-too-far 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.csv" --track-lead 300
+check lot-too-big 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.csv" --track-lot 32768
+expect_text lot-too-big-msg "$tmp/err" "--track-lot must be 0..32767 angle LSBs"
+check lot-negative 2 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/rip.csv" --track-lot -1
+# --track-lot: at a constant 60000 rpm the loop's prediction error is a few LSBs of the estimator's
+# error and quantization, never 0 for long: threshold 0 flags most samples, the largest (32767)
+# none; the JSON's track counts them and names the threshold.
+check lot-zero 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/c.csv" --out "$tmp/l0.csv" \
+  --json "$tmp/l0.json" --track-lot 0
+check lot-max 0 "$bin" estimate --regs "$tmp/regs.hex" --in "$tmp/c.csv" --out "$tmp/lm.csv" \
+  --json "$tmp/lm.json" --track-lot 32767
+/usr/bin/python3 - "$tmp/l0.csv" "$tmp/l0.json" "$tmp/lm.csv" "$tmp/lm.json" <<'PY' || {
+import csv, json, sys
+lost = lambda p: sum(int(r["lot"]) for r in csv.DictReader(open(p)))
+j0, jm = json.load(open(sys.argv[2])), json.load(open(sys.argv[4]))
+n0, nm = lost(sys.argv[1]), lost(sys.argv[3])
+assert n0 > 1000 and nm == 0, (n0, nm)
+assert j0["track"]["lot_samples"] == n0 and j0["track"]["lot_threshold"] == 0, j0["track"]
+assert jm["track"]["lot_samples"] == 0 and jm["track"]["lot_threshold"] == 32767, jm["track"]
+PY
+  echo "FAIL lot-threshold"
+  fails=$((fails + 1))
+}
+check version 0 "$bin" --version
+expect_text version-printed "$tmp/out" "anglecore "
+grep -q "^project(anglecore VERSION $(cut -d' ' -f2 "$tmp/out")" "$2/CMakeLists.txt" || {
+  echo "FAIL version: $(cat "$tmp/out") is not the project() version of CMakeLists.txt"
+  fails=$((fails + 1))
+}
 check profile-unknown 2 "$bin" simulate --scenario paper --profile zigzag --speed-rpm 10 --out "$tmp/x.csv"
 check ripple-too-big 2 "$bin" simulate --scenario paper --profile ripple --speed-rpm 10 --ripple 2 --ripple-hz 5 --out "$tmp/x.csv"
 check step-profile 0 "$bin" simulate --scenario ideal --profile step --speed-rpm 600 --speed-end-rpm -600 \

@@ -15,7 +15,8 @@ constexpr uint32_t kAddrSpace = 0x1000;
 
 // ABZ_N (RW): ABZ quadrature: pulses a turn.
 constexpr uint32_t kAbzN = 0x060;
-// N [12:0] (RW): A/B periods a turn (4N counts a turn). A new N re-homes the count without edges.
+// N [12:0] (RW): A/B periods a turn (4N counts a turn). A new N re-homes the count at once without
+// an edge: A and B hold, then at most two single steps reach the new count.
 constexpr int kAbzNNShift = 0;
 constexpr uint32_t kAbzNNMask = 0x1FFFu;
 constexpr int kAbzNNBits = 13;
@@ -118,5 +119,40 @@ constexpr int kTrkPositionTurnsBits = 16;
 constexpr int kTrkPositionAngleShift = 0;
 constexpr uint32_t kTrkPositionAngleMask = 0xFFFFu;
 constexpr int kTrkPositionAngleBits = 16;
+
+// ABZ_HYS (RW): ABZ quadrature: the hysteresis.
+constexpr uint32_t kAbzHys = 0x088;
+// WIDTH [7:0] (RW): The count holds while the angle stays within WIDTH angle LSBs of the count's
+// own interval (0: none). A dither over D + 1 neighbouring LSBs moves no edge when WIDTH >= D: the
+// reset, 2, holds a +-1 LSB dither still wherever it sits.
+constexpr int kAbzHysWidthShift = 0;
+constexpr uint32_t kAbzHysWidthMask = 0xFFu;
+constexpr int kAbzHysWidthBits = 8;
+constexpr uint32_t kAbzHysReset = 0x2u;
+// The bits that read back.
+constexpr uint32_t kAbzHysReadMask = 0xFFu;
+
+// IF_ZERO (RW): Drive interfaces: the zero position.
+constexpr uint32_t kIfZero = 0x08C;
+// ZERO [13:0] (RW): The angle (2^-14 turn) subtracted from the angle ANGLECOM, ANGLEUNC, ABZ and
+// UVW give, as the AS5047P's ZPOS.
+constexpr int kIfZeroZeroShift = 0;
+constexpr uint32_t kIfZeroZeroMask = 0x3FFFu;
+constexpr int kIfZeroZeroBits = 14;
+constexpr uint32_t kIfZeroReset = 0x0u;
+// The bits that read back.
+constexpr uint32_t kIfZeroReadMask = 0x3FFFu;
+
+// IF_CTRL (RW): Drive interfaces: direction and compensation.
+constexpr uint32_t kIfCtrl = 0x090;
+// DIR [0] (RW): 1: the interfaces' angle counts the other way (its negative after the zero), as
+// the AS5047P's DIR.
+constexpr uint32_t kIfCtrlDir = 1u << 0;
+// DAEC [1] (RW): 1: ANGLECOM, ABZ and UVW take the observer's compensated angle; 0: the
+// estimator's angle (ANGLEUNC's), as the AS5047P's DAECDIS = 1.
+constexpr uint32_t kIfCtrlDaec = 1u << 1;
+constexpr uint32_t kIfCtrlReset = 0x2u;
+// The bits that read back.
+constexpr uint32_t kIfCtrlReadMask = 0x3u;
 
 }  // namespace acore::board

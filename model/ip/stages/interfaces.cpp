@@ -27,15 +27,25 @@ int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n) {
   return static_cast<int64_t>(p >> (angle_w - 2));
 }
 
-int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_target) {
+int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t hys, int64_t previous_target) {
   const int64_t lo = abz_count_of(angle, angle_w, n);
-  const uint64_t a = angle & ((uint64_t{1} << angle_w) - 1);
-  uint64_t p = 0;
-  for (int i = 0; i < board::kAbzNNBits; ++i)
-    if ((static_cast<uint64_t>(n) >> i) & 1) p += a << i;
-  int64_t hi = static_cast<int64_t>((p + static_cast<uint64_t>(n)) >> (angle_w - 2));
-  if (hi == 4 * n) hi = 0;
-  return (previous_target == hi && hi != lo) ? hi : lo;
+  if (hys < 0 || hys >= (int64_t{1} << (angle_w - 2)))
+    throw InputError("ABZ: hysteresis must be 0.." +
+                     std::to_string((int64_t{1} << (angle_w - 2)) - 1) +
+                     " angle LSBs at an angle width of " + std::to_string(angle_w) + ", not " +
+                     std::to_string(hys));
+  const uint64_t h = static_cast<uint64_t>(hys);
+  const int64_t first = abz_count_of(angle - h, angle_w, n);  // abz_count_of wraps the angle
+  const int64_t last = abz_count_of(angle + h, angle_w, n);
+  const bool inside = first <= last ? previous_target >= first && previous_target <= last
+                                    : previous_target >= first || previous_target <= last;
+  return inside ? previous_target : lo;
+}
+
+int64_t abz_rehome(int64_t count, int64_t target, int64_t n) {
+  const int64_t m = 4 * n;
+  const int64_t d = ((count - target) % 4 + 4) % 4;
+  return ((target + (d == 3 ? -1 : d)) % m + m) % m;
 }
 
 AbzPins abz_pins(int64_t count, int64_t index) {
@@ -58,6 +68,13 @@ int AbzCounter::step() {
   count_ = ((count_ + dir) % m + m) % m;
   wait_ = spacing_ - 1;
   return dir;
+}
+
+void AbzCounter::rehome(int64_t n, int64_t target) {
+  check_abz(16, n);
+  count_ = abz_rehome(count_, target, n);
+  n_ = n;
+  target_ = target;
 }
 
 UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs) {
@@ -94,53 +111,133 @@ uint16_t with_even_parity(uint16_t word15) {
 }
 }  // namespace as5047
 
-uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits) {
+namespace as5047 {
+int64_t abires_n(bool binary, int code) {
+  static const int64_t decimal[8] = {1000, 500, 400, 300, 200, 100, 50, 25};
+  if (binary) return code == 0 ? 1024 : code == 1 ? 512 : 256;
+  return decimal[code & 7];
+}
+int abires_code(bool binary, int64_t n) {
+  const int last = binary ? 2 : 7;
+  for (int c = 0; c <= last; ++c)
+    if (n >= abires_n(binary, c)) return c;
+  return last;
+}
+}  // namespace as5047
+
+uint16_t As5047Port::read_register(uint16_t addr, const As5047Inputs& in) const {
   using namespace as5047;
-  // The answer, from the register chosen by the previous frame, as the frame starts.
-  uint16_t data = 0;
-  switch (answer_reg_) {
+  const auto top14 = [&](uint64_t a) {
+    return static_cast<uint16_t>((a >> (in.angle_w - 14)) & 0x3FFF);
+  };
+  switch (addr) {
     case kErrfl:
-      data = errfl_;
-      break;
+      return errfl_;
+    case kProg:
+      return static_cast<uint16_t>((progver_ << 6) | (progen_ ? 1 : 0));
+    case kZposm:
+      return static_cast<uint16_t>((config.zero >> 6) & 0xFF);
+    case kZposl:
+      return static_cast<uint16_t>((error_enables_ << 6) | (config.zero & 0x3F));
+    case kSettings1:
+      return static_cast<uint16_t>((pwmon_ << 7) | (dataselect_ << 6) | (abibin_ << 5) |
+                                   ((config.daec ? 0 : 1) << 4) | (uvw_abi_ << 3) |
+                                   (config.dir << 2) | 1);
+    case kSettings2: {
+      const int pp = config.pole_pairs >= 7   ? 6
+                     : config.pole_pairs == 0 ? 0
+                                              : config.pole_pairs - 1;
+      const int64_t lsb = int64_t{1} << (in.angle_w - 11);
+      const int64_t lsbs = (config.hys + lsb - 1) / lsb;
+      const int hys = lsbs >= 3 ? 0 : static_cast<int>(3 - lsbs);
+      return static_cast<uint16_t>((abires_code(abibin_, config.n) << 5) | (hys << 3) | pp);
+    }
     case kDiaagc:
-      data = static_cast<uint16_t>((in.los << 11) | (in.dos << 10) | (in.ovf << 9) |
+      return static_cast<uint16_t>((in.los << 11) | (in.dos << 10) | (in.ovf << 9) |
                                    ((in.lot ? 0 : 1) << 8) | in.agc);
-      break;
     case kMag:
-      data = in.mag & 0x3FFF;
-      break;
+      return in.mag & 0x3FFF;
     case kAngleUnc:
-      data = static_cast<uint16_t>((in.angle_unc >> (in.angle_w - 14)) & 0x3FFF);
-      break;
+      return top14(in.angle_unc);
     case kAngleCom:
-      data = static_cast<uint16_t>((in.angle_com >> (in.angle_w - 14)) & 0x3FFF);
+      return top14(dataselect_ ? in.angle_unc : in.angle_com);
+    default:
+      return 0;
+  }
+}
+
+void As5047Port::write_register(uint16_t addr, uint16_t data, int angle_w) {
+  using namespace as5047;
+  switch (addr) {
+    case kProg:
+      progen_ = data & 1;
+      progver_ = (data >> 6) & 1;
       break;
+    case kZposm:
+      config.zero = static_cast<uint16_t>(((data & 0xFF) << 6) | (config.zero & 0x3F));
+      break;
+    case kZposl:
+      config.zero = static_cast<uint16_t>((config.zero & 0x3FC0) | (data & 0x3F));
+      error_enables_ = (data >> 6) & 3;
+      break;
+    case kSettings1: {
+      const bool bin = (data >> 5) & 1;
+      if (bin != abibin_) config.n = abires_n(bin, abires_code(abibin_, config.n));
+      config.dir = (data >> 2) & 1;
+      config.daec = !((data >> 4) & 1);
+      uvw_abi_ = (data >> 3) & 1;
+      abibin_ = bin;
+      dataselect_ = (data >> 6) & 1;
+      pwmon_ = (data >> 7) & 1;
+      break;
+    }
+    case kSettings2: {
+      const int pp = data & 7;
+      config.pole_pairs = pp == 7 ? 7 : pp + 1;
+      config.hys = static_cast<int64_t>(3 - ((data >> 3) & 3)) << (angle_w - 11);
+      config.n = abires_n(abibin_, (data >> 5) & 7);
+      break;
+    }
     default:
       break;
   }
+}
+
+uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool short_gap) {
+  using namespace as5047;
+  // The answer, from the register chosen by the previous frame, as the frame starts.
+  const uint16_t data = read_register(answer_reg_, in);
   const bool ef = errfl_ != 0;
-  const uint16_t answer = with_even_parity(static_cast<uint16_t>((ef ? 0x4000 : 0) | data));
-  if (answer_reg_ == kErrfl) errfl_ = 0;  // read clears
+  const uint16_t answer = short_gap
+                              ? uint16_t{0xC000}
+                              : with_even_parity(static_cast<uint16_t>((ef ? 0x4000 : 0) | data));
+  if (answer_reg_ == kErrfl && !short_gap) errfl_ = 0;  // read clears
   // The command at the end of the frame.
   const uint16_t addr = mosi & 0x3FFF;
   const bool read = (mosi >> 14) & 1;
-  const bool known = addr == kNop || addr == kErrfl || addr == kDiaagc || addr == kMag ||
-                     addr == kAngleUnc || addr == kAngleCom;
+  const bool writable =
+      addr == kProg || addr == kZposm || addr == kZposl || addr == kSettings1 || addr == kSettings2;
+  const bool known = writable || addr == kNop || addr == kErrfl || addr == kDiaagc ||
+                     addr == kMag || addr == kAngleUnc || addr == kAngleCom;
   const bool write = !read && addr != kNop;
-  if (bits != 16) {
+  if (bits != 16 || short_gap) {
     errfl_ |= kFrErr;
     answer_reg_ = kNop;
+    if (bits == 16) write_data_ = false;
   } else if (!parity_even(mosi)) {
     errfl_ |= kParErr;
     answer_reg_ = kNop;
     write_data_ = false;
   } else if (write_data_) {
+    // The data frame: the register written, its new content answered next.
     write_data_ = false;
-    answer_reg_ = kNop;
+    if (write_reg_ != kNop) write_register(write_reg_, mosi & 0xFF, in.angle_w);
+    answer_reg_ = write_reg_;
   } else {
-    if (write || !known) errfl_ |= kInvComm;
+    if (!known || (write && !writable)) errfl_ |= kInvComm;
     write_data_ = write;
-    answer_reg_ = (read && known) ? addr : kNop;
+    write_reg_ = write && writable ? addr : kNop;
+    answer_reg_ = (read && known) || (write && writable) ? addr : kNop;
   }
   // The answer the master received: only the bits it clocked.
   return bits >= 16 ? answer : static_cast<uint16_t>(answer >> (16 - bits));

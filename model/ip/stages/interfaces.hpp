@@ -25,10 +25,16 @@ namespace acore {
 // floor(angle 4N / 2^angle_w): the count of an angle (0 .. 4N-1). Throws InputError on N outside
 // its range or an angle_w outside 2..32.
 int64_t abz_count_of(uint64_t angle, int angle_w, int64_t n);
-// The target after a new angle given the previous target: the count of angle + 1 LSB (mod 4N)
-// when the previous target is that count (the one-LSB hysteresis band), the angle's count
-// otherwise.
-int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t previous_target);
+// The target after a new angle given the previous target, with a hysteresis of `hys` angle LSBs:
+// the previous target holds while it is one of the counts the window angle - hys .. angle + hys
+// touches (round the turn: abz_count_of(angle - hys) .. abz_count_of(angle + hys)), otherwise the
+// target is the angle's count. hys = 0: the angle's count. Throws InputError on hys outside
+// 0 .. 2^(angle_w-2) - 1 (the window stays below a quarter turn).
+int64_t abz_target(uint64_t angle, int angle_w, int64_t n, int64_t hys, int64_t previous_target);
+// A change of N re-homes the count without an edge: the count keeps its two low bits (A and B
+// hold) and takes the value nearest the new target (target + d, d = (count - target) mod 4 in
+// 0..2, or target - 1 for d = 3, round the new turn of 4n counts); it then walks to the target.
+int64_t abz_rehome(int64_t count, int64_t target, int64_t n);
 // A quadrature pair from a count: A = c1 ^ c0, B = c1 (Gray 00, 10, 11, 01 forward).
 struct AbzPins {
   bool a, b, z;
@@ -40,6 +46,8 @@ class AbzCounter {
  public:
   AbzCounter(int64_t n, int spacing);
   void set_target(int64_t target) { target_ = target; }
+  // A new N (acore_abz.v's re-homing): the count as abz_rehome() puts it, the target given.
+  void rehome(int64_t n, int64_t target);
   // One clock: a step toward the target (the shorter way, a half turn forward) when the spacing
   // since the last edge has passed. Returns +1, -1 or 0.
   int step();
@@ -66,8 +74,13 @@ UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs)
 // ---- AS5047P SPI
 // ----------------------------------------------------------------------------------
 namespace as5047 {
-constexpr uint16_t kNop = 0x0000, kErrfl = 0x0001, kDiaagc = 0x3FFC, kMag = 0x3FFD,
+constexpr uint16_t kNop = 0x0000, kErrfl = 0x0001, kProg = 0x0003, kZposm = 0x0016, kZposl = 0x0017,
+                   kSettings1 = 0x0018, kSettings2 = 0x0019, kDiaagc = 0x3FFC, kMag = 0x3FFD,
                    kAngleUnc = 0x3FFE, kAngleCom = 0x3FFF;
+// ABIRES's tables (SETTINGS1.ABIBIN 1: binary, 0: decimal): N of a code, and the code read back
+// for an N (the first entry, largest N first, not above it; the last otherwise).
+int64_t abires_n(bool binary, int code);
+int abires_code(bool binary, int64_t n);
 constexpr uint16_t kFrErr = 1, kInvComm = 2, kParErr = 4;  // ERRFL bits
 // The 16-bit word with bit 15 set so that its parity is even.
 uint16_t with_even_parity(uint16_t word15);
@@ -83,18 +96,42 @@ struct As5047Inputs {
   bool los = false, dos = false, ovf = false, lot = false;
 };
 
+// The AS5047P settings the port maps onto the board's registers (rtl/acore_spi_as5047.v's header):
+// IF_ZERO.ZERO (ZPOS, 2^-14 turn), IF_CTRL.DIR, IF_CTRL.DAEC (not DAECDIS), ABZ_N (ABIRES with
+// ABIBIN), UVW_PP (UVWPP + 1), ABZ_HYS ((3 - HYS) 2^(angle_w-11) angle LSBs). Their reset values
+// are the board's.
+struct As5047Config {
+  uint16_t zero = 0;
+  bool dir = false, daec = true;
+  int64_t n = 1024;
+  int pole_pairs = 1;
+  int64_t hys = 2;
+};
+
 // The port at frame level: frame() takes the master's word and clock count and returns the word
 // the port sent (the answer prepared by the previous frame, from `in` as it is when this frame
-// starts).
+// starts). short_gap: CSn was high for less than 2 clocks before this frame (the RTL's minimum):
+// a framing error, the frame answers 0xC000 (EF, even parity, data 0) and its command is ignored.
 class As5047Port {
  public:
-  uint16_t frame(uint16_t mosi, const As5047Inputs& in, int bits = 16);
+  // The settings (`config`, the board's registers) are read for the answers and written by a
+  // write's data frame.
+  uint16_t frame(uint16_t mosi, const As5047Inputs& in, int bits = 16, bool short_gap = false);
   uint16_t errfl() const { return errfl_; }
+  As5047Config config;
 
  private:
+  uint16_t read_register(uint16_t addr, const As5047Inputs& in) const;
+  void write_register(uint16_t addr, uint16_t data, int angle_w);
   uint16_t errfl_ = 0;
   uint16_t answer_reg_ = as5047::kNop;
   bool write_data_ = false;
+  uint16_t write_reg_ = as5047::kNop;
+  // What only the port keeps: PROG's PROGEN and PROGVER, ZPOSL's error enables, SETTINGS1's
+  // UVW_ABI, ABIBIN (reset 1), Dataselect, PWMon.
+  bool progen_ = false, progver_ = false, uvw_abi_ = false, abibin_ = true, dataselect_ = false,
+       pwmon_ = false;
+  int error_enables_ = 0;
 };
 
 }  // namespace acore

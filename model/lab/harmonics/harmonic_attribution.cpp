@@ -161,4 +161,32 @@ std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum,
   return out;
 }
 
+std::vector<OrderCauses> attribute_exact(const HarmonicAnalysis& a) {
+  std::vector<OrderAmplitude> spectrum;
+  for (const auto& h : a.harmonics) spectrum.push_back({h.order, h.exact * kDegPerRad, 0, 0, 0});
+  AttributionOptions opt;
+  opt.p = a.spec.p;
+  opt.mechanical = false;
+  opt.include_dc = true;
+  return attribute(spectrum, opt);
+}
+
+nlohmann::json attribution_json(const std::vector<OrderCauses>& orders) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& o : orders) {
+    nlohmann::json causes = nlohmann::json::array();
+    for (const auto& c : o.causes)
+      causes.push_back({{"kind", c.kind},
+                        {"signal_order", c.signal_order},
+                        {"taylor_order", c.taylor_order},
+                        {"parameter_name", c.parameter_name},
+                        {"parameter", c.parameter},
+                        {"predicted_deg", c.predicted_deg},
+                        {"explained", c.explained},
+                        {"consistency", c.consistency}});
+    j.push_back({{"order", o.order}, {"amplitude_deg", o.amplitude_deg}, {"causes", causes}});
+  }
+  return j;
+}
+
 }  // namespace acore

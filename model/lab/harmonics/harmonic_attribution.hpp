@@ -16,10 +16,12 @@
 // one parameter whose other orders were checked while a harmonic n is a free fit that explains
 // any amplitude; then consistency.
 #pragma once
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "harmonics/harmonic_spectrum.hpp"
+#include "harmonics/harmonics.hpp"
 
 namespace acore {
 
@@ -57,5 +59,15 @@ struct OrderCauses {
 // p < 1 or the spectrum orders are not 0..K in sequence.
 std::vector<OrderCauses> attribute(const std::vector<OrderAmplitude>& spectrum,
                                    const AttributionOptions& opt);
+
+// The attribution of an analysis's exact spectrum (electrical error, order 0 included, orders >= 5
+// % of the largest): `anglecore harmonics --attribute` and the Python package's
+// harmonics(attribute=True), one implementation for both.
+std::vector<OrderCauses> attribute_exact(const HarmonicAnalysis& a);
+
+// The attribution as `harmonics --json --attribute` writes it: [{order, amplitude_deg, causes:
+// [{kind, signal_order, taylor_order, parameter_name, parameter, predicted_deg, explained,
+// consistency}]}], largest order first, each order's causes best first.
+nlohmann::json attribution_json(const std::vector<OrderCauses>& orders);
 
 }  // namespace acore

@@ -6,6 +6,7 @@
 // AS5047P frame's parity, answers, ERRFL and error flag; and the refusal of out-of-range values.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "core/errors.hpp"
@@ -36,15 +37,54 @@ TEST(AbzModel, CountIsTheFloorOfTheExactProduct) {
   }
 }
 
-TEST(AbzModel, HysteresisHoldsTheUpperCountOfTheBand) {
+// The window rule against its definition, count by count: the previous count holds when some
+// angle within hys LSBs (round the turn) has it, i.e. the window's first and last counts in closed
+// form floor((a -+ hys) 4N / T) taken modulo the turn.
+TEST(AbzModel, HysteresisHoldsEveryCountTheWindowTouches) {
   const int w = 16;
-  for (int64_t n : {int64_t{1}, int64_t{1000}, kNMax}) {
-    for (uint64_t a : {uint64_t{0}, uint64_t{12345}, uint64_t{65535}}) {
-      const int64_t lo = abz_count_of(a, w, n);
-      const int64_t hi = abz_count_of((a + 1) & 0xFFFF, w, n);
-      EXPECT_EQ(abz_target(a, w, n, hi), hi);
-      EXPECT_EQ(abz_target(a, w, n, (hi + 2) % (4 * n)), lo);
-      EXPECT_EQ(abz_target(a, w, n, lo), lo);
+  const int64_t turn = int64_t{1} << w;
+  for (int64_t n : {int64_t{1}, int64_t{1000}, int64_t{1024}, kNMax}) {
+    for (int64_t hys : {0, 1, 2, 7}) {
+      for (int64_t a : {int64_t{0}, int64_t{271}, int64_t{12345}, turn - 1, turn - 3}) {
+        const auto floor_count = [&](int64_t x) {
+          return static_cast<int64_t>((((x % turn) + turn) % turn) * 4 * n / turn);
+        };
+        for (int64_t prev = 0; prev < std::min<int64_t>(4 * n, 64); ++prev) {
+          bool touched = false;
+          for (int64_t x = a - hys; x <= a + hys; ++x) touched |= floor_count(x) == prev;
+          EXPECT_EQ(abz_target(static_cast<uint64_t>(a), w, n, hys, prev),
+                    touched ? prev : floor_count(a))
+              << "n " << n << " hys " << hys << " a " << a << " prev " << prev;
+        }
+        // The counts at the end of the turn too (the window wraps past 0).
+        const int64_t last = 4 * n - 1;
+        bool touched = false;
+        for (int64_t x = a - hys; x <= a + hys; ++x) touched |= floor_count(x) == last;
+        EXPECT_EQ(abz_target(static_cast<uint64_t>(a), w, n, hys, last),
+                  touched ? last : floor_count(a));
+      }
+    }
+  }
+  // 280 then 271 at N = 1024: 17, then 16 without hysteresis, 17 held from 1 LSB on.
+  EXPECT_EQ(abz_target(271, w, 1024, 0, 17), 16);
+  EXPECT_EQ(abz_target(271, w, 1024, 1, 17), 17);
+  EXPECT_THROW(abz_target(0, w, 1024, turn / 4, 0), InputError);
+  EXPECT_THROW(abz_target(0, w, 1024, -1, 0), InputError);
+}
+
+// Re-homing after a change of N keeps the two low bits (A, B) and lands at most two counts from
+// the target, round the turn.
+TEST(AbzModel, ReHomeKeepsTheLowBitsNearestTheTarget) {
+  for (int64_t n : {int64_t{1}, int64_t{7}, int64_t{1000}}) {
+    for (int64_t target : {int64_t{0}, int64_t{1}, 4 * n - 1, 2 * n + 1}) {
+      for (int64_t count = 0; count < 8; ++count) {
+        const int64_t r = abz_rehome(count, target, n);
+        EXPECT_EQ(r % 4, count % 4);
+        EXPECT_GE(r, 0);
+        EXPECT_LT(r, 4 * n);
+        const int64_t up = ((r - target) % (4 * n) + 4 * n) % (4 * n);
+        EXPECT_TRUE(up <= 2 || up == 4 * n - 1) << n << " " << target << " " << count;
+      }
     }
   }
 }
@@ -146,6 +186,13 @@ TEST(As5047Model, FramesAnswersAndErrors) {
   EXPECT_EQ(port.errfl(), kFrErr);
   port.frame(with_even_parity(0x4000 | 0x0123), in);
   EXPECT_EQ(port.errfl(), kFrErr | kInvComm);
+  // A frame after a CSn gap below the minimum: 0xC000, its command ignored, FRERR.
+  port.frame(with_even_parity(0x4001), in);  // ERRFL (read clears)
+  EXPECT_EQ(port.frame(with_even_parity(0x7FFF), in) & 0x3FFF, kFrErr | kInvComm);
+  EXPECT_EQ(port.errfl(), 0);
+  EXPECT_EQ(port.frame(with_even_parity(0x7FFE), in, 16, true), 0xC000);
+  EXPECT_EQ(port.errfl(), kFrErr);
+  EXPECT_EQ(port.frame(0x0000, in), 0xC000) << "the ANGLEUNC read was ignored: NOP, EF";
 }
 
 }  // namespace
