@@ -158,7 +158,8 @@ endmodule
 module acore_abz_pinwrap #(
   parameter integer ANGLE_W = 16,
   parameter integer N_W = 13,
-  parameter integer SP_W = 16
+  parameter integer SP_W = 16,
+  parameter integer HYS_W = 8
 ) (
   input  wire clk_i,
   input  wire rst_i,
@@ -170,7 +171,7 @@ module acore_abz_pinwrap #(
   output wire z_o,
   output wire settled_o
 );
-  localparam integer SR_W = ANGLE_W + N_W + (N_W + 1) + SP_W;
+  localparam integer SR_W = ANGLE_W + N_W + (N_W + 1) + SP_W + HYS_W;
   reg [SR_W-1:0] sr_q;
   reg en_q;
   always @(posedge clk_i) begin
@@ -178,11 +179,11 @@ module acore_abz_pinwrap #(
     en_q <= en_i;
   end
   wire [N_W:0] count;
-  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(N_W), .SP_W(SP_W)) u_stage (
+  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(N_W), .SP_W(SP_W), .HYS_W(HYS_W)) u_stage (
     .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(en_q), .angle_i(sr_q[ANGLE_W-1:0]),
     .n_i(sr_q[ANGLE_W +: N_W]), .index_i(sr_q[ANGLE_W + N_W +: N_W + 1]),
-    .spacing_i(sr_q[ANGLE_W + 2 * N_W + 1 +: SP_W]), .a_o(a_o), .b_o(b_o), .z_o(z_o),
-    .count_o(count), .settled_o(settled_o));
+    .spacing_i(sr_q[ANGLE_W + 2 * N_W + 1 +: SP_W]), .hys_i(sr_q[ANGLE_W + 2 * N_W + 1 + SP_W +: HYS_W]),
+    .a_o(a_o), .b_o(b_o), .z_o(z_o), .count_o(count), .settled_o(settled_o));
 endmodule
 
 module acore_uvw_pinwrap #(
@@ -213,9 +214,15 @@ module acore_uvw_pinwrap #(
     .w_o(w_o), .sector_o(sector_o), .valid_o(valid_o));
 endmodule
 
+// The SPI port's settings written by a driver (the board's registers) leave through a second
+// shift register, loaded when any of them is written, shifted out on sdo_o.
 module acore_spi_as5047_pinwrap #(
   parameter integer ANGLE_W = 16,
-  parameter integer SYNC = 2
+  parameter integer SYNC = 2,
+  parameter integer SCLK_MIN = 4,
+  parameter integer N_W = 13,
+  parameter integer PP_W = 5,
+  parameter integer HYS_W = 8
 ) (
   input  wire       clk_i,
   input  wire       rst_i,
@@ -227,17 +234,37 @@ module acore_spi_as5047_pinwrap #(
   output wire       miso_o,
   output wire       miso_oe_o,
   output wire       frame_o,
-  output wire [2:0] errfl_o
+  output wire [2:0] errfl_o,
+  output wire       sdo_o
 );
-  localparam integer SR_W = 2 * ANGLE_W + 14 + 8 + 4;
+  localparam integer CFG_W = 14 + 1 + 1 + N_W + PP_W + HYS_W;
+  localparam integer SR_W = 2 * ANGLE_W + 14 + 8 + 4 + CFG_W;
+  localparam integer OUT_W = CFG_W + 6;
   reg [SR_W-1:0] sr_q;
   always @(posedge clk_i) if (shift_i) sr_q <= {sr_q[SR_W-2:0], sdi_i};
-  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(SYNC)) u_stage (
+  wire [CFG_W-1:0] cfg_i = sr_q[2 * ANGLE_W + 26 +: CFG_W];
+  wire [CFG_W-1:0] cfg_o;
+  wire [5:0] cfg_we;
+  acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(SYNC), .SCLK_MIN(SCLK_MIN), .N_W(N_W), .PP_W(PP_W),
+                     .HYS_W(HYS_W)) u_stage (
     .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
     .miso_oe_o(miso_oe_o), .angle_unc_i(sr_q[ANGLE_W-1:0]), .angle_com_i(sr_q[ANGLE_W +: ANGLE_W]),
     .mag_i(sr_q[2 * ANGLE_W +: 14]), .agc_i(sr_q[2 * ANGLE_W + 14 +: 8]),
-    .los_i(sr_q[SR_W-4]), .dos_i(sr_q[SR_W-3]), .ovf_i(sr_q[SR_W-2]), .lot_i(sr_q[SR_W-1]),
+    .los_i(sr_q[2 * ANGLE_W + 22]), .dos_i(sr_q[2 * ANGLE_W + 23]), .ovf_i(sr_q[2 * ANGLE_W + 24]),
+    .lot_i(sr_q[2 * ANGLE_W + 25]),
+    .cfg_zero_i(cfg_i[13:0]), .cfg_dir_i(cfg_i[14]), .cfg_daec_i(cfg_i[15]),
+    .cfg_n_i(cfg_i[16 +: N_W]), .cfg_pp_i(cfg_i[16 + N_W +: PP_W]),
+    .cfg_hys_i(cfg_i[16 + N_W + PP_W +: HYS_W]),
+    .cfg_zero_we_o(cfg_we[0]), .cfg_zero_o(cfg_o[13:0]), .cfg_dir_we_o(cfg_we[1]), .cfg_dir_o(cfg_o[14]),
+    .cfg_daec_we_o(cfg_we[2]), .cfg_daec_o(cfg_o[15]), .cfg_n_we_o(cfg_we[3]),
+    .cfg_n_o(cfg_o[16 +: N_W]), .cfg_pp_we_o(cfg_we[4]), .cfg_pp_o(cfg_o[16 + N_W +: PP_W]),
+    .cfg_hys_we_o(cfg_we[5]), .cfg_hys_o(cfg_o[16 + N_W + PP_W +: HYS_W]),
     .frame_o(frame_o), .errfl_o(errfl_o));
+  reg [OUT_W-1:0] out_q;
+  always @(posedge clk_i)
+    if (|cfg_we) out_q <= {cfg_we, cfg_o};
+    else if (shift_i) out_q <= {out_q[OUT_W-2:0], 1'b0};
+  assign sdo_o = out_q[OUT_W-1];
 endmodule
 
 `resetall
