@@ -19,7 +19,9 @@ between two inputs must fail the same check, so the check cannot pass on a desig
 A line with MULT=1 (hardware multipliers, docs/datapath.md) may hold $mul cells, but only in
 acore_hw_mul (rtl/acore_hw_mul.v, which the stages instantiate in their MULT = 1 generate branches
 only), and must hold at least one (else its MULT = 1 branches were not built); no other cell of
-the list anywhere. A MULT=0 line holding acore_hw_mul fails like any other multiplier.
+the list anywhere. A MULT=0 line holding acore_hw_mul fails like any other multiplier. The lines
+tagged long-sim are checked when --only names them (the default run checks the shell's MULT=1
+lines, apb_mult and apb_fold8_mult, pipelined and folded).
 
 Exit 0 when every build passes, 1 when one holds such a cell (its cells are listed) or Yosys fails,
 2 on bad usage or a malformed registry line (scripts/registry.py reads the registry).
@@ -60,9 +62,14 @@ def rtl_files(root):
     return [os.path.join(root, "rtl", f) for f in registry.rtl_files(root)]
 
 
-def builds(root):
-    """(name, module, [(PARAM, value)]) of every registry line for MODULES."""
-    return [(l.name, l.module, list(l.params)) for l in registry.load(root) if l.module in MODULES]
+def builds(root, long=False):
+    """(name, module, [(PARAM, value)]) of every registry line for MODULES (the lines tagged
+    long-sim only when long: the shell's MULT=1 lines stand for them in the default run)."""
+    return [
+        (l.name, l.module, list(l.params))
+        for l in registry.load(root)
+        if l.module in MODULES and (long or "long-sim" not in l.tags)
+    ]
 
 
 def check(files, top, params, workdir):
@@ -103,7 +110,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=1)
     args = ap.parse_args()
     try:
-        todo = builds(args.root)
+        todo = builds(args.root, long=bool(args.only))
     except registry.RegistryError as e:
         print(f"no_multiplier.py: {e}", file=sys.stderr)
         return 2
