@@ -43,12 +43,13 @@
 `default_nettype none
 
 module acore_top #(
-  // The datapath parameters (IN_W .. FOLD; generated from the model's field table, each with its
+  // The datapath parameters (IN_W .. MULT; generated from the model's field table, each with its
   // default and meaning). FOLD: 1 = one sample per clock (the pipeline below, with a stall
   // enable); 2, 4 or 8 = the folded datapath (acore_fold_datapath.v: the hardware reused FOLD
   // times per sample, an output FIFO and credits instead of the stall), the same contract and
   // register map at any FOLD. ZERO = 1: one more register word (the last) holding the zero
-  // position, subtracted from the output angle.
+  // position, subtracted from the output angle. MULT = 1: every product on the hardware
+  // multiplier (acore_hw_mul.v), the full product floored once; the same LATENCY and CYCLES.
 `include "acore_datapath_params.vh"
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
