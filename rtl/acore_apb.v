@@ -39,7 +39,7 @@
 module acore_apb #(
   // 0: rtl/acore_top.v (pipelined, one sample a clock); 1: rtl/acore_serial_top.v (one adder).
   parameter integer SERIAL = 0,
-  // The datapath parameters of the top (IN_W .. FOLD, generated from the model's field table):
+  // The datapath parameters of the top (IN_W .. MULT, generated from the model's field table):
   // the serial core takes the modes and options the mode table and its rules give it
   // (acore_config_check with SERIAL = 1). FOLD is reported in CONFIG0; ZERO = 1 adds the ZERO
   // word (the zero position, the last register word) to WORDS.

@@ -125,6 +125,11 @@ module acore_config_check #(
     .MSG("illegal parameter: FOLD must be 1 with FOURIER_K > 0: the Fourier correction is not folded"))
     FOLD_must_be_1_with_Fourier ();
 
+  // The products: adders and shifters, or hardware multipliers (acore_hw_mul.v).
+  acore_check #(.OK(MULT == 0 || MULT == 1), .VALUE(MULT),
+    .MSG("illegal parameter: MULT must be 0 or 1"))
+    MULT_must_be_0_or_1 ();
+
   // The serial core (SERIAL = 1): the 1-D polynomial on raw x (its modes are the table's, above),
   // no Fourier stage, not folded.
   acore_check #(.OK(SERIAL == 0 || SERIAL == 1), .VALUE(SERIAL),

@@ -57,3 +57,5 @@
   parameter integer ZERO = 0,
   // Clocks per sample of acore_top: 1 pipelined, 2, 4 or 8 folded (the serial core: 1).
   parameter integer FOLD = 1,
+  // Products: 0 adders and shifters (each partial product floored), 1 the multiply operator (DSP blocks; the full product floored once).
+  parameter integer MULT = 0,

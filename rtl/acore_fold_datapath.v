@@ -46,6 +46,8 @@ module acore_fold_datapath #(
   parameter integer FOLD = 2,
   // 1: the register file's last word is the ZERO word (after the arctangent words), on last_o.
   parameter integer ZERO = 0,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0,
   // Register file: words (acore_words: no Fourier words, the ZERO word with ZERO) and the power-up
   // image.
   parameter integer WORDS = 52,
@@ -176,7 +178,7 @@ module acore_fold_datapath #(
   wire [S_W-1:0] s_sc;
   wire ovf_sc;
   acore_fold_scaler #(
-    .D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G), .F(F)
+    .D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G), .F(F), .MULT(MULT)
   ) u_sc (
     .clk_i(clk_i), .start_i(v_q[0] | sc_second), .d_i(sc_second ? d24 : d13), .offset_i(offset),
     .recip_i(recip), .s_o(s_sc), .ovf_o(ovf_sc));
@@ -245,7 +247,7 @@ module acore_fold_datapath #(
       wire ovf_pc;
       acore_fold_poly #(
         .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
-        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(U_RAM)
+        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(U_RAM), .MULT(MULT)
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
         .s_i(s_pc),

@@ -22,6 +22,10 @@
 // A new product may start every F clocks. Sums are modulo 2^P_W (harmless while the exact result
 // fits P_W bits, which the elaboration check enforces). No reset: data only; start_i must be low
 // (or its product ignored) until the first real operand.
+//
+// MULT = 1 (hardware multipliers, fixed_point.hpp hw_mul()): p = init + ((a * b) >>> RSHIFT), the
+// exact product floored once (acore_hw_mul: a DSP block), carried to INIT_AT, where init is added,
+// then to LATENCY: the same interface and schedule as MULT = 0.
 `resetall
 `default_nettype none
 
@@ -38,7 +42,10 @@ module acore_fold_mul #(
   parameter integer INIT_W = 25,
   parameter integer P_W = 29,
   // Clocks per product (1, 2, 4, ...).
-  parameter integer F = 2
+  parameter integer F = 2,
+  // 0: adders and shifters (every partial product floored); 1: the multiply operator (DSP blocks;
+  // the full product floored once).
+  parameter integer MULT = 0
 ) (
   input  wire              clk_i,
   // a_i and b_i are valid (a product starts); needed for F > 1 only.
@@ -75,16 +82,29 @@ module acore_fold_mul #(
 
   generate
     if (F == 1) begin : g_tree
-      // The whole tree, then the addend.
+      // The whole tree (or the hardware product), then the addend.
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
-        .A_W(A_W), .B_W(B_W), .B_SIGNED(B_SIGNED), .RSHIFT(RSHIFT), .P_W(P_W)
+        .A_W(A_W), .B_W(B_W), .B_SIGNED(B_SIGNED), .RSHIFT(RSHIFT), .P_W(P_W), .MULT(MULT)
       ) u_mul (
         .clk_i(clk_i), .en_i(1'b1), .a_i(a_i), .b_i(b_i), .p_o(prod));
       reg [P_W-1:0] p_q;
       always @(posedge clk_i) p_q <= prod + init_ext;
       assign p_o = p_q;
       // start_i is not needed: the tree takes an operand every clock.
+      wire unused_start = start_i;
+    end else if (MULT != 0) begin : g_hw
+      // The product of the operands of start_i, floored, INIT_AT clocks later (the multiplier runs
+      // every clock; only the start clock's product is used), then the addend, then F - 1 clocks.
+      wire [P_W-1:0] prod;
+      acore_hw_mul #(
+        .A_W(A_W), .B_W(B_W), .B_SIGNED(B_SIGNED), .RSHIFT(RSHIFT), .P_W(P_W), .DEPTH(INIT_AT)
+      ) u_hw (
+        .clk_i(clk_i), .en_i(1'b1), .a_i(a_i), .b_i(b_i), .p_o(prod));
+      reg [P_W-1:0] sum_q;
+      always @(posedge clk_i) sum_q <= prod + init_ext;
+      acore_delay #(.W(P_W), .DEPTH(F - 1)) u_dsum (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(sum_q), .q_o(p_o));
       wire unused_start = start_i;
     end else begin : g_fold
       // O_0 = floor(a 2^SH0) for the top bit B_W-1 of b.

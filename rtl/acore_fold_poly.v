@@ -39,6 +39,8 @@ module acore_fold_poly #(
   // 1: the argument (with the base address) waits for the Horner steps in block RAM
   // (acore_ram_delay), not in flops: DEGREE - 1 lines of S_W + ADDR_W bits.
   parameter integer RAM_DELAY = 0,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0,
   // Derived, do not override: coefficient read ports.
   parameter integer PORTS = acore_fold_poly_ports(DEGREE)
 ) (
@@ -161,7 +163,7 @@ module acore_fold_poly #(
         .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(coef_addr_o[(m + 1) * ADDR_W +: ADDR_W]));
       wire [P_W-1:0] sum;
       acore_fold_mul #(
-        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F)
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F), .MULT(MULT)
       ) u_mul (
         .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
         .init_i(coef_acc(coef_i[(m + 1) * REG_W +: REG_W])), .p_o(sum));

@@ -25,7 +25,9 @@ module acore_fold_scaler #(
   parameter integer R_SHIFT = 13,
   parameter integer SCALE_G = 4,
   // Clocks per item of the multiplier.
-  parameter integer F = 1
+  parameter integer F = 1,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0
 ) (
   input  wire             clk_i,
   // d_i, offset_i, recip_i are valid (an item starts).
@@ -77,7 +79,7 @@ module acore_fold_scaler #(
 
   wire [P_W-1:0] p;
   acore_fold_mul #(
-    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F)
+    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F), .MULT(MULT)
   ) u_mul (
     .clk_i(clk_i), .start_i(start_q), .a_i(t_q), .b_i(r_q), .init_i(half), .p_o(p));
 

@@ -44,7 +44,9 @@ module acore_fourier_correct #(
   // Guard fraction bits of the rotation x/y registers.
   parameter integer G = 2,
   // Width of one arctangent word on atan_i.
-  parameter integer AT_W = 18
+  parameter integer AT_W = 18,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0
 ) (
   input  wire                        clk_i,
   // Pipeline advance (the whole pipeline stalls together).
@@ -101,7 +103,7 @@ module acore_fourier_correct #(
       localparam [KB-1:0] KC = k;
       wire [KP_W-1:0] kp;
       acore_shift_add_mul #(
-        .A_W(ANGLE_W + 1), .B_W(KB), .B_SIGNED(0), .RSHIFT(0), .P_W(KP_W)
+        .A_W(ANGLE_W + 1), .B_W(KB), .B_SIGNED(0), .RSHIFT(0), .P_W(KP_W), .MULT(MULT)
       ) u_ktheta (
         .clk_i(clk_i), .en_i(en_i), .a_i({1'b0, angle_i}), .b_i(KC), .p_o(kp)
       );

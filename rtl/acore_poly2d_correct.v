@@ -44,6 +44,8 @@ module acore_poly2d_correct #(
   parameter integer ACC_I = 6,
   // Which curve this instance corrects (and whose words it reads): 0 = c13, 1 = c24.
   parameter integer CURVE = 0,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0,
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS)
 ) (
@@ -183,7 +185,7 @@ module acore_poly2d_correct #(
         localparam integer NIN = p2_term(i, k);
         wire [PV_W-1:0] prod;
         acore_shift_add_mul #(
-          .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(V_SH), .P_W(PV_W)
+          .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(V_SH), .P_W(PV_W), .MULT(MULT)
         ) u_mul (
           .clk_i(clk_i), .en_i(en_i), .a_i(node[NIN]), .b_i(v_at[k]), .p_o(prod)
         );
@@ -227,7 +229,7 @@ module acore_poly2d_correct #(
       localparam integer NQ = p2_term(DEGREE - m, m);
       wire [PU_W-1:0] prod;
       acore_shift_add_mul #(
-        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .P_W(PU_W)
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .P_W(PU_W), .MULT(MULT)
       ) u_mul (
         .clk_i(clk_i), .en_i(en_i), .a_i(oacc[m-1]), .b_i(ou[m-1]), .p_o(prod)
       );

@@ -35,6 +35,8 @@ module acore_poly_correct #(
   parameter integer CURVE = 0,
   // 1 (8 regions only): the polynomial is in u = x -+ 3/8, centred in its half region.
   parameter integer XCENTER = 0,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0,
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS)
 ) (
@@ -138,7 +140,7 @@ module acore_poly_correct #(
       // picks a_j into a register (so no multiplexer sits in front of the adder).
       wire [P_W-1:0] prod;
       acore_shift_add_mul #(
-        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .P_W(P_W)
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .P_W(P_W), .MULT(MULT)
       ) u_mul (
         .clk_i(clk_i), .en_i(en_i), .a_i(acc[m]), .b_i(xs[m]), .p_o(prod)
       );

@@ -21,7 +21,9 @@ module acore_scaler #(
   // Extra scale of the reciprocal R.
   parameter integer R_SHIFT = 13,
   // Guard fraction bits kept in the product before the final rounding.
-  parameter integer SCALE_G = 4
+  parameter integer SCALE_G = 4,
+  // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
+  parameter integer MULT = 0
 ) (
   input  wire             clk_i,
   input  wire             en_i,
@@ -56,7 +58,7 @@ module acore_scaler #(
 
   wire [P_W-1:0] p;
   acore_shift_add_mul #(
-    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .P_W(P_W)
+    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .P_W(P_W), .MULT(MULT)
   ) u_mul (
     .clk_i(clk_i), .en_i(en_i), .a_i(t_q), .b_i(recip_i), .p_o(p)
   );

@@ -44,7 +44,7 @@
 `default_nettype none
 
 module acore_serial_top #(
-  // The datapath parameters (IN_W .. FOLD; generated from the model's field table, each with its
+  // The datapath parameters (IN_W .. MULT; generated from the model's field table, each with its
   // default and meaning). The serial core is the 1-D polynomial correction on the raw x without
   // Fourier stage, not folded: acore_config_check stops any other CORRECTION (the mode table's
   // rows say which tops build a mode), XCENTER, FOURIER_K or FOLD, and the Fourier parameters are

@@ -43,12 +43,13 @@
 `default_nettype none
 
 module acore_top #(
-  // The datapath parameters (IN_W .. FOLD; generated from the model's field table, each with its
+  // The datapath parameters (IN_W .. MULT; generated from the model's field table, each with its
   // default and meaning). FOLD: 1 = one sample per clock (the pipeline below, with a stall
   // enable); 2, 4 or 8 = the folded datapath (acore_fold_datapath.v: the hardware reused FOLD
   // times per sample, an output FIFO and credits instead of the stall), the same contract and
   // register map at any FOLD. ZERO = 1: one more register word (the last) holding the zero
-  // position, subtracted from the output angle.
+  // position, subtracted from the output angle. MULT = 1: every product on the hardware
+  // multiplier (acore_hw_mul.v), the full product floored once; the same LATENCY and CYCLES.
 `include "acore_datapath_params.vh"
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
@@ -184,9 +185,9 @@ module acore_top #(
     // ---- 2: scaling ----
     wire [S_W-1:0] s13, s24;
     wire sc_ovf13, sc_ovf24;
-    acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc13 (
+    acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G), .MULT(MULT)) u_sc13 (
       .clk_i(clk_i), .en_i(en), .d_i(d13), .offset_i(off13), .recip_i(rcp13), .s_o(s13), .ovf_o(sc_ovf13));
-    acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G)) u_sc24 (
+    acore_scaler #(.D_W(D_W), .REG_W(REG_W), .S_W(S_W), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G), .MULT(MULT)) u_sc24 (
       .clk_i(clk_i), .en_i(en), .d_i(d24), .offset_i(off24), .recip_i(rcp24), .s_o(s24), .ovf_o(sc_ovf24));
 
     // ---- 3: domain selection ----
@@ -213,26 +214,26 @@ module acore_top #(
       if (CORRECTION == ACORE_CORR_POLY2D) begin : g_poly2d
         acore_poly2d_correct #(
           .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER),
-          .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0)
+          .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0), .MULT(MULT)
         ) u_pc13 (
           .clk_i(clk_i), .en_i(en), .x_i(x), .s13_i(s13_r), .s24_i(s24_r), .region_i(region),
           .coef_i(coef), .y_o(y13), .ovf_o(pc_ovf13));
         acore_poly2d_correct #(
           .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER),
-          .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1)
+          .COEF_F(COEF_F), .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1), .MULT(MULT)
         ) u_pc24 (
           .clk_i(clk_i), .en_i(en), .x_i(x), .s13_i(s13_r), .s24_i(s24_r), .region_i(region),
           .coef_i(coef), .y_o(y24), .ovf_o(pc_ovf24));
       end else begin : g_poly
         acore_poly_correct #(
           .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
-          .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0), .XCENTER(XCENTER)
+          .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(0), .XCENTER(XCENTER), .MULT(MULT)
         ) u_pc13 (
           .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s13_r), .region_i(region), .coef_i(coef),
           .y_o(y13), .ovf_o(pc_ovf13));
         acore_poly_correct #(
           .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .COEF_F(COEF_F),
-          .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1), .XCENTER(XCENTER)
+          .ACC_G(ACC_G), .ACC_I(ACC_I), .CURVE(1), .XCENTER(XCENTER), .MULT(MULT)
         ) u_pc24 (
           .clk_i(clk_i), .en_i(en), .x_i(x), .s_i(s24_r), .region_i(region), .coef_i(coef),
           .y_o(y24), .ovf_o(pc_ovf24));
@@ -254,7 +255,7 @@ module acore_top #(
       localparam integer FOURIER_AT_W = FOURIER_M * REG_W;
       acore_fourier_correct #(
         .ANGLE_W(ANGLE_W), .REG_W(REG_W), .Z_W(Z_W), .K(FOURIER_K), .M(FOURIER_M), .CF(FOURIER_CF),
-        .W(FOURIER_W), .G(FOURIER_G), .AT_W(REG_W)
+        .W(FOURIER_W), .G(FOURIER_G), .AT_W(REG_W), .MULT(MULT)
       ) u_fourier (
         .clk_i(clk_i), .en_i(en), .angle_i(angle), .coef_i(words[OFF_FOURIER +: FOURIER_BUS_W]),
         .atan_i(atan[FOURIER_AT_W-1:0]), .angle_o(angle_c));
@@ -313,7 +314,7 @@ module acore_top #(
         .IN_W(IN_W), .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .R_SHIFT(R_SHIFT), .SCALE_G(SCALE_G),
         .CORRECTION(CORRECTION), .DEGREE(DEGREE), .REGIONS(REGIONS), .XCENTER(XCENTER), .COEF_F(COEF_F),
         .ACC_G(ACC_G), .ACC_I(ACC_I), .K(K), .CORDIC_G(CORDIC_G), .Z_W(Z_W), .ANGLE_W(ANGLE_W),
-        .ZERO(ZERO), .FOLD(FOLD), .WORDS(WORDS), .INIT_FILE(INIT_FILE)
+        .ZERO(ZERO), .FOLD(FOLD), .MULT(MULT), .WORDS(WORDS), .INIT_FILE(INIT_FILE)
       ) u_dp (
         .clk_i(clk_i), .rst_i(rst_i), .reg_addr_i(reg_addr_i), .reg_wdata_i(reg_wdata_i),
         .reg_we_i(reg_we_i), .reg_rdata_o(reg_rdata_o), .accept_i(accept), .c1_i(c1_i), .c2_i(c2_i),

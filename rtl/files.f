@@ -11,6 +11,7 @@ acore_config_check.v
 acore_delay.v
 acore_saturate.v
 acore_round_sub_sat.v
+acore_hw_mul.v
 acore_shift_add_mul.v
 acore_coef_regfile.v
 acore_prefilter.v

@@ -56,6 +56,8 @@ DEVICE_FIELDS = {
     "capacity": dict,
     "tested": bool,
 }
+# Optional fields of a device.
+DEVICE_OPTIONAL = {"synth_options": list}
 
 
 class DevicesError(Exception):
@@ -75,10 +77,11 @@ class Family:
         for k in PNR_FIELDS:
             setattr(self, k, f.get(k))
 
-    def yosys_command(self, top, netlist=None):
-        """The Yosys synthesis command of the top (writing the netlist to place when given)."""
+    def yosys_command(self, top, netlist=None, extra=()):
+        """The Yosys synthesis command of the top (writing the netlist to place when given; extra:
+        a device's own options)."""
         out = [a.format(file=netlist) for a in self.netlist] if netlist else []
-        return " ".join([self.synth, *self.options, "-top", top, *out])
+        return " ".join([self.synth, *self.options, *extra, "-top", top, *out])
 
     def count(self, cells, classes):
         """Sum of the cells of these classes in a `registry.cells()` dict (None when it is None)."""
@@ -108,6 +111,7 @@ class Device:
             if k != "family":
                 setattr(self, k, d[k])
         self.capacity = dict(d["capacity"])
+        self.synth_options = list(d.get("synth_options", []))
 
     def wrapper_module(self, module):
         return self.wrapper.format(module=module)
@@ -317,11 +321,12 @@ def _load(root):
         if not isinstance(d, dict):
             raise DevicesError(f"{where(t)}: device '{name}' is not a table")
         _check(where, t, d, DEVICE_FIELDS)
+        _check(where, t, d, DEVICE_OPTIONAL, required=False)
         for k in d:
-            if k not in DEVICE_FIELDS:
+            if k not in DEVICE_FIELDS and k not in DEVICE_OPTIONAL:
                 raise DevicesError(
                     f"{where(t, k)}: {k}: unknown field of a device (known: "
-                    f"{', '.join(DEVICE_FIELDS)})"
+                    f"{', '.join(list(DEVICE_FIELDS) + list(DEVICE_OPTIONAL))})"
                 )
         fam = families.get(d["family"])
         if fam is None or not fam.placed:

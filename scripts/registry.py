@@ -70,6 +70,9 @@ TAGS = {
     # a 10^7-sample co-sim of its own, CTest cosim_long.<name> (configuration Long)
     "long-cosim": "sim",
     "long-proof": "formal",  # its formal proof runs long: CTest configuration Long, label long
+    # Verilated only in a build configured with -DACORE_RTL_LONG=ON; its co-sim cosim_config.<name>
+    # is then a CTest of configuration Long (label long): the default build and run leave it out
+    "long-sim": "sim",
 }
 BENCH_TAG = r"test_[a-z0-9_]+"
 
@@ -539,7 +542,7 @@ def synth_tasks(root, names=None, flows=None):
                     nl,
                     d.top,
                     d.source or "-",
-                    fam.yosys_command(d.top, nl),
+                    fam.yosys_command(d.top, nl, dev.synth_options),
                     params,
                 )
             )

@@ -135,6 +135,11 @@ void add_calibrate(CLI::App& app) {
       "Store the zero offset in one more register word (RTL ZERO=1, after every other word): the "
       "hardware outputs angle - zero, in the reference frame. Without it the image header records "
       "the offset and `estimate` subtracts it in software");
+  c->add_option("--mult", args->spec.mult,
+                "Products of the datapath (RTL MULT): 0 adders and shifters, every partial product "
+                "floored (default, the paper's minimum); 1 hardware multipliers, the full product "
+                "floored once (DSP blocks). The image header records 1; docs/datapath.md")
+      ->check(CLI::Range(0, 1));
   c->add_option(
        "--reference", args->spec.reference,
        "theta_ref (default: fit against the recording's reference angle) or none "

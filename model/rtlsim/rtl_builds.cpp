@@ -105,6 +105,11 @@ std::string build_command(const std::string& name, bool elsewhere) {
   if (build.empty())
     return "`cmake --build build --target " + target + "` in the repository (it writes build/rtl/)";
   const std::string writes = elsewhere ? " (it writes " + build + "/rtl/)" : "";
+  // A line tagged long-sim in rtl/configs.txt, which this build leaves out without the option.
+  const std::string unbuilt = std::string(",") + ACORE_RTL_LONG_UNBUILT + ",";
+  if (unbuilt.find("," + name + ",") != std::string::npos)
+    return "`cmake -DACORE_RTL_LONG=ON " + build + " && cmake --build " + build + " --target " +
+           target + "` (a line tagged long-sim)" + writes;
   if (ACORE_RTL_MODULES_HERE == 0)
     return "`cmake -DACORE_WITH_RTL=ON " + build + " && cmake --build " + build + " --target " +
            target + "` (this build was configured with -DACORE_WITH_RTL=OFF)" + writes;

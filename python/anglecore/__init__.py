@@ -266,7 +266,7 @@ def calibrate(recording: Recording, **options: Any) -> RegisterImage:
     """Fits and quantizes a register image, as `anglecore calibrate`: every option of the command
     by its name with '-' -> '_' (correction, degree, regions, xcenter, iterations, coef_frac,
     angle_w, in_w, in_scale, periodicity, fourier, fourier_iterations, fourier_guard,
-    zero_offset ("auto" or degrees), zero_word). The image's .report is the command's JSON."""
+    zero_offset ("auto" or degrees), zero_word, mult). The image's .report is the command's JSON."""
     _check_recording(recording)
     opts = dict(options)
     if "zero_offset" in opts and not isinstance(opts["zero_offset"], str):

@@ -303,6 +303,8 @@ CalibrateSpec spec_from_python(const nb::dict& o) {
       s.zero_offset = nb::cast<std::string>(v);
     else if (key == "zero_word")
       s.zero_word = nb::cast<bool>(v);
+    else if (key == "mult")
+      s.mult = nb::cast<int>(v);
     else if (key == "reference")
       s.reference = nb::cast<std::string>(v);
     else if (key == "selfcal_harmonics")

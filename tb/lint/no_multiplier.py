@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""No multiplier, divider or power operator in any registered build's netlist.
+"""No multiplier, divider or power operator in any registered build's netlist but the hardware
+multipliers of MULT = 1.
 
   no_multiplier.py [--root DIR] [--only NAME[,NAME...]] [--jobs N]
 
@@ -14,6 +15,13 @@ reads rtl/files.f, elaborates the module with the line's parameters (hierarchy -
 no $mul, $macc, $div, $mod, $divfloor, $modfloor or $pow cell (checked before any optimization, so
 a product cannot hide behind constant folding). A negative control first: a module with one `*`
 between two inputs must fail the same check, so the check cannot pass on a design it did not see.
+
+A line with MULT=1 (hardware multipliers, docs/datapath.md) may hold $mul cells, but only in
+acore_hw_mul (rtl/acore_hw_mul.v, which the stages instantiate in their MULT = 1 generate branches
+only), and must hold at least one (else its MULT = 1 branches were not built); no other cell of
+the list anywhere. A MULT=0 line holding acore_hw_mul fails like any other multiplier. The lines
+tagged long-sim are checked when --only names them (the default run checks the shell's MULT=1
+lines, apb_mult and apb_fold8_mult, pipelined and folded).
 
 Exit 0 when every build passes, 1 when one holds such a cell (its cells are listed) or Yosys fails,
 2 on bad usage or a malformed registry line (scripts/registry.py reads the registry).
@@ -41,6 +49,9 @@ MODULES = (
     "acore_board",
 )
 CELLS = ("$mul", "$macc", "$div", "$mod", "$divfloor", "$modfloor", "$pow")
+# The one module whose $mul cells a MULT=1 line may hold (Yosys names its elaborations
+# $paramod...\acore_hw_mul...).
+HW_MUL = "acore_hw_mul"
 
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
@@ -51,27 +62,43 @@ def rtl_files(root):
     return [os.path.join(root, "rtl", f) for f in registry.rtl_files(root)]
 
 
-def builds(root):
-    """(name, module, [(PARAM, value)]) of every registry line for MODULES."""
-    return [(l.name, l.module, list(l.params)) for l in registry.load(root) if l.module in MODULES]
+def builds(root, long=False):
+    """(name, module, [(PARAM, value)]) of every registry line for MODULES (the lines tagged
+    long-sim only when long: the shell's MULT=1 lines stand for them in the default run)."""
+    return [
+        (l.name, l.module, list(l.params))
+        for l in registry.load(root)
+        if l.module in MODULES and (long or "long-sim" not in l.tags)
+    ]
 
 
 def check(files, top, params, workdir):
-    """(ok, message): Yosys elaborates top and asserts that no cell of CELLS exists."""
+    """(ok, message): Yosys elaborates top and lists its cells of CELLS: none may exist, but with
+    MULT=1 among the params $mul cells inside acore_hw_mul, of which there must be one at least."""
     chp = "".join(f" -chparam {k} {v}" for k, v in params)
     sel = " ".join(f"t:{c}" for c in CELLS)
     log = os.path.join(workdir, f"{top}_{abs(hash(chp))}.log")
+    mlog = log + ".mul"
     script = (
         f"read_verilog -sv {' '.join(files)}; hierarchy -check -top {top}{chp}; proc; "
-        f"tee -o {log} select -list {sel}; select -assert-none {sel}"
+        f"tee -o {log} select -list {sel}; tee -o {mlog} select -list t:$mul"
     )
     p = subprocess.run(
         ["yosys", "-q", "-p", script], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
     )
-    if p.returncode == 0:
-        return True, ""
-    found = open(log).read().strip() if os.path.exists(log) else ""
-    return False, (found or p.stdout.strip())[-3000:]
+    if p.returncode != 0 or not os.path.exists(log) or not os.path.exists(mlog):
+        return False, p.stdout.strip()[-3000:]
+    # One "module/cell" a line.
+    found = [l.strip() for l in open(log) if "/" in l]
+    if not any(k == "MULT" and str(v) == "1" for k, v in params):
+        return (not found), "\n".join(found)[-3000:]
+    muls = {l.strip() for l in open(mlog) if "/" in l}
+    bad = [c for c in found if c not in muls or HW_MUL not in c.split("/")[0]]
+    if bad:
+        return False, f"MULT=1: cells outside {HW_MUL}:\n" + "\n".join(bad)[-3000:]
+    if not muls:
+        return False, "MULT=1 but no $mul cell: the hardware multipliers were not built"
+    return True, f"MULT=1: {len(muls)} $mul cells, all in {HW_MUL}"
 
 
 def main():
@@ -83,7 +110,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=1)
     args = ap.parse_args()
     try:
-        todo = builds(args.root)
+        todo = builds(args.root, long=bool(args.only))
     except registry.RegistryError as e:
         print(f"no_multiplier.py: {e}", file=sys.stderr)
         return 2
@@ -114,6 +141,19 @@ def main():
             print("FAIL control: a product of two inputs was not found")
             return 1
         print("ok   control: a product of two inputs is found ($mul)")
+        # With MULT=1 too, when it is not in acore_hw_mul.
+        ctl1 = os.path.join(tmp, "mul_control1.v")
+        with open(ctl1, "w") as f:
+            f.write(
+                "module mul_control1 #(parameter integer MULT = 0) (input wire [7:0] a, "
+                "input wire [7:0] b, output wire [15:0] p);\n"
+                "  assign p = a * b;\nendmodule\n"
+            )
+        ok, _ = check([ctl1], "mul_control1", [("MULT", "1")], tmp)
+        if ok:
+            print("FAIL control: with MULT=1, a product outside acore_hw_mul was not found")
+            return 1
+        print("ok   control: with MULT=1, a product outside acore_hw_mul is found")
 
         def one(b):
             name, module, params = b
@@ -125,11 +165,15 @@ def main():
             for name, module, params, ok, msg, dt in ex.map(one, todo):
                 desc = f"{name} ({module}{''.join(f' {k}={v}' for k, v in params)})"
                 if ok:
-                    print(f"ok   {desc}: no {'/'.join(CELLS)} cell ({dt:.1f} s)")
+                    what = msg or f"no {'/'.join(CELLS)} cell"
+                    print(f"ok   {desc}: {what} ({dt:.1f} s)")
                 else:
                     fails += 1
                     print(f"FAIL {desc}:\n{msg}")
-    print(f"{len(todo) - fails} of {len(todo)} registered builds have no multiplier cell")
+    print(
+        f"{len(todo) - fails} of {len(todo)} registered builds pass: no multiplier cell (with "
+        f"MULT=1: only in {HW_MUL})"
+    )
     return 1 if fails else 0
 
 

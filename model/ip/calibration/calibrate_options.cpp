@@ -58,6 +58,7 @@ void CalibrateSpec::validate() const {
   if (reference != "theta_ref" && reference != "none")
     throw InputError("--reference " + reference + ": not one of theta_ref, none");
   check_range("--selfcal-harmonics", selfcal_harmonics, 0, 64);
+  check_range("--mult", mult, 0, 1);
   if (reference == "none" && zero_offset != "auto")
     throw InputError("--zero-offset: without a reference (--reference none) the zero is unknown");
 }
@@ -83,6 +84,7 @@ CalibrateOutcome calibrate_recording(const Recording& rec, const CalibrateSpec& 
   cfg.regions = a.regions;
   cfg.xcenter = opt.xcenter;
   cfg.zero_word = a.zero_word ? 1 : 0;
+  cfg.mult = a.mult;
   if (a.iterations) cfg.iterations = *a.iterations;
   // A wider input needs wider offset words (REG_W >= IN_W + 2); the coefficients keep Q3.x.
   cfg.in_w = a.in_w;
@@ -135,6 +137,7 @@ CalibrateOutcome calibrate_recording(const Recording& rec, const CalibrateSpec& 
                 {"fourier_k", cfg.fourier_k},
                 {"fourier", fc.fourier},
                 {"zero_word", cfg.zero_word},
+                {"mult", cfg.mult},
                 {"zero_offset",
                  {{"rad", img.zero_offset},
                   {"deg", img.zero_offset * 180 / M_PI},

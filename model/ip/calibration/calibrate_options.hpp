@@ -33,6 +33,7 @@ struct CalibrateSpec {
   int fourier_guard = DatapathConfig{}.fourier_guard;            // 0..8
   std::string zero_offset = "auto";     // "auto" or an electrical angle in degrees
   bool zero_word = false;               // store the zero offset in one more register word
+  int mult = 0;                         // MULT: 0 adders and shifters, 1 hardware multipliers
   std::string reference = "theta_ref";  // theta_ref | none (self-calibration, no reference encoder)
   int selfcal_harmonics = 0;            // --reference none: harmonics of the error model, 0 = auto
 

@@ -62,6 +62,7 @@ void DatapathConfig::validate(DatapathTop top) const {
   need(!zero_word || angle_w <= reg_w, fmt::format("zero_word=1 needs angle_w={} <= reg_w={} (the "
                                                    "zero position is an angle code in one word)",
                                                    angle_w, reg_w));
+  need(mult == 0 || mult == 1, fmt::format("mult={} must be 0 or 1", mult));
   need(fold == 1 || fold == 2 || fold == 4 || fold == 8,
        fmt::format("fold={} must be 1, 2, 4 or 8", fold));
   need(fold == 1 || mode->runs_on(kEngineFolded),
@@ -78,6 +79,7 @@ void DatapathConfig::validate(DatapathTop top) const {
     need(fourier_k == 0,
          fmt::format("fourier_k={}: the serial core has no Fourier correction", fourier_k));
     need(fold == 1, fmt::format("fold={}: the serial core is not folded", fold));
+    need(mult == 0, fmt::format("mult={}: the serial core multiplies on its adder only", mult));
   }
   need(
       fold == 1 || fourier_k == 0,
@@ -182,6 +184,9 @@ const std::vector<ConfigField>& config_fields() {
        "1: one more register word (the last), the zero position, subtracted from the angle."},
       {&D::fold, "FOLD", "fold", S::kWhenNotOne, false,
        "Clocks per sample of acore_top: 1 pipelined, 2, 4 or 8 folded (the serial core: 1)."},
+      {&D::mult, "MULT", "mult", S::kWhenOne, true,
+       "Products: 0 adders and shifters (each partial product floored), 1 the multiply operator "
+       "(DSP blocks; the full product floored once)."},
   };
   return t;
 }

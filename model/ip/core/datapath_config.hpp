@@ -66,6 +66,12 @@ struct DatapathConfig {
   // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock), 2, 4 or 8
   // (folded: the hardware reused FOLD times per sample; the modes whose row says so).
   int fold = 1;
+  // --- multipliers ---
+  // MULT: how every product of the datapath is built. 0: adders and shifters (the paper's minimum),
+  // each partial product truncated on its own (fx::shift_add_mul); 1: the hardware multiplier
+  // (the Verilog `*`, DSP blocks), the full product then one floor shift (fx::hw_mul). The two
+  // rules differ in the last bits, so the register image records it (when 1).
+  int mult = 0;
 
   // Derived, do not set.
   int d_w() const { return in_w + 1; }              // D_W: c1 - c3
@@ -133,7 +139,7 @@ struct DatapathConfig {
 enum class FieldShown {
   kAlways,
   kWithFourier,  // only with the Fourier stage (fourier_k > 0)
-  kWhenOne,      // only when 1 (zero_word)
+  kWhenOne,      // only when 1 (zero_word, mult)
   kWhenNotOne,   // only when not 1 (fold)
 };
 

@@ -5,6 +5,7 @@
 //   saturate()       clamp to a signed width, sets the stage's overflow flag
 //   shift_add_mul()  the adder/shifter multiplier: one conditional add of a shifted operand per
 //                    bit of the other operand, every partial product truncated (floor) on its own
+//   hw_mul()         the hardware multiplier (MULT = 1): `*`, then one floor shift
 //
 // A coverage build (-DACORE_SAT_COVERAGE: tb/cosim/sat_coverage.cpp compiles its own copy of the
 // model) counts, for every call site of saturate(), the values below, inside and above its range.
@@ -95,6 +96,23 @@ inline int64_t shift_add_mul(int64_t a, int64_t b, int b_w, bool b_signed, int r
       sum += pp & take;
   }
   return sum;
+}
+
+// a * b * 2^-rshift on a hardware multiplier (MULT = 1, the Verilog `*`): the exact product, then
+// one floor shift, floor(a b 2^-rshift) (b two's complement of b_w bits when b_signed, else
+// unsigned). Against shift_add_mul (b unsigned, or rshift <= b_w - 1 so that the negative top bit
+// is exact): that sum is a b 2^-rshift less the fractions its c floors (the set bits of b below
+// rshift) dropped, each in [0, 1), so hw_mul - shift_add_mul = floor(their sum), 0..max(0, c - 1).
+// The product must fit 63 bits (the datapath's operands are at most 40 and 30 bits).
+inline int64_t hw_mul(int64_t a, int64_t b, int b_w, bool b_signed, int rshift) {
+  const int64_t bv =
+      b_signed ? sext(b, b_w) : static_cast<int64_t>(static_cast<uint64_t>(b) & mask(b_w));
+  return shr(a * bv, rshift);
+}
+
+// The product rule of a configuration's MULT: hw_mul (1) or shift_add_mul (0).
+inline int64_t datapath_mul(int mult, int64_t a, int64_t b, int b_w, bool b_signed, int rshift) {
+  return mult ? hw_mul(a, b, b_w, b_signed, rshift) : shift_add_mul(a, b, b_w, b_signed, rshift);
 }
 
 // The truncated part of shift_add_mul, alone: sum over the bits j < r of beta (0 <= beta < 2^r)

@@ -361,7 +361,8 @@ void FixedModel::run_batch(const ChannelCodes* in, size_t n, FixedOutput* out) c
         fmt::format("the batch engine does not run the correction mode {}", mode.name));
   // The vector loops cover the modes with a vector kernel on the raw x; the others run step().
   const BatchKernel correct = kBatchKernels[mode.id];
-  if (!batch_fits_int32() || correct == nullptr || cfg.xcenter) {
+  // MULT = 1 (the hardware product's rule) has no vector kernel either.
+  if (!batch_fits_int32() || correct == nullptr || cfg.xcenter || cfg.mult) {
     for (size_t i = 0; i < n; ++i) out[i] = to_output(step(in[i]));
     return;
   }

@@ -24,7 +24,7 @@ int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathCon
   for (int i = 0; i <= d; ++i) {
     int64_t acc = coef[cfg.term2d(i, d - i)] * g;
     for (int j = d - i - 1; j >= 0; --j) {
-      const int64_t prod = fx::shift_add_mul(acc, v, cfg.s_w, true, v_shift);
+      const int64_t prod = fx::datapath_mul(cfg.mult, acc, v, cfg.s_w, true, v_shift);
       acc = fx::saturate(prod + coef[cfg.term2d(i, j)] * g, cfg.acc_w(), ovf);
     }
     q[i] = acc;
@@ -32,8 +32,8 @@ int64_t poly2d_eval(int64_t x, int64_t v, const int64_t* coef, const DatapathCon
   const PolyArg a = poly_argument(x, cfg);
   int64_t acc = q[d];
   for (int i = d - 1; i >= 0; --i)
-    acc =
-        fx::saturate(fx::shift_add_mul(acc, a.u, cfg.s_w, true, a.shift) + q[i], cfg.acc_w(), ovf);
+    acc = fx::saturate(fx::datapath_mul(cfg.mult, acc, a.u, cfg.s_w, true, a.shift) + q[i],
+                       cfg.acc_w(), ovf);
   return acc;
 }
 

@@ -14,7 +14,8 @@
 //   outer:  acc = Q_d;  acc = saturate(shift_add_mul(acc, u, S_W, U_SH) + Q_i, ACC_W), i = d-1..0
 //   y = saturate(s - round_shr(acc, ACC_F - S_F), S_W)
 // u, U_SH as in poly_correct.hpp (x itself unless XCENTER). Coefficient words in the order of
-// DatapathConfig::term2d: (0,0), (0,1), .., (0,d), (1,0), .., (d,0).
+// DatapathConfig::term2d: (0,0), (0,1), .., (0,d), (1,0), .., (d,0). MULT = 1: every product is
+// hw_mul (the full product, floored once) instead.
 #pragma once
 #include <cstdint>
 

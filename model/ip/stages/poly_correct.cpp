@@ -16,7 +16,9 @@ int64_t poly_eval(int64_t x, const int64_t* coef, const DatapathConfig& cfg, boo
   int64_t acc = coef[cfg.degree] * (int64_t{1} << cfg.acc_guard);
   for (int j = cfg.degree - 1; j >= 0; --j) {
     // = fx::shift_add_mul(acc, a.u, cfg.s_w, true, a.shift): a.shift <= S_F <= S_W - 2.
-    const int64_t prod = fx::shift_add_mul_split(acc, a.u, a.shift);
+    // MULT = 1: fx::hw_mul, the full product floored once.
+    const int64_t prod = cfg.mult ? fx::hw_mul(acc, a.u, cfg.s_w, true, a.shift)
+                                  : fx::shift_add_mul_split(acc, a.u, a.shift);
     acc = fx::saturate(prod + coef[j] * (int64_t{1} << cfg.acc_guard), cfg.acc_w(), ovf);
   }
   return acc;

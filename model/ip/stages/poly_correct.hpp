@@ -8,7 +8,7 @@
 //   u = x - (x >= 0 ? 3/8 : -3/8),  U_SH = S_F - 1     (exact: moving towards zero cannot overflow)
 // i.e. the polynomial is in 2 (x -+ 3/8), centred in its half region and spanning about [-0.75,
 // 0.7]: at degree 7 the raw-x coefficients reach 200 (and need COEF_F = 9), the centred ones stay
-// < 1.2.
+// < 1.2. MULT = 1: hw_mul (the full product, floored once) in place of shift_add_mul.
 #pragma once
 #include <cstdint>
 

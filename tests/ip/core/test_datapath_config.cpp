@@ -83,6 +83,8 @@ TEST(DatapathConfig, EachRuleOnItsEdgeAndOnePast) {
       {"FOURIER_K=4 FOURIER_G=8", "FOURIER_K=4 FOURIER_G=9"},
       {"FOURIER_K=4 FOURIER_CF=38", "FOURIER_K=4 FOURIER_CF=39"},
       {"FOURIER_K=4 FOURIER_CF=17", "FOURIER_K=4 FOURIER_CF=16"},
+      {"MULT=1", "MULT=2"},
+      {"MULT=0", "MULT=-1"},
   };
   for (const auto& [ok, bad] : edges) {
     EXPECT_TRUE(legal(ok)) << ok;
@@ -124,10 +126,11 @@ std::string legacy_describe(const DatapathConfig& c) {
   return fmt::format(
       "correction={} in_w={} reg_w={} s_w={} s_f={} r_shift={} scale_guard={} degree={} regions={} "
       "xcenter={} coef_f={} acc_guard={} acc_int={} iterations={} cordic_guard={} z_w={} "
-      "angle_w={}{}{}{}",
+      "angle_w={}{}{}{}{}",
       correction_name(c.correction), c.in_w, c.reg_w, c.s_w, c.s_f, c.r_shift, c.scale_guard,
       c.degree, c.regions, c.xcenter, c.coef_f, c.acc_guard, c.acc_int, c.iterations,
-      c.cordic_guard, c.z_w, c.angle_w, fourier, c.zero_word ? " zero_word=1" : "", folded);
+      c.cordic_guard, c.z_w, c.angle_w, fourier, c.zero_word ? " zero_word=1" : "", folded,
+      c.mult == 1 ? " mult=1" : "");
 }
 
 // A configuration with every field random (most of them illegal: describe, ==, and the RTL
@@ -138,6 +141,7 @@ DatapathConfig random_config(std::mt19937_64& rng) {
   c.correction = static_cast<int>(rng() % 3);
   c.zero_word = static_cast<int>(rng() % 2);
   c.fold = 1 << (rng() % 4);
+  c.mult = static_cast<int>(rng() % 2);
   if (rng() % 2) c.fourier_k = 0;
   return c;
 }

@@ -59,6 +59,65 @@ TEST(ShiftAddMul, SplitAtTheShiftEqualsTheBitLoop) {
   }
 }
 
+// floor(v / 2^n) of an exact 128-bit product by division, not by a shift.
+int64_t floor_div_pow2_128(__int128 v, int n) {
+  const __int128 d = static_cast<__int128>(1) << n;
+  __int128 q = v / d;
+  if (v % d != 0 && v < 0) --q;
+  return static_cast<int64_t>(q);
+}
+
+TEST(HwMul, IsTheExactProductFlooredOnce) {
+  // MULT = 1: floor(a b / 2^r) of the exact (128-bit) product, b read signed or unsigned from its
+  // b_w bits, at the datapath's shifts (the scaler's 9, the corrections' 14..16) and around them.
+  std::mt19937_64 rng(4);
+  for (int r : {0, 1, 9, 14, 16, 17, 20}) {
+    for (int bw : {18, 20, 22}) {
+      std::uniform_int_distribution<int64_t> a(-(int64_t{1} << 30), int64_t{1} << 30);
+      std::uniform_int_distribution<int64_t> b(-(int64_t{1} << (bw - 1)),
+                                               (int64_t{1} << (bw - 1)) - 1);
+      for (int k = 0; k < 5000; ++k) {
+        const int64_t x = a(rng) >> (k % 20), y = b(rng);
+        ASSERT_EQ(fx::hw_mul(x, y, bw, true, r),
+                  floor_div_pow2_128(static_cast<__int128>(x) * y, r))
+            << x << " " << y << " " << r;
+        const int64_t u = y & ((int64_t{1} << bw) - 1);  // the same bits read unsigned
+        ASSERT_EQ(fx::hw_mul(x, u, bw, false, r),
+                  floor_div_pow2_128(static_cast<__int128>(x) * u, r));
+        // Given as a negative int64, the signed b is the same value.
+        ASSERT_EQ(fx::hw_mul(x, u, bw, true, r), fx::hw_mul(x, y, bw, true, r));
+      }
+    }
+  }
+}
+
+TEST(HwMul, ExceedsTheShiftAddTreeByTheFloorOfTheDroppedFractions) {
+  // hw_mul - shift_add_mul = floor(sum over the set bits j < r of b of frac(a 2^(j-r))), so it is
+  // 0 when b has no bit below r, and 0..c-1 for c such bits; the two rules are different ones.
+  std::mt19937_64 rng(5);
+  const int bw = 18, r = 16;
+  std::uniform_int_distribution<int64_t> a(-(1 << 24), 1 << 24), b(-(1 << 17), (1 << 17) - 1);
+  int differ = 0;
+  for (int k = 0; k < 50000; ++k) {
+    const int64_t x = a(rng), y = b(rng);
+    const int64_t hw = fx::hw_mul(x, y, bw, true, r), sa = fx::shift_add_mul(x, y, bw, true, r);
+    // The dropped fractions in units of 2^-r, summed exactly.
+    int64_t frac = 0;
+    int c = 0;
+    for (int j = 0; j < r; ++j)
+      if ((y >> j) & 1) frac += (x * (int64_t{1} << j)) & ((int64_t{1} << r) - 1), ++c;
+    ASSERT_EQ(hw - sa, frac >> r) << x << " " << y;
+    ASSERT_GE(hw - sa, 0);
+    ASSERT_LE(hw - sa, c > 0 ? c - 1 : 0);
+    const int64_t yh = y & ~((int64_t{1} << r) - 1);  // no bit below r: the rules agree
+    ASSERT_EQ(fx::hw_mul(x, yh, bw, true, r), fx::shift_add_mul(x, yh, bw, true, r));
+    differ += hw != sa;
+    ASSERT_EQ(fx::datapath_mul(1, x, y, bw, true, r), hw);
+    ASSERT_EQ(fx::datapath_mul(0, x, y, bw, true, r), sa);
+  }
+  EXPECT_GT(differ, 40000);  // they differ on most operands
+}
+
 TEST(FixedHelpers, RoundSaturateSignExtend) {
   EXPECT_EQ(fx::round_shr(5, 1), 3);    // 2.5 -> 3 (half up)
   EXPECT_EQ(fx::round_shr(-5, 1), -2);  // -2.5 -> -2 (half up)

@@ -85,57 +85,62 @@ TEST(Poly2d, TermOrderAndWordCount) {
 TEST(Poly2d, NestedHornerMatchesBruteForceDouble) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> cd(-0.95, 0.95), xd(-0.75, 0.75), vd(-0.4, 0.3);
-  for (int degree = 1; degree <= 3; ++degree)
-    for (int xcenter : {0, 1}) {
-      DatapathConfig cfg;
-      cfg.correction = kPoly2d;
-      cfg.degree = degree;
-      cfg.regions = 8;
-      cfg.xcenter = xcenter;
-      cfg.validate();
-      const int terms = cfg.coef_per_curve();
-      const double lsb = std::ldexp(1.0, -cfg.acc_f());
-      // Products: d(d+1)/2 inner and d outer, each amplified by at most 1.6^(d-1) (|4v| <= 1.6).
-      const double bound =
-          (degree * (degree + 1) / 2 + degree) * cfg.s_w * std::pow(1.6, degree - 1) * lsb;
-      double worst = 0;
-      for (int k = 0; k < 3000; ++k) {
-        std::vector<int64_t> coef(terms);
-        for (auto& c : coef) c = std::llround(std::ldexp(cd(rng), cfg.coef_f));
-        const int64_t x = std::llround(std::ldexp(xd(rng), cfg.s_f));
-        const double yo = (k & 1 ? 1.0 : -1.0) * (1.0 + vd(rng));
-        const int64_t y_other = std::llround(std::ldexp(yo, cfg.s_f));
-        const int64_t v = poly2d_v(y_other, cfg);
-        const double xr = std::ldexp(static_cast<double>(x), -cfg.s_f);
-        const double ur = xcenter ? 2 * (xr >= 0 ? xr - 0.375 : xr + 0.375) : xr;
-        const double vr = 4 * std::ldexp(static_cast<double>(v), -cfg.s_f);
-        double want = 0;
-        for (int i = 0; i <= degree; ++i)
-          for (int j = 0; i + j <= degree; ++j)
-            want += std::ldexp(static_cast<double>(coef[cfg.term2d(i, j)]), -cfg.coef_f) *
-                    std::pow(ur, i) * std::pow(vr, j);
-        bool ovf = false;
-        const double got = std::ldexp(
-            static_cast<double>(poly2d_eval(x, v, coef.data(), cfg, &ovf)), -cfg.acc_f());
-        ASSERT_FALSE(ovf);
-        ASSERT_LE(std::fabs(got - want), bound) << "degree " << degree << " sample " << k;
-        worst = std::max(worst, std::fabs(got - want));
-        // The double model of calibration.cpp (nested Horner) evaluates the same polynomial.
-        FloatCoefficients fc;
-        fc.correction = kPoly2d;
-        fc.degree = degree;
-        fc.regions = 8;
-        fc.xcenter = xcenter;
-        fc.poly.assign(cfg.poly_words(), 0.0);
-        for (int t = 0; t < terms; ++t)
-          fc.coef(5, 1, t) = std::ldexp(static_cast<double>(coef[t]), -cfg.coef_f);
-        ASSERT_NEAR(
-            correction_poly(fc, 5, 1, xr, std::ldexp(static_cast<double>(y_other), -cfg.s_f)), want,
-            1e-12);
+  // MULT = 0: every product floors each of its S_W partial products (< S_W LSB); MULT = 1: the
+  // hardware multiplier floors the whole product once (< 1 LSB), so its bound is S_W times tighter.
+  for (int mult : {0, 1})
+    for (int degree = 1; degree <= 3; ++degree)
+      for (int xcenter : {0, 1}) {
+        DatapathConfig cfg;
+        cfg.mult = mult;
+        cfg.correction = kPoly2d;
+        cfg.degree = degree;
+        cfg.regions = 8;
+        cfg.xcenter = xcenter;
+        cfg.validate();
+        const int terms = cfg.coef_per_curve();
+        const double lsb = std::ldexp(1.0, -cfg.acc_f());
+        // Products: d(d+1)/2 inner and d outer, each amplified by at most 1.6^(d-1) (|4v| <= 1.6).
+        const double bound = (degree * (degree + 1) / 2 + degree) * (mult ? 1 : cfg.s_w) *
+                             std::pow(1.6, degree - 1) * lsb;
+        double worst = 0;
+        for (int k = 0; k < 3000; ++k) {
+          std::vector<int64_t> coef(terms);
+          for (auto& c : coef) c = std::llround(std::ldexp(cd(rng), cfg.coef_f));
+          const int64_t x = std::llround(std::ldexp(xd(rng), cfg.s_f));
+          const double yo = (k & 1 ? 1.0 : -1.0) * (1.0 + vd(rng));
+          const int64_t y_other = std::llround(std::ldexp(yo, cfg.s_f));
+          const int64_t v = poly2d_v(y_other, cfg);
+          const double xr = std::ldexp(static_cast<double>(x), -cfg.s_f);
+          const double ur = xcenter ? 2 * (xr >= 0 ? xr - 0.375 : xr + 0.375) : xr;
+          const double vr = 4 * std::ldexp(static_cast<double>(v), -cfg.s_f);
+          double want = 0;
+          for (int i = 0; i <= degree; ++i)
+            for (int j = 0; i + j <= degree; ++j)
+              want += std::ldexp(static_cast<double>(coef[cfg.term2d(i, j)]), -cfg.coef_f) *
+                      std::pow(ur, i) * std::pow(vr, j);
+          bool ovf = false;
+          const double got = std::ldexp(
+              static_cast<double>(poly2d_eval(x, v, coef.data(), cfg, &ovf)), -cfg.acc_f());
+          ASSERT_FALSE(ovf);
+          ASSERT_LE(std::fabs(got - want), bound) << "degree " << degree << " sample " << k;
+          worst = std::max(worst, std::fabs(got - want));
+          // The double model of calibration.cpp (nested Horner) evaluates the same polynomial.
+          FloatCoefficients fc;
+          fc.correction = kPoly2d;
+          fc.degree = degree;
+          fc.regions = 8;
+          fc.xcenter = xcenter;
+          fc.poly.assign(cfg.poly_words(), 0.0);
+          for (int t = 0; t < terms; ++t)
+            fc.coef(5, 1, t) = std::ldexp(static_cast<double>(coef[t]), -cfg.coef_f);
+          ASSERT_NEAR(
+              correction_poly(fc, 5, 1, xr, std::ldexp(static_cast<double>(y_other), -cfg.s_f)),
+              want, 1e-12);
+        }
+        std::printf("poly2d %sd=%d xcenter=%d: worst |%s - double| %.2f LSB (bound %.1f LSB)\n",
+                    mult ? "mult=1 " : "", degree, xcenter, mult ? "hw_mul" : "shift-add",
+                    worst / lsb, bound / lsb);
       }
-      std::printf("poly2d d=%d xcenter=%d: worst |shift-add - double| %.2f LSB (bound %.1f LSB)\n",
-                  degree, xcenter, worst / lsb, bound / lsb);
-    }
 }
 
 // A poly2d image whose v terms are zero is the 1-D poly image of the same degree: Q_i reduces to

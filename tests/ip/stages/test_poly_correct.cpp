@@ -122,6 +122,53 @@ TEST(PolyCorrect, XcenterArgumentIsTwiceTheDistanceToThreeEighths) {
   EXPECT_EQ(poly_eval(-x, c, cfg, nullptr), (1000 + 1000 + 1000 - 100) << cfg.acc_guard);
 }
 
+// floor(v / 2^n) by 128-bit division, not by a shift.
+int64_t floor_div_pow2(__int128 v, int n) {
+  const __int128 d = static_cast<__int128>(1) << n;
+  __int128 q = v / d;
+  if (v % d != 0 && v < 0) --q;
+  return static_cast<int64_t>(q);
+}
+
+TEST(PolyCorrect, HardwareMultiplierFloorsEachWholeProductOnce) {
+  // MULT = 1: acc_j = saturate(floor(acc_{j+1} u / 2^U_SH) + (a_j << ACC_G), ACC_W), the product
+  // exact before its one floor; against that recurrence in 128-bit division, any x and degree,
+  // raw and centred arguments.
+  DatapathConfig cfg;
+  cfg.mult = 1;
+  std::mt19937_64 rng(52);
+  std::uniform_int_distribution<int64_t> coef_dist(-131072, 131071), x_dist(-65536, 65536);
+  int differ = 0;
+  for (int xc : {0, 1}) {
+    cfg.regions = xc ? 8 : 4;
+    cfg.xcenter = xc;
+    for (int degree : {1, 3, 5, 7}) {
+      cfg.degree = degree;
+      for (int k = 0; k < 5000; ++k) {
+        int64_t coef[8];
+        for (int j = 0; j <= degree; ++j) coef[j] = coef_dist(rng) >> (k % 6);
+        const int64_t x = x_dist(rng);
+        const int64_t centre = int64_t{3} << (cfg.s_f - 3);
+        const int64_t u = !xc ? x : x >= 0 ? x - centre : x + centre;
+        const int sh = xc ? cfg.s_f - 1 : cfg.s_f;
+        const int64_t g = int64_t{1} << cfg.acc_guard;
+        bool ovf_want = false;
+        int64_t acc = coef[degree] * g;
+        for (int j = degree - 1; j >= 0; --j)
+          acc = fx::saturate(floor_div_pow2(static_cast<__int128>(acc) * u, sh) + coef[j] * g,
+                             cfg.acc_w(), &ovf_want);
+        bool ovf = false;
+        ASSERT_EQ(poly_eval(x, coef, cfg, &ovf), acc) << degree << " " << x;
+        ASSERT_EQ(ovf, ovf_want);
+        DatapathConfig adders = cfg;
+        adders.mult = 0;
+        differ += poly_eval(x, coef, adders, nullptr) != acc;
+      }
+    }
+  }
+  EXPECT_GT(differ, 20000);  // the shift-add tree's rule is a different one
+}
+
 TEST(PolyCorrect, AccumulatorSaturatesAtAccW) {
   DatapathConfig cfg;
   cfg.degree = 1;

@@ -83,6 +83,32 @@ TEST(Scaler, AnyReciprocalMatchesTheFloorPerPartialProductThenRounding) {
   }
 }
 
+TEST(Scaler, HardwareMultiplierFloorsTheWholeProductOnce) {
+  // MULT = 1: p = floor(t R / 2^(R_SHIFT - SCALE_G)) by division, then the same rounding.
+  DatapathConfig cfg;
+  cfg.mult = 1;
+  const int rs = cfg.r_shift - cfg.scale_guard;
+  std::mt19937_64 rng(43);
+  std::uniform_int_distribution<int64_t> d_dist(-65536, 65535), o_dist(-3000, 3000),
+      r_dist(0, (int64_t{1} << cfg.reg_w) - 1);
+  int differ = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const int64_t d = d_dist(rng), o = o_dist(rng), r = r_dist(rng) >> (k % 8);
+    const int64_t p = floor_div_pow2((d - o) * r, rs);
+    bool ovf_want = false;
+    const int64_t s_want =
+        fx::saturate(round_half_up(std::ldexp(static_cast<long double>(p), -cfg.scale_guard)),
+                     cfg.s_w, &ovf_want);
+    bool ovf = false;
+    ASSERT_EQ(scale_curve(d, o, r, cfg, &ovf), s_want) << d << " " << o << " " << r;
+    ASSERT_EQ(ovf, ovf_want);
+    DatapathConfig adders = cfg;
+    adders.mult = 0;
+    differ += scale_curve(d, o, r, adders, nullptr) != s_want;
+  }
+  EXPECT_GT(differ, 1000);  // the rule is a different one: MULT = 0 rounds some samples apart
+}
+
 TEST(Scaler, SaturatesAtSWOnBothSidesAndTheFlagIsSticky) {
   const DatapathConfig cfg;
   const int64_t one = int64_t{1} << cfg.r_shift;  // R = 2^13: s = t (gain 1)
