@@ -111,6 +111,21 @@ DEVICE_CASES = [
         r"synth/devices.toml:\d+: capacity: dsp: expected a count >= 0",
     ),
     ("seed = 1", 'seed = "1"', r"synth/devices.toml:\d+: seed: expected int"),
+    (
+        'pins = ["52", "3",',
+        'pins = ["52", "52",',
+        r"synth/devices.toml:\d+: pins: 53 pins, repeated or more than the capacity's user_io",
+    ),
+    (
+        'pins = ["52", "3", "11"',
+        'pinz = ["52", "3", "11"',
+        r"synth/devices.toml:\d+: \[device.gw1n9\] has no field 'pins'",
+    ),
+    (
+        "constraint_line = 'IO_LOC \"{port}\" {pin};'",
+        "constraint_line = 'IO_LOC {port} {pin};'",
+        r"synth/devices.toml:\d+: constraint_line: 'IO_LOC \{port\} \{pin\};' must name",
+    ),
 ]
 
 fails = []
