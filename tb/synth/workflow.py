@@ -10,8 +10,8 @@ usage: workflow.py dry ROOT ANGLECORE WORKDIR
   workflow before any job (non-zero exit, the sweep's message).
 usage: workflow.py small ROOT ANGLECORE WORKDIR [--cores N]
   CTest design_space_small (configuration Long, label design_space): the real run of a small grid
-  (workflow/small_grid.json: the uncorrected top folded by 8) on every placed family's first
-  device, seed 1, `--cores 2`: every job's report exists, every device's table has the point with
+  (workflow/small_grid.json: the uncorrected top folded by 8) on the iCE40 HX8K and the ECP5
+  LFE5U-25F, seed 1, `--cores 2`: every job's report exists, every device's table has the point with
   its clock rate, and the page joins them.
 Exit 1 when a check fails, 2 on bad usage.
 """
@@ -26,6 +26,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
 import devices
+
+SMALL_DEVICES = ["hx8k", "lfe5u25"]
 
 
 def snakemake(root):
@@ -81,11 +83,9 @@ def dry(root, anglecore, workdir):
 def small(root, anglecore, workdir, cores):
     fails = []
     t = devices.load(root)
-    devs, seen = [], set()
-    for d in t.devices.values():
-        if d.family.name not in seen:
-            seen.add(d.family.name)
-            devs.append(d.name)
+    # The HX8K and the ECP5: the small grid's folded top keeps its memories in block RAM, which
+    # the GW1N-9's pair of tools does not place yet (docs/synthesis.md "The devices table").
+    devs = SMALL_DEVICES
     t0 = time.time()
     r = run(
         root,
