@@ -27,6 +27,7 @@ area-only family that has no device (xc7: no clock). Per line:
 import argparse
 import csv
 import os
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -122,6 +123,11 @@ def build(root):
                 why = f"does not fit ({lc[0]}/{lc[1]} {fam.pnr_cell_label})"
             bram = registry.pnr_count(log, fam.pnr_bram)
             dsp = registry.pnr_count(log, fam.pnr_dsp) if dev.capacity["dsp"] else None
+            if why == "failed":
+                # The program stopped (its counts are not the design's): its message and Yosys's.
+                err = re.findall(r"^ERROR: (.*)$", open(log).read(), re.MULTILINE)
+                why = f"failed: {err[-1].strip()}" if err else why
+                bram = dsp = lc = None
             rows.append(row(dev.short, fam, line, stat, lc, bram, dsp, fmax, why, clocks, acc))
     placed_families = {d.family.name for d in t.devices.values()}
     for fam in t.families.values():

@@ -638,9 +638,13 @@ def pnr_result(path, dev):
     lc = re.findall(rf"{re.escape(dev.family.pnr_cell)}:\s+(\d+)/\s*(\d+)", text)
     lc = (int(lc[-1][0]), int(lc[-1][1])) if lc else None
     if not fmax:
+        # Larger than the device: a utilisation line over its total, or the placer's own words;
+        # any other stop (a program's error) is a failure.
+        counts = re.findall(r"^Info:\s+\w+:\s+(\d+)/\s*(\d+)", text, re.MULTILINE)
+        over = any(int(u) > int(n) for u, n in counts)
         why = (
             "does not fit"
-            if re.search(r"(Unable to place|utilisation|too many)", text, re.IGNORECASE)
+            if over or re.search(r"(Unable to place|too many)", text, re.IGNORECASE)
             else "failed"
         )
         return None, lc, why
