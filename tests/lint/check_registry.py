@@ -273,6 +273,9 @@ def check_capacities():
                         f"port bits than the {len(dev.pins)} pins of synth/devices.toml {dev.name}"
                     )
                 continue
+            if "Device utilisation" not in text and re.search(r"^ERROR: ", text, re.MULTILINE):
+                # The program stopped before counting (the datasheet shows its error): no totals.
+                continue
             for key, line in (
                 ("logic_cells", dev.family.pnr_cell),
                 ("bram_blocks", dev.family.pnr_bram),
