@@ -1,59 +1,60 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The design-space sweep, one command: accuracy of every configuration of a grid
-# (anglecore sweep), its area and clock rate (scripts/design_space_hw.py: Yosys + nextpnr-ice40),
-# then the table and the Pareto plots (scripts/design_space_report.py).
+# The design-space sweep on this machine, one command: the workflow workflow/Snakefile (accuracy of
+# every configuration of a grid, area and clock rate on each device and seed, then the tables and
+# Pareto plots) run by the project's Snakemake (.venv, scripts/setup.sh) after building anglecore.
 #
-#   scripts/design_space.sh [--out DIR] [--jobs N] [--grid FILE.json] [--quick] [--no-synth]
-#   scripts/design_space.sh --shard i/N [...]   one shard of a batch job (e.g. a cluster job array:
-#                                               --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)
-#   scripts/design_space.sh --merge DIR         join the shards of DIR into the table and plots
+#   scripts/design_space.sh [--out DIR] [--jobs N] [--grid FILE.json|--quick] [--no-synth]
+#                           [--devices D[,D...]] [--seeds S[,S...]] [-- SNAKEMAKE-OPTIONS...]
 #
-# DIR defaults to out/design_space. Writes DIR/design_space.md, .csv and pareto.png. Synthesis is
-# cached in DIR/cache/ (a rerun only pays for new configurations); the full default grid takes
-# about an hour on two cores, --no-synth a few seconds.
+# DIR defaults to out/design_space; --jobs is Snakemake's --cores (default 1); --no-synth: accuracy
+# only (seconds); --devices: devices of synth/devices.toml (default: every one); --seeds: nextpnr
+# seeds (default 1). Writes DIR/design_space.md (every device's table and plots) and DIR/DEVICE/
+# (design_space.md, .csv, pareto.png). A rerun only runs what is missing. On a cluster, the same
+# workflow through a profile: docs/synthesis.md "Design space".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=out/design_space
 jobs=1
-shard=""
-merge=""
-synth=1
-sweep_args=()
-usage() { sed -n '3,16p' "$0" | sed 's/^# \{0,1\}//'; }
+config=()
+usage() { sed -n '3,15p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case $1 in
     --out)
-      out=$2
+      out=${2:?--out needs a directory}
       shift 2
       ;;
     --jobs | -j)
-      jobs=$2
-      shift 2
-      ;;
-    --shard)
-      shard=$2
-      shift 2
-      ;;
-    --merge)
-      merge=$2
+      jobs=${2:?--jobs needs a number}
       shift 2
       ;;
     --grid)
-      sweep_args+=(--grid "$2")
+      config+=("grid=${2:?--grid needs a file}")
       shift 2
       ;;
     --quick)
-      sweep_args+=(--quick)
+      config+=(grid=quick)
       shift
       ;;
     --no-synth)
-      synth=0
+      config+=(devices=)
       shift
+      ;;
+    --devices)
+      config+=("devices=${2:?--devices needs device names}")
+      shift 2
+      ;;
+    --seeds)
+      config+=("seeds=${2:?--seeds needs seeds}")
+      shift 2
       ;;
     -h | --help)
       usage
       exit 0
+      ;;
+    --)
+      shift
+      break
       ;;
     *)
       echo "design_space.sh: unknown option '$1'" >&2
@@ -62,18 +63,11 @@ while [ $# -gt 0 ]; do
       ;;
   esac
 done
-report() { /usr/bin/python3 "$root/scripts/design_space_report.py" "$1" && echo "wrote $1/design_space.md, $1/pareto.png"; }
-if [ -n "$merge" ]; then
-  report "$merge"
-  exit
-fi
+[ -x "$root/.venv/bin/snakemake" ] || {
+  echo "design_space.sh: $root/.venv/bin/snakemake missing (run scripts/setup.sh)" >&2
+  exit 2
+}
 "$root/scripts/build.sh" anglecore >/dev/null
-"$root/build/anglecore" sweep --out "$out" --jobs "$jobs" --shard "${shard:-0/1}" "${sweep_args[@]}"
-if [ "$synth" = 1 ]; then
-  python3 "$root/scripts/design_space_hw.py" "$root" "$out" "${shard:-0/1}" --jobs "$jobs"
-fi
-if [ -z "$shard" ]; then
-  report "$out"
-else
-  echo "shard $shard done; after every shard: scripts/design_space.sh --merge $out"
-fi
+out=$(realpath -m "$out")
+exec "$root/.venv/bin/snakemake" -s "$root/workflow/Snakefile" --cores "$jobs" \
+  --config out="$out" "${config[@]}" "$@"

@@ -22,6 +22,14 @@ usage: design_space_hw.py ROOT DIR SHARD [--jobs N]
          (scripts/registry.py rtl_constants).
   Results are cached in DIR/cache/, so a rerun (or another shard on the same file system) only
   synthesizes what is new. Progress on stderr.
+
+usage: design_space_hw.py one ROOT ACCURACY.jsonl DEVICE SEED OUT.json
+  one job of the workflow (workflow/Snakefile): the one point of ACCURACY.jsonl on DEVICE (a device
+  of synth/devices.toml: its family's synthesis, its place-and-route program) with placement seed
+  SEED; writes OUT.json (the line above, plus "index" and "seed"; cache beside it)
+usage: design_space_hw.py merge OUT_DIR RESULT.json ...
+  joins the jobs of one device into OUT_DIR/hw-0-of-1.jsonl (per configuration the seed with the
+  highest Fmax, every seed's Fmax in "fmax_by_seed")
 """
 
 import concurrent.futures
@@ -42,8 +50,8 @@ def rtl_files(root):
     return [os.path.join(root, "rtl", f) for f in registry.rtl_files(root)]
 
 
-def synth_area(root, params):
-    fam = registry.device(root).family
+def synth_area(root, params, device=None):
+    fam = registry.device(root, device).family
     chp = " ".join(f"-chparam {k} {v}" for k, v in (p.split("=", 1) for p in params.split()))
     with tempfile.TemporaryDirectory(prefix="acore_area_") as tmp:
         stat = os.path.join(tmp, "stat.txt")
@@ -73,16 +81,27 @@ def synth_area(root, params):
     }
 
 
-def measure(root, cache, params):
-    dev = registry.device(root).name
+def measure(root, cache, params, device=None, seed=None):
+    dev = registry.device(root, device).name
+    # Placement options of stage_fmax.py: the device, and the seed when not the table's.
+    opts = ["--device", dev] + (["--seed", str(seed)] if seed is not None else [])
     key = hashlib.sha1(
-        (params + "|" + dev + "|" + "".join(open(f).read() for f in rtl_files(root))).encode()
+        (
+            params
+            + "|"
+            + dev
+            + ("" if seed is None else f"|seed {seed}")
+            + "|"
+            + "".join(open(f).read() for f in rtl_files(root))
+        ).encode()
     ).hexdigest()[:16]
     path = os.path.join(cache, f"top-{key}.json")
     if os.path.exists(path):
         return json.load(open(path))
     res = {"final_params": params, "device": dev}
-    res.update(synth_area(root, params))
+    if seed is not None:
+        res["seed"] = seed
+    res.update(synth_area(root, params, dev))
     p = dict(kv.split("=", 1) for kv in params.split())
     if int(p.get("FOLD", 1)) > 1:
         # A folded top is made to fit: place and route it whole.
@@ -90,6 +109,7 @@ def measure(root, cache, params):
             [
                 sys.executable,
                 os.path.join(HERE, "stage_fmax.py"),
+                *opts,
                 "--whole",
                 "acore_top",
                 root,
@@ -109,13 +129,13 @@ def measure(root, cache, params):
         res["slowest"] = "acore_top" if wh.get("fmax_mhz") else None
         res["all_stages_fit"] = bool(wh.get("fits"))
         res["stages"] = []
-        with open(path, "w") as f:
-            json.dump(res, f)
+        write_atomic(path, res)
         return res
     out = subprocess.run(
         [
             sys.executable,
             os.path.join(HERE, "stage_fmax.py"),
+            *opts,
             root,
             os.path.join(cache, "stages"),
             *params.split(),
@@ -151,6 +171,7 @@ def measure(root, cache, params):
             [
                 sys.executable,
                 os.path.join(HERE, "stage_fmax.py"),
+                *opts,
                 "--whole",
                 "acore_serial_top",
                 root,
@@ -170,13 +191,64 @@ def measure(root, cache, params):
         sr = json.loads(out.stdout)
         sr["cycles"] = registry.rtl_constants(root, "acore_serial_top", serial)["CYCLES"]
         res["serial"] = sr
-    with open(path, "w") as f:
-        json.dump(res, f)
+    write_atomic(path, res)
     return res
+
+
+def write_atomic(path, obj):
+    """A result appears whole or not at all (the jobs of a sweep share the cache)."""
+    tmp = f"{path}.{os.getpid()}.tmp"
+    with open(tmp, "w") as f:
+        json.dump(obj, f)
+    os.replace(tmp, path)
+
+
+def one(root, acc, device, seed, out):
+    """One job of the design-space workflow (workflow/Snakefile): the configuration of the one
+    point of an accuracy file on one device with one seed, written to OUT (its own report)."""
+    rows = [json.loads(l) for l in open(acc) if l.strip()]
+    if len(rows) != 1:
+        sys.exit(f"design_space_hw.py: {acc}: {len(rows)} points, expected one")
+    r = rows[0]
+    params = r.get("final_params")
+    if not params:  # calibration failed: nothing to synthesize (the report says why)
+        res = {"index": r.get("index"), "error": r.get("error", "no final_params")}
+    else:
+        cache = os.path.join(os.path.dirname(os.path.abspath(out)), "cache")
+        os.makedirs(os.path.join(cache, "stages"), exist_ok=True)
+        res = dict(measure(root, cache, params, device, seed), index=r.get("index"))
+        res["seed"] = seed
+    write_atomic(out, res)
+
+
+def merge(out_dir, files):
+    """The workflow's per-device join: every job's result of one device into
+    OUT_DIR/hw-0-of-1.jsonl, one line per configuration, the seed with the highest Fmax (every
+    seed's in "fmax_by_seed"; placement seeds move nextpnr's Fmax by a few MHz)."""
+    best = {}
+    for f in files:
+        r = json.load(open(f))
+        if "error" in r or not r.get("final_params"):
+            continue
+        p = r["final_params"]
+        b = best.setdefault(p, dict(r, fmax_by_seed={}))
+        b["fmax_by_seed"][str(r.get("seed"))] = r.get("fmax_mhz")
+        if (r.get("fmax_mhz") or 0) > (b.get("fmax_mhz") or 0):
+            best[p] = dict(r, fmax_by_seed=b["fmax_by_seed"])
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "hw-0-of-1.jsonl"), "w") as f:
+        for r in best.values():
+            f.write(json.dumps(r) + "\n")
 
 
 def main():
     args = sys.argv[1:]
+    if args[:1] == ["one"] and len(args) == 6:
+        one(args[1], args[2], args[3], int(args[4]), args[5])
+        return
+    if args[:1] == ["merge"] and len(args) >= 2:
+        merge(args[1], args[2:])
+        return
     jobs = 1
     if "--jobs" in args:
         i = args.index("--jobs")

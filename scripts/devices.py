@@ -15,6 +15,7 @@ import os
 import re
 import shutil
 import sys
+import tempfile
 
 import tomllib
 
@@ -37,6 +38,7 @@ PNR_FIELDS = {
     "pnr_dsp": str,
     "unconstrained_log": str,
     "measured_with": str,
+    "constraint_line": str,
 }
 DEVICE_FIELDS = {
     "family": str,
@@ -54,14 +56,19 @@ DEVICE_FIELDS = {
     "bare_suffix": str,
     "wrapper_doc": str,
     "capacity": dict,
+    "synth_options": list,
+    "pins": list,
     "tested": bool,
 }
-# Optional fields of a device.
-DEVICE_OPTIONAL = {"synth_options": list}
+CLOCK_PORT = r"clk(_i)?"  # the placed designs' clock input, given the first of a device's pins
 
 
 class DevicesError(Exception):
     pass
+
+
+class PinsError(Exception):
+    """A design with more ports than the device has free pins: it does not fit the package."""
 
 
 class Family:
@@ -77,10 +84,11 @@ class Family:
         for k in PNR_FIELDS:
             setattr(self, k, f.get(k))
 
-    def yosys_command(self, top, netlist=None, extra=()):
-        """The Yosys synthesis command of the top (writing the netlist to place when given; extra:
-        a device's own options)."""
+    def yosys_command(self, top, netlist=None, device=None):
+        """The Yosys synthesis command of the top (writing the netlist to place when given; with a
+        device's own options, such as the UP5K's hard multipliers, when given)."""
         out = [a.format(file=netlist) for a in self.netlist] if netlist else []
+        extra = list(device.synth_options) if device else []
         return " ".join([self.synth, *self.options, *extra, "-top", top, *out])
 
     def count(self, cells, classes):
@@ -132,15 +140,52 @@ class Device:
                 placed.add(m.group(1))
         return placed
 
-    def pnr_command(self, netlist, stem, log, constraint, freq, seed):
+    def pin_constraints(self, ports, path):
+        """Writes a constraint file placing the ports (the port bits a constraint line names) on
+        the device's free pins, the clock on the first (a global clock input), and returns its
+        path: for a family whose program places no unconstrained port. PinsError when there are
+        more ports than pins."""
+        if len(ports) > len(self.pins):
+            raise PinsError(
+                f"{len(ports)} port bits, {len(self.pins)} free user pins of the {self.title} "
+                f"{self.package} (synth/devices.toml [device.{self.name}] pins)"
+            )
+        clock = sorted(p for p in ports if re.fullmatch(CLOCK_PORT, p))
+        order = clock + sorted(set(ports) - set(clock), key=_port_key)
+        with open(path, "w") as f:
+            f.write(
+                f"{self.family.constraint_comment} written by scripts/registry.py from "
+                f"synth/devices.toml [device.{self.name}] pins\n"
+            )
+            f.writelines(
+                self.family.constraint_line.format(port=port, pin=pin) + "\n"
+                for port, pin in zip(order, self.pins)
+            )
+        return path
+
+    def program(self, root):
+        """The place-and-route program's path: on PATH, or in the project's .venv/bin (the PyPI
+        builds of nextpnr that scripts/setup.sh pins); None when neither has it."""
+        venv = os.path.join(root, ".venv", "bin")
+        return shutil.which(self.family.pnr) or shutil.which(self.family.pnr, path=venv)
+
+    def pnr_command(self, netlist, stem, log, constraint, freq, seed, root=None):
         """The place-and-route command line (a list of words)."""
+        # nextpnr's WebAssembly builds see a private directory of their own at /tmp: a file under
+        # the system's temporary directory is named relative to the working directory instead.
+        tmp = os.path.realpath(tempfile.gettempdir()) + os.sep
+
+        def rel(p):
+            return os.path.relpath(p) if p and os.path.realpath(p).startswith(tmp) else p
+
+        netlist, stem, log, constraint = rel(netlist), rel(stem), rel(log), rel(constraint)
         pins = (
             [a.format(file=constraint) for a in self.family.constrained]
             if constraint
             else list(self.family.unconstrained)
         )
         return (
-            [self.family.pnr]
+            [(self.program(root) if root else None) or self.family.pnr]
             + list(self.pnr_args)
             + ["--json", netlist]
             + [a.format(stem=stem) for a in self.family.pnr_output]
@@ -149,14 +194,14 @@ class Device:
             + ["--timing-allow-fail", "--seed", str(seed), "-l", log]
         )
 
-    def tool_missing(self):
+    def tool_missing(self, root):
         """Why the device cannot be placed on this machine ("" when it can)."""
-        if shutil.which(self.family.pnr):
+        if self.program(root):
             return ""
         untested = " (the row has datasheet fields only: no report made with it yet)"
         return (
             f"device {self.name} ({self.title}): its place-and-route program {self.family.pnr} is "
-            f"not installed{'' if self.tested else untested}"
+            f"not installed (scripts/setup.sh installs it){'' if self.tested else untested}"
         )
 
 
@@ -188,6 +233,12 @@ class Table:
         """The Family or Device a flow names (None: not a synthesis flow)."""
         flow = self.canonical(flow)
         return self.families.get(flow) or self.devices.get(flow)
+
+
+def _port_key(port):
+    """Name, then bit index: a bus's bits on neighbouring pins in order."""
+    m = re.fullmatch(r"(.*)\[(\d+)\]", port)
+    return (m.group(1), int(m.group(2))) if m else (port, -1)
 
 
 def article(text):
@@ -308,6 +359,17 @@ def _load(root):
                     )
         if placed:
             _regex(where, t, "constraint_pin", f["constraint_pin"], groups=1)
+            # The lines the flow writes must be lines it reads back (the port they place).
+            try:
+                line = f["constraint_line"].format(port="x_i[3]", pin="1")
+            except (KeyError, IndexError, ValueError):
+                line = None
+            m = line and re.search(f["constraint_pin"], line)
+            if not m or m.group(1) != "x_i[3]":
+                raise DevicesError(
+                    f"{where(t, 'constraint_line')}: constraint_line: '{f['constraint_line']}' "
+                    "must name {port} and {pin} in a line that constraint_pin reads back"
+                )
         families[name] = Family(name, f)
     devices = {}
     for name, d in data.get("device", {}).items():
@@ -321,12 +383,11 @@ def _load(root):
         if not isinstance(d, dict):
             raise DevicesError(f"{where(t)}: device '{name}' is not a table")
         _check(where, t, d, DEVICE_FIELDS)
-        _check(where, t, d, DEVICE_OPTIONAL, required=False)
         for k in d:
-            if k not in DEVICE_FIELDS and k not in DEVICE_OPTIONAL:
+            if k not in DEVICE_FIELDS:
                 raise DevicesError(
                     f"{where(t, k)}: {k}: unknown field of a device (known: "
-                    f"{', '.join(list(DEVICE_FIELDS) + list(DEVICE_OPTIONAL))})"
+                    f"{', '.join(DEVICE_FIELDS)})"
                 )
         fam = families.get(d["family"])
         if fam is None or not fam.placed:
@@ -363,6 +424,16 @@ def _load(root):
         if d["constraints"] and not glob.glob(os.path.join(root, d["constraints"])):
             raise DevicesError(
                 f"{where(t, 'constraints')}: constraints: '{d['constraints']}' names no file"
+            )
+        if not fam.unconstrained and not d["pins"]:
+            raise DevicesError(
+                f"{where(t, 'pins')}: pins: {fam.pnr} places no unconstrained port (the family's "
+                "unconstrained is empty): the device lists its free user pins"
+            )
+        if len(set(d["pins"])) != len(d["pins"]) or len(d["pins"]) > d["capacity"]["user_io"]:
+            raise DevicesError(
+                f"{where(t, 'pins')}: pins: {len(d['pins'])} pins, repeated or more than the "
+                f"capacity's user_io ({d['capacity']['user_io']})"
             )
         devices[name] = Device(name, d, fam)
     # Flow names and report names must not collide.

@@ -30,6 +30,8 @@ usage: registry.py lines [--flow F[,F...]] [--module M] [--names N[,N...]] [--ta
        registry.py pnr-command DEVICE DESIGN
          the place-and-route command of the design's netlist (synth/build/DESIGN.json), one word per
          line; the device's first constraint file placing every port of the netlist, else none
+         (or, where the program needs every pin placed, synth/build/DESIGN.pins from the device's
+         free pins); exit 3 when the ports outnumber those pins (the log says so: does not fit)
 Exit 2 on a malformed registry line (file, line and field named), a malformed devices table or an
 unknown name.
 
@@ -507,7 +509,7 @@ def synth_tasks(root, names=None, flows=None):
         params = " ".join(f"{k}={v}" for k, v in d.params)
         placed = [t.devices[f] for f in d.flows if f in t.devices]
         for dev in placed:
-            why = dev.tool_missing()
+            why = dev.tool_missing(root)
             if why:
                 raise RegistryError(
                     f"{why}: cannot place {d.name} (scripts/synth.sh -f selects other flows)"
@@ -542,7 +544,7 @@ def synth_tasks(root, names=None, flows=None):
                     nl,
                     d.top,
                     d.source or "-",
-                    fam.yosys_command(d.top, nl, dev.synth_options),
+                    fam.yosys_command(d.top, nl, dev),
                     params,
                 )
             )
@@ -579,8 +581,26 @@ def pnr_command(root, flow, design):
         (c for c in dev.constraint_files(root) if ports <= dev.constraint_ports(c)), None
     )
     stem = os.path.join(root, "synth", "build", design)
+    if constraint is None and not dev.family.unconstrained:
+        # The program places no unconstrained port: the device's free pins, in a file of its own
+        # (devices.PinsError when the ports outnumber them).
+        constraint = dev.pin_constraints(ports, stem + ".pins")
     t = table(root)
-    return dev.pnr_command(nl, stem, report(root, dev.name, design), constraint, t.freq, t.seed)
+    log = report(root, dev.name, design)
+    return dev.pnr_command(nl, stem, log, constraint, t.freq, t.seed, root)
+
+
+def pins_log(root, flow, design, why):
+    """The place-and-route log of a design whose ports outnumber the device's pins: the count as
+    nextpnr's utilisation lines give theirs (pnr_result reads "does not fit")."""
+    dev = device(root, flow)
+    used, have = re.match(r"(\d+) port bits, (\d+) ", why).groups()
+    with open(report(root, dev.name, design), "w") as f:
+        f.write(
+            f"Info: not placed: {why}\nInfo: Device utilisation:\n"
+            f"Info: \t{'USER_IO':>20}: {int(used):>7}/{int(have):>7} "
+            f"{100 * int(used) // int(have):>5}%\n"
+        )
 
 
 # --- Reports (synth/reports/, written by scripts/synth.sh) -------------------------------------
@@ -621,13 +641,28 @@ def pnr_result(path, dev):
     lc = re.findall(rf"{re.escape(dev.family.pnr_cell)}:\s+(\d+)/\s*(\d+)", text)
     lc = (int(lc[-1][0]), int(lc[-1][1])) if lc else None
     if not fmax:
+        # Larger than the device: a utilisation line over its total, or the placer's own words;
+        # any other stop (a program's error) is a failure.
+        counts = re.findall(r"^Info:\s+\w+:\s+(\d+)/\s*(\d+)", text, re.MULTILINE)
+        over = any(int(u) > int(n) for u, n in counts)
         why = (
             "does not fit"
-            if re.search(r"(Unable to place|utilisation|too many)", text, re.IGNORECASE)
+            if over or re.search(r"(Unable to place|too many)", text, re.IGNORECASE)
             else "failed"
         )
         return None, lc, why
     return float(fmax[-1]), lc, ""
+
+
+def pnr_count(path, name):
+    """(used, available) of one utilisation line of a nextpnr log (ICESTORM_DSP, MULT18X18D, ...),
+    or None."""
+    if not name or not os.path.exists(path):
+        return None
+    m = re.findall(
+        rf"^Info:\s+{re.escape(name)}:\s+(\d+)/\s*(\d+)", open(path).read(), re.MULTILINE
+    )
+    return (int(m[-1][0]), int(m[-1][1])) if m else None
 
 
 def pnr_constrained(path, dev):
@@ -718,7 +753,13 @@ def main(argv):
             for task in synth_tasks(args.root, split(args.names), split(args.flows)):
                 print("\t".join(task))
         else:
-            print("\n".join(pnr_command(args.root, args.device, args.design)))
+            try:
+                print("\n".join(pnr_command(args.root, args.device, args.design)))
+            except devices.PinsError as e:
+                # Not an error of the flow: a measurement (scripts/synth.sh: "does not fit").
+                pins_log(args.root, args.device, args.design, str(e))
+                print(f"registry: {args.design}: does not fit the pins: {e}", file=sys.stderr)
+                return 3
     except RegistryError as e:
         print(f"registry: {e}", file=sys.stderr)
         return 2

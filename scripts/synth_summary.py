@@ -136,9 +136,10 @@ with concurrent.futures.ThreadPoolExecutor(2) as ex:
         )
     )
 SERIAL_CYCLES = times["serial"][1] if "serial" in times else None
-# The families with a column: those a design is synthesized for (area, or the netlist it places).
-used = {f for x in designs for f in x.flows} | {
-    table.devices[f].family.name for x in designs for f in x.flows if f in table.devices
+# The families with a column in the main table: those a design of it is synthesized for (area, or
+# the netlist it places); a family placed only on another device has that device's section.
+used = {f for x in main_designs for f in x.flows} | {
+    table.devices[f].family.name for x in main_designs for f in x.flows if f in table.devices
 }
 families = [f for f in table.families.values() if f.name in used]
 fmax_col = f"Fmax {dev.short} (MHz)"
@@ -383,17 +384,23 @@ for d in others:
     )
     print(
         f"| design | {f.title} {label('lut', f)} / {label('ff', f)} / {label('bram', f)} | "
-        f"{d.short} {f.pnr_cell_label} | Fmax {d.short} | clk/sample | samples/s |"
+        f"{d.short} {f.pnr_cell_label} | {d.short} DSP | Fmax {d.short} | clk/sample | samples/s |"
     )
-    print("|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|")
     for x in xs:
         line = line_of(x.name)
         c = cells(registry.report(root, f.name, x.name))
         fm, lc, why = pnr(x.name, d)
         cps = other_times[x.name][1]
         lcs = f"{lc[0]}/{lc[1]} ({100.0 * lc[0] / lc[1]:.1f} %)" if lc else "-"
+        # Hard multipliers placed (the log's pnr_dsp line; Yosys's dsp cells where none).
+        dsp = registry.pnr_count(registry.report(root, d.name, x.name), f.pnr_dsp)
+        dsp = f"{dsp[0]}/{dsp[1]}" if dsp else s(c, "dsp", family=f)
+        io = registry.pnr_count(registry.report(root, d.name, x.name), "USER_IO")
+        if io:
+            why = f"does not fit ({io[0]} I/O, {io[1]} pins)"
         print(
             f"| {line.module} {line.param_text()} | {s(c, 'lut', family=f)} / "
-            f"{s(c, 'ff', family=f)} / {s(c, 'bram', family=f)} | {lcs} | "
+            f"{s(c, 'ff', family=f)} / {s(c, 'bram', family=f)} | {lcs} | {dsp} | "
             f"{f'{fm:.1f} MHz' if fm else why} | {cps} | {f'{fm * 1e6 / cps:.3g}' if fm else '-'} |"
         )
