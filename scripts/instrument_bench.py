@@ -274,11 +274,12 @@ CASES = {
         "the sin channel sampled 1..3 ms after the cos one at one constant speed",
     ),
     # The ring sees the magnet's centre move on a circle: the field's linear part adds the same
-    # constant to every plate (no angle), its cubic part a constant angle (zero_offset), and the
+    # constant to every plate (no angle), its cubic part a constant angle (zero_offset) and a 3rd
+    # spatial harmonic seen alike from every plate (a 4th-order angle error: harmonic), and the
     # plates' mean distance grows with e^2: the amplitude, the larger here (e/R = 0.05..0.2).
     "runout": (
         ["hall4"],
-        ["amplitude", "zero_offset"],
+        ["amplitude", "zero_offset", "harmonic"],
         "constant",
         "the magnet 0.1..0.3 mm off the shaft axis, one constant speed",
     ),

@@ -173,6 +173,23 @@ double neg2_log_likelihood(const FitProblem& fp, const Recording& pred, double e
 
 namespace {
 
+// -2 log L (known variance, no extra noise) of the signals the angle is computed from: c1 - c3 and
+// c2 - c4 on four channels (their common modes left out), sin and cos on two.
+double pair_neg2_log_likelihood(const FitProblem& fp, const Recording& pred) {
+  const Recording& real = *fp.real;
+  double s[4], total = 0;
+  for (size_t i = 0; i < real.size(); ++i) {
+    to_signals(
+        real, i, [&](int c, size_t j) { return real.ch[c][j] - pred.ch[c][j]; }, s);
+    for (int q = 0; q < 2; ++q) total += sq(s[q] / fp.signal_sigma[q]);
+  }
+  return total;
+}
+
+// How much worse than the best group a phase error's group may fit the pairs (in -2 log L, the
+// scale of the diagnosis's dBIC threshold) and still be chosen for its fit of every signal.
+constexpr double kPairTolerance = 10;
+
 // A fitted effect's parameters; its prediction comes from predict_effect(), the one place that
 // applies an effect, so fitting and carrying the effect to a holdout cannot disagree.
 struct Fitted {
@@ -340,6 +357,10 @@ Fitted fit_eccentricity(const FitProblem& fp, const Recording& base, double, Fie
 // phase_error: one group of channels sees the electrical angle + delta. The groups a placement or
 // orthogonality error moves: the sine pair, the cosine pair, or (four channels) one plate. The best
 // by likelihood is kept; the choice counts as a parameter (k = 2), as a harmonic's order does.
+// Only a plate that also fits the pairs (c1 - c3, c2 - c4, what the angle sees) is a candidate:
+// a plate ring off the shaft axis turns opposite plates by opposite angles, which moves the
+// common modes strongly and the pairs' phases only at second order; one plate fitted to its
+// pair's common mode would then make the angle gap worse than no shift at all.
 Fitted fit_phase_error(const FitProblem& fp, const Recording& base, double, FieldScale scale) {
   const Recording& r = *fp.real;
   const int p = fp.model->periodicity;
@@ -352,8 +373,11 @@ Fitted fit_phase_error(const FitProblem& fp, const Recording& base, double, Fiel
   if (r.channels == 4)
     for (int k = 0; k < 4; ++k)
       groups.push_back({"phase_" + effect_channel_name(4, k), [k](int c) { return c == k; }});
-  Fitted best;
-  double best_l = std::numeric_limits<double>::infinity();
+  struct Tried {
+    double delta, l, l_pairs;
+  };
+  std::vector<Tried> tried;
+  double best_pairs = std::numeric_limits<double>::infinity();
   for (const Group& g : groups) {
     Fitted f = fit_angle_shift(fp, base,
                                {[&](int c, size_t) { return g.moves(c) ? 1.0 / p : 0.0; }}, scale);
@@ -364,14 +388,19 @@ Fitted fit_phase_error(const FitProblem& fp, const Recording& base, double, Fiel
       const auto add = angle_shift(fp, c, [&](size_t) { return delta / p; });
       for (size_t i = 0; i < r.size(); ++i) pred.ch[c][i] += scale_at(scale, i) * add[i];
     }
-    const double l = neg2_log_likelihood(fp, pred);
-    if (l < best_l) {
-      best_l = l;
-      best.params = effect_spec(EffectId::phase_error).defaults(r.channels);
-      for (auto& kv : best.params)
-        if (kv.first == g.param) kv.second = delta;
-      best.k = 2;
-    }
+    const double lp = pair_neg2_log_likelihood(fp, pred);
+    tried.push_back({delta, neg2_log_likelihood(fp, pred), lp});
+    best_pairs = std::min(best_pairs, lp);
+  }
+  Fitted best;
+  double best_l = std::numeric_limits<double>::infinity();
+  for (size_t q = 0; q < groups.size(); ++q) {
+    if (tried[q].l_pairs > best_pairs + kPairTolerance || tried[q].l >= best_l) continue;
+    best_l = tried[q].l;
+    best.params = effect_spec(EffectId::phase_error).defaults(r.channels);
+    for (auto& kv : best.params)
+      if (kv.first == groups[q].param) kv.second = tried[q].delta;
+    best.k = 2;
   }
   return best;
 }
@@ -382,6 +411,11 @@ Fitted fit_harmonic(const FitProblem& fp, const Recording& base, double, FieldSc
   Fitted best;
   double best_l = 1e300;
   for (int n = 2; n <= 9; ++n) {
+    // On four channels an even order is the same on opposite plates (n·π apart): it cancels in
+    // c1 - c3 and c2 - c4 and never reaches the angle. Fitted, it would pick the order by the
+    // common mode alone: a magnet off the shaft axis adds a large 2nd harmonic there, common to
+    // opposite plates, beside the 3rd (a 4th-order angle error) that carries the gap.
+    if (r.channels == 4 && n % 2 == 0) continue;
     Column cc(r.channels), cs(r.channels);
     for (int c = 0; c < r.channels; ++c) {
       cc[c].resize(r.size());

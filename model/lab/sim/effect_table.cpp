@@ -279,7 +279,9 @@ std::array<EffectSpec, kEffectCount> make_table() {
                  "same as its pair's delta; the three add"}};
     r.apply = apply_phase_error;
     r.fit = F::field_linearized;
-    r.fit_note = "to each group of channels it can move (either pair, one plate), the best kept";
+    r.fit_note =
+        "to each group of channels it can move (either pair, one plate), the best kept; one plate "
+        "only if it fits the pairs as well";
     r.meaning = "sine pair shifted in phase against the cosine pair (orthogonality error)";
     r.widened =
         "a phase shift of the sine pair (orthogonality error, as in the contract), of the cosine "
@@ -297,7 +299,9 @@ std::array<EffectSpec, kEffectCount> make_table() {
     r.apply = apply_harmonic;
     r.check = check_harmonic;
     r.fit = F::linear;
-    r.fit_note = "orders 2..9 tried, a common scale of the field part as a nuisance";
+    r.fit_note =
+        "orders 2..9 tried (odd ones on four channels: an even order cancels in the pairs), a "
+        "common scale of the field part as a nuisance";
     r.meaning = "an extra spatial harmonic of order n seen by the sensors";
   }
   {
