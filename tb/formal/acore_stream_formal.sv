@@ -237,4 +237,19 @@ module acore_stream_formal #(
       end
     end
   endgenerate
+  // ---- serial (SERIAL = 1): where the sample in flight is (taps, connected by the driver to the
+  // sequencer's idle state and the stage-2 flag of its OUT operation): being computed (not idle),
+  // its result being written to the output registers (OUT's stage 2), or on the output port. These
+  // make k-induction close. ----
+  generate
+    if (SERIAL != 0) begin : g_serial_ref
+      wire tap_idle, tap_out_we;
+      always @(*) begin
+        if (!init_q && !rst_i) begin
+          assert (inflight == !tap_idle + tap_out_we + out_valid_o);
+          if (!tap_idle) assert (!in_ready_o);
+        end
+      end
+    end
+  endgenerate
 endmodule

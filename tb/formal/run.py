@@ -1,19 +1,30 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Formal proofs of AngleCore's handshakes with Yosys and yosys-smtbmc (z3), no SymbiYosys.
+"""Formal proofs of AngleCore's handshakes with Yosys and its bundled ABC, or yosys-smtbmc (z3).
 
-usage: run.py CONFIG [--mode auto|bmc|prove] [--depth N] [--mutant NAME] [--workdir DIR]
+usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant NAME] [--workdir DIR]
        run.py --list            the registry lines with the formal flow, and the planted bugs
 
 CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
 folded top's output FIFO alone). The harness (tb/formal/*.sv) wraps the line's module with the
 line's parameters; its bounds come from the elaborated RTL (LATENCY, CAPACITY: registry.py's
-rtl_constants), never from a second table.
+rtl_constants), never from a second table. Which engine closes a harness's proof, and at which
+depth, is the table PROOFS below (one row a harness).
 
+Engines (--engine overrides the table's):
+  ind     the design as an AIGER file (flatten, async2sync, memory_map, techmap, dffunmap,
+          abc -g AND, write_aiger -zinit: the SymbiYosys abc flow), then yosys-abc: the base case
+          `fold; strash; bmc3 -F k` (no assertion fails in the first k clocks from reset) and the
+          step `orpos; strash; ind -F k` (k-induction; the assumptions are AIGER constraints).
+  pdr     the same AIGER file, `fold; strash; pdr` (property-directed reachability: an inductive
+          invariant of its own; no depth).
+  smtbmc  SMT2 and yosys-smtbmc with z3: a base-case BMC of depth k, then the k-induction step.
+  bmc     (--mode bmc, and every mutant) the AIGER file, `fold; strash; bmc3 -F depth` (the smtbmc
+          engine: yosys-smtbmc -t depth).
+
+  prove  the engine's unbounded proof (default for a harness with a row in PROOFS).
   bmc    bounded model check from reset for --depth clocks (default: the harness's BMC depth).
-  prove  k-induction of depth --depth (default: the harness's), after a BMC of the same depth.
-  auto   (default) prove where the harness has an induction depth that closes, else bmc; a mutant:
-         bmc (a counterexample is a trace from reset).
+  auto   (default) prove, a mutant: bmc (a counterexample is a trace from reset).
 
 --mutant NAME runs on a copy of the RTL with one planted bug (MUTANTS below) and expects the solver
 to find a counterexample: exit 0 when it does (the property can fail), 1 when the bug goes unseen.
@@ -21,7 +32,9 @@ to find a counterexample: exit 0 when it does (the property can fail), 1 when th
 Abstraction: the arithmetic (every stage instance of the datapath: pre-filter, scalers, region
 select, correction, CORDIC, Fourier, delay lines, register files) is cut (Yosys `cutpoint`: its
 outputs become free values each clock). The properties are about the valid/ready control and the
-output registers, which are kept, so any behaviour of the cut values is covered.
+output registers, which are kept, so any behaviour of the cut values is covered. The ABC engines
+also cut the read of the folded top's output FIFO memory (its data word is free when loaded; the
+FIFO's order is the fifo harness's proof), which removes its 256 words from the state.
 Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
 """
 
@@ -123,6 +136,18 @@ MUTANTS = {
 }
 
 
+# The proof of each harness: harness -> (engine, depth k of the base case and the induction step;
+# None: the engine needs none). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
+# with FOLD = 1 or folded, "acore_serial_top").
+PROOFS = {
+    # The reference valid pipeline and the top's valid bits tapped: 4-induction closes.
+    "acore_top": ("ind", 4),
+    "acore_top_folded": ("ind", 4),
+    "acore_serial_top": ("pdr", None),
+    "fifo": ("pdr", None),
+}
+
+
 def rtl_files():
     return [os.path.join(ROOT, "rtl", f) for f in registry.rtl_files(ROOT)]
 
@@ -152,6 +177,11 @@ def stream_setup(line):
         }
     )
     taps = []
+    if serial:
+        taps += [
+            ("g_serial_ref.tap_idle", "g_serial.dut.u_ctrl.idle"),
+            ("g_serial_ref.tap_out_we", "g_serial.dut.u_ctrl.out_we_o"),
+        ]
     if not serial and fold == 1:
         taps.append(("g_ref.tap_vld", "g_top.dut.g_pipe.vld_q"))
     if not serial and fold > 1:
@@ -168,43 +198,164 @@ def stream_setup(line):
             ("g_fold_ref.tap_rptr", f + "u_fifo.rptr_q"),
         ]
     cut = [] if serial else CUT_TOP
-    # k-induction (TIMERS = 0) closes on acore_top at small depths with the taps' invariants; the
-    # serial core is bounded: LATENCY + 8 clocks past reset.
-    prove = None if serial else 4
-    return "acore_stream_formal.sv", "acore_stream_formal", h, cut, taps, lat + 9, prove
+    # Memories whose read is cut (ABC engines): the folded top's output FIFO; the serial core's RAM
+    # (coefficients and scratch words: data only, the schedule never reads it).
+    mems = ["u_ram.mem_q"] if serial else ["u_fifo.mem_q"]
+    proof = "acore_serial_top" if serial else ("acore_top_folded" if fold > 1 else "acore_top")
+    return dict(
+        harness="acore_stream_formal.sv",
+        top="acore_stream_formal",
+        hparams=h,
+        cut=cut,
+        mems=mems,
+        taps=taps,
+        bmc_depth=lat + 9,
+        proof=proof,
+    )
 
 
-def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2):
+def fifo_setup():
+    return dict(
+        harness="acore_fifo_formal.sv",
+        top="acore_fifo_formal",
+        hparams={},
+        cut=[],
+        mems=[],
+        taps=[],
+        bmc_depth=14,
+        proof="fifo",
+    )
+
+
+def front_script(rtl_dir, line_module, line_params, st):
+    """Yosys commands up to the flattened design with its taps connected (both back ends)."""
     s = [
         f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(rtl_dir, os.path.basename(f))}"
         for f in rtl_files()
         if f.endswith(".v")
     ]
-    s.append(f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(HERE, harness)}")
+    s.append(f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(HERE, st['harness'])}")
     if line_params:
         s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in line_params) + f" {line_module}")
-    s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in hparams.items()) + f" {top}")
-    s.append(f"hierarchy -check -top {top}")
+    if st["hparams"]:
+        s.append(
+            "chparam "
+            + " ".join(f"-set {k} {v}" for k, v in st["hparams"].items())
+            + f" {st['top']}"
+        )
+    s.append(f"hierarchy -check -top {st['top']}")
     s.append("proc")
-    for m in cut:
+    for m in st["cut"]:
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
-        s.append(f"cutpoint -undef @cut_{m}" if False else f"cutpoint @cut_{m}")
+        s.append(f"cutpoint @cut_{m}")
     # (opt_clean first: it merges the aliases of a tap wire, which connect -set
     # would otherwise cut.)
     s += ["flatten", "opt_clean"]
-    for w, src in taps:
+    for w, src in st["taps"]:
         s.append(f"connect -set {w} {src}")
     # A tap left undriven would be a free value: check stops on it.
+    s += ["opt_clean", "check -assert"]
+    return s
+
+
+def smt2_script(front, smt2):
+    return "\n".join(front + ["async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]) + "\n"
+
+
+def aiger_script(front, mems, aig):
+    s = list(front) + ["memory_collect"]
+    for m in mems:
+        # The memory's read data becomes a free value each clock (the write side has no reader).
+        s.append(f"cutpoint t:$mem_v2 n:*{m} %i")
     s += [
-        "opt_clean",
-        "check -assert",
         "async2sync",
+        "memory_map",
+        "opt_clean",
+        "techmap",
+        "opt -fast",
         "dffunmap",
+        "abc -g AND -fast",
+        # Constant x bits (a case default) become free values: any value is covered.
+        "setundef -anyseq",
+        "opt_clean",
         "stat",
-        f"write_smt2 -wires {smt2}",
+        f"write_aiger -zinit -map {aig}.map {aig}",
     ]
     return "\n".join(s) + "\n"
+
+
+def run_abc(work, what, commands):
+    """yosys-abc on the commands; (verdict, frame or None, log). Verdicts: proved, failed,
+    undecided, error."""
+    r = subprocess.run(
+        ["yosys-abc", "-c", commands], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
+    )
+    open(os.path.join(work, f"abc_{what}.log"), "w").write(r.stdout)
+    m = re.search(r"Output (\d+) of miter .* was asserted in frame (\d+)", r.stdout)
+    if m:
+        return "failed", (int(m.group(1)), int(m.group(2))), r.stdout
+    if re.search(r"No output asserted in \d+ frames", r.stdout):
+        return "passed", None, r.stdout
+    if "Networks are equivalent" in r.stdout or "Property proved" in r.stdout:
+        return "proved", None, r.stdout
+    if "UNDECIDED" in r.stdout or "Resource limit" in r.stdout:
+        return "undecided", None, r.stdout
+    return "error", None, r.stdout
+
+
+def abc_check(work, aig, mode, engine, depth):
+    """(status, detail): status PASSED / FAILED / UNDECIDED / ERROR as yosys-smtbmc's."""
+    runs = []
+    if mode == "bmc":
+        runs.append(("bmc", f"read_aiger {aig}; fold; strash; bmc3 -F {depth}"))
+    elif engine == "ind":
+        runs.append(("base", f"read_aiger {aig}; fold; strash; bmc3 -F {depth}"))
+        runs.append(("induction", f"read_aiger {aig}; orpos; strash; ind -F {depth}"))
+    else:
+        runs.append(("pdr", f"read_aiger {aig}; fold; strash; pdr"))
+    for what, cmd in runs:
+        verdict, where, log = run_abc(work, what, cmd)
+        if verdict == "failed":
+            # (the base case and bmc read the unfolded outputs: one an assertion, in their order)
+            return f"FAILED ({what})", f"assertion output {where[0]} fails in clock {where[1]}"
+        if verdict == "undecided" or (verdict == "passed" and what == "induction"):
+            return f"UNDECIDED ({what})", ""
+        if verdict == "error":
+            return "ERROR", log[-3000:]
+    return "PASSED", ""
+
+
+def smtbmc_check(work, smt2, mode, depth):
+    # prove: the base case (a BMC of depth k from reset) and the induction step (k-induction); a
+    # proof needs both. yosys-smtbmc -i runs the step alone.
+    runs = [("bmc", ["-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")])]
+    if mode == "prove":
+        runs.append(
+            (
+                "induction",
+                ["-i", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace_induction.vcd")],
+            )
+        )
+    status, out = "PASSED", ""
+    for what, opts in runs:
+        r = subprocess.run(
+            ["yosys-smtbmc", "-s", "z3", *opts, smt2],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+        )
+        open(os.path.join(work, f"smtbmc_{what}.log"), "w").write(r.stdout)
+        out += r.stdout
+        st = re.findall(r"Status: (\w+)", r.stdout)
+        status = st[-1] if st else "ERROR"
+        if status != "PASSED":
+            status = f"{status} ({what})" if status == "FAILED" else status
+            break
+    fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
+    if status.startswith(("PASSED", "FAILED")):
+        return status, " ".join(fails)
+    return status, out[-3000:]
 
 
 def main(argv):
@@ -213,6 +364,7 @@ def main(argv):
     )
     ap.add_argument("config", nargs="?")
     ap.add_argument("--mode", choices=("auto", "bmc", "prove"), default="auto")
+    ap.add_argument("--engine", choices=("ind", "pdr", "smtbmc"))
     ap.add_argument("--depth", type=int)
     ap.add_argument("--mutant")
     ap.add_argument("--workdir")
@@ -225,9 +377,10 @@ def main(argv):
         for l in registry.select(ROOT, flows=["formal"]):
             print(l)
         for n, m in MUTANTS.items():
-            # CTest label: a top's planted bug shows after the pipeline fills (a BMC of about
-            # LATENCY clocks, long on a loaded machine); the FIFO's within a few clocks.
-            print(f"mutant {n}: {m[0]}: {'formal' if m[0] == 'fifo' else 'long'}: {m[4]}")
+            # CTest label: the planted bugs of the lines tagged long-proof run long, the others in
+            # the default run (a bounded check from reset, seconds with bmc3).
+            long = m[0] != "fifo" and "long-proof" in registry.get(ROOT, m[0]).tags
+            print(f"mutant {n}: {m[0]}: {'long' if long else 'formal'}: {m[4]}")
         return 0
     if not a.config:
         print("run.py: a CONFIG is needed (run.py --list)", file=sys.stderr)
@@ -260,15 +413,7 @@ def main(argv):
     try:
         if a.config == "fifo":
             line_module, line_params = "acore_fold_fifo", []
-            harness, top, hparams, cut, taps, bmc_depth, prove_depth = (
-                "acore_fifo_formal.sv",
-                "acore_fifo_formal",
-                {},
-                [],
-                [],
-                14,
-                None,
-            )
+            st = fifo_setup()
         else:
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
@@ -276,7 +421,7 @@ def main(argv):
             if line.module in ("acore_top", "acore_serial_top"):
                 # (the harness takes the line's parameters and passes them on: hparams holds them)
                 line_module, line_params = line.module, []
-                harness, top, hparams, cut, taps, bmc_depth, prove_depth = stream_setup(line)
+                st = stream_setup(line)
             else:
                 raise registry.RegistryError(
                     f"{line.where}: no formal harness for module {line.module}"
@@ -284,22 +429,25 @@ def main(argv):
     except registry.RegistryError as e:
         print(f"run.py: {e}", file=sys.stderr)
         return 2
+    engine, prove_depth = PROOFS[st["proof"]]
+    engine = a.engine or engine
     if a.mode == "auto":
-        a.mode = "bmc" if prove_depth is None or a.mutant else "prove"
-    if a.mode == "prove" and prove_depth is None and a.depth is None:
-        print(
-            f"run.py: {a.config}: no induction depth known to close (use bmc, or --depth)",
-            file=sys.stderr,
-        )
+        a.mode = "bmc" if a.mutant else "prove"
+    depth = a.depth or (prove_depth if a.mode == "prove" else st["bmc_depth"])
+    if a.mode == "prove" and engine != "pdr" and not depth:
+        print(f"run.py: {a.config}: {engine} needs a depth (--depth)", file=sys.stderr)
         return 2
-    depth = a.depth or (prove_depth if a.mode == "prove" else bmc_depth)
-    if "TIMERS" in hparams or top == "acore_stream_formal":
-        hparams["TIMERS"] = 0 if a.mode == "prove" else 1
-    smt2 = os.path.join(work, "model.smt2")
+    if st["top"] == "acore_stream_formal":
+        # The timer properties are bounded ones (bmc); a proof has the reference invariants.
+        st["hparams"]["TIMERS"] = 0 if a.mode == "prove" else 1
+    front = front_script(rtl_dir, line_module, line_params, st)
     ys = os.path.join(work, "model.ys")
-    open(ys, "w").write(
-        yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2)
-    )
+    if engine == "smtbmc":
+        model = os.path.join(work, "model.smt2")
+        open(ys, "w").write(smt2_script(front, model))
+    else:
+        model = os.path.join(work, "model.aig")
+        open(ys, "w").write(aiger_script(front, st["mems"], model))
     t0 = time.time()
     r = subprocess.run(
         ["yosys", "-q", "-l", os.path.join(work, "yosys.log"), "-s", ys],
@@ -309,40 +457,19 @@ def main(argv):
     if r.returncode != 0:
         print(f"run.py: yosys failed (log {work}/yosys.log):\n{r.stderr[-3000:]}", file=sys.stderr)
         return 2
-    # prove: the base case (a BMC of depth k from reset) and the induction step (k-induction); a
-    # proof needs both. yosys-smtbmc -i runs the step alone.
-    runs = [("bmc", ["-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")])]
-    if a.mode == "prove":
-        runs.append(
-            (
-                "induction",
-                ["-i", "-t", str(depth), "--dump-vcd", os.path.join(work, "trace_induction.vcd")],
-            )
-        )
-    status, out = "PASSED", ""
-    for what, opts in runs:
-        r = subprocess.run(
-            ["yosys-smtbmc", "-s", "z3", *opts, smt2],
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            text=True,
-        )
-        open(os.path.join(work, f"smtbmc_{what}.log"), "w").write(r.stdout)
-        out += r.stdout
-        st = re.findall(r"Status: (\w+)", r.stdout)
-        status = st[-1] if st else "ERROR"
-        if status != "PASSED":
-            status = f"{status} ({what})" if status == "FAILED" else status
-            break
+    if engine == "smtbmc":
+        status, detail = smtbmc_check(work, model, a.mode, depth)
+    else:
+        status, detail = abc_check(work, model, a.mode, engine, depth)
     dt = time.time() - t0
-    fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
+    how = f"{a.mode} {engine}" + ("" if engine == "pdr" and a.mode == "prove" else f" depth {depth}")
     what = (
-        f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {a.mode} depth {depth}: {status} "
+        f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {how}: {status} "
         f"({dt:.1f} s; {work})"
     )
-    print(what + (f"\n  failed: {' '.join(fails)}" if fails else ""))
-    if not status.startswith(("PASSED", "FAILED")):
-        print(out[-3000:], file=sys.stderr)
+    print(what + (f"\n  {detail}" if detail and status.startswith("FAILED") else ""))
+    if not status.startswith(("PASSED", "FAILED", "UNDECIDED")):
+        print(detail, file=sys.stderr)
         return 2
     if a.mutant:
         return 0 if status.startswith("FAILED") else 1
