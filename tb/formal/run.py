@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 """Formal proofs of AngleCore's handshakes with Yosys and its bundled ABC, or yosys-smtbmc (z3).
 
-usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant NAME] [--workdir DIR]
+usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant NAME]
+                     [--workdir DIR]
        run.py --list            the registry lines with the formal flow, and the planted bugs
 
 CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
@@ -202,29 +203,29 @@ def stream_setup(line):
     # (coefficients and scratch words: data only, the schedule never reads it).
     mems = ["u_ram.mem_q"] if serial else ["u_fifo.mem_q"]
     proof = "acore_serial_top" if serial else ("acore_top_folded" if fold > 1 else "acore_top")
-    return dict(
-        harness="acore_stream_formal.sv",
-        top="acore_stream_formal",
-        hparams=h,
-        cut=cut,
-        mems=mems,
-        taps=taps,
-        bmc_depth=lat + 9,
-        proof=proof,
-    )
+    return {
+        "harness": "acore_stream_formal.sv",
+        "top": "acore_stream_formal",
+        "hparams": h,
+        "cut": cut,
+        "mems": mems,
+        "taps": taps,
+        "bmc_depth": lat + 9,
+        "proof": proof,
+    }
 
 
 def fifo_setup():
-    return dict(
-        harness="acore_fifo_formal.sv",
-        top="acore_fifo_formal",
-        hparams={},
-        cut=[],
-        mems=[],
-        taps=[],
-        bmc_depth=14,
-        proof="fifo",
-    )
+    return {
+        "harness": "acore_fifo_formal.sv",
+        "top": "acore_fifo_formal",
+        "hparams": {},
+        "cut": [],
+        "mems": [],
+        "taps": [],
+        "bmc_depth": 14,
+        "proof": "fifo",
+    }
 
 
 def front_script(rtl_dir, line_module, line_params, st):
@@ -260,11 +261,11 @@ def front_script(rtl_dir, line_module, line_params, st):
 
 
 def smt2_script(front, smt2):
-    return "\n".join(front + ["async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]) + "\n"
+    return "\n".join([*front, "async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]) + "\n"
 
 
 def aiger_script(front, mems, aig):
-    s = list(front) + ["memory_collect"]
+    s = [*front, "memory_collect"]
     for m in mems:
         # The memory's read data becomes a free value each clock (the write side has no reader).
         s.append(f"cutpoint t:$mem_v2 n:*{m} %i")
@@ -462,7 +463,9 @@ def main(argv):
     else:
         status, detail = abc_check(work, model, a.mode, engine, depth)
     dt = time.time() - t0
-    how = f"{a.mode} {engine}" + ("" if engine == "pdr" and a.mode == "prove" else f" depth {depth}")
+    how = f"{a.mode} {engine}" + (
+        "" if engine == "pdr" and a.mode == "prove" else f" depth {depth}"
+    )
     what = (
         f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {how}: {status} "
         f"({dt:.1f} s; {work})"
