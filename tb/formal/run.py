@@ -146,6 +146,8 @@ PROOFS = {
     "acore_top_folded": ("ind", 4),
     "acore_serial_top": ("pdr", None),
     "fifo": ("pdr", None),
+    "acore_apb": ("pdr", None),
+    "acore_apb_serial": ("pdr", None),
 }
 
 
@@ -154,41 +156,54 @@ def rtl_files():
 
 
 def stream_setup(line):
-    """(harness file, harness parameters, cut modules, taps, default depths) for a top's line."""
-    params = line.params
-    serial = line.module == "acore_serial_top"
-    c = registry.rtl_constants(ROOT, line.module, params)
+    """The harness, its parameters, cuts, memories and taps for a line of acore_top,
+    acore_serial_top or the shell acore_apb around either (its SERIAL)."""
+    shell_line = line.module == "acore_apb"
+    params = [(k, v) for k, v in line.params if k != "SERIAL"]
+    serial = line.module == "acore_serial_top" or (
+        shell_line and int(dict(line.params).get("SERIAL", 0)) != 0
+    )
+    top = "acore_serial_top" if serial else "acore_top"
+    c = registry.rtl_constants(ROOT, top, params)
     shell = registry.rtl_constants(ROOT, "acore_apb", params + ([("SERIAL", 1)] if serial else []))
     fold = 1 if serial else c["FOLD"]
     lat = c["LATENCY"]
-    # Clocks a sample may wait with the output free: its latency (the serial core: two clocks more,
-    # a host write landing on each of its two scratch-word writes delays it by one).
-    bound = lat + 2 if serial else lat
+    # Clocks a sample may wait with the output free: its latency (the serial core's harness does
+    # not count the clocks a host write lands in: each may stall it by one).
+    bound = lat
     # The line's datapath parameters go to the harness, which passes them on to the top.
     h = dict(params)
     h.update(
         {
             "SERIAL": int(serial),
+            "SHELL": int(shell_line),
             "LATENCY": lat,
             "CAP": shell["CAPACITY"],
+            "CNT_W": shell["CAPACITY"].bit_length(),
             "BOUND": bound,
             "ADDR_W": c["ADDR_W"],
             "RG_W": c["RG_W"],
             "MAG_W": c["MAG_W"],
         }
     )
+    # Where the top is after flattening: the harness's instance, or the shell's.
+    if shell_line:
+        p = "g_shell.dut."
+        dut = p + ("g_serial.u_top." if serial else "g_pipe.u_top.")
+    else:
+        dut = "g_serial.dut." if serial else "g_top.dut."
     taps = []
     if serial:
         taps += [
-            ("g_serial_ref.tap_idle", "g_serial.dut.u_ctrl.idle"),
-            ("g_serial_ref.tap_out_we", "g_serial.dut.u_ctrl.out_we_o"),
+            ("g_serial_ref.tap_idle", dut + "u_ctrl.idle"),
+            ("g_serial_ref.tap_out_we", dut + "u_ctrl.out_we_o"),
         ]
     if not serial and fold == 1:
-        taps.append(("g_ref.tap_vld", "g_top.dut.g_pipe.vld_q"))
+        taps.append(("g_ref.tap_vld", dut + "g_pipe.vld_q"))
     if not serial and fold > 1:
         h["DPV_W"] = lat - 3
         h["OCC_W"] = (shell["CAPACITY"] - 1).bit_length() + 1
-        f = "g_top.dut.g_fold."
+        f = dut + "g_fold."
         taps += [
             ("g_fold_ref.tap_v", f + "u_dp.v_q"),
             ("g_fold_ref.tap_out_vld", f + "out_vld_q"),
@@ -198,11 +213,41 @@ def stream_setup(line):
             ("g_fold_ref.tap_wptr", f + "u_fifo.wptr_q"),
             ("g_fold_ref.tap_rptr", f + "u_fifo.rptr_q"),
         ]
+    if shell_line:
+        r = "g_shell_ref."
+        taps += [
+            ("g_host_we.tap_top_we", p + "top_we"),
+            (r + "tap_top_we", p + "top_we"),
+            (r + "tap_busy", p + "busy"),
+            (r + "tap_bank", p + "bank"),
+            (r + "tap_coef_we", p + "rg_coef_we"),
+            (r + "tap_commit", p + "rg_ctrl_commit"),
+            (r + "tap_decide", p + "u_bank.decide"),
+            (r + "tap_check", p + "u_regs.ctrl_crc_check_q"),
+            (r + "tap_crc_shadow", p + "u_bank.crc_shadow_o"),
+            (r + "tap_crc_expected", p + "u_regs.crc_expected_q"),
+            (r + "tap_inflight", p + "u_bank.inflight_q"),
+            (r + "tap_scrub", p + "u_regs.ctrl_scrub_q"),
+            (r + "tap_irq_en", p + "u_regs.ctrl_irq_en_q"),
+            (r + "tap_mag_lo", p + "u_regs.mag_lo_q"),
+            (r + "tap_mag_hi", p + "u_regs.mag_hi_q"),
+            (r + "tap_ovf", p + "u_regs.status_ovf_q"),
+            (r + "tap_los", p + "u_regs.status_los_q"),
+            (r + "tap_dos", p + "u_regs.status_dos_q"),
+            (r + "tap_crc_shadow_err", p + "u_regs.status_crc_shadow_q"),
+            (r + "tap_crc_active_err", p + "u_regs.status_crc_active_q"),
+            (r + "tap_done", p + "u_regs.status_done_q"),
+        ]
     cut = [] if serial else CUT_TOP
     # Memories whose read is cut (ABC engines): the folded top's output FIFO; the serial core's RAM
-    # (coefficients and scratch words: data only, the schedule never reads it).
+    # (coefficients and scratch words: data only, the schedule never reads it); the shell's shadow
+    # bank (its words reach only the CRC and the top's words: any value is covered).
     mems = ["u_ram.mem_q"] if serial else ["u_fifo.mem_q"]
+    if shell_line:
+        mems.append("u_shadow.mem_q")
     proof = "acore_serial_top" if serial else ("acore_top_folded" if fold > 1 else "acore_top")
+    if shell_line:
+        proof = "acore_apb_serial" if serial else "acore_apb"
     return {
         "harness": "acore_stream_formal.sv",
         "top": "acore_stream_formal",
@@ -250,9 +295,11 @@ def front_script(rtl_dir, line_module, line_params, st):
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
         s.append(f"cutpoint @cut_{m}")
-    # (opt_clean first: it merges the aliases of a tap wire, which connect -set
-    # would otherwise cut.)
-    s += ["flatten", "opt_clean"]
+    # (keep: a tapped register may feed nothing but the tap, which opt_clean would remove; then
+    # opt_clean, which merges the aliases of a tap wire, which connect -set would otherwise cut.)
+    s.append("flatten")
+    s += [f"setattr -set keep 1 w:{src}" for _, src in st["taps"]]
+    s.append("opt_clean")
     for w, src in st["taps"]:
         s.append(f"connect -set {w} {src}")
     # A tap left undriven would be a free value: check stops on it.
@@ -281,6 +328,8 @@ def aiger_script(front, mems, aig):
         "setundef -anyseq",
         "opt_clean",
         "stat",
+        # The bad-state outputs are the $assert cells in this order (a failing output's source).
+        f"tee -q -o {aig}.asserts select -list t:$assert",
         f"write_aiger -zinit -map {aig}.map {aig}",
     ]
     return "\n".join(s) + "\n"
@@ -319,7 +368,10 @@ def abc_check(work, aig, mode, engine, depth):
         verdict, where, log = run_abc(work, what, cmd)
         if verdict == "failed":
             # (the base case and bmc read the unfolded outputs: one an assertion, in their order)
-            return f"FAILED ({what})", f"assertion output {where[0]} fails in clock {where[1]}"
+            names = open(aig + ".asserts").read().split()
+            src = names[where[0]] if where[0] < len(names) else f"output {where[0]}"
+            src = re.sub(r"^.*?/([^/]+\.s?v:\d+).*$", r"\1", src)
+            return f"FAILED ({what})", f"assertion {src} fails in clock {where[1]}"
         if verdict == "undecided" or (verdict == "passed" and what == "induction"):
             return f"UNDECIDED ({what})", ""
         if verdict == "error":
@@ -419,7 +471,7 @@ def main(argv):
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
                 raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
-            if line.module in ("acore_top", "acore_serial_top"):
+            if line.module in ("acore_top", "acore_serial_top", "acore_apb"):
                 # (the harness takes the line's parameters and passes them on: hparams holds them)
                 line_module, line_params = line.module, []
                 st = stream_setup(line)
