@@ -138,13 +138,16 @@ module acore_stream_formal #(
   end
 
   // The top's host port writes: the harness's, or (SHELL = 1) the shell's commit (a tap).
-  wire host_we;
+  // The shell's gate: no sample taken while a commit is busy (a tap; 0 without the shell).
+  wire host_we, shell_busy;
   generate
     if (SHELL != 0) begin : g_host_we
-      wire tap_top_we;
+      wire tap_top_we, tap_busy;
       assign host_we = tap_top_we;
+      assign shell_busy = tap_busy;
     end else begin : g_host_we_port
       assign host_we = reg_we_i;
+      assign shell_busy = 1'b0;
     end
   endgenerate
 
@@ -244,7 +247,7 @@ module acore_stream_formal #(
       always @(posedge clk_i) begin
         if (!init_q) begin
           assert (out_valid_o == ref_q[LATENCY-1]);
-          assert (in_ready_o == (!rst_i && ref_en));
+          assert (in_ready_o == (!rst_i && ref_en && !shell_busy));
           assert (tap_vld == ref_q);
           if (!rst_i) assert (inflight == ones);
         end
@@ -277,7 +280,7 @@ module acore_stream_formal #(
           assert (tap_cnt == ((since_q >= FOLD) ? FOLD - 1 : since_q - 1));
           if (tap_rdy) assert (tap_cnt == FOLD - 1);
           if (tap_rdy) assert (inflight < CAP);
-          if (tap_rdy) assert (in_ready_o);
+          if (tap_rdy) assert (in_ready_o == !shell_busy);
         end
       end
     end

@@ -73,8 +73,9 @@ CUT_TOP = [
     "acore_ram_delay",
 ]
 
-# Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks). Each must make the
-# solver find a counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
+# Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks[, BMC depth: clocks
+# from reset it needs, when fewer than the harness's]). Each must make the solver find a
+# counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
 MUTANTS = {
     # FOLD = 1: a sample offered while the output is held is taken, but the pipeline does not move:
     # it is lost (overwritten).
@@ -134,8 +135,56 @@ MUTANTS = {
         "if (load) rptr_q <= rptr_q + 2'd1 + wr_i;",
         "order: the tagged word is not the word given",
     ),
+    # Serial core: the output valid flag not reset: a result of before the reset comes out.
+    "serial_valid_not_reset": (
+        "serial",
+        "acore_serial_ctrl.v",
+        r"state_q <= ST_IDLE;\n(\s*)out_valid_q <= 1'b0;",
+        "state_q <= ST_IDLE;",
+        "reset/count: an output from before the reset",
+        8,
+    ),
+    # Shell: a shadow word written in the setup phase (with the last transfer's decode).
+    "apb_write_in_setup": (
+        "apb",
+        "acore_apb_regblock.v",
+        r"assign coef_we_o = access & w_coef_q;",
+        "assign coef_we_o = psel_i & w_coef_q;",
+        "apb: a side effect outside an access phase",
+        8,
+    ),
+    # Shell: the scrubber writes the word it reads back into the top (a committed word changes).
+    "apb_scrub_writes": (
+        "apb_serial",
+        "acore_coef_bank.v",
+        r"top_we_o <= \(state_q == C_STREAM\) & pend_q;",
+        "top_we_o <= ((state_q == C_STREAM) & pend_q) | s_load;",
+        "scrub: a write to the top outside a commit",
+        16,
+    ),
+    # Shell: the commit streams without waiting for the samples in flight (a mixed image).
+    "apb_commit_not_drained": (
+        "apb",
+        "acore_coef_bank.v",
+        r"wire decide = \(state_q == C_CHECK\) & cmp_q & drained;",
+        "wire decide = (state_q == C_CHECK) & cmp_q;",
+        "atomic: the top's words change with a sample in flight",
+        130,
+    ),
+    # Shell: the commit's verdict inverted: a wrong CRC is applied.
+    "apb_wrong_crc_applied": (
+        "apb",
+        "acore_coef_bank.v",
+        r"wire refuse = decide & check_i & neq_q;",
+        "wire refuse = decide & check_i & ~neq_q;",
+        "crc: a commit with a wrong CRC writes the top",
+        130,
+    ),
 }
 
+
+# A planted bug found within this many clocks from reset is checked in the default run (seconds).
+SHORT_BMC = 16
 
 # The proof of each harness: harness -> (engine, depth k of the base case and the induction step;
 # None: the engine needs none). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
@@ -217,6 +266,7 @@ def stream_setup(line):
         r = "g_shell_ref."
         taps += [
             ("g_host_we.tap_top_we", p + "top_we"),
+            ("g_host_we.tap_busy", p + "busy"),
             (r + "tap_top_we", p + "top_we"),
             (r + "tap_busy", p + "busy"),
             (r + "tap_bank", p + "bank"),
@@ -430,9 +480,13 @@ def main(argv):
         for l in registry.select(ROOT, flows=["formal"]):
             print(l)
         for n, m in MUTANTS.items():
-            # CTest label: the planted bugs of the lines tagged long-proof run long, the others in
-            # the default run (a bounded check from reset, seconds with bmc3).
-            long = m[0] != "fifo" and "long-proof" in registry.get(ROOT, m[0]).tags
+            # CTest label: a planted bug with a BMC depth of its own runs in the default run when
+            # that depth is at most SHORT_BMC clocks; one without, as its line's proof (long for
+            # the lines tagged long-proof).
+            if len(m) > 5:
+                long = m[5] > SHORT_BMC
+            else:
+                long = m[0] != "fifo" and "long-proof" in registry.get(ROOT, m[0]).tags
             print(f"mutant {n}: {m[0]}: {'long' if long else 'formal'}: {m[4]}")
         return 0
     if not a.config:
@@ -445,7 +499,7 @@ def main(argv):
     os.makedirs(work, exist_ok=True)
     rtl_dir = os.path.join(ROOT, "rtl")
     if a.mutant:
-        _, fname, pat, rep, _ = MUTANTS[a.mutant]
+        _, fname, pat, rep, _, *mdepth = MUTANTS[a.mutant]
         mdir = os.path.join(work, "rtl")
         shutil.rmtree(mdir, ignore_errors=True)
         shutil.copytree(rtl_dir, mdir)
@@ -486,6 +540,9 @@ def main(argv):
     engine = a.engine or engine
     if a.mode == "auto":
         a.mode = "bmc" if a.mutant else "prove"
+    if a.mutant and mdepth:
+        # (a planted bug the table says shows earlier than the harness's BMC depth)
+        st["bmc_depth"] = mdepth[0]
     depth = a.depth or (prove_depth if a.mode == "prove" else st["bmc_depth"])
     if a.mode == "prove" and engine != "pdr" and not depth:
         print(f"run.py: {a.config}: {engine} needs a depth (--depth)", file=sys.stderr)
