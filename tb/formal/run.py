@@ -15,8 +15,8 @@ depth, is the table PROOFS below (one row a harness).
 Engines (--engine overrides the table's):
   ind     the design as an AIGER file (flatten, async2sync, memory_map, techmap, dffunmap,
           abc -g AND, write_aiger -zinit: the SymbiYosys abc flow), then yosys-abc: the base case
-          `fold; strash; bmc3 -F k` (no assertion fails in the first k clocks from reset) and the
-          step `orpos; strash; ind -F k` (k-induction; the assumptions are AIGER constraints).
+          `fold; strash; bmc3 -F k+1` (no assertion fails in the first k+1 clocks from reset) and
+          the step `orpos; strash; ind -F k` (k-induction; the assumptions are AIGER constraints).
   pdr     the same AIGER file, `fold; strash; pdr` (property-directed reachability: an inductive
           invariant of its own; no depth).
   smtbmc  SMT2 and yosys-smtbmc with z3: a base-case BMC of depth k, then the k-induction step.
@@ -410,7 +410,8 @@ def abc_check(work, aig, mode, engine, depth):
     if mode == "bmc":
         runs.append(("bmc", f"read_aiger {aig}; fold; strash; bmc3 -F {depth}"))
     elif engine == "ind":
-        runs.append(("base", f"read_aiger {aig}; fold; strash; bmc3 -F {depth}"))
+        # (one frame more than the step's: the base covers every frame the step assumes)
+        runs.append(("base", f"read_aiger {aig}; fold; strash; bmc3 -F {depth + 1}"))
         runs.append(("induction", f"read_aiger {aig}; orpos; strash; ind -F {depth}"))
     else:
         runs.append(("pdr", f"read_aiger {aig}; fold; strash; pdr"))
