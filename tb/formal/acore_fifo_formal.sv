@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // acore_fifo_formal: the folded top's output FIFO alone (rtl/acore_fold_fifo.v, DEPTH = 4, 8-bit
-// words: the order argument does not depend on the depth or the width), a tagged word: the driver's
-// solver picks any word number N (a free constant) and any data; the word written N-th must be the
-// word given N-th, given once (the counts). With the counts (nothing given from an empty FIFO, every word given
+// words: the order argument does not depend on the depth or the width), a tagged word: the solver
+// picks any word written (a free input) with any data; the words ahead of it in the FIFO are
+// counted down as they are given, and the word given when that count is zero must be the tagged
+// word, unchanged (one tagged word at a time, so the check holds for every run length: an
+// unbounded proof). With the counts (nothing given from an empty FIFO, every word given
 // within a bounded time with ready high) this is "no word lost, duplicated or reordered". Writes
 // only when the FIFO has room (the top's credits guarantee it; assumed here).
 `default_nettype none
@@ -12,7 +14,9 @@ module acore_fifo_formal (
   input wire       rst_i,
   input wire       wr_i,
   input wire [7:0] wdata_i,
-  input wire       ready_i
+  input wire       ready_i,
+  // Tags the word written in this clock (the solver's choice).
+  input wire       pick_i
 );
   localparam integer DEPTH = 4;
   wire       valid_o;
@@ -25,11 +29,13 @@ module acore_fifo_formal (
   always @(posedge clk_i) init_q <= 1'b0;
   always @(*) if (init_q) assume (rst_i);
 
-  // Words written and given since reset (mod 2^5: more than the clocks of a run), words stored; the tagged word's number and data.
-  (* anyconst *) wire [4:0] tag_n;
+  // Words written and given since reset (mod 2^5: differences stay exact, stored <= DEPTH), words
+  // stored; the tagged word: written in a clock the free input pick_i is high (the first such write
+  // while no word is tracked), with the number of words ahead of it still to be given.
   reg [4:0] wn_q, gn_q;
   reg [7:0] tag_q;
   reg       tagged_q;
+  reg [4:0] ahead_q;
   wire      give = valid_o && ready_i;
   wire [4:0] stored = wn_q - gn_q;
   always @(*) if (!rst_i && stored >= DEPTH) assume (!wr_i);
@@ -41,9 +47,13 @@ module acore_fifo_formal (
     end else begin
       wn_q <= wn_q + wr_i;
       gn_q <= gn_q + give;
-      if (wr_i && wn_q == tag_n && !tagged_q) begin
+      if (tagged_q && give) begin
+        if (ahead_q == 0) tagged_q <= 1'b0;
+        else ahead_q <= ahead_q - 1'b1;
+      end else if (!tagged_q && wr_i && pick_i) begin
         tag_q <= wdata_i;
         tagged_q <= 1'b1;
+        ahead_q <= stored - give;
       end
     end
   end
@@ -65,7 +75,8 @@ module acore_fifo_formal (
       if (give) assert (stored != 0);                        // nothing from an empty FIFO
       assert (stored <= DEPTH);
       assert (wait_q <= 2);                                  // a stored word leaves
-      if (give && gn_q == tag_n) assert (tagged_q && data_o == tag_q);  // in order, unchanged
+      if (give && tagged_q && ahead_q == 0) assert (data_o == tag_q);  // in order, unchanged
+      if (tagged_q) assert (ahead_q < stored);
       if (past_held_q) assert (valid_o && data_o == past_data_q);
     end
   end

@@ -9,7 +9,8 @@
 //   count     inputs taken = outputs given + in flight: an output is given only while a sample is in
 //             flight (nothing duplicated or invented) and at most CAP samples are in flight.
 //   lost      a sample in flight leaves within BOUND clocks in which the output is not held
-//             (out_valid_o && !out_ready_i): nothing is lost.
+//             (out_valid_o && !out_ready_i) and (the serial core) no host write lands: nothing is
+//             lost.
 //   latency   a sample taken into an empty core comes out exactly LATENCY clocks later, not before.
 //   hold      while out_valid_o && !out_ready_i, out_valid_o stays high and every output is stable.
 //   spacing   (FOLD > 1) two samples are taken at least FOLD clocks apart.
@@ -26,6 +27,12 @@ module acore_stream_formal #(
   // driver; FOLD also selects the properties below).
 `include "acore_datapath_params.vh"
   parameter integer SERIAL = 0,
+  // 1: the top inside the APB register shell (rtl/acore_apb.v, SERIAL selects the top): the
+  // stream properties at the shell's ports, and the shell's own (g_shell_ref below).
+  parameter integer SHELL = 0,
+  // The shell's in-flight counter width, and its APB address width.
+  parameter integer CNT_W = 4,
+  parameter integer APB_AW = 12,
   // The top's constants as it elaborates them (the driver reads them from the RTL).
   parameter integer LATENCY = 8,
   parameter integer CAP = 8,
@@ -54,15 +61,36 @@ module acore_stream_formal #(
   input wire [IN_W-1:0]    c2_i,
   input wire [IN_W-1:0]    c3_i,
   input wire [IN_W-1:0]    c4_i,
-  input wire               out_ready_i
+  input wire               out_ready_i,
+  // APB4 master (SHELL = 1; assumed to follow the protocol, below).
+  input wire               psel_i,
+  input wire               penable_i,
+  input wire               pwrite_i,
+  input wire [APB_AW-1:0]  paddr_i,
+  input wire [31:0]        pwdata_i,
+  input wire [3:0]         pstrb_i
 );
   wire               in_ready_o, out_valid_o, ovf_o, los_o, dos_o;
   wire [ANGLE_W-1:0] angle_o;
   wire [RG_W-1:0]    region_o;
   wire [REG_W-1:0]   reg_rdata_o;
 
+  wire [31:0] prdata_o;
+  wire        pready_o, pslverr_o, irq_o, out_tag_o;
   generate
-    if (SERIAL != 0) begin : g_serial
+    if (SHELL != 0) begin : g_shell
+      acore_apb #(
+`include "acore_datapath_pass.vh"
+        .SERIAL(SERIAL), .INIT_FILE(""), .APB_AW(APB_AW)
+      ) dut (
+        .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i), .penable_i(penable_i), .pwrite_i(pwrite_i),
+        .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i), .prdata_o(prdata_o),
+        .pready_o(pready_o), .pslverr_o(pslverr_o), .irq_o(irq_o), .in_valid_i(in_valid_i),
+        .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
+        .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle_o),
+        .region_o(region_o), .ovf_o(ovf_o), .los_o(los_o), .dos_o(dos_o), .out_tag_o(out_tag_o));
+    end
+    if (SHELL == 0 && SERIAL != 0) begin : g_serial
       acore_serial_top #(
 `include "acore_datapath_pass.vh"
         .INIT_FILE("")
@@ -72,7 +100,8 @@ module acore_stream_formal #(
         .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
         .c4_i(c4_i), .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .angle_o(angle_o),
         .region_o(region_o), .ovf_o(ovf_o), .los_o(los_o), .dos_o(dos_o));
-    end else begin : g_top
+    end
+    if (SHELL == 0 && SERIAL == 0) begin : g_top
       acore_top #(
 `include "acore_datapath_pass.vh"
         .INIT_FILE("")
@@ -108,11 +137,30 @@ module acore_stream_formal #(
     end
   end
 
+  // The top's host port writes: the harness's, or (SHELL = 1) the shell's commit (a tap).
+  // The shell's gate: no sample taken while a commit is busy (a tap; 0 without the shell).
+  wire host_we, shell_busy;
+  generate
+    if (SHELL != 0) begin : g_host_we
+      wire tap_top_we, tap_busy;
+      assign host_we = tap_top_we;
+      assign shell_busy = tap_busy;
+    end else begin : g_host_we_port
+      assign host_we = reg_we_i;
+      assign shell_busy = 1'b0;
+    end
+  endgenerate
+
   // ---- lost: clocks a sample has been in flight with the output free and nothing given ----
+  // (the serial core: not counting the clocks in which a host write lands, the clock after the
+  // harness gives it: each stalls a scratch-word write by one clock, so a host writing every
+  // clock holds the sample for as long; acore_serial_top.v's header)
   reg [CW-1:0] wait_q;
+  reg          we_land_q = 1'b0;
   always @(posedge clk_i) begin
+    we_land_q <= host_we && !rst_i;
     if (rst_i || deliver || inflight == 0 || held) wait_q <= 0;
-    else wait_q <= wait_q + 1'b1;
+    else if (!(SERIAL != 0 && we_land_q)) wait_q <= wait_q + 1'b1;
   end
 
   // ---- latency: a sample taken into an empty core; host writes may delay the serial core's ----
@@ -127,7 +175,7 @@ module acore_stream_formal #(
       lat_we_q <= 1'b0;
     end else begin
       lat_q <= (lat_q == LATENCY || deliver) ? 0 : lat_q + 1'b1;
-      lat_we_q <= lat_we_q | reg_we_i;
+      lat_we_q <= lat_we_q | host_we;
     end
   end
 
@@ -199,7 +247,7 @@ module acore_stream_formal #(
       always @(posedge clk_i) begin
         if (!init_q) begin
           assert (out_valid_o == ref_q[LATENCY-1]);
-          assert (in_ready_o == (!rst_i && ref_en));
+          assert (in_ready_o == (!rst_i && ref_en && !shell_busy));
           assert (tap_vld == ref_q);
           if (!rst_i) assert (inflight == ones);
         end
@@ -232,9 +280,113 @@ module acore_stream_formal #(
           assert (tap_cnt == ((since_q >= FOLD) ? FOLD - 1 : since_q - 1));
           if (tap_rdy) assert (tap_cnt == FOLD - 1);
           if (tap_rdy) assert (inflight < CAP);
-          if (tap_rdy) assert (in_ready_o);
+          if (tap_rdy) assert (in_ready_o == !shell_busy);
         end
       end
     end
   endgenerate
+  // ---- serial (SERIAL = 1): where the sample in flight is (taps, connected by the driver to the
+  // sequencer's idle state and the stage-2 flag of its OUT operation): being computed (not idle),
+  // its result being written to the output registers (OUT's stage 2), or on the output port. These
+  // make k-induction close. ----
+  generate
+    if (SERIAL != 0) begin : g_serial_ref
+      wire tap_idle, tap_out_we;
+      always @(*) begin
+        if (!init_q && !rst_i) begin
+          assert (inflight == !tap_idle + tap_out_we + out_valid_o);
+          if (!tap_idle) assert (!in_ready_o);
+        end
+      end
+    end
+  endgenerate
+  // ---- shell (SHELL = 1): the APB4 rules, the commit, the CRC, the scrubber ----
+  //   apb       PREADY high; PSLVERR only in an access phase (PSEL && PENABLE); no side effect
+  //             outside an error-free write access: a register value (CTRL's fields, MAG_LO/HI,
+  //             CRC_EXPECTED) changes, a shadow word is written, a commit is requested or a sticky
+  //             STATUS bit falls only the clock after one (or in reset).
+  //   atomic    the top's host port writes (the commit's stream) only while a commit is busy, with
+  //             no sample in flight, none taken in that clock or the next (the write lands the
+  //             clock after it is registered): every output is computed with one image; the
+  //             shadow is not written while a commit is busy (the image checked is the one
+  //             streamed).
+  //   crc       with CRC_CHECK set when the commit decides, a commit whose shadow CRC (the
+  //             engine's, CRC_SHADOW) differs from CRC_EXPECTED writes nothing and keeps the bank.
+  //   scrub     the scrubber never writes the top's words: every write is a commit's.
+  //   count     the shell's in-flight counter equals the harness's (the invariant for induction).
+  generate
+    if (SHELL != 0) begin : g_shell_ref
+      // APB4 master rules: PENABLE only in the clock after a setup phase (PSEL && !PENABLE),
+      // whose address, direction, data and strobes it keeps; PREADY is high, so an access phase
+      // lasts one clock. No transfer in reset.
+      reg past_setup_q = 1'b0;
+      reg [APB_AW-1:0] past_addr_q;
+      reg past_write_q;
+      reg [31:0] past_wdata_q;
+      reg [3:0] past_strb_q;
+      always @(posedge clk_i) begin
+        past_setup_q <= psel_i && !penable_i && !rst_i;
+        past_addr_q <= paddr_i;
+        past_write_q <= pwrite_i;
+        past_wdata_q <= pwdata_i;
+        past_strb_q <= pstrb_i;
+      end
+      always @(*) begin
+        if (rst_i) assume (!psel_i);
+        if (penable_i) assume (psel_i && past_setup_q);
+        if (past_setup_q) assume (psel_i && penable_i && paddr_i == past_addr_q &&
+                                  pwrite_i == past_write_q && pwdata_i == past_wdata_q &&
+                                  pstrb_i == past_strb_q);
+      end
+      wire access = psel_i && penable_i;
+      // (taps, connected by the driver to the shell's wires)
+      wire tap_top_we, tap_busy, tap_coef_we, tap_commit, tap_decide, tap_check;
+      wire [31:0] tap_crc_shadow, tap_crc_expected;
+      wire [CNT_W-1:0] tap_inflight;
+      wire tap_bank;
+      wire tap_scrub;
+      wire [5:0] tap_irq_en;
+      wire [MAG_W-1:0] tap_mag_lo, tap_mag_hi;
+      wire tap_ovf, tap_los, tap_dos, tap_crc_shadow_err, tap_crc_active_err, tap_done;
+      wire [5:0] tap_sticky = {tap_ovf, tap_los, tap_dos, tap_crc_shadow_err, tap_crc_active_err,
+                               tap_done};
+      wire [31+2+6+2*MAG_W:0] regs = {tap_crc_expected, tap_check, tap_scrub, tap_irq_en, tap_mag_lo,
+                                      tap_mag_hi};
+      reg [31+2+6+2*MAG_W:0] past_regs_q;
+      reg [5:0] past_sticky_q;
+      reg past_wr_q = 1'b0, past_top_we_q = 1'b0, past_bank_q, ok_q, past_shell_rst_q = 1'b1;
+      always @(posedge clk_i) begin
+        past_regs_q <= regs;
+        past_sticky_q <= tap_sticky;
+        past_wr_q <= access && pwrite_i && !pslverr_o;
+        past_top_we_q <= tap_top_we && !rst_i;
+        past_bank_q <= tap_bank;
+        past_shell_rst_q <= rst_i;
+        // the commit's verdict, when it decides: may it write?
+        if (tap_decide) ok_q <= !tap_check || tap_crc_shadow == tap_crc_expected;
+      end
+      always @(posedge clk_i) begin
+        if (!init_q && !rst_i) begin
+          // apb
+          assert (pready_o);
+          if (pslverr_o) assert (access);
+          if (!past_shell_rst_q && !past_wr_q) begin
+            assert (regs == past_regs_q);
+            assert ((past_sticky_q & ~tap_sticky) == 6'd0);
+          end
+          if (tap_coef_we || tap_commit) assert (access && pwrite_i && !pslverr_o);
+          // atomic, scrub
+          if (tap_top_we) assert (tap_busy && inflight == 0 && !accept);
+          if (past_top_we_q) assert (!accept);
+          if (tap_coef_we) assert (!tap_busy);
+          // crc: a write follows a decision that allowed it; the bank flips only after writes
+          if (tap_top_we) assert (ok_q);
+          if (!past_shell_rst_q && tap_bank != past_bank_q) assert (ok_q);
+          // count
+          assert (tap_inflight == inflight);
+        end
+      end
+    end
+  endgenerate
+
 endmodule

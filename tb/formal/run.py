@@ -1,19 +1,32 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Formal proofs of AngleCore's handshakes with Yosys and yosys-smtbmc (z3), no SymbiYosys.
+"""Formal proofs of AngleCore's handshakes with Yosys and its bundled ABC, or yosys-smtbmc (z3).
 
-usage: run.py CONFIG [--mode auto|bmc|prove] [--depth N] [--mutant NAME] [--workdir DIR]
+usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant NAME]
+                     [--workdir DIR]
        run.py --list            the registry lines with the formal flow, and the planted bugs
 
 CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
 folded top's output FIFO alone). The harness (tb/formal/*.sv) wraps the line's module with the
 line's parameters; its bounds come from the elaborated RTL (LATENCY, CAPACITY: registry.py's
-rtl_constants), never from a second table.
+rtl_constants), never from a second table. Which engine closes a harness's proof, and at which
+depth, is the table PROOFS below (one row a harness).
 
+Engines (--engine overrides the table's):
+  ind     the design as an AIGER file (flatten, async2sync, memory_map, techmap, dffunmap,
+          abc -g AND, write_aiger -zinit: the SymbiYosys abc flow), then yosys-abc: the base case
+          `fold; strash; bmc3 -F k+1` (no assertion fails in the first k+1 clocks from reset) and
+          the step `orpos; strash; ind -F k` (k-induction; the assumptions are AIGER constraints).
+  pdr     the same AIGER file, `fold; strash; pdr` (property-directed reachability: an inductive
+          invariant of its own; no depth).
+  smtbmc  SMT2 and yosys-smtbmc with z3: a base-case BMC of depth k, then the k-induction step.
+  bmc     bounded only (a harness whose proof does not close yet): `fold; strash; bmc3 -F k`.
+  --mode bmc, and every mutant: the AIGER file, `fold; strash; bmc3 -F depth` (the smtbmc
+          engine: yosys-smtbmc -t depth).
+
+  prove  the engine's unbounded proof (default for a harness with a row in PROOFS).
   bmc    bounded model check from reset for --depth clocks (default: the harness's BMC depth).
-  prove  k-induction of depth --depth (default: the harness's), after a BMC of the same depth.
-  auto   (default) prove where the harness has an induction depth that closes, else bmc; a mutant:
-         bmc (a counterexample is a trace from reset).
+  auto   (default) prove, a mutant: bmc (a counterexample is a trace from reset).
 
 --mutant NAME runs on a copy of the RTL with one planted bug (MUTANTS below) and expects the solver
 to find a counterexample: exit 0 when it does (the property can fail), 1 when the bug goes unseen.
@@ -21,7 +34,9 @@ to find a counterexample: exit 0 when it does (the property can fail), 1 when th
 Abstraction: the arithmetic (every stage instance of the datapath: pre-filter, scalers, region
 select, correction, CORDIC, Fourier, delay lines, register files) is cut (Yosys `cutpoint`: its
 outputs become free values each clock). The properties are about the valid/ready control and the
-output registers, which are kept, so any behaviour of the cut values is covered.
+output registers, which are kept, so any behaviour of the cut values is covered. The ABC engines
+also cut the read of the folded top's output FIFO memory (its data word is free when loaded; the
+FIFO's order is the fifo harness's proof), which removes its 256 words from the state.
 Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
 """
 
@@ -59,8 +74,9 @@ CUT_TOP = [
     "acore_ram_delay",
 ]
 
-# Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks). Each must make the
-# solver find a counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
+# Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks[, BMC depth: clocks
+# from reset it needs, when fewer than the harness's]). Each must make the solver find a
+# counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
 MUTANTS = {
     # FOLD = 1: a sample offered while the output is held is taken, but the pipeline does not move:
     # it is lost (overwritten).
@@ -87,6 +103,7 @@ MUTANTS = {
         r"assign in_ready_o = en & ~rst_i;",
         "assign in_ready_o = en;",
         "reset: in_ready_o high in reset",
+        4,
     ),
     # Folded: the FIFO's output register loads while the held word waits (ready ignored).
     "fold_fifo_ignores_ready": (
@@ -120,6 +137,71 @@ MUTANTS = {
         "if (load) rptr_q <= rptr_q + 2'd1 + wr_i;",
         "order: the tagged word is not the word given",
     ),
+    # Serial core: the output valid flag not reset: a result of before the reset comes out.
+    "serial_valid_not_reset": (
+        "serial",
+        "acore_serial_ctrl.v",
+        r"state_q <= ST_IDLE;\n(\s*)out_valid_q <= 1'b0;",
+        "state_q <= ST_IDLE;",
+        "reset/count: an output from before the reset",
+        8,
+    ),
+    # Shell: a shadow word written in the setup phase (with the last transfer's decode).
+    "apb_write_in_setup": (
+        "apb",
+        "acore_apb_regblock.v",
+        r"assign coef_we_o = access & w_coef_q;",
+        "assign coef_we_o = psel_i & w_coef_q;",
+        "apb: a side effect outside an access phase",
+        8,
+    ),
+    # Shell: the scrubber writes the word it reads back into the top (a committed word changes).
+    "apb_scrub_writes": (
+        "apb_serial",
+        "acore_coef_bank.v",
+        r"top_we_o <= \(state_q == C_STREAM\) & pend_q;",
+        "top_we_o <= ((state_q == C_STREAM) & pend_q) | s_load;",
+        "scrub: a write to the top outside a commit",
+        16,
+    ),
+    # Shell: the commit streams without waiting for the samples in flight (a mixed image).
+    "apb_commit_not_drained": (
+        "apb",
+        "acore_coef_bank.v",
+        r"wire decide = \(state_q == C_CHECK\) & cmp_q & drained;",
+        "wire decide = (state_q == C_CHECK) & cmp_q;",
+        "atomic: the top's words change with a sample in flight",
+        130,
+    ),
+    # Shell: the commit's verdict inverted: a wrong CRC is applied.
+    "apb_wrong_crc_applied": (
+        "apb",
+        "acore_coef_bank.v",
+        r"wire refuse = decide & check_i & neq_q;",
+        "wire refuse = decide & check_i & ~neq_q;",
+        "crc: a commit with a wrong CRC writes the top",
+        130,
+    ),
+}
+
+
+# A planted bug found within this many clocks from reset is checked in the default run (seconds).
+SHORT_BMC = 16
+
+# The proof of each harness: harness -> (engine, depth k of the base case and the induction step;
+# None: the engine needs none). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
+# with FOLD = 1 or folded, "acore_serial_top").
+PROOFS = {
+    # The reference valid pipeline and the top's valid bits tapped: 4-induction closes.
+    "acore_top": ("ind", 4),
+    "acore_top_folded": ("ind", 4),
+    "acore_serial_top": ("pdr", None),
+    "fifo": ("pdr", None),
+    # The shell: bounded for now (APB rules, reset, the first transfers). pdr had no verdict after
+    # 1.5 CPU minutes and `ind -F 6` does not close: the commit's CHECK pass (about 120 clocks)
+    # needs invariants tying the bank's state and comparator to the harness's verdict.
+    "acore_apb": ("bmc", 24),
+    "acore_apb_serial": ("bmc", 24),
 }
 
 
@@ -128,36 +210,54 @@ def rtl_files():
 
 
 def stream_setup(line):
-    """(harness file, harness parameters, cut modules, taps, default depths) for a top's line."""
-    params = line.params
-    serial = line.module == "acore_serial_top"
-    c = registry.rtl_constants(ROOT, line.module, params)
+    """The harness, its parameters, cuts, memories and taps for a line of acore_top,
+    acore_serial_top or the shell acore_apb around either (its SERIAL)."""
+    shell_line = line.module == "acore_apb"
+    params = [(k, v) for k, v in line.params if k != "SERIAL"]
+    serial = line.module == "acore_serial_top" or (
+        shell_line and int(dict(line.params).get("SERIAL", 0)) != 0
+    )
+    top = "acore_serial_top" if serial else "acore_top"
+    c = registry.rtl_constants(ROOT, top, params)
     shell = registry.rtl_constants(ROOT, "acore_apb", params + ([("SERIAL", 1)] if serial else []))
     fold = 1 if serial else c["FOLD"]
     lat = c["LATENCY"]
-    # Clocks a sample may wait with the output free: its latency (the serial core: two clocks more,
-    # a host write landing on each of its two scratch-word writes delays it by one).
-    bound = lat + 2 if serial else lat
+    # Clocks a sample may wait with the output free: its latency (the serial core's harness does
+    # not count the clocks a host write lands in: each may stall it by one).
+    bound = lat
     # The line's datapath parameters go to the harness, which passes them on to the top.
     h = dict(params)
     h.update(
         {
             "SERIAL": int(serial),
+            "SHELL": int(shell_line),
             "LATENCY": lat,
             "CAP": shell["CAPACITY"],
+            "CNT_W": shell["CAPACITY"].bit_length(),
             "BOUND": bound,
             "ADDR_W": c["ADDR_W"],
             "RG_W": c["RG_W"],
             "MAG_W": c["MAG_W"],
         }
     )
+    # Where the top is after flattening: the harness's instance, or the shell's.
+    if shell_line:
+        p = "g_shell.dut."
+        dut = p + ("g_serial.u_top." if serial else "g_pipe.u_top.")
+    else:
+        dut = "g_serial.dut." if serial else "g_top.dut."
     taps = []
+    if serial:
+        taps += [
+            ("g_serial_ref.tap_idle", dut + "u_ctrl.idle"),
+            ("g_serial_ref.tap_out_we", dut + "u_ctrl.out_we_o"),
+        ]
     if not serial and fold == 1:
-        taps.append(("g_ref.tap_vld", "g_top.dut.g_pipe.vld_q"))
+        taps.append(("g_ref.tap_vld", dut + "g_pipe.vld_q"))
     if not serial and fold > 1:
         h["DPV_W"] = lat - 3
         h["OCC_W"] = (shell["CAPACITY"] - 1).bit_length() + 1
-        f = "g_top.dut.g_fold."
+        f = dut + "g_fold."
         taps += [
             ("g_fold_ref.tap_v", f + "u_dp.v_q"),
             ("g_fold_ref.tap_out_vld", f + "out_vld_q"),
@@ -167,152 +267,179 @@ def stream_setup(line):
             ("g_fold_ref.tap_wptr", f + "u_fifo.wptr_q"),
             ("g_fold_ref.tap_rptr", f + "u_fifo.rptr_q"),
         ]
+    if shell_line:
+        r = "g_shell_ref."
+        taps += [
+            ("g_host_we.tap_top_we", p + "top_we"),
+            ("g_host_we.tap_busy", p + "busy"),
+            (r + "tap_top_we", p + "top_we"),
+            (r + "tap_busy", p + "busy"),
+            (r + "tap_bank", p + "bank"),
+            (r + "tap_coef_we", p + "rg_coef_we"),
+            (r + "tap_commit", p + "rg_ctrl_commit"),
+            (r + "tap_decide", p + "u_bank.decide"),
+            (r + "tap_check", p + "u_regs.ctrl_crc_check_q"),
+            (r + "tap_crc_shadow", p + "u_bank.crc_shadow_o"),
+            (r + "tap_crc_expected", p + "u_regs.crc_expected_q"),
+            (r + "tap_inflight", p + "u_bank.inflight_q"),
+            (r + "tap_scrub", p + "u_regs.ctrl_scrub_q"),
+            (r + "tap_irq_en", p + "u_regs.ctrl_irq_en_q"),
+            (r + "tap_mag_lo", p + "u_regs.mag_lo_q"),
+            (r + "tap_mag_hi", p + "u_regs.mag_hi_q"),
+            (r + "tap_ovf", p + "u_regs.status_ovf_q"),
+            (r + "tap_los", p + "u_regs.status_los_q"),
+            (r + "tap_dos", p + "u_regs.status_dos_q"),
+            (r + "tap_crc_shadow_err", p + "u_regs.status_crc_shadow_q"),
+            (r + "tap_crc_active_err", p + "u_regs.status_crc_active_q"),
+            (r + "tap_done", p + "u_regs.status_done_q"),
+        ]
     cut = [] if serial else CUT_TOP
-    # k-induction (TIMERS = 0) closes on acore_top at small depths with the taps' invariants; the
-    # serial core is bounded: LATENCY + 8 clocks past reset.
-    prove = None if serial else 4
-    return "acore_stream_formal.sv", "acore_stream_formal", h, cut, taps, lat + 9, prove
+    # Memories whose read is cut (ABC engines): the folded top's output FIFO; the serial core's RAM
+    # (coefficients and scratch words: data only, the schedule never reads it); the shell's shadow
+    # bank (its words reach only the CRC and the top's words: any value is covered).
+    mems = ["u_ram.mem_q"] if serial else ["u_fifo.mem_q"]
+    if shell_line:
+        mems.append("u_shadow.mem_q")
+    proof = "acore_serial_top" if serial else ("acore_top_folded" if fold > 1 else "acore_top")
+    if shell_line:
+        proof = "acore_apb_serial" if serial else "acore_apb"
+    return {
+        "harness": "acore_stream_formal.sv",
+        "top": "acore_stream_formal",
+        "hparams": h,
+        "cut": cut,
+        "mems": mems,
+        "taps": taps,
+        "bmc_depth": lat + 9,
+        "proof": proof,
+    }
 
 
-def yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2):
+def fifo_setup():
+    return {
+        "harness": "acore_fifo_formal.sv",
+        "top": "acore_fifo_formal",
+        "hparams": {},
+        "cut": [],
+        "mems": [],
+        "taps": [],
+        "bmc_depth": 14,
+        "proof": "fifo",
+    }
+
+
+def front_script(rtl_dir, line_module, line_params, st):
+    """Yosys commands up to the flattened design with its taps connected (both back ends)."""
     s = [
         f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(rtl_dir, os.path.basename(f))}"
         for f in rtl_files()
         if f.endswith(".v")
     ]
-    s.append(f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(HERE, harness)}")
+    s.append(f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(HERE, st['harness'])}")
     if line_params:
         s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in line_params) + f" {line_module}")
-    s.append("chparam " + " ".join(f"-set {k} {v}" for k, v in hparams.items()) + f" {top}")
-    s.append(f"hierarchy -check -top {top}")
+    if st["hparams"]:
+        s.append(
+            "chparam "
+            + " ".join(f"-set {k} {v}" for k, v in st["hparams"].items())
+            + f" {st['top']}"
+        )
+    s.append(f"hierarchy -check -top {st['top']}")
     s.append("proc")
-    for m in cut:
+    for m in st["cut"]:
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
-        s.append(f"cutpoint -undef @cut_{m}" if False else f"cutpoint @cut_{m}")
-    # (opt_clean first: it merges the aliases of a tap wire, which connect -set
-    # would otherwise cut.)
-    s += ["flatten", "opt_clean"]
-    for w, src in taps:
+        s.append(f"cutpoint @cut_{m}")
+    # (keep: a tapped register may feed nothing but the tap, which opt_clean would remove; then
+    # opt_clean, which merges the aliases of a tap wire, which connect -set would otherwise cut.)
+    s.append("flatten")
+    s += [f"setattr -set keep 1 w:{src}" for _, src in st["taps"]]
+    s.append("opt_clean")
+    for w, src in st["taps"]:
         s.append(f"connect -set {w} {src}")
     # A tap left undriven would be a free value: check stops on it.
+    s += ["opt_clean", "check -assert"]
+    return s
+
+
+def smt2_script(front, smt2):
+    return "\n".join([*front, "async2sync", "dffunmap", "stat", f"write_smt2 -wires {smt2}"]) + "\n"
+
+
+def aiger_script(front, mems, aig):
+    s = [*front, "memory_collect"]
+    for m in mems:
+        # The memory's read data becomes a free value each clock (the write side has no reader).
+        s.append(f"cutpoint t:$mem_v2 n:*{m} %i")
     s += [
-        "opt_clean",
-        "check -assert",
         "async2sync",
+        "memory_map",
+        "opt_clean",
+        "techmap",
+        "opt -fast",
         "dffunmap",
+        "abc -g AND -fast",
+        # Constant x bits (a case default) become free values: any value is covered.
+        "setundef -anyseq",
+        "opt_clean",
         "stat",
-        f"write_smt2 -wires {smt2}",
+        # The bad-state outputs are the $assert cells in this order (a failing output's source).
+        f"tee -q -o {aig}.asserts select -list t:$assert",
+        f"write_aiger -zinit -map {aig}.map {aig}",
     ]
     return "\n".join(s) + "\n"
 
 
-def main(argv):
-    ap = argparse.ArgumentParser(
-        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
-    )
-    ap.add_argument("config", nargs="?")
-    ap.add_argument("--mode", choices=("auto", "bmc", "prove"), default="auto")
-    ap.add_argument("--depth", type=int)
-    ap.add_argument("--mutant")
-    ap.add_argument("--workdir")
-    ap.add_argument("--list", action="store_true")
-    try:
-        a = ap.parse_args(argv)
-    except SystemExit as e:
-        return 0 if e.code == 0 else 2
-    if a.list:
-        for l in registry.select(ROOT, flows=["formal"]):
-            print(l)
-        for n, m in MUTANTS.items():
-            # CTest label: a top's planted bug shows after the pipeline fills (a BMC of about
-            # LATENCY clocks, long on a loaded machine); the FIFO's within a few clocks.
-            print(f"mutant {n}: {m[0]}: {'formal' if m[0] == 'fifo' else 'long'}: {m[4]}")
-        return 0
-    if not a.config:
-        print("run.py: a CONFIG is needed (run.py --list)", file=sys.stderr)
-        return 2
-    if a.mutant and a.mutant not in MUTANTS:
-        print(f"run.py: unknown mutant '{a.mutant}' (known: {', '.join(MUTANTS)})", file=sys.stderr)
-        return 2
-    work = a.workdir or tempfile.mkdtemp(prefix=f"acore_formal_{a.config}_")
-    os.makedirs(work, exist_ok=True)
-    rtl_dir = os.path.join(ROOT, "rtl")
-    if a.mutant:
-        _, fname, pat, rep, _ = MUTANTS[a.mutant]
-        mdir = os.path.join(work, "rtl")
-        shutil.rmtree(mdir, ignore_errors=True)
-        shutil.copytree(rtl_dir, mdir)
-        path = os.path.join(mdir, fname)
-        text = open(path).read()
-        new, n = re.subn(pat, rep, text)
-        if n != 1:
-            print(
-                (
-                    f"run.py: mutant {a.mutant}: pattern found {n} times in "
-                    f"rtl/{fname} (expected once)"
-                ),
-                file=sys.stderr,
-            )
-            return 2
-        open(path, "w").write(new)
-        rtl_dir = mdir
-    try:
-        if a.config == "fifo":
-            line_module, line_params = "acore_fold_fifo", []
-            harness, top, hparams, cut, taps, bmc_depth, prove_depth = (
-                "acore_fifo_formal.sv",
-                "acore_fifo_formal",
-                {},
-                [],
-                [],
-                14,
-                None,
-            )
-        else:
-            line = registry.get(ROOT, a.config)
-            if "formal" not in line.flows:
-                raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
-            if line.module in ("acore_top", "acore_serial_top"):
-                # (the harness takes the line's parameters and passes them on: hparams holds them)
-                line_module, line_params = line.module, []
-                harness, top, hparams, cut, taps, bmc_depth, prove_depth = stream_setup(line)
-            else:
-                raise registry.RegistryError(
-                    f"{line.where}: no formal harness for module {line.module}"
-                )
-    except registry.RegistryError as e:
-        print(f"run.py: {e}", file=sys.stderr)
-        return 2
-    if a.mode == "auto":
-        a.mode = "bmc" if prove_depth is None or a.mutant else "prove"
-    if a.mode == "prove" and prove_depth is None and a.depth is None:
-        print(
-            f"run.py: {a.config}: no induction depth known to close (use bmc, or --depth)",
-            file=sys.stderr,
-        )
-        return 2
-    depth = a.depth or (prove_depth if a.mode == "prove" else bmc_depth)
-    if "TIMERS" in hparams or top == "acore_stream_formal":
-        hparams["TIMERS"] = 0 if a.mode == "prove" else 1
-    smt2 = os.path.join(work, "model.smt2")
-    ys = os.path.join(work, "model.ys")
-    open(ys, "w").write(
-        yosys_script(rtl_dir, line_module, line_params, harness, top, hparams, cut, taps, smt2)
-    )
-    t0 = time.time()
+def run_abc(work, what, commands):
+    """yosys-abc on the commands; (verdict, frame or None, log). Verdicts: proved, failed,
+    undecided, error."""
     r = subprocess.run(
-        ["yosys", "-q", "-l", os.path.join(work, "yosys.log"), "-s", ys],
-        capture_output=True,
-        text=True,
+        ["yosys-abc", "-c", commands], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
     )
-    if r.returncode != 0:
-        print(f"run.py: yosys failed (log {work}/yosys.log):\n{r.stderr[-3000:]}", file=sys.stderr)
-        return 2
+    open(os.path.join(work, f"abc_{what}.log"), "w").write(r.stdout)
+    m = re.search(r"Output (\d+) of miter .* was asserted in frame (\d+)", r.stdout)
+    if m:
+        return "failed", (int(m.group(1)), int(m.group(2))), r.stdout
+    if re.search(r"No output asserted in \d+ frames", r.stdout):
+        return "passed", None, r.stdout
+    if "Networks are equivalent" in r.stdout or "Property proved" in r.stdout:
+        return "proved", None, r.stdout
+    if "UNDECIDED" in r.stdout or "Resource limit" in r.stdout:
+        return "undecided", None, r.stdout
+    return "error", None, r.stdout
+
+
+def abc_check(work, aig, mode, engine, depth):
+    """(status, detail): status PASSED / FAILED / UNDECIDED / ERROR as yosys-smtbmc's."""
+    runs = []
+    if mode == "bmc" or engine == "bmc":
+        runs.append(("bmc", f"read_aiger {aig}; fold; strash; bmc3 -F {depth}"))
+    elif engine == "ind":
+        # (one frame more than the step's: the base covers every frame the step assumes)
+        runs.append(("base", f"read_aiger {aig}; fold; strash; bmc3 -F {depth + 1}"))
+        runs.append(("induction", f"read_aiger {aig}; orpos; strash; ind -F {depth}"))
+    else:
+        runs.append(("pdr", f"read_aiger {aig}; fold; strash; pdr"))
+    for what, cmd in runs:
+        verdict, where, log = run_abc(work, what, cmd)
+        if verdict == "failed":
+            # (the base case and bmc read the unfolded outputs: one an assertion, in their order)
+            names = open(aig + ".asserts").read().split()
+            src = names[where[0]] if where[0] < len(names) else f"output {where[0]}"
+            src = re.sub(r"^.*?/([^/]+\.s?v:\d+).*$", r"\1", src)
+            return f"FAILED ({what})", f"assertion {src} fails in clock {where[1]}"
+        if verdict == "undecided" or (verdict == "passed" and what == "induction"):
+            return f"UNDECIDED ({what})", ""
+        if verdict == "error":
+            return "ERROR", log[-3000:]
+    return "PASSED", ""
+
+
+def smtbmc_check(work, smt2, mode, depth):
     # prove: the base case (a BMC of depth k from reset) and the induction step (k-induction); a
     # proof needs both. yosys-smtbmc -i runs the step alone.
     runs = [("bmc", ["-t", str(depth), "--dump-vcd", os.path.join(work, "trace.vcd")])]
-    if a.mode == "prove":
+    if mode == "prove":
         runs.append(
             (
                 "induction",
@@ -334,15 +461,130 @@ def main(argv):
         if status != "PASSED":
             status = f"{status} ({what})" if status == "FAILED" else status
             break
-    dt = time.time() - t0
     fails = sorted(set(re.findall(r"Assert failed in \S+: (\S+)", out)))
+    if status.startswith(("PASSED", "FAILED")):
+        return status, " ".join(fails)
+    return status, out[-3000:]
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    ap.add_argument("config", nargs="?")
+    ap.add_argument("--mode", choices=("auto", "bmc", "prove"), default="auto")
+    ap.add_argument("--engine", choices=("ind", "pdr", "bmc", "smtbmc"))
+    ap.add_argument("--depth", type=int)
+    ap.add_argument("--mutant")
+    ap.add_argument("--workdir")
+    ap.add_argument("--list", action="store_true")
+    try:
+        a = ap.parse_args(argv)
+    except SystemExit as e:
+        return 0 if e.code == 0 else 2
+    if a.list:
+        for l in registry.select(ROOT, flows=["formal"]):
+            print(l)
+        for n, m in MUTANTS.items():
+            # CTest label: a planted bug with a BMC depth of its own of at most SHORT_BMC clocks
+            # (or the FIFO's, 14) runs in the default run; the others at the harness's depth
+            # (LATENCY + 9 clocks, up to a minute of CPU each) run long.
+            long = not (m[0] == "fifo" or (len(m) > 5 and m[5] <= SHORT_BMC))
+            print(f"mutant {n}: {m[0]}: {'long' if long else 'formal'}: {m[4]}")
+        return 0
+    if not a.config:
+        print("run.py: a CONFIG is needed (run.py --list)", file=sys.stderr)
+        return 2
+    if a.mutant and a.mutant not in MUTANTS:
+        print(f"run.py: unknown mutant '{a.mutant}' (known: {', '.join(MUTANTS)})", file=sys.stderr)
+        return 2
+    work = a.workdir or tempfile.mkdtemp(prefix=f"acore_formal_{a.config}_")
+    os.makedirs(work, exist_ok=True)
+    rtl_dir = os.path.join(ROOT, "rtl")
+    if a.mutant:
+        _, fname, pat, rep, _, *mdepth = MUTANTS[a.mutant]
+        mdir = os.path.join(work, "rtl")
+        shutil.rmtree(mdir, ignore_errors=True)
+        shutil.copytree(rtl_dir, mdir)
+        path = os.path.join(mdir, fname)
+        text = open(path).read()
+        new, n = re.subn(pat, rep, text)
+        if n != 1:
+            print(
+                (
+                    f"run.py: mutant {a.mutant}: pattern found {n} times in "
+                    f"rtl/{fname} (expected once)"
+                ),
+                file=sys.stderr,
+            )
+            return 2
+        open(path, "w").write(new)
+        rtl_dir = mdir
+    try:
+        if a.config == "fifo":
+            line_module, line_params = "acore_fold_fifo", []
+            st = fifo_setup()
+        else:
+            line = registry.get(ROOT, a.config)
+            if "formal" not in line.flows:
+                raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
+            if line.module in ("acore_top", "acore_serial_top", "acore_apb"):
+                # (the harness takes the line's parameters and passes them on: hparams holds them)
+                line_module, line_params = line.module, []
+                st = stream_setup(line)
+            else:
+                raise registry.RegistryError(
+                    f"{line.where}: no formal harness for module {line.module}"
+                )
+    except registry.RegistryError as e:
+        print(f"run.py: {e}", file=sys.stderr)
+        return 2
+    engine, prove_depth = PROOFS[st["proof"]]
+    engine = a.engine or engine
+    if a.mode == "auto":
+        a.mode = "bmc" if a.mutant else "prove"
+    if a.mutant and mdepth:
+        # (a planted bug the table says shows earlier than the harness's BMC depth)
+        st["bmc_depth"] = mdepth[0]
+    depth = a.depth or (prove_depth if a.mode == "prove" else st["bmc_depth"])
+    if a.mode == "prove" and engine != "pdr" and not depth:
+        print(f"run.py: {a.config}: {engine} needs a depth (--depth)", file=sys.stderr)
+        return 2
+    if st["top"] == "acore_stream_formal":
+        # The timer properties are bounded ones (bmc); a proof has the reference invariants.
+        st["hparams"]["TIMERS"] = 0 if a.mode == "prove" else 1
+    front = front_script(rtl_dir, line_module, line_params, st)
+    ys = os.path.join(work, "model.ys")
+    if engine == "smtbmc":
+        model = os.path.join(work, "model.smt2")
+        open(ys, "w").write(smt2_script(front, model))
+    else:
+        model = os.path.join(work, "model.aig")
+        open(ys, "w").write(aiger_script(front, st["mems"], model))
+    t0 = time.time()
+    r = subprocess.run(
+        ["yosys", "-q", "-l", os.path.join(work, "yosys.log"), "-s", ys],
+        capture_output=True,
+        text=True,
+    )
+    if r.returncode != 0:
+        print(f"run.py: yosys failed (log {work}/yosys.log):\n{r.stderr[-3000:]}", file=sys.stderr)
+        return 2
+    if engine == "smtbmc":
+        status, detail = smtbmc_check(work, model, a.mode, depth)
+    else:
+        status, detail = abc_check(work, model, a.mode, engine, depth)
+    dt = time.time() - t0
+    how = f"{a.mode} {engine}" + (
+        "" if engine == "pdr" and a.mode == "prove" else f" depth {depth}"
+    )
     what = (
-        f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {a.mode} depth {depth}: {status} "
+        f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {how}: {status} "
         f"({dt:.1f} s; {work})"
     )
-    print(what + (f"\n  failed: {' '.join(fails)}" if fails else ""))
-    if not status.startswith(("PASSED", "FAILED")):
-        print(out[-3000:], file=sys.stderr)
+    print(what + (f"\n  {detail}" if detail and status.startswith("FAILED") else ""))
+    if not status.startswith(("PASSED", "FAILED", "UNDECIDED")):
+        print(detail, file=sys.stderr)
         return 2
     if a.mutant:
         return 0 if status.startswith("FAILED") else 1
