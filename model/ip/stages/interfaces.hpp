@@ -97,8 +97,8 @@ struct As5047Inputs {
 
 // The AS5047P settings the port maps onto the board's registers (rtl/acore_spi_as5047.v's header):
 // IF_ZERO.ZERO (ZPOS, 2^-14 turn), IF_CTRL.DIR, IF_CTRL.DAEC (not DAECDIS), ABZ_N (ABIRES with
-// ABIBIN), UVW_PP (UVWPP + 1), ABZ_HYS ((3 - HYS) 2^(angle_w-11) angle LSBs). Their reset values
-// are the board's.
+// ABIBIN), UVW_PP (UVWPP + kUvwppOffset, at most kUvwppMaxPp), ABZ_HYS ((kHysMax - HYS) LSBs of
+// 2^-kHysLsbLog2 turn, in angle LSBs). Their reset values are the board's.
 struct As5047Config {
   uint16_t zero = 0;
   bool dir = false, daec = true;
