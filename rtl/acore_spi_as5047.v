@@ -9,37 +9,39 @@
 // The answer to a read comes in the next frame, as {PAR, EF, DATA[13:0]} with even parity. A write
 // is two frames (the datasheet's sequence): the command {PAR, 0, ADDR}, then the data frame
 // {PAR, x, DATA}; the data frame answers the register's old content, the frame after it the new.
-// The registers:
-//   0x0000 NOP       0
-//   0x0001 ERRFL     bit 2 PARERR, bit 1 INVCOMM, bit 0 FRERR; cleared by its own read
-//   0x0003 PROG      bit 0 PROGEN, bit 6 PROGVER kept and read back; OTPREF (bit 2) and PROGOTP
-//                    (bit 3) read 0: there is no OTP, the settings below are the datasheet's
-//                    volatile path (effective at once, lost at reset), and a programming
-//                    "finishes" at once (PROG reads PROGEN alone, as the datasheet's poll expects)
-//   0x0016 ZPOSM     bits 7:0 ZPOS[13:6]            } the board's IF_ZERO.ZERO (cfg_zero)
-//   0x0017 ZPOSL     bits 5:0 ZPOS[5:0]             }
-//                    bits 7:6 comp_l/h_error_en     kept and read back (no effect)
-//   0x0018 SETTINGS1 bit 0 reads 1, bit 1 reads 0 (factory bits, not written);
-//                    bit 2 DIR                      the board's IF_CTRL.DIR (cfg_dir)
-//                    bit 4 DAECDIS                  the board's IF_CTRL.DAEC, inverted (cfg_daec)
-//                    bit 5 ABIBIN                   ABIRES's table: 1 binary, 0 decimal (reset 1,
-//                                                   so that ABZ_N's reset 1024 reads ABIRES 0)
-//                    bit 6 Dataselect               1: 0x3FFF reads ANGLEUNC's angle
-//                    bits 3 UVW_ABI, 7 PWMon        kept and read back (both outputs are always on)
-//   0x0019 SETTINGS2 bits 2:0 UVWPP                 the board's UVW_PP = UVWPP + 1 (7 for 7);
-//                                                   read: pole pairs - 1, 6 from 7 pole pairs up
-//                    bits 4:3 HYS                   the board's ABZ_HYS = (3 - HYS) LSBs of 2^-11 turn
-//                                                   (HYS_SHIFT = ANGLE_W - 11 angle LSBs each);
-//                                                   read: 3 - ceil(ABZ_HYS / 2^HYS_SHIFT), at least 0
-//                    bits 7:5 ABIRES                the board's ABZ_N: decimal 1000 500 400 300 200
-//                                                   100 50 25, binary 1024 512 256 (256 for 3..7);
-//                                                   read: the first entry of the table not above N
-//                                                   (a change of ABIBIN alone rewrites N with it)
-//   0x3FFC DIAAGC    bit 11 MAGL (los_i), bit 10 MAGH (dos_i), bit 9 COF (ovf_i), bit 8 LF
-//                    (~lot_i: the angle is settled), bits 7:0 AGC (agc_i)
-//   0x3FFD MAG       mag_i
-//   0x3FFE ANGLEUNC  the uncompensated angle's upper 14 bits
-//   0x3FFF ANGLECOM  the compensated angle's upper 14 bits (ANGLEUNC's with Dataselect)
+// The registers (their addresses, field positions, the resets of the fields the port keeps,
+// ABIRES's tables and the HYS and UVWPP encodings: rtl/acore_as5047_map.txt, generated into
+// rtl/acore_as5047.vh); what each does here:
+//   NOP       0
+//   ERRFL     PARERR, INVCOMM, FRERR; cleared by its own read
+//   PROG      PROGEN, PROGVER kept and read back; OTPREF and PROGOTP read 0: there is no OTP, the
+//             settings below are the datasheet's volatile path (effective at once, lost at reset),
+//             and a programming "finishes" at once (PROG reads PROGEN alone, as the datasheet's
+//             poll expects)
+//   ZPOSM     ZPOS's upper bits   } the board's IF_ZERO.ZERO (cfg_zero)
+//   ZPOSL     ZPOS's lower bits   }
+//             comp_l/h_error_en (ERR_EN) kept and read back (no effect)
+//   SETTINGS1 its factory bits read as the description's FIXED value (not written);
+//             DIR                 the board's IF_CTRL.DIR (cfg_dir)
+//             DAECDIS             the board's IF_CTRL.DAEC, inverted (cfg_daec)
+//             ABIBIN              ABIRES's table: 1 binary, 0 decimal (reset 1, so that ABZ_N's
+//                                 reset 1024 reads ABIRES 0)
+//             Dataselect          1: ANGLECOM reads ANGLEUNC's angle
+//             UVW_ABI, PWMon      kept and read back (both outputs are always on)
+//   SETTINGS2 UVWPP               the board's UVW_PP = UVWPP + UVWPP_OFFSET, at most UVWPP_MAX_PP;
+//                                 read: pole pairs - UVWPP_OFFSET, the last code's from
+//                                 UVWPP_MAX_PP pole pairs up
+//             HYS                 the board's ABZ_HYS = (HYS_MAX - HYS) LSBs of 2^-HYS_LSB_LOG2 turn
+//                                 (HYS_SHIFT = ANGLE_W - HYS_LSB_LOG2 angle LSBs each);
+//                                 read: HYS_MAX - ceil(ABZ_HYS / 2^HYS_SHIFT), at least 0
+//             ABIRES              the board's ABZ_N from the table ABIBIN picks (ABIRES_DEC,
+//                                 ABIRES_BIN; codes past a table's last take its last entry);
+//                                 read: the first entry of the table not above N
+//                                 (a change of ABIBIN alone rewrites N with it)
+//   DIAAGC    MAGL (los_i), MAGH (dos_i), COF (ovf_i), LF (~lot_i: the angle is settled), AGC (agc_i)
+//   MAG       mag_i
+//   ANGLEUNC  the uncompensated angle's upper 14 bits
+//   ANGLECOM  the compensated angle's upper 14 bits (ANGLEUNC's with Dataselect)
 // A mapped setting is the board's register (one home: the APB reads and writes the same flop);
 // the port reads it on cfg_*_i and writes it through cfg_*_we_o / cfg_*_o in the clock CSn rises
 // after the data frame.
@@ -121,6 +123,11 @@ module acore_spi_as5047 #(
   output wire [2:0]         errfl_o
 );
 
+  // The AS5047P's addresses, select codes (AS5047_S_*: the register an answer or a write is
+  // for), field positions, ABIRES's tables and the HYS and UVWPP encodings: generated from their
+  // one description rtl/acore_as5047_map.txt.
+`include "acore_as5047.vh"
+
   acore_check #(.OK(ANGLE_W >= 14 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 14..32 (the frame carries 14 bits)")) ANGLE_W_must_be_14_to_32 ();
   acore_check #(.OK(SYNC >= 2 && SYNC <= 4), .VALUE(SYNC),
@@ -132,19 +139,17 @@ module acore_spi_as5047 #(
     .MSG("illegal parameter: N_W must be 12..16 (ABIRES's N up to 1024)")) N_W_must_be_12_to_16 ();
   acore_check #(.OK(PP_W >= 4 && PP_W <= 8), .VALUE(PP_W),
     .MSG("illegal parameter: PP_W must be 4..8 (UVWPP's 7 pole pairs)")) PP_W_must_be_4_to_8 ();
-  acore_check #(.OK(HYS_W >= ANGLE_W - 9 && HYS_W <= 24), .VALUE(HYS_W),
+  acore_check #(.OK(HYS_W >= HYS_SHIFT + AS5047_SETTINGS2_HYS_W && HYS_W <= 24), .VALUE(HYS_W),
     .MSG("illegal parameter: HYS_W must be ANGLE_W-9..24 (HYS's 3 LSBs of 2^-11 turn)"))
     HYS_W_must_be_ANGLE_W_minus_9_to_24 ();
 
-  localparam [13:0] A_NOP = 14'h0000, A_ERRFL = 14'h0001, A_PROG = 14'h0003, A_ZPOSM = 14'h0016,
-                    A_ZPOSL = 14'h0017, A_SET1 = 14'h0018, A_SET2 = 14'h0019, A_DIAAGC = 14'h3FFC,
-                    A_MAG = 14'h3FFD, A_ANGLEUNC = 14'h3FFE, A_ANGLECOM = 14'h3FFF;
-  // The registers as the answer selects them.
-  localparam [3:0] S_NOP = 4'd0, S_ERRFL = 4'd1, S_PROG = 4'd2, S_ZPOSM = 4'd3, S_ZPOSL = 4'd4,
-                   S_SET1 = 4'd5, S_SET2 = 4'd6, S_DIAAGC = 4'd7, S_MAG = 4'd8, S_ANGLEUNC = 4'd9,
-                   S_ANGLECOM = 4'd10;
-  // HYS's LSB, 2^-11 turn, in angle LSBs.
-  localparam integer HYS_SHIFT = ANGLE_W - 11;
+  // HYS's LSB, 2^-AS5047_HYS_LSB_LOG2 turn, in angle LSBs.
+  localparam integer HYS_SHIFT = ANGLE_W - AS5047_HYS_LSB_LOG2;
+  // ZPOS's bits in ZPOSL (the rest in ZPOSM).
+  localparam integer ZPOS_LO_W = AS5047_ZPOSL_ZPOS_LO_W;
+  // ERRFL's bits in errfl_q (the register's bits 2:0).
+  localparam [2:0] E_FRERR = 3'd1 << AS5047_ERRFL_FRERR_LSB, E_INVCOMM = 3'd1 << AS5047_ERRFL_INVCOMM_LSB,
+                   E_PARERR = 3'd1 << AS5047_ERRFL_PARERR_LSB;
 
   // ---- synchronizers (idle: SCLK low, CSn high) and edges ----
   // (CSn one stage longer: a falling edge sees whether CSn was high for two clocks before it.)
@@ -172,23 +177,11 @@ module acore_spi_as5047 #(
 
   // ---- the settings only the port keeps (no AngleCore equivalent) ----
   reg progen_q, progver_q, abibin_q, dsel_q, uvwabi_q, pwmon_q;
-  reg [1:0] erren_q;   // ZPOSL's comp_l_error_en, comp_h_error_en
+  reg [AS5047_ZPOSL_ERR_EN_W-1:0] erren_q;   // ZPOSL's comp_l_error_en, comp_h_error_en
 
   // ABIRES's tables: N of a code, and the code read for an N (the first entry not above N).
   function integer abi_n_int(input bin, input [2:0] code);
-    begin
-      if (bin) abi_n_int = (code == 3'd0) ? 1024 : (code == 3'd1) ? 512 : 256;
-      else case (code)
-        3'd0: abi_n_int = 1000;
-        3'd1: abi_n_int = 500;
-        3'd2: abi_n_int = 400;
-        3'd3: abi_n_int = 300;
-        3'd4: abi_n_int = 200;
-        3'd5: abi_n_int = 100;
-        3'd6: abi_n_int = 50;
-        default: abi_n_int = 25;
-      endcase
-    end
+    abi_n_int = bin ? as5047_abires_bin(code) : as5047_abires_dec(code);
   endfunction
   function [N_W-1:0] abi_n(input bin, input [2:0] code);
     /* verilator lint_off UNUSEDSIGNAL */
@@ -199,41 +192,87 @@ module acore_spi_as5047 #(
       abi_n = v[N_W-1:0];
     end
   endfunction
+  localparam [2:0] ABI_BIN_LAST = AS5047_ABIRES_BIN_LAST[2:0],
+                   ABI_DEC_LAST = AS5047_ABIRES_DEC_LAST[2:0];
   function [2:0] abi_code(input bin, input [N_W-1:0] n);
     integer c;
     begin
       // The first code of the table (largest N first) whose N is not above n; the last otherwise.
-      abi_code = bin ? 3'd2 : 3'd7;
+      abi_code = bin ? ABI_BIN_LAST : ABI_DEC_LAST;
       for (c = 7; c >= 0; c = c - 1)
-        if ((bin == 1'b0 || c <= 2) && {{(32-N_W){1'b0}}, n} >= abi_n_int(bin, c[2:0])) abi_code = c[2:0];
+        if (c <= (bin ? AS5047_ABIRES_BIN_LAST : AS5047_ABIRES_DEC_LAST) &&
+            {{(32-N_W){1'b0}}, n} >= abi_n_int(bin, c[2:0])) abi_code = c[2:0];
     end
   endfunction
-  // HYS read back: 3 - ceil(width / 2^HYS_SHIFT), at least 0.
+  // HYS read back: AS5047_HYS_MAX - ceil(width / 2^HYS_SHIFT), at least 0.
   localparam [HYS_W:0] HYS_ROUND = (1 << HYS_SHIFT) - 1;
   /* verilator lint_off UNUSEDSIGNAL */
   wire [HYS_W:0] hys_up = {1'b0, cfg_hys_i} + HYS_ROUND;  // its bits below HYS_SHIFT: not needed
   /* verilator lint_on UNUSEDSIGNAL */
   wire [HYS_W-HYS_SHIFT:0] hys_lsbs = hys_up[HYS_W:HYS_SHIFT];
-  wire [1:0] hys_code = (hys_lsbs >= 3) ? 2'd0 : 2'd3 - hys_lsbs[1:0];
-  wire [2:0] uvwpp_code = (cfg_pp_i >= 7) ? 3'd6 : (cfg_pp_i == 0) ? 3'd0 : cfg_pp_i[2:0] - 3'd1;
-  wire [2:0] abires_code = abi_code(abibin_q, cfg_n_i);
+  localparam [HYS_W-HYS_SHIFT:0] HYS_MAX = AS5047_HYS_MAX[HYS_W-HYS_SHIFT:0];
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [HYS_W-HYS_SHIFT:0] hys_left = HYS_MAX - hys_lsbs;  // below HYS_MAX: fits HYS's bits
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [AS5047_SETTINGS2_HYS_W-1:0] hys_code =
+    (hys_lsbs >= HYS_MAX) ? {AS5047_SETTINGS2_HYS_W{1'b0}} : hys_left[AS5047_SETTINGS2_HYS_W-1:0];
+  // UVWPP read back: pole pairs - AS5047_UVWPP_OFFSET, within 0 .. its code of AS5047_UVWPP_MAX_PP.
+  localparam [PP_W-1:0] PP_MAX = AS5047_UVWPP_MAX_PP[PP_W-1:0],
+                        PP_OFFSET = AS5047_UVWPP_OFFSET[PP_W-1:0];
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [PP_W-1:0] pp_code = ((cfg_pp_i >= PP_MAX) ? PP_MAX : (cfg_pp_i < PP_OFFSET) ? PP_OFFSET : cfg_pp_i) -
+                            PP_OFFSET;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [AS5047_SETTINGS2_UVWPP_W-1:0] uvwpp_code = pp_code[AS5047_SETTINGS2_UVWPP_W-1:0];
+  wire [AS5047_SETTINGS2_ABIRES_W-1:0] abires_code = abi_code(abibin_q, cfg_n_i);
 
   // ---- the answer of the next frame ----
-  reg [2:0] errfl_q;   // {PARERR, INVCOMM, FRERR}
-  reg [3:0] ans_q;     // which register (S_*)
+  reg [2:0] errfl_q;   // ERRFL's bits (E_*)
+  reg [AS5047_S_W-1:0] ans_q;  // which register (AS5047_S_*)
   reg [13:0] data;
   always @(*) begin
     case (ans_q)
-      S_ERRFL: data = {11'd0, errfl_q};
-      S_PROG: data = {7'd0, progver_q, 5'd0, progen_q};
-      S_ZPOSM: data = {6'd0, cfg_zero_i[13:6]};
-      S_ZPOSL: data = {6'd0, erren_q, cfg_zero_i[5:0]};
-      S_SET1: data = {6'd0, pwmon_q, dsel_q, abibin_q, ~cfg_daec_i, uvwabi_q, cfg_dir_i, 2'b01};
-      S_SET2: data = {6'd0, abires_code, hys_code, uvwpp_code};
-      S_DIAAGC: data = {2'b00, los_i, dos_i, ovf_i, ~lot_i, agc_i};
-      S_MAG: data = mag_i;
-      S_ANGLEUNC: data = angle_unc_i[ANGLE_W-1 -: 14];
-      S_ANGLECOM: data = dsel_q ? angle_unc_i[ANGLE_W-1 -: 14] : angle_com_i[ANGLE_W-1 -: 14];
+      AS5047_S_ERRFL: data = {11'd0, errfl_q};
+      AS5047_S_PROG: begin
+        data = AS5047_PROG_FIXED;
+        data[AS5047_PROG_PROGEN_LSB] = progen_q;
+        data[AS5047_PROG_PROGVER_LSB] = progver_q;
+      end
+      AS5047_S_ZPOSM: begin
+        data = AS5047_ZPOSM_FIXED;
+        data[AS5047_ZPOSM_ZPOS_HI_MSB:AS5047_ZPOSM_ZPOS_HI_LSB] = cfg_zero_i[13:ZPOS_LO_W];
+      end
+      AS5047_S_ZPOSL: begin
+        data = AS5047_ZPOSL_FIXED;
+        data[AS5047_ZPOSL_ERR_EN_MSB:AS5047_ZPOSL_ERR_EN_LSB] = erren_q;
+        data[AS5047_ZPOSL_ZPOS_LO_MSB:AS5047_ZPOSL_ZPOS_LO_LSB] = cfg_zero_i[ZPOS_LO_W-1:0];
+      end
+      AS5047_S_SETTINGS1: begin
+        data = AS5047_SETTINGS1_FIXED;
+        data[AS5047_SETTINGS1_PWMON_LSB] = pwmon_q;
+        data[AS5047_SETTINGS1_DATASELECT_LSB] = dsel_q;
+        data[AS5047_SETTINGS1_ABIBIN_LSB] = abibin_q;
+        data[AS5047_SETTINGS1_DAECDIS_LSB] = ~cfg_daec_i;
+        data[AS5047_SETTINGS1_UVW_ABI_LSB] = uvwabi_q;
+        data[AS5047_SETTINGS1_DIR_LSB] = cfg_dir_i;
+      end
+      AS5047_S_SETTINGS2: begin
+        data = AS5047_SETTINGS2_FIXED;
+        data[AS5047_SETTINGS2_ABIRES_MSB:AS5047_SETTINGS2_ABIRES_LSB] = abires_code;
+        data[AS5047_SETTINGS2_HYS_MSB:AS5047_SETTINGS2_HYS_LSB] = hys_code;
+        data[AS5047_SETTINGS2_UVWPP_MSB:AS5047_SETTINGS2_UVWPP_LSB] = uvwpp_code;
+      end
+      AS5047_S_DIAAGC: begin
+        data = AS5047_DIAAGC_FIXED;
+        data[AS5047_DIAAGC_MAGL_LSB] = los_i;
+        data[AS5047_DIAAGC_MAGH_LSB] = dos_i;
+        data[AS5047_DIAAGC_COF_LSB] = ovf_i;
+        data[AS5047_DIAAGC_LF_LSB] = ~lot_i;
+        data[AS5047_DIAAGC_AGC_MSB:AS5047_DIAAGC_AGC_LSB] = agc_i;
+      end
+      AS5047_S_MAG: data = mag_i;
+      AS5047_S_ANGLEUNC: data = angle_unc_i[ANGLE_W-1 -: 14];
+      AS5047_S_ANGLECOM: data = dsel_q ? angle_unc_i[ANGLE_W-1 -: 14] : angle_com_i[ANGLE_W-1 -: 14];
       default: data = 14'd0;
     endcase
   end
@@ -244,63 +283,69 @@ module acore_spi_as5047 #(
   reg [15:0] rx_q, tx_q;
   reg [4:0] bits_q;    // saturates at 17: too long
   reg wr_data_q;       // the next frame is a write's data frame
-  reg [3:0] wr_reg_q;  // the register it writes (S_NOP: none, the data frame is consumed)
+  reg [AS5047_S_W-1:0] wr_reg_q;  // the register it writes (AS5047_S_NOP: none, the data frame is consumed)
   reg short_q;         // this frame followed a CSn gap of one clock: a framing error
   wire parity_ok = ~^rx_q;
   wire read = rx_q[14];
   wire [13:0] addr = rx_q[13:0];
-  wire [3:0] sel_reg = (addr == A_ERRFL) ? S_ERRFL : (addr == A_PROG) ? S_PROG :
-                       (addr == A_ZPOSM) ? S_ZPOSM : (addr == A_ZPOSL) ? S_ZPOSL :
-                       (addr == A_SET1) ? S_SET1 : (addr == A_SET2) ? S_SET2 :
-                       (addr == A_DIAAGC) ? S_DIAAGC : (addr == A_MAG) ? S_MAG :
-                       (addr == A_ANGLEUNC) ? S_ANGLEUNC : (addr == A_ANGLECOM) ? S_ANGLECOM : S_NOP;
+  wire [AS5047_S_W-1:0] sel_reg = as5047_sel(addr);
   // NOP (address 0) is no command either way: the frame drivers send to collect an answer is 0x0000.
-  wire nop = (addr == A_NOP);
-  wire known = nop | (sel_reg != S_NOP);
-  wire writable = (sel_reg == S_PROG) | (sel_reg == S_ZPOSM) | (sel_reg == S_ZPOSL) |
-                  (sel_reg == S_SET1) | (sel_reg == S_SET2);
+  wire nop = (addr == AS5047_A_NOP);
+  wire known = nop | (sel_reg != AS5047_S_NOP);
+  wire writable = as5047_writable(sel_reg);
   wire write = ~read & ~nop;
   // Errors found at the end of this frame, as ERRFL bits.
-  wire [2:0] err_new = (bits_q != 5'd16 || short_q) ? 3'b001 : ~parity_ok ? 3'b100 :
-                       wr_data_q ? 3'b000 : (~known | (write & ~writable)) ? 3'b010 : 3'b000;
+  wire [2:0] err_new = (bits_q != 5'd16 || short_q) ? E_FRERR : ~parity_ok ? E_PARERR :
+                       wr_data_q ? 3'b000 : (~known | (write & ~writable)) ? E_INVCOMM : 3'b000;
   wire frame_ok = cs_rise & (bits_q == 5'd16) & ~short_q & parity_ok;
   wire cmd_ok = frame_ok & ~wr_data_q;
   // The data frame of a write: the register written in the clock CSn rises.
   wire wr_do = frame_ok & wr_data_q;
-  wire [7:0] wd = rx_q[7:0];  // the settings' data bits (the AS5047P's are 8 wide)
-  assign cfg_zero_we_o = wr_do & ((wr_reg_q == S_ZPOSM) | (wr_reg_q == S_ZPOSL));
-  assign cfg_zero_o = (wr_reg_q == S_ZPOSM) ? {wd[7:0], cfg_zero_i[5:0]} : {cfg_zero_i[13:6], wd[5:0]};
-  assign cfg_dir_we_o = wr_do & (wr_reg_q == S_SET1);
-  assign cfg_dir_o = wd[2];
-  assign cfg_daec_we_o = wr_do & (wr_reg_q == S_SET1);
-  assign cfg_daec_o = ~wd[4];
+  wire [AS5047_DATA_W-1:0] wd = rx_q[AS5047_DATA_W-1:0];  // the settings' data bits
+  wire wr_set1 = (wr_reg_q == AS5047_S_SETTINGS1);
+  wire wr_set2 = (wr_reg_q == AS5047_S_SETTINGS2);
+  wire wd_abibin = wd[AS5047_SETTINGS1_ABIBIN_LSB];
+  wire [AS5047_SETTINGS2_UVWPP_W-1:0] wd_uvwpp = wd[AS5047_SETTINGS2_UVWPP_MSB:AS5047_SETTINGS2_UVWPP_LSB];
+  wire [AS5047_SETTINGS2_HYS_W-1:0] wd_hys = wd[AS5047_SETTINGS2_HYS_MSB:AS5047_SETTINGS2_HYS_LSB];
+  assign cfg_zero_we_o = wr_do & ((wr_reg_q == AS5047_S_ZPOSM) | (wr_reg_q == AS5047_S_ZPOSL));
+  assign cfg_zero_o = (wr_reg_q == AS5047_S_ZPOSM) ?
+                      {wd[AS5047_ZPOSM_ZPOS_HI_MSB:AS5047_ZPOSM_ZPOS_HI_LSB], cfg_zero_i[ZPOS_LO_W-1:0]} :
+                      {cfg_zero_i[13:ZPOS_LO_W], wd[AS5047_ZPOSL_ZPOS_LO_MSB:AS5047_ZPOSL_ZPOS_LO_LSB]};
+  assign cfg_dir_we_o = wr_do & wr_set1;
+  assign cfg_dir_o = wd[AS5047_SETTINGS1_DIR_LSB];
+  assign cfg_daec_we_o = wr_do & wr_set1;
+  assign cfg_daec_o = ~wd[AS5047_SETTINGS1_DAECDIS_LSB];
   // N: from ABIRES (SETTINGS2), or re-read through the other table when SETTINGS1 changes ABIBIN.
-  assign cfg_n_we_o = wr_do & ((wr_reg_q == S_SET2) | ((wr_reg_q == S_SET1) & (wd[5] != abibin_q)));
-  assign cfg_n_o = (wr_reg_q == S_SET2) ? abi_n(abibin_q, wd[7:5]) : abi_n(wd[5], abires_code);
-  assign cfg_pp_we_o = wr_do & (wr_reg_q == S_SET2);
-  assign cfg_pp_o = (wd[2:0] == 3'd7) ? 7 : {{(PP_W-3){1'b0}}, wd[2:0]} + 1'b1;
-  assign cfg_hys_we_o = wr_do & (wr_reg_q == S_SET2);
-  assign cfg_hys_o = {{(HYS_W-2){1'b0}}, 2'd3 - wd[4:3]} << HYS_SHIFT;
+  assign cfg_n_we_o = wr_do & (wr_set2 | (wr_set1 & (wd_abibin != abibin_q)));
+  assign cfg_n_o = wr_set2 ? abi_n(abibin_q, wd[AS5047_SETTINGS2_ABIRES_MSB:AS5047_SETTINGS2_ABIRES_LSB]) :
+                   abi_n(wd_abibin, abires_code);
+  assign cfg_pp_we_o = wr_do & wr_set2;
+  // UVWPP + AS5047_UVWPP_OFFSET, at most AS5047_UVWPP_MAX_PP.
+  wire [PP_W-1:0] pp_new = {{(PP_W-AS5047_SETTINGS2_UVWPP_W){1'b0}}, wd_uvwpp} + PP_OFFSET;
+  assign cfg_pp_o = (pp_new >= PP_MAX) ? PP_MAX : pp_new;
+  assign cfg_hys_we_o = wr_do & wr_set2;
+  assign cfg_hys_o = {{(HYS_W-AS5047_SETTINGS2_HYS_W){1'b0}}, HYS_MAX[AS5047_SETTINGS2_HYS_W-1:0] - wd_hys}
+                     << HYS_SHIFT;
   // ERRFL's own answer clears it when the frame carrying it starts (not after a short gap: the
   // frame then carries 0xC000 instead).
-  wire clear_errfl = cs_fall & (ans_q == S_ERRFL) & ~cs_short;
+  wire clear_errfl = cs_fall & (ans_q == AS5047_S_ERRFL) & ~cs_short;
   always @(posedge clk_i) begin
     if (rst_i) begin
       errfl_q <= 3'd0;
-      ans_q <= S_NOP;
+      ans_q <= AS5047_S_NOP;
       bits_q <= 5'd0;
       wr_data_q <= 1'b0;
-      wr_reg_q <= S_NOP;
+      wr_reg_q <= AS5047_S_NOP;
       short_q <= 1'b0;
       frame_o <= 1'b0;
       tx_q <= 16'd0;
-      progen_q <= 1'b0;
-      progver_q <= 1'b0;
-      abibin_q <= 1'b1;
-      dsel_q <= 1'b0;
-      uvwabi_q <= 1'b0;
-      pwmon_q <= 1'b0;
-      erren_q <= 2'd0;
+      progen_q <= AS5047_PROG_PROGEN_RESET;
+      progver_q <= AS5047_PROG_PROGVER_RESET;
+      abibin_q <= AS5047_SETTINGS1_ABIBIN_RESET;
+      dsel_q <= AS5047_SETTINGS1_DATASELECT_RESET;
+      uvwabi_q <= AS5047_SETTINGS1_UVW_ABI_RESET;
+      pwmon_q <= AS5047_SETTINGS1_PWMON_RESET;
+      erren_q <= AS5047_ZPOSL_ERR_EN_RESET;
     end else begin
       frame_o <= cs_rise;
       if (!sel) tx_q <= answer;
@@ -312,16 +357,16 @@ module acore_spi_as5047 #(
       errfl_q <= (clear_errfl ? 3'd0 : errfl_q) | (cs_rise ? err_new : 3'd0);
       if (wr_do) begin
         case (wr_reg_q)
-          S_PROG: begin
-            progen_q <= wd[0];
-            progver_q <= wd[6];
+          AS5047_S_PROG: begin
+            progen_q <= wd[AS5047_PROG_PROGEN_LSB];
+            progver_q <= wd[AS5047_PROG_PROGVER_LSB];
           end
-          S_ZPOSL: erren_q <= wd[7:6];
-          S_SET1: begin
-            uvwabi_q <= wd[3];
-            abibin_q <= wd[5];
-            dsel_q <= wd[6];
-            pwmon_q <= wd[7];
+          AS5047_S_ZPOSL: erren_q <= wd[AS5047_ZPOSL_ERR_EN_MSB:AS5047_ZPOSL_ERR_EN_LSB];
+          AS5047_S_SETTINGS1: begin
+            uvwabi_q <= wd[AS5047_SETTINGS1_UVW_ABI_LSB];
+            abibin_q <= wd_abibin;
+            dsel_q <= wd[AS5047_SETTINGS1_DATASELECT_LSB];
+            pwmon_q <= wd[AS5047_SETTINGS1_PWMON_LSB];
           end
           default: ;
         endcase
@@ -330,8 +375,8 @@ module acore_spi_as5047 #(
         if (cmd_ok) begin
           // A read: its register answers next. A write: the data frame answers the old content.
           wr_data_q <= write;
-          wr_reg_q <= (write & writable) ? sel_reg : S_NOP;
-          ans_q <= ((read & known) | (write & writable)) ? sel_reg : S_NOP;
+          wr_reg_q <= (write & writable) ? sel_reg : AS5047_S_NOP;
+          ans_q <= ((read & known) | (write & writable)) ? sel_reg : AS5047_S_NOP;
         end else if (wr_do) begin
           // The data frame: the next frame answers the register's new content.
           wr_data_q <= 1'b0;
@@ -339,7 +384,7 @@ module acore_spi_as5047 #(
         end else begin
           // A refused frame: the next answer is NOP's.
           if (bits_q == 5'd16) wr_data_q <= 1'b0;
-          ans_q <= S_NOP;
+          ans_q <= AS5047_S_NOP;
         end
       end
     end

@@ -6,6 +6,7 @@ acore_serial_checks.vh
 acore_derived.vh
 acore_apb_regs.vh
 acore_board_regs.vh
+acore_as5047.vh
 acore_check.v
 acore_config_check.v
 acore_delay.v

@@ -10,6 +10,9 @@
 #   docs/reports/correction_modes.md the mode table for the docs
 #   rtl/acore_datapath_params.vh     the datapath parameters' declaration (config_fields())
 #   rtl/acore_datapath_pass.vh       the datapath parameters passed on (config_fields())
+#   rtl/acore_as5047.vh              the SPI port's AS5047P registers, fields and code tables
+#   model/ip/stages/as5047_regs.hpp  the same for the port's model (both by scripts/gen_as5047.py
+#                                    from their one description rtl/acore_as5047_map.txt)
 # usage: scripts/gen_tables.sh ACORE_GEN_TABLES [OUT_ROOT]   (OUT_ROOT default: the repository)
 set -euo pipefail
 gen=$1
@@ -38,3 +41,4 @@ c16=$(python3 "$root/scripts/registry.py" --root "$root" params cordic16) || exi
 "$gen" modes_doc >"$out/docs/reports/correction_modes.md"
 "$gen" rtl_datapath_params >"$out/rtl/acore_datapath_params.vh"
 "$gen" rtl_datapath_pass >"$out/rtl/acore_datapath_pass.vh"
+python3 "$root/scripts/gen_as5047.py" --root "$root" --out "$out"

@@ -713,7 +713,7 @@ TEST(SpiAs5047, ShortCsnGapIsAFramingErrorNotAWrongAnswer) {
   EXPECT_EQ(bad, 0xC000) << "EF with even parity, no data";
   const uint16_t after = m.frame(as5047::with_even_parity(0x4001));  // read ERRFL
   EXPECT_EQ(after, 0xC000) << "the refused frame's command read nothing (NOP, EF)";
-  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(as5047::kFrErr));
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(as5047::kErrflFrerr));
   // Two clocks: every answer right.
   for (int k = 0; k < 20; ++k) {
     m.gap = 2;

@@ -344,8 +344,8 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     EXPECT_EQ(b.trk.size(), k);
     if (k == 0 || b.trk.size() != k) return;
     const TrackOutput& m = trk_model[k - 1];
-    b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kAngleCom));
-    const uint16_t com = b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kAngleUnc));
+    b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kAnglecom));
+    const uint16_t com = b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kAngleunc));
     const uint16_t unc = b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kDiaagc));
     const uint16_t dia = b.spi_frame(as5047::kNop);
     EXPECT_EQ(com & 0x3FFFu, m.angle_comp >> 2) << "ANGLECOM after " << k;

@@ -113,17 +113,43 @@ uint16_t with_even_parity(uint16_t word15) {
 
 namespace as5047 {
 int64_t abires_n(bool binary, int code) {
-  static const int64_t decimal[8] = {1000, 500, 400, 300, 200, 100, 50, 25};
-  if (binary) return code == 0 ? 1024 : code == 1 ? 512 : 256;
-  return decimal[code & 7];
+  const int c = code & 7;
+  if (binary) return kAbiresBin[c < kAbiresBinLast ? c : kAbiresBinLast];
+  return kAbiresDec[c < kAbiresDecLast ? c : kAbiresDecLast];
 }
 int abires_code(bool binary, int64_t n) {
-  const int last = binary ? 2 : 7;
+  const int last = binary ? kAbiresBinLast : kAbiresDecLast;
   for (int c = 0; c <= last; ++c)
     if (n >= abires_n(binary, c)) return c;
   return last;
 }
 }  // namespace as5047
+
+namespace {
+// A field of a register's word: its value, and the word with it replaced.
+constexpr uint16_t get(uint16_t word, uint16_t mask) {
+  int shift = 0;
+  while (!((mask >> shift) & 1)) ++shift;
+  return static_cast<uint16_t>((word & mask) >> shift);
+}
+constexpr uint16_t put(uint16_t word, uint16_t mask, int value) {
+  int shift = 0;
+  while (!((mask >> shift) & 1)) ++shift;
+  return static_cast<uint16_t>((word & ~mask) | ((value << shift) & mask));
+}
+// UVWPP of a pole-pair count (read back), and the pole pairs of a code (written).
+int uvwpp_code(int pole_pairs) {
+  using namespace as5047;
+  const int pp = pole_pairs >= kUvwppMaxPp   ? kUvwppMaxPp
+                 : pole_pairs < kUvwppOffset ? kUvwppOffset
+                                             : pole_pairs;
+  return pp - kUvwppOffset;
+}
+int uvwpp_pole_pairs(int code) {
+  using namespace as5047;
+  return code + kUvwppOffset >= kUvwppMaxPp ? kUvwppMaxPp : code + kUvwppOffset;
+}
+}  // namespace
 
 uint16_t As5047Port::read_register(uint16_t addr, const As5047Inputs& in) const {
   using namespace as5047;
@@ -133,33 +159,46 @@ uint16_t As5047Port::read_register(uint16_t addr, const As5047Inputs& in) const 
   switch (addr) {
     case kErrfl:
       return errfl_;
-    case kProg:
-      return static_cast<uint16_t>((progver_ << 6) | (progen_ ? 1 : 0));
-    case kZposm:
-      return static_cast<uint16_t>((config.zero >> 6) & 0xFF);
-    case kZposl:
-      return static_cast<uint16_t>((error_enables_ << 6) | (config.zero & 0x3F));
-    case kSettings1:
-      return static_cast<uint16_t>((pwmon_ << 7) | (dataselect_ << 6) | (abibin_ << 5) |
-                                   ((config.daec ? 0 : 1) << 4) | (uvw_abi_ << 3) |
-                                   (config.dir << 2) | 1);
-    case kSettings2: {
-      const int pp = config.pole_pairs >= 7   ? 6
-                     : config.pole_pairs == 0 ? 0
-                                              : config.pole_pairs - 1;
-      const int64_t lsb = int64_t{1} << (in.angle_w - 11);
-      const int64_t lsbs = (config.hys + lsb - 1) / lsb;
-      const int hys = lsbs >= 3 ? 0 : static_cast<int>(3 - lsbs);
-      return static_cast<uint16_t>((abires_code(abibin_, config.n) << 5) | (hys << 3) | pp);
+    case kProg: {
+      uint16_t w = put(kProgFixed, kProgProgen, progen_);
+      return put(w, kProgProgver, progver_);
     }
-    case kDiaagc:
-      return static_cast<uint16_t>((in.los << 11) | (in.dos << 10) | (in.ovf << 9) |
-                                   ((in.lot ? 0 : 1) << 8) | in.agc);
+    case kZposm:
+      return put(kZposmFixed, kZposmZposHiMask, config.zero >> kZposlZposLoBits);
+    case kZposl: {
+      const uint16_t w = put(kZposlFixed, kZposlErrEnMask, error_enables_);
+      return put(w, kZposlZposLoMask, config.zero & ((1 << kZposlZposLoBits) - 1));
+    }
+    case kSettings1: {
+      uint16_t w = kSettings1Fixed;
+      w = put(w, kSettings1Pwmon, pwmon_);
+      w = put(w, kSettings1Dataselect, dataselect_);
+      w = put(w, kSettings1Abibin, abibin_);
+      w = put(w, kSettings1Daecdis, !config.daec);
+      w = put(w, kSettings1UvwAbi, uvw_abi_);
+      return put(w, kSettings1Dir, config.dir);
+    }
+    case kSettings2: {
+      // HYS: kHysMax - ceil(hys / LSB), at least 0 (the LSB 2^-kHysLsbLog2 turn).
+      const int64_t lsb = int64_t{1} << (in.angle_w - kHysLsbLog2);
+      const int64_t lsbs = (config.hys + lsb - 1) / lsb;
+      const int hys = lsbs >= kHysMax ? 0 : static_cast<int>(kHysMax - lsbs);
+      uint16_t w = put(kSettings2Fixed, kSettings2AbiresMask, abires_code(abibin_, config.n));
+      w = put(w, kSettings2HysMask, hys);
+      return put(w, kSettings2UvwppMask, uvwpp_code(config.pole_pairs));
+    }
+    case kDiaagc: {
+      uint16_t w = put(kDiaagcFixed, kDiaagcMagl, in.los);
+      w = put(w, kDiaagcMagh, in.dos);
+      w = put(w, kDiaagcCof, in.ovf);
+      w = put(w, kDiaagcLf, !in.lot);
+      return put(w, kDiaagcAgcMask, in.agc);
+    }
     case kMag:
       return in.mag & 0x3FFF;
-    case kAngleUnc:
+    case kAngleunc:
       return top14(in.angle_unc);
-    case kAngleCom:
+    case kAnglecom:
       return top14(dataselect_ ? in.angle_unc : in.angle_com);
     default:
       return 0;
@@ -168,36 +207,38 @@ uint16_t As5047Port::read_register(uint16_t addr, const As5047Inputs& in) const 
 
 void As5047Port::write_register(uint16_t addr, uint16_t data, int angle_w) {
   using namespace as5047;
+  const int zpos_lo = (1 << kZposlZposLoBits) - 1;
   switch (addr) {
     case kProg:
-      progen_ = data & 1;
-      progver_ = (data >> 6) & 1;
+      progen_ = get(data, kProgProgen);
+      progver_ = get(data, kProgProgver);
       break;
     case kZposm:
-      config.zero = static_cast<uint16_t>(((data & 0xFF) << 6) | (config.zero & 0x3F));
+      config.zero = static_cast<uint16_t>((get(data, kZposmZposHiMask) << kZposlZposLoBits) |
+                                          (config.zero & zpos_lo));
       break;
     case kZposl:
-      config.zero = static_cast<uint16_t>((config.zero & 0x3FC0) | (data & 0x3F));
-      error_enables_ = (data >> 6) & 3;
+      config.zero =
+          static_cast<uint16_t>((config.zero & ~zpos_lo & 0x3FFF) | get(data, kZposlZposLoMask));
+      error_enables_ = get(data, kZposlErrEnMask);
       break;
     case kSettings1: {
-      const bool bin = (data >> 5) & 1;
+      const bool bin = get(data, kSettings1Abibin);
       if (bin != abibin_) config.n = abires_n(bin, abires_code(abibin_, config.n));
-      config.dir = (data >> 2) & 1;
-      config.daec = !((data >> 4) & 1);
-      uvw_abi_ = (data >> 3) & 1;
+      config.dir = get(data, kSettings1Dir);
+      config.daec = !get(data, kSettings1Daecdis);
+      uvw_abi_ = get(data, kSettings1UvwAbi);
       abibin_ = bin;
-      dataselect_ = (data >> 6) & 1;
-      pwmon_ = (data >> 7) & 1;
+      dataselect_ = get(data, kSettings1Dataselect);
+      pwmon_ = get(data, kSettings1Pwmon);
       break;
     }
-    case kSettings2: {
-      const int pp = data & 7;
-      config.pole_pairs = pp == 7 ? 7 : pp + 1;
-      config.hys = static_cast<int64_t>(3 - ((data >> 3) & 3)) << (angle_w - 11);
-      config.n = abires_n(abibin_, (data >> 5) & 7);
+    case kSettings2:
+      config.pole_pairs = uvwpp_pole_pairs(get(data, kSettings2UvwppMask));
+      config.hys = static_cast<int64_t>(kHysMax - get(data, kSettings2HysMask))
+                   << (angle_w - kHysLsbLog2);
+      config.n = abires_n(abibin_, get(data, kSettings2AbiresMask));
       break;
-    }
     default:
       break;
   }
@@ -215,29 +256,28 @@ uint16_t As5047Port::frame(uint16_t mosi, const As5047Inputs& in, int bits, bool
   // The command at the end of the frame.
   const uint16_t addr = mosi & 0x3FFF;
   const bool read = (mosi >> 14) & 1;
-  const bool writable =
-      addr == kProg || addr == kZposm || addr == kZposl || addr == kSettings1 || addr == kSettings2;
-  const bool known = writable || addr == kNop || addr == kErrfl || addr == kDiaagc ||
-                     addr == kMag || addr == kAngleUnc || addr == kAngleCom;
+  const bool is_writable = writable(addr);
+  const bool is_known = known(addr);
   const bool write = !read && addr != kNop;
   if (bits != 16 || short_gap) {
-    errfl_ |= kFrErr;
+    errfl_ |= kErrflFrerr;
     answer_reg_ = kNop;
     if (bits == 16) write_data_ = false;
   } else if (!parity_even(mosi)) {
-    errfl_ |= kParErr;
+    errfl_ |= kErrflParerr;
     answer_reg_ = kNop;
     write_data_ = false;
   } else if (write_data_) {
     // The data frame: the register written, its new content answered next.
     write_data_ = false;
-    if (write_reg_ != kNop) write_register(write_reg_, mosi & 0xFF, in.angle_w);
+    if (write_reg_ != kNop)
+      write_register(write_reg_, static_cast<uint16_t>(mosi & ((1 << kDataW) - 1)), in.angle_w);
     answer_reg_ = write_reg_;
   } else {
-    if (!known || (write && !writable)) errfl_ |= kInvComm;
+    if (!is_known || (write && !is_writable)) errfl_ |= kErrflInvcomm;
     write_data_ = write;
-    write_reg_ = write && writable ? addr : kNop;
-    answer_reg_ = (read && known) || (write && writable) ? addr : kNop;
+    write_reg_ = write && is_writable ? addr : kNop;
+    answer_reg_ = (read && is_known) || (write && is_writable) ? addr : kNop;
   }
   // The answer the master received: only the bits it clocked.
   return bits >= 16 ? answer : static_cast<uint16_t>(answer >> (16 - bits));

@@ -14,6 +14,7 @@
 #pragma once
 #include <cstdint>
 
+#include "stages/as5047_regs.hpp"
 #include "stages/board_regs.hpp"
 
 namespace acore {
@@ -73,15 +74,13 @@ UvwState uvw_state(uint64_t angle, uint64_t offset, int angle_w, int pole_pairs)
 
 // ---- AS5047P SPI
 // ----------------------------------------------------------------------------------
+// The registers' addresses, fields, ABIRES's tables and the HYS and UVWPP encodings:
+// stages/as5047_regs.hpp, generated from their description rtl/acore_as5047_map.txt.
 namespace as5047 {
-constexpr uint16_t kNop = 0x0000, kErrfl = 0x0001, kProg = 0x0003, kZposm = 0x0016, kZposl = 0x0017,
-                   kSettings1 = 0x0018, kSettings2 = 0x0019, kDiaagc = 0x3FFC, kMag = 0x3FFD,
-                   kAngleUnc = 0x3FFE, kAngleCom = 0x3FFF;
 // ABIRES's tables (SETTINGS1.ABIBIN 1: binary, 0: decimal): N of a code, and the code read back
 // for an N (the first entry, largest N first, not above it; the last otherwise).
 int64_t abires_n(bool binary, int code);
 int abires_code(bool binary, int64_t n);
-constexpr uint16_t kFrErr = 1, kInvComm = 2, kParErr = 4;  // ERRFL bits
 // The 16-bit word with bit 15 set so that its parity is even.
 uint16_t with_even_parity(uint16_t word15);
 bool parity_even(uint16_t word);
@@ -98,8 +97,8 @@ struct As5047Inputs {
 
 // The AS5047P settings the port maps onto the board's registers (rtl/acore_spi_as5047.v's header):
 // IF_ZERO.ZERO (ZPOS, 2^-14 turn), IF_CTRL.DIR, IF_CTRL.DAEC (not DAECDIS), ABZ_N (ABIRES with
-// ABIBIN), UVW_PP (UVWPP + 1), ABZ_HYS ((3 - HYS) 2^(angle_w-11) angle LSBs). Their reset values
-// are the board's.
+// ABIBIN), UVW_PP (UVWPP + kUvwppOffset, at most kUvwppMaxPp), ABZ_HYS ((kHysMax - HYS) LSBs of
+// 2^-kHysLsbLog2 turn, in angle LSBs). Their reset values are the board's.
 struct As5047Config {
   uint16_t zero = 0;
   bool dir = false, daec = true;
@@ -129,9 +128,11 @@ class As5047Port {
   uint16_t write_reg_ = as5047::kNop;
   // What only the port keeps: PROG's PROGEN and PROGVER, ZPOSL's error enables, SETTINGS1's
   // UVW_ABI, ABIBIN (reset 1), Dataselect, PWMon.
-  bool progen_ = false, progver_ = false, uvw_abi_ = false, abibin_ = true, dataselect_ = false,
-       pwmon_ = false;
-  int error_enables_ = 0;
+  bool progen_ = as5047::kProgProgenReset != 0, progver_ = as5047::kProgProgverReset != 0,
+       uvw_abi_ = as5047::kSettings1UvwAbiReset != 0, abibin_ = as5047::kSettings1AbibinReset != 0,
+       dataselect_ = as5047::kSettings1DataselectReset != 0,
+       pwmon_ = as5047::kSettings1PwmonReset != 0;
+  int error_enables_ = as5047::kZposlErrEnReset;
 };
 
 }  // namespace acore

@@ -179,19 +179,19 @@ TEST(As5047Model, FramesAnswersAndErrors) {
   const uint16_t ans = port.frame(with_even_parity(0x4001), in);
   EXPECT_TRUE(parity_even(ans));
   EXPECT_EQ(ans, with_even_parity(0x4000));
-  EXPECT_EQ(port.frame(0x0000, in), with_even_parity(0x4000 | kParErr));
+  EXPECT_EQ(port.frame(0x0000, in), with_even_parity(0x4000 | kErrflParerr));
   EXPECT_EQ(port.frame(0x0000, in), 0x0000);
   // Framing and invalid commands.
   port.frame(0xFFFF, in, 15);
-  EXPECT_EQ(port.errfl(), kFrErr);
+  EXPECT_EQ(port.errfl(), kErrflFrerr);
   port.frame(with_even_parity(0x4000 | 0x0123), in);
-  EXPECT_EQ(port.errfl(), kFrErr | kInvComm);
+  EXPECT_EQ(port.errfl(), kErrflFrerr | kErrflInvcomm);
   // A frame after a CSn gap below the minimum: 0xC000, its command ignored, FRERR.
   port.frame(with_even_parity(0x4001), in);  // ERRFL (read clears)
-  EXPECT_EQ(port.frame(with_even_parity(0x7FFF), in) & 0x3FFF, kFrErr | kInvComm);
+  EXPECT_EQ(port.frame(with_even_parity(0x7FFF), in) & 0x3FFF, kErrflFrerr | kErrflInvcomm);
   EXPECT_EQ(port.errfl(), 0);
   EXPECT_EQ(port.frame(with_even_parity(0x7FFE), in, 16, true), 0xC000);
-  EXPECT_EQ(port.errfl(), kFrErr);
+  EXPECT_EQ(port.errfl(), kErrflFrerr);
   EXPECT_EQ(port.frame(0x0000, in), 0xC000) << "the ANGLEUNC read was ignored: NOP, EF";
 }
 
