@@ -403,29 +403,28 @@ def generate(args):
 
 
 def diagnose_one(anglecore, d, c):
-    cmd = [
-        anglecore,
-        "diagnose",
-        "--sim",
-        os.path.join(d, c["sim"]),
-        "--real",
-        os.path.join(d, c["real"]),
-        "--holdout",
-        os.path.join(d, c["holdout"]),
-        "--json",
-        "-",
-    ]
+    """`anglecore diagnose --json` of one case of a bench folder (its sim, real and holdout
+    files); {"error": ...} when the command fails."""
+    cmd = [anglecore, "diagnose", "--json", "-"]
+    for role in ("sim", "real", "holdout"):
+        cmd += [f"--{role}", os.path.join(d, c[role])]
     r = subprocess.run(cmd, capture_output=True, text=True)
     if r.returncode != 0:
         return {"error": r.stderr.strip()}
     return json.loads(r.stdout)
 
 
-def score(args):
-    with open(os.path.join(args.dir, "cases.json")) as f:
+def diagnose_all(anglecore, d, jobs):
+    """The cases of a bench folder (its cases.json) and their diagnoses, `jobs` at a time (the
+    scoring of this bench and of scripts/mount_gaps.py)."""
+    with open(os.path.join(d, "cases.json")) as f:
         cases = json.load(f)
-    with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:
-        results = list(ex.map(lambda c: diagnose_one(args.anglecore, args.dir, c), cases))
+    with concurrent.futures.ThreadPoolExecutor(jobs) as ex:
+        return cases, list(ex.map(lambda c: diagnose_one(anglecore, d, c), cases))
+
+
+def score(args):
+    cases, results = diagnose_all(args.anglecore, args.dir, args.jobs)
     rows = {}
     shrinks = []
     correct = 0

@@ -38,16 +38,17 @@ is wrong (`check`: generate into a temporary folder, then score).
 """
 
 import argparse
-import concurrent.futures
 import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
 import magpylib as magpy
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from instrument_bench import diagnose_all  # the same `anglecore diagnose` runs as that bench
 
 MM = 1e-3
 SAMPLES = 6000
@@ -244,21 +245,8 @@ def generate(args):
     print(f"{len(index)} cases in {args.dir}")
 
 
-def diagnose_one(anglecore, d, c):
-    cmd = [anglecore, "diagnose", "--json", "-"]
-    for role in ("sim", "real", "holdout"):
-        cmd += [f"--{role}", os.path.join(d, c[role])]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        return {"error": r.stderr.strip()}
-    return json.loads(r.stdout)
-
-
 def score(args):
-    with open(os.path.join(args.dir, "cases.json")) as f:
-        cases = json.load(f)
-    with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:
-        results = list(ex.map(lambda c: diagnose_one(args.anglecore, args.dir, c), cases))
+    cases, results = diagnose_all(args.anglecore, args.dir, args.jobs)
     wrong = 0
     for c, j in zip(cases, results):
         _sensors, truth, first, _why = CASES[c["label"].split("/")[0]]
