@@ -63,8 +63,15 @@ module acore_hw_mul #(
 
   reg [P_W-1:0] p_q;
   always @(posedge clk_i) if (en_i) p_q <= p_d;
-  acore_delay #(.W(P_W), .DEPTH(DEPTH - 1)) u_dp (
-    .clk_i(clk_i), .en_i(en_i), .d_i(p_q), .q_o(p_o));
+  // The remaining DEPTH - 1 registers (none: the product register is the output).
+  generate
+    if (DEPTH > 1) begin : g_dp
+      acore_delay #(.W(P_W), .DEPTH(DEPTH - 1)) u_dp (
+        .clk_i(clk_i), .en_i(en_i), .d_i(p_q), .q_o(p_o));
+    end else begin : g_out
+      assign p_o = p_q;
+    end
+  endgenerate
 
 endmodule
 
