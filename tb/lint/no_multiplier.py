@@ -110,13 +110,13 @@ def main():
     ap.add_argument("--jobs", type=int, default=1)
     args = ap.parse_args()
     try:
-        todo = builds(args.root, long=bool(args.only))
+        checked = builds(args.root, long=bool(args.only))
     except registry.RegistryError as e:
         print(f"no_multiplier.py: {e}", file=sys.stderr)
         return 2
     if args.only:
         wanted = args.only.split(",")
-        unknown = [w for w in wanted if w not in {b[0] for b in todo}]
+        unknown = [w for w in wanted if w not in {b[0] for b in checked}]
         if unknown:
             print(
                 f"no_multiplier.py: not in rtl/configs.txt for {', '.join(MODULES)}: "
@@ -124,7 +124,7 @@ def main():
                 file=sys.stderr,
             )
             return 2
-        todo = [b for b in todo if b[0] in wanted]
+        checked = [b for b in checked if b[0] in wanted]
     files = rtl_files(args.root)
     fails = 0
     with tempfile.TemporaryDirectory(prefix="acore_nomul_") as tmp:
@@ -162,7 +162,7 @@ def main():
             return name, module, params, ok, msg, time.time() - t0
 
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
-            for name, module, params, ok, msg, dt in ex.map(one, todo):
+            for name, module, params, ok, msg, dt in ex.map(one, checked):
                 desc = f"{name} ({module}{''.join(f' {k}={v}' for k, v in params)})"
                 if ok:
                     what = msg or f"no {'/'.join(CELLS)} cell"
@@ -171,8 +171,8 @@ def main():
                     fails += 1
                     print(f"FAIL {desc}:\n{msg}")
     print(
-        f"{len(todo) - fails} of {len(todo)} registered builds pass: no multiplier cell (with "
-        f"MULT=1: only in {HW_MUL})"
+        f"{len(checked) - fails} of {len(checked)} registered builds pass: no multiplier cell "
+        f"(with MULT=1: only in {HW_MUL})"
     )
     return 1 if fails else 0
 
