@@ -5,6 +5,10 @@
 # acore_serial_top, tb/icarus/acore_apb_tb_icarus.v around the APB shell (its SERIAL). The benches are
 # written for the default widths: a line that sets another parameter is refused.
 # usage: icarus.sh GEN_VECTORS_BINARY SOURCE_DIR WORK_DIR
+# ACORE_ICARUS_SAMPLES="N0 N1": samples of frames 0 and 1 (default "2001 1001": half of frame 0
+# paper samples, a turn at 0.36 degree steps, half random and extreme codes. Icarus runs the
+# pipelined top at about 150 samples a second: the generator's own defaults, "7501 2501", take
+# three times as long and are what the Verilator co-sims' sample counts already exceed).
 set -euo pipefail
 gen=$1
 src=$2
@@ -54,10 +58,11 @@ for line in "${lines[@]}"; do
 done
 # The two frames run side by side (each runs every variant in turn): the simulations are
 # independent, and Icarus uses one core.
+read -r -a samples <<<"${ACORE_ICARUS_SAMPLES:-2001 1001}"
 run_frame() {
   local frame=$1 v
   mkdir -p "$work/frame$frame"
-  "$gen" "$work/frame$frame" "$frame"
+  "$gen" "$work/frame$frame" "$frame" "${samples[$frame]}"
   for v in "${variants[@]}"; do
     # The bench reads its vectors from the current directory (VEC_DIR = ".").
     (cd "$work/frame$frame" && vvp -n "../$v.vvp" >"log_$v.txt" 2>&1) || true

@@ -80,7 +80,7 @@ def check(files, top, params, workdir):
     log = os.path.join(workdir, f"{top}_{abs(hash(chp))}.log")
     mlog = log + ".mul"
     script = (
-        f"read_verilog -sv {' '.join(files)}; hierarchy -check -top {top}{chp}; proc; "
+        f"read_verilog -sv -defer {' '.join(files)}; hierarchy -check -top {top}{chp}; proc; "
         f"tee -o {log} select -list {sel}; tee -o {mlog} select -list t:$mul"
     )
     p = subprocess.run(
