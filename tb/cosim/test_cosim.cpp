@@ -417,7 +417,8 @@ TEST_P(CosimSerial, HostPortWhileComputing) {
   EXPECT_GE(clocks, ideal);
   EXPECT_LE(clocks, ideal + writes + 1);
   EXPECT_GT(clocks, ideal);  // some writes met a scratch write
-  EXPECT_GT(busy_reads, 100 * in.size());
+  // Every clock of a sample but the accepting one is busy (86 to 226+ of them).
+  EXPECT_GT(busy_reads, static_cast<size_t>(h.cycles_per_sample() - 2) * in.size());
   EXPECT_EQ(busy_nonzero, 0u);
   EXPECT_GE(idle_reads, in.size());
   EXPECT_EQ(idle_wrong, 0u);
