@@ -54,7 +54,8 @@
 //   HM     1             ACC = sat_ACC((P(M, x) >>> S_F) + (a_j << ACC_G))
 //                        (M = a_n in T1, shifted ACC_G more, in the first step; ACC after)
 //   HMB    1             - (before the next HM)                                 a_{j-1}
-//   HCL, HY as above     (HL, HM..HMB DEGREE times, then HCL, HY; once per curve)
+//   HCL, HY as above     (HL, then HM, HMB DEGREE times with HCL for the last HMB, then HY;
+//                        once per curve)
 //
 // OUT's stage 2 runs in the next IDLE clock, which can accept the next sample: one sample every
 // CYCLES = 22 + ZERO + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K clocks (MULT = 1: 26 + ZERO + 4 DEGREE
