@@ -100,9 +100,9 @@ module acore_apb #(
 `include "acore_derived.vh"
 
   // ---- the top's timing, by its own functions (rtl/acore_derived.vh) ----
-  localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO) :
+  localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO, MULT) :
       acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD);
-  localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO) :
+  localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO, MULT) :
       acore_top_cycles(FOLD);
   // The most samples the top holds at once (a commit waits until none is left): one per pipeline
   // stage; the folded top's output FIFO (its credit counter's bound); the serial core's one in work

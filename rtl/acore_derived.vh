@@ -305,18 +305,21 @@ function integer acore_top_capacity(input integer f_reg_w, input integer f_s_w,
 endfunction
 
 // acore_serial_top: clocks per sample (the schedule in acore_serial_ctrl.v: 22 single operations,
-// the ZR operation with ZERO, REG_W scaling bits per curve, S_W + 2 per Horner step and curve,
-// 3 per CORDIC iteration), and from the accepting clock to out_valid_o.
+// the ZR operation with ZERO, 3 per CORDIC iteration; with MULT = 0 REG_W scaling bits per curve and
+// S_W + 2 per Horner step and curve, with MULT = 1 one scaling product per curve (2 clocks) and per
+// curve a load, 2 clocks per Horner step and the bubble after the last, less one: 4 + 4 DEGREE),
+// and from the accepting clock to out_valid_o.
 function integer acore_serial_cycles(input integer f_reg_w, input integer f_s_w,
                                      input integer f_degree, input integer f_k,
-                                     input integer f_zero);
-  acore_serial_cycles = 22 + ((f_zero != 0) ? 1 : 0) + 2 * f_reg_w + 2 * f_degree * (f_s_w + 2) +
-                        3 * f_k;
+                                     input integer f_zero, input integer f_mult);
+  acore_serial_cycles = 22 + ((f_zero != 0) ? 1 : 0) + 3 * f_k +
+                        ((f_mult != 0) ? 4 + 4 * f_degree
+                                       : 2 * f_reg_w + 2 * f_degree * (f_s_w + 2));
 endfunction
 function integer acore_serial_latency(input integer f_reg_w, input integer f_s_w,
                                       input integer f_degree, input integer f_k,
-                                      input integer f_zero);
-  acore_serial_latency = acore_serial_cycles(f_reg_w, f_s_w, f_degree, f_k, f_zero) + 1;
+                                      input integer f_zero, input integer f_mult);
+  acore_serial_latency = acore_serial_cycles(f_reg_w, f_s_w, f_degree, f_k, f_zero, f_mult) + 1;
 endfunction
 
 // The serial core holds one sample in work and one result waiting for out_ready_i.

@@ -44,8 +44,22 @@
 //   OUT    1             angle = (T2 >>> DROP) + rbit, region, flags -> output registers
 //                        (ZERO = 1: angle = T2 - Q, the rounded angle minus the zero position)
 //
+// MULT = 1 (the datapath's hardware product P, acore_serial_datapath.v): the scaling and the
+// Horner steps are one operation each, the rest as above:
+//
+//   SC     1             ACC = P(t, R) >>> RS                                   R24
+//   SCB, RND as above (SC, SCB, RND for t13 in T2, then for t24 in T1)
+//   RSB    1             -                                                      a_n(region, 0)
+//   HL     1             T1 = a_n (move)                                        a_{n-1}
+//   HM     1             ACC = sat_ACC((P(M, x) >>> S_F) + (a_j << ACC_G))
+//                        (M = a_n in T1, shifted ACC_G more, in the first step; ACC after)
+//   HMB    1             - (before the next HM)                                 a_{j-1}
+//   HCL, HY as above     (HL, then HM, HMB DEGREE times with HCL for the last HMB, then HY;
+//                        once per curve)
+//
 // OUT's stage 2 runs in the next IDLE clock, which can accept the next sample: one sample every
-// CYCLES = 22 + ZERO + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K clocks; the result appears
+// CYCLES = 22 + ZERO + 2 REG_W + 2 DEGREE (S_W + 2) + 3 K clocks (MULT = 1: 26 + ZERO + 4 DEGREE
+// + 3 K; acore_serial_cycles() in rtl/acore_derived.vh); the result appears
 // LATENCY = CYCLES + 1 clocks after its accepting clock (acore_serial_top.v). The output takes the
 // low ANGLE_W bits of T2 - Q, so the word's bits above ANGLE_W do not reach the angle.
 // Stalls (en_o = 0: nothing changes, the RAM output holds): stage 2 of OUT while the previous
@@ -67,6 +81,8 @@ module acore_serial_ctrl #(
   parameter integer K = 16,
   // 1: the ZERO word (the map's last word) and the ZR operation.
   parameter integer ZERO = 0,
+  // 1: the hardware product (the SC and HM operations above).
+  parameter integer MULT = 0,
   // Words of the coefficient map (acore_words: 4 + 2 REGIONS (DEGREE + 1) + K, + 1 with ZERO).
   parameter integer WORDS = 52,
   // Shift amounts: sh_amt = LS - k for a shift by k (k < 0: right), see acore_serial_datapath.v.
@@ -113,6 +129,7 @@ module acore_serial_ctrl #(
   output reg               t2_mv_src_o,
   output reg  [2:0]        sub_sel_o,
   output reg  [1:0]        cin_sel_o,
+  output reg  [1:0]        mul_sel_o,
   // ---- stage 2 (registered) ----
   output reg               a_acc_o,
   output reg  [1:0]        sat_sel_o,
@@ -141,7 +158,7 @@ module acore_serial_ctrl #(
 
   // Operation encodings (acore_serial_datapath.v uses the same numbers).
   localparam [2:0] A_ZERO = 3'd0, A_T1 = 3'd1, A_T2 = 3'd2, A_Q = 3'd3, A_C1 = 3'd4, A_MLO = 3'd5,
-                   A_MHI = 3'd6;
+                   A_MHI = 3'd6, A_ACC = 3'd7;
   localparam [2:0] B_T1 = 3'd0, B_T2 = 3'd1, B_ACC = 3'd2, B_Q = 3'd3, B_C3 = 3'd4;
   localparam [1:0] Q_PS = 2'd0, Q_PU = 2'd1, Q_SC = 2'd2;
   localparam [1:0] G_ONE = 2'd0, G_ZERO = 2'd1, G_RBIT = 2'd2, G_XBIT = 2'd3;
@@ -151,13 +168,15 @@ module acore_serial_ctrl #(
                    S_ACCPOS = 3'd5, S_PBNEG = 3'd6;
   localparam [1:0] C_SUB = 2'd0, C_RND = 2'd1, C_NRND = 2'd2, C_ZERO = 2'd3;
   localparam [1:0] SAT_NONE = 2'd0, SAT_S = 2'd1, SAT_ACC = 2'd2;
+  localparam [1:0] P_NONE = 2'd0, P_SC = 2'd1, P_H = 2'd2, P_H0 = 2'd3;
 
   localparam [4:0] ST_IDLE = 5'd0, ST_PRE = 5'd1, ST_OFF13 = 5'd2, ST_OFF24 = 5'd3, ST_SC = 5'd4,
                    ST_SCB = 5'd5, ST_RND = 5'd6, ST_RNDB = 5'd7, ST_RS0 = 5'd8, ST_RS1 = 5'd9,
                    ST_RS2 = 5'd10, ST_RSB = 5'd11, ST_HB = 5'd12, ST_HC = 5'd13, ST_HCB = 5'd14,
                    ST_HCL = 5'd15, ST_HY = 5'd16, ST_HYB = 5'd17, ST_CR0 = 5'd18, ST_CR1 = 5'd19,
                    ST_CRB = 5'd20, ST_CA = 5'd21, ST_CB = 5'd22, ST_CZ = 5'd23, ST_LOS = 5'd24,
-                   ST_DOS = 5'd25, ST_OUT = 5'd26, ST_ZR = 5'd27;
+                   ST_DOS = 5'd25, ST_OUT = 5'd26, ST_ZR = 5'd27, ST_HL = 5'd28, ST_HM = 5'd29,
+                   ST_HMB = 5'd30;
 
   // Counter widths: cnt runs over the REG_W bits of R, the S_W bits of x, the K iterations.
   localparam integer CNT_N = sc_max(sc_max(REG_W, S_W), K);
@@ -298,6 +317,7 @@ module acore_serial_ctrl #(
     a_acc_d = 1'b0;
     sub_sel_o = S_ADD;
     cin_sel_o = C_SUB;
+    mul_sel_o = P_NONE;
     sat_sel_d = SAT_NONE;
     acc_we_d = 1'b0;
     t1_we_d = 1'b0;
@@ -358,15 +378,25 @@ module acore_serial_ctrl #(
         state_d = ST_SC;
       end
       ST_SC: begin
-        // Bit j = cnt of R (from the top): ACC = [0 | ACC] + R[j] shift(t, j - RS).
-        b_sel_o = curve_q ? B_T1 : B_T2;
-        sh_amt_o = AM_SC - cnt_sh;
-        gate_sel_o = G_RBIT;
-        raddr_o = curve_q ? AD_R24 : AD_R13;
-        a_acc_d = (cnt_q != CNT_SC);
-        acc_we_d = 1'b1;
-        cnt_d = cnt_q - CNT_ONE;
-        if (cnt_zero) state_d = ST_SCB;
+        if (MULT != 0) begin
+          // ACC = P(t, R) >>> RS (B gated to 0).
+          a_sel_o = curve_q ? A_T1 : A_T2;
+          mul_sel_o = P_SC;
+          gate_sel_o = G_ZERO;
+          raddr_o = AD_R24;
+          acc_we_d = 1'b1;
+          state_d = ST_SCB;
+        end else begin
+          // Bit j = cnt of R (from the top): ACC = [0 | ACC] + R[j] shift(t, j - RS).
+          b_sel_o = curve_q ? B_T1 : B_T2;
+          sh_amt_o = AM_SC - cnt_sh;
+          gate_sel_o = G_RBIT;
+          raddr_o = curve_q ? AD_R24 : AD_R13;
+          a_acc_d = (cnt_q != CNT_SC);
+          acc_we_d = 1'b1;
+          cnt_d = cnt_q - CNT_ONE;
+          if (cnt_zero) state_d = ST_SCB;
+        end
       end
       ST_SCB: begin
         raddr_o = AD_R24;
@@ -417,7 +447,7 @@ module acore_serial_ctrl #(
         curve_d = 1'b0;
         cnt_d = CNT_HB;
         j_d = J_TOP;
-        state_d = ST_HB;
+        state_d = (MULT != 0) ? ST_HL : ST_HB;
       end
       ST_HB: begin
         // Bit b = cnt of x, from the sign bit (subtracted) down. The first bit moves the
@@ -453,6 +483,30 @@ module acore_serial_ctrl #(
       ST_HCB: begin
         state_d = ST_HB;
       end
+      ST_HL: begin
+        // The leading coefficient a_n (the previous operation issued its address) into T1.
+        t1_mv_o = 1'b1;
+        t1_mv_src_o = M1_Q;
+        raddr_o = coef_addr(poly_base, region_i, curve_q, j_ext);
+        state_d = ST_HM;
+      end
+      ST_HM: begin
+        // ACC = sat_ACC((P(M, x) >>> S_F) + (a_j << ACC_G)): M = a_n in T1 (its ACC_G in the
+        // product's shift) in the first step, ACC after; a_j from Q.
+        a_sel_o = step0 ? A_T1 : A_ACC;
+        mul_sel_o = step0 ? P_H0 : P_H;
+        b_sel_o = B_Q;
+        sh_amt_o = AM_COEF;
+        raddr_o = curve_q ? AD_S24 : AD_S13;
+        sat_sel_d = SAT_ACC;
+        acc_we_d = 1'b1;
+        j_d = j_q - 1'b1;
+        state_d = j_zero ? ST_HCL : ST_HMB;
+      end
+      ST_HMB: begin
+        raddr_o = coef_addr(poly_base, region_i, curve_q, j_ext);
+        state_d = ST_HM;
+      end
       ST_HCL: begin
         raddr_o = curve_q ? AD_S24 : AD_S13;
         state_d = ST_HY;
@@ -472,7 +526,7 @@ module acore_serial_ctrl #(
         curve_d = 1'b1;
         cnt_d = CNT_HB;
         j_d = J_TOP;
-        state_d = curve_q ? ST_HYB : ST_HB;
+        state_d = curve_q ? ST_HYB : ((MULT != 0) ? ST_HL : ST_HB);
       end
       ST_HYB: begin
         raddr_o = AD_Y13;

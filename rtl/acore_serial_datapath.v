@@ -22,6 +22,17 @@
 // never issues an operation whose stage 1 needs the previous operation's result (it waits a clock).
 // W holds every exact intermediate of the fixed-point contract (see acore_serial_top.v).
 // en_i = 0 freezes every register (stall).
+//
+// MULT = 1 adds the hardware product (rtl/acore_hw_mul.v, the product register in stage 1's clock):
+//
+//   stage 1 (operand):  P_q = A * M, A the A operand (or ACC, A_ACC), M = R (Q, unsigned: the
+//                       scaling) or x (T2's low S_W bits, signed: a Horner step), the exact product
+//   stage 2 (execute):  res = (P_q >>> PSH) + ((B_q & {gate_q}) ^ {sub_q}) + cin_q, the product in
+//                       place of A, PSH = RS (scaling), S_F (Horner) or S_F - ACC_G (the first
+//                       Horner step, whose multiplicand is the coefficient without its ACC_G)
+//
+// so a product with its floor once (fixed_point.hpp hw_mul) and the next coefficient added (B =
+// Q << ACC_G) take one operation.
 `resetall
 `default_nettype none
 
@@ -43,6 +54,13 @@ module acore_serial_datapath #(
   parameter integer LS = 8,
   parameter integer SHA_W = 5,
   parameter integer BI_W = 5,
+  // 1: the hardware product (above); its multiplicand's width (the widest of the scaling's t, ACC
+  // and a coefficient word) and the product's right shifts (scaling, Horner, first Horner step).
+  parameter integer MULT = 0,
+  parameter integer MA_W = 25,
+  parameter integer PSH_SC = 9,
+  parameter integer PSH_H = 16,
+  parameter integer PSH_H0 = 12,
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
   parameter integer MAG_W = acore_mag_w(S_W)
@@ -75,6 +93,8 @@ module acore_serial_datapath #(
   input  wire               t2_mv_src_i,
   input  wire [2:0]         sub_sel_i,
   input  wire [1:0]         cin_sel_i,
+  // The product (MULT = 1; 0: none, else its shift, the encodings below).
+  input  wire [1:0]         mul_sel_i,
   // ---- stage 2 of the previous operation ----
   // A = ACC (else A_q).
   input  wire               a_acc_i,
@@ -108,7 +128,7 @@ module acore_serial_datapath #(
 
   // Operation encodings (acore_serial_ctrl.v uses the same numbers).
   localparam [2:0] A_ZERO = 3'd0, A_T1 = 3'd1, A_T2 = 3'd2, A_Q = 3'd3, A_C1 = 3'd4, A_MLO = 3'd5,
-                   A_MHI = 3'd6;
+                   A_MHI = 3'd6, A_ACC = 3'd7;
   localparam [2:0] B_T1 = 3'd0, B_T2 = 3'd1, B_ACC = 3'd2, B_Q = 3'd3, B_C3 = 3'd4;
   // Q as a signed coefficient word, an unsigned word, or a signed scratch word.
   localparam [1:0] Q_PS = 2'd0, Q_PU = 2'd1, Q_SC = 2'd2;
@@ -119,6 +139,7 @@ module acore_serial_datapath #(
                    S_ACCPOS = 3'd5, S_PBNEG = 3'd6;
   localparam [1:0] C_SUB = 2'd0, C_RND = 2'd1, C_NRND = 2'd2, C_ZERO = 2'd3;
   localparam [1:0] SAT_S = 2'd1, SAT_ACC = 2'd2;  // 0: none
+  localparam [1:0] P_NONE = 2'd0, P_SC = 2'd1, P_H = 2'd2, P_H0 = 2'd3;
 
   localparam integer BW = W + LS + 1;  // shifter width
   localparam integer NB = 1 << BI_W;   // bit-select vector width
@@ -163,6 +184,8 @@ module acore_serial_datapath #(
       A_C1:    a_d = {{(W-IN_W){c1_i[IN_W-1]}}, c1_i};
       A_MLO:   a_d = {{(W-MAG_W){1'b0}}, mag_lo_i};
       A_MHI:   a_d = {{(W-MAG_W){1'b0}}, mag_hi_i};
+      // ACC as an operand only for the product (MULT = 0: never issued).
+      A_ACC:   a_d = (MULT != 0) ? acc_q : half;
       A_ZERO:  a_d = half;
       default: a_d = half;
     endcase
@@ -237,8 +260,57 @@ module acore_serial_datapath #(
     end
   end
 
+  // The product (MULT = 1): registered in acore_hw_mul in stage 1's clock, shifted in stage 2 by
+  // the operation's constant (every shifted product of the schedule fits W bits).
+  wire [W-1:0] p_sh;
+  wire mul_op;
+  generate
+    if (MULT != 0) begin : g_mul
+      localparam integer MB_W = ((REG_W + 1) > S_W) ? (REG_W + 1) : S_W;
+      localparam integer PR_W = MA_W + MB_W;
+      wire [MB_W-1:0] m_r = {{(MB_W-REG_W){1'b0}}, q_i[REG_W-1:0]};
+      wire [MB_W-1:0] m_x = {{(MB_W-S_W){t2_q[S_W-1]}}, t2_q[S_W-1:0]};
+      wire [PR_W-1:0] p;
+      acore_hw_mul #(
+        .A_W(MA_W), .B_W(MB_W), .B_SIGNED(1), .RSHIFT(0), .P_W(PR_W), .DEPTH(1)
+      ) u_mul (
+        .clk_i(clk_i), .en_i(en_i), .a_i(a_d[MA_W-1:0]),
+        .b_i((mul_sel_i == P_SC) ? m_r : m_x), .p_o(p));
+      reg [1:0] mul_sel_q;
+      always @(posedge clk_i) if (en_i) mul_sel_q <= mul_sel_i;
+      wire signed [PR_W-1:0] p_s = p;
+      // The first Horner step's shift is a left one when ACC_G > S_F (the product is then exact).
+      localparam integer H0_R = (PSH_H0 > 0) ? PSH_H0 : 0;
+      localparam integer H0_L = (PSH_H0 < 0) ? -PSH_H0 : 0;
+      wire signed [PR_W-1:0] p_h0 = p_s <<< H0_L;
+      reg signed [PR_W-1:0] p_shd;
+      always @(*) begin
+        case (mul_sel_q)
+          P_SC:    p_shd = p_s >>> PSH_SC;
+          P_H0:    p_shd = p_h0 >>> H0_R;
+          P_H:     p_shd = p_s >>> PSH_H;
+          default: p_shd = p_s >>> PSH_H;  // P_NONE: not used
+        endcase
+      end
+      if (PR_W >= W) begin : g_cut
+        assign p_sh = p_shd[W-1:0];
+        if (PR_W > W) begin : g_unused
+          // The sign bits above W (each shifted product of the schedule fits W bits).
+          wire unused_hi = ^p_shd[PR_W-1:W];
+        end
+      end else begin : g_ext
+        assign p_sh = {{(W-PR_W){p_shd[PR_W-1]}}, p_shd};
+      end
+      assign mul_op = (mul_sel_q != P_NONE);
+    end else begin : g_nomul
+      assign p_sh = {W{1'b0}};
+      assign mul_op = 1'b0;
+      wire unused_mul = ^mul_sel_i;
+    end
+  endgenerate
+
   // ================= stage 2: add, saturate, write back =================
-  wire [W-1:0] a_op = a_acc_i ? acc_q : a_q;
+  wire [W-1:0] a_op = mul_op ? p_sh : (a_acc_i ? acc_q : a_q);
   wire [W-1:0] b_op = (b_q & {W{gate_q}}) ^ {W{sub_q}};
 
   // The adder: {a, 1} + {b, cin} carries cin into the real sum (a + b + cin).

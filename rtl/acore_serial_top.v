@@ -3,7 +3,10 @@
 // temporary registers (the paper's "simplest hardware platform"), bit for bit the chain of
 // rtl/acore_top.v and model/ip/engine/fixed_model.cpp (pre-filter, scaling, domain selection, Horner
 // correction, CORDIC, status flags, with ZERO = 1 the zero position subtracted), one sample every
-// CYCLES clocks.
+// CYCLES clocks. MULT = 1 adds one hardware product (rtl/acore_hw_mul.v) for the scaling and the
+// Horner steps, each then one operation instead of a shift-add step per bit (86 clocks a sample
+// instead of 226 at the defaults), and the products' rounding rule of MULT = 1 (fixed_point.hpp
+// hw_mul: the exact product floored once).
 //
 //   pins c1, mag_lo/hi, Q, T1, T2 --> A_q ----------------------------+
 //   pins c3, Q, T1, T2, ACC --> shifter --> B_q --> gate/negate --> ADDER --> saturate --> ACC
@@ -48,8 +51,9 @@ module acore_serial_top #(
   // default and meaning). The serial core is the 1-D polynomial correction on the raw x without
   // Fourier stage, not folded: acore_config_check stops any other CORRECTION (the mode table's
   // rows say which tops build a mode), XCENTER, FOURIER_K or FOLD, and the Fourier parameters are
-  // not used otherwise. ZERO = 1: one more register word (the last) holding the zero position z,
-  // angle_o = angle - z (mod a turn), one more operation a sample.
+  // not used otherwise. MULT = 1: the hardware product (above). ZERO = 1: one more register word
+  // (the last) holding the zero position z, angle_o = angle - z (mod a turn), one more operation a
+  // sample.
 `include "acore_datapath_params.vh"
   // $readmemh register image for the power-up contents ("" = none).
   parameter INIT_FILE = "",
@@ -119,12 +123,17 @@ module acore_serial_top #(
                                    st_max(st_max(DROP, CORDIC_G), K - 1));
   localparam integer SHA_W = $clog2(LS + MAXR + 1);
   localparam integer BI_W = $clog2(st_max(REG_W, S_W));
+  // MULT = 1: the hardware product's multiplicand (the scaling's t, ACC, a leading coefficient)
+  // and the product's right shifts (the scaling's RS, a Horner step's S_F, the first step's
+  // S_F - ACC_G: its multiplicand is the coefficient before its ACC_G alignment).
+  localparam integer MA_W = st_max(st_max(T_W, ACC_W), REG_W);
+  localparam integer PSH_H0 = S_F - ACC_G;
 
   // Clocks per sample (between two accepts at full rate) and from the accepting clock to
   // out_valid_o (see the schedule in acore_serial_ctrl.v). The testbench reads both
   // (rtl/verilator.vlt).
-  localparam integer CYCLES = acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO);
-  localparam integer LATENCY = acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO);
+  localparam integer CYCLES = acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO, MULT);
+  localparam integer LATENCY = acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO, MULT);
 
   // Parameter rules: the model's DatapathConfig::validate(DatapathTop::kSerial) (acore_config_check.v
   // with SERIAL = 1: the serial core's modes and options), and the derived parameters. An illegal
@@ -155,15 +164,15 @@ module acore_serial_top #(
   wire a_acc, acc_we, t1_we, t2_we, t2_we_u13, ovf_clr, region_we, neg_we;
   wire los_we, dos_we, out_we;
   wire [2:0] a_sel, b_sel, sub_sel;
-  wire [1:0] q_ext, gate_sel, t1_mv_src, cin_sel, sat_sel;
+  wire [1:0] q_ext, gate_sel, t1_mv_src, cin_sel, sat_sel, mul_sel;
   wire [SHA_W-1:0] sh_amt;
   wire [BI_W-1:0] bit_idx;
   wire [DA_W-1:0] raddr, waddr;
   wire [RG_W-1:0] region;
   acore_serial_ctrl #(
     .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .REGIONS(REGIONS), .K(K), .ZERO(ZERO),
-    .WORDS(WORDS), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W), .RS(RS), .SG(SCALE_G), .RN(RN), .DROP(DROP),
-    .ACC_G(ACC_G), .G(CORDIC_G)
+    .MULT(MULT), .WORDS(WORDS), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W), .RS(RS), .SG(SCALE_G), .RN(RN),
+    .DROP(DROP), .ACC_G(ACC_G), .G(CORDIC_G)
   ) u_ctrl (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(in_valid_i), .in_ready_o(in_ready_o),
     .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .host_we_i(host_wr),
@@ -171,7 +180,7 @@ module acore_serial_top #(
     .a_sel_o(a_sel), .a_half_o(a_half), .b_sel_o(b_sel), .q_ext_o(q_ext), .sh_amt_o(sh_amt),
     .gate_sel_o(gate_sel), .bit_idx_o(bit_idx), .t1_mv_o(t1_mv), .t1_mv_src_o(t1_mv_src),
     .t2_mv_o(t2_mv), .t2_mv_src_o(t2_mv_src), .sub_sel_o(sub_sel), .cin_sel_o(cin_sel),
-    .a_acc_o(a_acc), .sat_sel_o(sat_sel),
+    .mul_sel_o(mul_sel), .a_acc_o(a_acc), .sat_sel_o(sat_sel),
     .acc_we_o(acc_we), .t1_we_o(t1_we), .t2_we_o(t2_we), .t2_we_u13_o(t2_we_u13),
     .ovf_clr_o(ovf_clr), .region_we_o(region_we), .neg_we_o(neg_we),
     .los_we_o(los_we), .dos_we_o(dos_we), .out_we_o(out_we),
@@ -192,14 +201,15 @@ module acore_serial_top #(
   wire ovf, los, dos;
   acore_serial_datapath #(
     .IN_W(IN_W), .REG_W(REG_W), .MEM_W(MEM_W), .S_W(S_W), .ACC_W(ACC_W), .Z_W(Z_W),
-    .ANGLE_W(ANGLE_W), .REGIONS(REGIONS), .W(W), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W)
+    .ANGLE_W(ANGLE_W), .REGIONS(REGIONS), .W(W), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W),
+    .MULT(MULT), .MA_W(MA_W), .PSH_SC(RS), .PSH_H(S_F), .PSH_H0(PSH_H0)
   ) u_dp (
     .clk_i(clk_i), .en_i(en), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
     .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i), .q_i(q),
     .a_sel_i(a_sel), .a_half_i(a_half), .b_sel_i(b_sel), .q_ext_i(q_ext), .sh_amt_i(sh_amt),
     .gate_sel_i(gate_sel), .bit_idx_i(bit_idx), .t1_mv_i(t1_mv), .t1_mv_src_i(t1_mv_src),
     .t2_mv_i(t2_mv), .t2_mv_src_i(t2_mv_src), .sub_sel_i(sub_sel), .cin_sel_i(cin_sel),
-    .a_acc_i(a_acc), .sat_sel_i(sat_sel),
+    .mul_sel_i(mul_sel), .a_acc_i(a_acc), .sat_sel_i(sat_sel),
     .acc_we_i(acc_we), .t1_we_i(t1_we), .t2_we_i(t2_we), .t2_we_u13_i(t2_we_u13),
     .ovf_clr_i(ovf_clr), .region_we_i(region_we), .neg_we_i(neg_we),
     .los_we_i(los_we), .dos_we_i(dos_we), .out_we_i(out_we),

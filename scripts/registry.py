@@ -637,7 +637,13 @@ def pnr_result(path, dev):
     if not os.path.exists(path):
         return None, None, "not run"
     text = open(path).read()
-    fmax = re.findall(r"Max frequency for clock\s+'[^']*':\s+([\d.]+) MHz", text)
+    # The design's one clock: nextpnr also times its constant nets when a DSP block's clock pin is
+    # tied low (the UP5K's SB_MAC16 with MULT = 1: '$PACKER_GND_NET...'), which is no clock.
+    fmax = [
+        f
+        for name, f in re.findall(r"Max frequency for clock\s+'([^']*)':\s+([\d.]+) MHz", text)
+        if not name.startswith("$PACKER_")
+    ]
     lc = re.findall(rf"{re.escape(dev.family.pnr_cell)}:\s+(\d+)/\s*(\d+)", text)
     lc = (int(lc[-1][0]), int(lc[-1][1])) if lc else None
     if not fmax:

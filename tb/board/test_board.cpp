@@ -26,7 +26,14 @@
 #include <set>
 #include <vector>
 
-#include "Vboard_serial.h"
+// The line the bench is built for: board_serial, or a long-sim board line built by
+// tb/CMakeLists.txt with its Verilated class, header and MULT (the estimator's product rule).
+#ifndef ACORE_BOARD_CLASS
+#define ACORE_BOARD_CLASS Vboard_serial
+#define ACORE_BOARD_HEADER "Vboard_serial.h"
+#define ACORE_BOARD_MULT 0
+#endif
+#include ACORE_BOARD_HEADER
 #include "core/fixed_point.hpp"
 #include "cosim/cosim_stimuli.hpp"
 #include "shell/shell_regs.hpp"
@@ -54,11 +61,18 @@ TrackConfig board_track_config(int comp_latency) {
   return c;
 }
 
+// The estimator's configuration: the defaults with the line's MULT.
+DatapathConfig board_datapath() {
+  DatapathConfig c;
+  c.mult = ACORE_BOARD_MULT;
+  return c;
+}
+
 int64_t sext(uint64_t x, int w) { return fx::sext(static_cast<int64_t>(x), w); }
 
 struct Board {
   std::unique_ptr<VerilatedContext> ctx;
-  std::unique_ptr<Vboard_serial> top;
+  std::unique_ptr<ACORE_BOARD_CLASS> top;
   uint64_t t = 0;
   int last = 0;
   int64_t pos = 0;  // x4 decoder
@@ -72,7 +86,7 @@ struct Board {
   Board() {
     ctx = std::make_unique<VerilatedContext>();
     ctx->randReset(2);
-    top = std::make_unique<Vboard_serial>(ctx.get());
+    top = std::make_unique<ACORE_BOARD_CLASS>(ctx.get());
     // The inputs start random too (randReset(2)): idle bus, no sample, SPI idle.
     top->psel_i = 0;
     top->penable_i = 0;
@@ -158,7 +172,7 @@ struct Board {
 // Writes the identity image (no correction, the real arctangent table) through the shadow window
 // and commits it.
 void load_identity(Board& b) {
-  const RegImage img = cosim::identity_image(DatapathConfig{});
+  const RegImage img = cosim::identity_image(board_datapath());
   for (size_t a = 0; a < img.words.size(); ++a)
     ASSERT_FALSE(
         b.apb(true, sh::kCoef + 4 * static_cast<uint32_t>(a), static_cast<uint32_t>(img.words[a])));
@@ -317,7 +331,7 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     in.push_back({unit_code(std::cos(th)), unit_code(std::sin(th)), unit_code(-std::cos(th)),
                   unit_code(-std::sin(th))});
   }
-  const FixedModel model(cosim::identity_image(DatapathConfig{}), StatusWindow{0, INT64_MAX});
+  const FixedModel model(cosim::identity_image(board_datapath()), StatusWindow{0, INT64_MAX});
   std::vector<FixedOutput> est_model;
   std::vector<uint32_t> angles;
   for (const auto& c : in) {

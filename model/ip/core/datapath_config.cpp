@@ -79,7 +79,6 @@ void DatapathConfig::validate(DatapathTop top) const {
     need(fourier_k == 0,
          fmt::format("fourier_k={}: the serial core has no Fourier correction", fourier_k));
     need(fold == 1, fmt::format("fold={}: the serial core is not folded", fold));
-    need(mult == 0, fmt::format("mult={}: the serial core multiplies on its adder only", mult));
   }
   need(
       fold == 1 || fourier_k == 0,
