@@ -120,6 +120,7 @@ MUTANTS = {
         r"rdy_q <= \(cnt_d == CNT_FULL\) && \(occ_d < OCC_MAX\);",
         "rdy_q <= (occ_d < OCC_MAX);",
         "spacing: two samples less than FOLD clocks apart",
+        6,
     ),
     # Folded: the output register's valid bit not reset: a sample of before the reset comes out.
     "fold_valid_not_reset": (
@@ -182,6 +183,16 @@ MUTANTS = {
         "crc: a commit with a wrong CRC writes the top",
         130,
     ),
+    # Board: the observer does not take a sample the estimator flags (loss of signal) while the
+    # estimator, seeing the observer ready, delivers it: the sample is lost between the two.
+    "board_drops_flagged": (
+        "board_fold4",
+        "acore_board.v",
+        r"\.in_valid_i\(est_valid\), \.in_ready_o\(trk_ready\)",
+        ".in_valid_i(est_valid & ~est_los), .in_ready_o(trk_ready)",
+        "count/delay: a sample delivered to the observer never comes out",
+        8,
+    ),
 }
 
 
@@ -202,6 +213,12 @@ PROOFS = {
     # needs invariants tying the bank's state and comparator to the harness's verdict.
     "acore_apb": ("bmc", 24),
     "acore_apb_serial": ("bmc", 24),
+    # The board's stream path (estimator cut, its stream assumed as the shell's proof shows it).
+    # The observer over one or two clocks: the delay line is 4-inductive, which z3 shows in
+    # seconds; ABC's `ind -F 4..12` stays undecided on the same harness and its pdr needs minutes.
+    "acore_board": ("smtbmc", 4),
+    # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction.
+    "acore_board_serial": ("pdr", None),
 }
 
 
@@ -315,6 +332,55 @@ def stream_setup(line):
     }
 
 
+# The board's observer (rtl/acore_track.v): its arithmetic is every adder, shifter and comparison
+# with an operand of this many bits or more (the angle, the loop state, the product, the
+# threshold); its control (the time-shared schedule's step counter, the bandwidth code) is narrower
+# and stays.
+TRACK_DATA_W = 16
+
+
+def board_setup(line):
+    """The board harness (acore_board_formal.sv) for a line of acore_board: the estimator in its
+    shell cut (its stream constrained by the shell's proven contract, in the harness), the
+    observer's arithmetic cut, the observer's timing from the elaborated RTL."""
+    params = list(line.params)
+    b = registry.rtl_constants(ROOT, "acore_board", params)
+    t = registry.rtl_constants(
+        ROOT,
+        "acore_track",
+        [
+            ("ANGLE_W", b["ANGLE_W"]),
+            ("FRAC_W", b["TRK_FRAC_W"]),
+            ("TURN_W", b["TRK_TURN_W"]),
+            ("LEAD_W", b["TRK_LEAD_LEAD_W"]),
+            ("LEAD_F", b["TRK_LEAD_LEAD_F"]),
+            ("LOOP_CLOCKS", b["TRK_LOOP_CLOCKS"]),
+            ("SERIAL", b["TRK_SERIAL"]),
+        ],
+    )
+    h = dict(params)
+    h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"]})
+    ops = ["$add", "$sub", "$neg", "$shl", "$shr", "$sshl", "$sshr", "$shift"]
+    ops += ["$lt", "$le", "$gt", "$ge"]
+    # (a selection of each type in the observer's module, their union, then the wide ones)
+    arith = " ".join(f"$paramod*\\acore_track*/t:{op}" for op in ops) + " %u" * (len(ops) - 1)
+    return {
+        "harness": "acore_board_formal.sv",
+        "top": "acore_board_formal",
+        "hparams": h,
+        "cut": ["acore_apb"],
+        "cut_sel": [f"{arith} r:A_WIDTH>={TRACK_DATA_W} %i"],
+        "mems": [],
+        "taps": [
+            ("tap_est_valid", "dut.est_valid"),
+            ("tap_est_angle", "dut.est_angle"),
+            ("tap_trk_ready", "dut.trk_ready"),
+        ],
+        "bmc_depth": t["LATENCY"] + 4,
+        "proof": "acore_board_serial" if b["TRK_SERIAL"] else "acore_board",
+    }
+
+
 def fifo_setup():
     return {
         "harness": "acore_fifo_formal.sv",
@@ -350,6 +416,8 @@ def front_script(rtl_dir, line_module, line_params, st):
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
         s.append(f"cutpoint @cut_{m}")
+    for sel in st.get("cut_sel", []):
+        s.append(f"cutpoint {sel}")
     # (keep: a tapped register may feed nothing but the tap, which opt_clean would remove; then
     # opt_clean, which merges the aliases of a tap wire, which connect -set would otherwise cut.)
     s.append("flatten")
@@ -528,7 +596,10 @@ def main(argv):
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
                 raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
-            if line.module in ("acore_top", "acore_serial_top", "acore_apb"):
+            if line.module == "acore_board":
+                line_module, line_params = line.module, []
+                st = board_setup(line)
+            elif line.module in ("acore_top", "acore_serial_top", "acore_apb"):
                 # (the harness takes the line's parameters and passes them on: hparams holds them)
                 line_module, line_params = line.module, []
                 st = stream_setup(line)
