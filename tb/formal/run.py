@@ -208,16 +208,17 @@ PROOFS = {
     "acore_top_folded": ("ind", 4),
     "acore_serial_top": ("pdr", None),
     "fifo": ("pdr", None),
-    # The shell: bounded for now (APB rules, reset, the first transfers). pdr had no verdict after
-    # 1.5 CPU minutes and `ind -F 6` does not close: the commit's CHECK pass (about 120 clocks)
-    # needs invariants tying the bank's state and comparator to the harness's verdict.
-    "acore_apb": ("bmc", 24),
-    "acore_apb_serial": ("bmc", 24),
+    # The shell, its top cut (a free stream under the top's proven contract): 4-induction with the
+    # commit's invariants (the bank's state, CHECK's flags, the comparator and CRC_SHADOW tied to
+    # the harness's verdict). Without them `ind` stays undecided at any depth (the CHECK pass lasts
+    # WORDS 32/CRC_W clocks) and pdr had no verdict after 1.5 CPU minutes.
+    "acore_apb": ("ind", 4),
+    "acore_apb_serial": ("ind", 4),
     # The board's stream path (estimator cut, its stream assumed as the shell's proof shows it).
-    # The observer over one or two clocks: the delay line is 4-inductive, which z3 shows in
-    # seconds; ABC's `ind -F 4..12` stays undecided on the same harness and its pdr needs minutes.
-    "acore_board": ("smtbmc", 4),
-    # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction.
+    # The observer over one or two clocks: its valid bits follow the delay line after 4 clocks.
+    "acore_board": ("ind", 4),
+    # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction; pdr had
+    # no verdict after 3 CPU minutes (no registry line runs it yet).
     "acore_board_serial": ("pdr", None),
 }
 
@@ -264,14 +265,17 @@ def stream_setup(line):
     else:
         dut = "g_serial.dut." if serial else "g_top.dut."
     taps = []
-    if serial:
+    # The shell's proof cuts the top (its own proof covers it): no tap into it.
+    core = not shell_line
+    h["CORE"] = int(core)
+    if serial and core:
         taps += [
             ("g_serial_ref.tap_idle", dut + "u_ctrl.idle"),
             ("g_serial_ref.tap_out_we", dut + "u_ctrl.out_we_o"),
         ]
-    if not serial and fold == 1:
+    if core and not serial and fold == 1:
         taps.append(("g_ref.tap_vld", dut + "g_pipe.vld_q"))
-    if not serial and fold > 1:
+    if core and not serial and fold > 1:
         h["DPV_W"] = lat - 3
         h["OCC_W"] = (shell["CAPACITY"] - 1).bit_length() + 1
         f = dut + "g_fold."
@@ -310,7 +314,30 @@ def stream_setup(line):
             (r + "tap_crc_active_err", p + "u_regs.status_crc_active_q"),
             (r + "tap_done", p + "u_regs.status_done_q"),
         ]
+        b = p + "u_bank."
+        taps += [
+            (r + "tap_" + w, b + n)
+            for w, n in [
+                ("state", "state_q"),
+                ("settle", "settle_q"),
+                ("diff", "diff_q"),
+                ("crc", "crc"),
+                ("busy_q", "busy_q"),
+                ("req", "req_q"),
+                ("fed", "fed_q"),
+                ("crc_done", "crc_done_q"),
+                ("cmp", "cmp_q"),
+                ("neq", "neq_q"),
+                ("sel", "sel_q"),
+                ("more", "more_q"),
+                ("ld", "ld_q"),
+                ("pend", "pend_q"),
+                ("crc_idle", "crc_idle"),
+            ]
+        ]
     cut = [] if serial else CUT_TOP
+    if shell_line:
+        cut = [top]
     # Memories whose read is cut (ABC engines): the folded top's output FIFO; the serial core's RAM
     # (coefficients and scratch words: data only, the schedule never reads it); the shell's shadow
     # bank (its words reach only the CRC and the top's words: any value is covered).
@@ -485,7 +512,9 @@ def abc_check(work, aig, mode, engine, depth):
     elif engine == "ind":
         # (one frame more than the step's: the base covers every frame the step assumes)
         runs.append(("base", f"read_aiger {aig}; fold; strash; bmc3 -F {depth + 1}"))
-        runs.append(("induction", f"read_aiger {aig}; orpos; strash; ind -F {depth}"))
+        # (fold first: the assumptions, AIGER constraints, become part of the property; `ind` on
+        # its own ignores them, and a step that needs an assumption stays undecided)
+        runs.append(("induction", f"read_aiger {aig}; fold; orpos; strash; ind -F {depth}"))
     else:
         runs.append(("pdr", f"read_aiger {aig}; fold; strash; pdr"))
     for what, cmd in runs:
@@ -623,7 +652,9 @@ def main(argv):
         return 2
     if st["top"] == "acore_stream_formal":
         # The timer properties are bounded ones (bmc); a proof has the reference invariants.
-        st["hparams"]["TIMERS"] = 0 if a.mode == "prove" else 1
+        # (a free core has no timing to check)
+        core = st["hparams"]["CORE"]
+        st["hparams"]["TIMERS"] = 0 if a.mode == "prove" or not core else 1
     front = front_script(rtl_dir, line_module, line_params, st)
     ys = os.path.join(work, "model.ys")
     if engine == "smtbmc":
