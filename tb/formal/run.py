@@ -6,17 +6,20 @@ usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant 
                      [--workdir DIR]
        run.py --list            the registry lines with the formal flow, and the planted bugs
 
-CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
-folded top's output FIFO alone). The harness (tb/formal/*.sv) wraps the line's module with the
-line's parameters; its bounds come from the elaborated RTL (LATENCY, CAPACITY: registry.py's
-rtl_constants), never from a second table. Which engine closes a harness's proof, and at which
-depth, is the table PROOFS below (one row a harness).
+CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py): acore_top,
+acore_serial_top, the shell acore_apb (its top cut), the board acore_board (its estimator cut;
+tb/formal/acore_board_formal.sv), or `fifo` (the folded top's output FIFO alone). The harness
+(tb/formal/*.sv) wraps the line's module with the line's parameters; its bounds come from the
+elaborated RTL (LATENCY, CAPACITY: registry.py's rtl_constants), never from a second table.
+Which engine closes a harness's proof, and at which depth, is the table PROOFS below (one row a
+harness).
 
 Engines (--engine overrides the table's):
   ind     the design as an AIGER file (flatten, async2sync, memory_map, techmap, dffunmap,
           abc -g AND, write_aiger -zinit: the SymbiYosys abc flow), then yosys-abc: the base case
           `fold; strash; bmc3 -F k+1` (no assertion fails in the first k+1 clocks from reset) and
-          the step `orpos; strash; ind -F k` (k-induction; the assumptions are AIGER constraints).
+          the step `fold; orpos; strash; ind -F k` (k-induction; the assumptions are AIGER
+          constraints, which `fold` makes part of the property).
   pdr     the same AIGER file, `fold; strash; pdr` (property-directed reachability: an inductive
           invariant of its own; no depth).
   smtbmc  SMT2 and yosys-smtbmc with z3: a base-case BMC of depth k, then the k-induction step.
@@ -37,6 +40,10 @@ outputs become free values each clock). The properties are about the valid/ready
 output registers, which are kept, so any behaviour of the cut values is covered. The ABC engines
 also cut the read of the folded top's output FIFO memory (its data word is free when loaded; the
 FIFO's order is the fifo harness's proof), which removes its 256 words from the state.
+Assume-guarantee: the shell's proof cuts its whole top and the board's its whole estimator (the
+shell), each a free stream constrained by the contract the cut block's own proof shows; the
+board's also cuts the observer's arithmetic (its adders, shifters and comparisons of
+TRACK_DATA_W bits or more).
 Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
 """
 
