@@ -30,6 +30,10 @@ module acore_stream_formal #(
   // 1: the top inside the APB register shell (rtl/acore_apb.v, SERIAL selects the top): the
   // stream properties at the shell's ports, and the shell's own (g_shell_ref below).
   parameter integer SHELL = 0,
+  // 0 (the shell's proof): the top inside the shell is cut by the driver (its outputs free each
+  // clock) and its stream constrained by what the top's own proof shows (below, g_core_free):
+  // the shell's properties hold for every top. 1: the top kept.
+  parameter integer CORE = 1,
   // The shell's in-flight counter width, and its APB address width.
   parameter integer CNT_W = 4,
   parameter integer APB_AW = 12,
@@ -227,10 +231,29 @@ module acore_stream_formal #(
     end
   end
 
+  // ---- the top cut (CORE = 0): its stream as its proof (this harness around the top alone) shows
+  // it, assumed: nothing given from an empty core, at most CAP samples taken, the output valid low
+  // the clock after a reset and held (with its data) while not taken. The stream properties above
+  // then restate these; the shell's below are what this harness proves. ----
+  generate
+    if (CORE == 0) begin : g_core_free
+      always @(*) begin
+        if (!init_q) begin
+          if (inflight == 0) assume (!out_valid_o);
+          if (inflight >= CAP) assume (!in_ready_o);
+          if (past_rst_q) assume (!out_valid_o);
+          if (past_held_q && !rst_i) assume (out_valid_o && angle_o == past_angle_q &&
+                                             region_o == past_region_q &&
+                                             {ovf_o, los_o, dos_o} == past_flags_q);
+        end
+      end
+    end
+  endgenerate
+
   // ---- pipe (FOLD = 1): the reference pipeline and the top's valid bits (tap_vld, connected to
   // the top's vld_q by the driver after flattening) ----
   generate
-    if (SERIAL == 0 && FOLD == 1) begin : g_ref
+    if (CORE != 0 && SERIAL == 0 && FOLD == 1) begin : g_ref
       reg  [LATENCY-1:0] ref_q;
       wire [LATENCY-1:0] tap_vld;
       wire ref_en = !(ref_q[LATENCY-1] && !out_ready_i);
@@ -261,7 +284,7 @@ module acore_stream_formal #(
   // FIFO + on the output port; the credit counter counts them; in_ready_o only when FOLD clocks
   // have passed. These make k-induction close. ----
   generate
-    if (SERIAL == 0 && FOLD > 1) begin : g_fold_ref
+    if (CORE != 0 && SERIAL == 0 && FOLD > 1) begin : g_fold_ref
       wire [DPV_W-1:0] tap_v;
       wire             tap_out_vld, tap_rdy;
       wire [OCC_W-1:0] tap_occ, tap_wptr, tap_rptr;
@@ -290,7 +313,7 @@ module acore_stream_formal #(
   // its result being written to the output registers (OUT's stage 2), or on the output port. These
   // make k-induction close. ----
   generate
-    if (SERIAL != 0) begin : g_serial_ref
+    if (CORE != 0 && SERIAL != 0) begin : g_serial_ref
       wire tap_idle, tap_out_we;
       always @(*) begin
         if (!init_q && !rst_i) begin
@@ -384,6 +407,46 @@ module acore_stream_formal #(
           if (!past_shell_rst_q && tap_bank != past_bank_q) assert (ok_q);
           // count
           assert (tap_inflight == inflight);
+        end
+      end
+
+      // The commit's invariants (what makes the proof unbounded: the bank's state, its comparator
+      // pipeline and CRC_SHADOW tied to the harness's verdict ok_q and counters). Taps, connected
+      // by the driver to the bank (rtl/acore_coef_bank.v): its state, busy flop and registered
+      // request; the CHECK pass's flags (the last word fed to the CRC engine, its CRC taken into
+      // CRC_SHADOW, the comparison ready), words left and CRC load; STREAM's pending word; SETTLE's
+      // counter; the comparator (CRC ^ reference, its reduction, the reference it used); the CRC
+      // engine's value and idle flag.
+      localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3,
+                       C_SETTLE = 3'd4;
+      wire [2:0] tap_state;
+      wire [3:0] tap_settle;
+      wire [31:0] tap_diff, tap_crc;
+      wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel, tap_more, tap_ld;
+      wire tap_pend, tap_crc_idle;
+      wire streaming = tap_state == C_STREAM || tap_state == C_SETTLE;
+      wire checked = tap_state == C_CHECK && tap_crc_done;
+      always @(posedge clk_i) begin
+        if (!init_q && !rst_i) begin
+          assert (tap_state <= C_SETTLE);
+          assert (tap_busy_q == (tap_state != C_IDLE));
+          assert (tap_busy == (tap_busy_q || tap_req));
+          if (tap_req) assert (tap_state == C_IDLE);
+          // STREAM and SETTLE: decided to write, nothing in flight; the top's port written only
+          // there, and not in SETTLE's last clock (the samples flow again the clock after it).
+          if (streaming) assert (ok_q && tap_inflight == 0);
+          if (tap_pend) assert (tap_state == C_STREAM);
+          if (tap_top_we) assert (streaming);
+          if (tap_top_we && tap_state == C_SETTLE) assert (tap_settle != 0);
+          // CHECK: once the last word is fed, no more loads; once its CRC is taken, the engine is
+          // idle (its CRC still), CRC_SHADOW holds it and the comparator's first stage holds
+          // CRC ^ CRC_EXPECTED (locked while busy); once the comparison is ready, its reduction.
+          if (tap_state == C_CHECK && tap_fed) assert (!tap_more);
+          if (checked) begin
+            assert (tap_fed && !tap_more && !tap_ld && tap_crc_idle && tap_sel);
+            assert (tap_crc == tap_crc_shadow && tap_diff == (tap_crc ^ tap_crc_expected));
+          end
+          if (tap_state == C_CHECK && tap_cmp) assert (tap_crc_done && tap_neq == (tap_diff != 0));
         end
       end
     end

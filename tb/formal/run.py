@@ -6,17 +6,20 @@ usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant 
                      [--workdir DIR]
        run.py --list            the registry lines with the formal flow, and the planted bugs
 
-CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py), or `fifo` (the
-folded top's output FIFO alone). The harness (tb/formal/*.sv) wraps the line's module with the
-line's parameters; its bounds come from the elaborated RTL (LATENCY, CAPACITY: registry.py's
-rtl_constants), never from a second table. Which engine closes a harness's proof, and at which
-depth, is the table PROOFS below (one row a harness).
+CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py): acore_top,
+acore_serial_top, the shell acore_apb (its top cut), the board acore_board (its estimator cut;
+tb/formal/acore_board_formal.sv), or `fifo` (the folded top's output FIFO alone). The harness
+(tb/formal/*.sv) wraps the line's module with the line's parameters; its bounds come from the
+elaborated RTL (LATENCY, CAPACITY: registry.py's rtl_constants), never from a second table.
+Which engine closes a harness's proof, and at which depth, is the table PROOFS below (one row a
+harness).
 
 Engines (--engine overrides the table's):
   ind     the design as an AIGER file (flatten, async2sync, memory_map, techmap, dffunmap,
           abc -g AND, write_aiger -zinit: the SymbiYosys abc flow), then yosys-abc: the base case
           `fold; strash; bmc3 -F k+1` (no assertion fails in the first k+1 clocks from reset) and
-          the step `orpos; strash; ind -F k` (k-induction; the assumptions are AIGER constraints).
+          the step `fold; orpos; strash; ind -F k` (k-induction; the assumptions are AIGER
+          constraints, which `fold` makes part of the property).
   pdr     the same AIGER file, `fold; strash; pdr` (property-directed reachability: an inductive
           invariant of its own; no depth).
   smtbmc  SMT2 and yosys-smtbmc with z3: a base-case BMC of depth k, then the k-induction step.
@@ -37,6 +40,10 @@ outputs become free values each clock). The properties are about the valid/ready
 output registers, which are kept, so any behaviour of the cut values is covered. The ABC engines
 also cut the read of the folded top's output FIFO memory (its data word is free when loaded; the
 FIFO's order is the fifo harness's proof), which removes its 256 words from the state.
+Assume-guarantee: the shell's proof cuts its whole top and the board's its whole estimator (the
+shell), each a free stream constrained by the contract the cut block's own proof shows; the
+board's also cuts the observer's arithmetic (its adders, shifters and comparisons of
+TRACK_DATA_W bits or more).
 Exit: 0 proved / counterexample found for a mutant; 1 failed; 2 bad usage or tool error.
 """
 
@@ -120,6 +127,7 @@ MUTANTS = {
         r"rdy_q <= \(cnt_d == CNT_FULL\) && \(occ_d < OCC_MAX\);",
         "rdy_q <= (occ_d < OCC_MAX);",
         "spacing: two samples less than FOLD clocks apart",
+        6,
     ),
     # Folded: the output register's valid bit not reset: a sample of before the reset comes out.
     "fold_valid_not_reset": (
@@ -182,6 +190,16 @@ MUTANTS = {
         "crc: a commit with a wrong CRC writes the top",
         130,
     ),
+    # Board: the observer does not take a sample the estimator flags (loss of signal) while the
+    # estimator, seeing the observer ready, delivers it: the sample is lost between the two.
+    "board_drops_flagged": (
+        "board_fold4",
+        "acore_board.v",
+        r"\.in_valid_i\(est_valid\), \.in_ready_o\(trk_ready\)",
+        ".in_valid_i(est_valid & ~est_los), .in_ready_o(trk_ready)",
+        "count/delay: a sample delivered to the observer never comes out",
+        8,
+    ),
 }
 
 
@@ -197,11 +215,18 @@ PROOFS = {
     "acore_top_folded": ("ind", 4),
     "acore_serial_top": ("pdr", None),
     "fifo": ("pdr", None),
-    # The shell: bounded for now (APB rules, reset, the first transfers). pdr had no verdict after
-    # 1.5 CPU minutes and `ind -F 6` does not close: the commit's CHECK pass (about 120 clocks)
-    # needs invariants tying the bank's state and comparator to the harness's verdict.
-    "acore_apb": ("bmc", 24),
-    "acore_apb_serial": ("bmc", 24),
+    # The shell, its top cut (a free stream under the top's proven contract): 4-induction with the
+    # commit's invariants (the bank's state, CHECK's flags, the comparator and CRC_SHADOW tied to
+    # the harness's verdict). Without them `ind` stays undecided at any depth (the CHECK pass lasts
+    # WORDS 32/CRC_W clocks) and pdr had no verdict after 1.5 CPU minutes.
+    "acore_apb": ("ind", 4),
+    "acore_apb_serial": ("ind", 4),
+    # The board's stream path (estimator cut, its stream assumed as the shell's proof shows it).
+    # The observer over one or two clocks: its valid bits follow the delay line after 4 clocks.
+    "acore_board": ("ind", 4),
+    # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction; pdr had
+    # no verdict after 3 CPU minutes (no registry line runs it yet).
+    "acore_board_serial": ("pdr", None),
 }
 
 
@@ -247,14 +272,17 @@ def stream_setup(line):
     else:
         dut = "g_serial.dut." if serial else "g_top.dut."
     taps = []
-    if serial:
+    # The shell's proof cuts the top (its own proof covers it): no tap into it.
+    core = not shell_line
+    h["CORE"] = int(core)
+    if serial and core:
         taps += [
             ("g_serial_ref.tap_idle", dut + "u_ctrl.idle"),
             ("g_serial_ref.tap_out_we", dut + "u_ctrl.out_we_o"),
         ]
-    if not serial and fold == 1:
+    if core and not serial and fold == 1:
         taps.append(("g_ref.tap_vld", dut + "g_pipe.vld_q"))
-    if not serial and fold > 1:
+    if core and not serial and fold > 1:
         h["DPV_W"] = lat - 3
         h["OCC_W"] = (shell["CAPACITY"] - 1).bit_length() + 1
         f = dut + "g_fold."
@@ -293,7 +321,30 @@ def stream_setup(line):
             (r + "tap_crc_active_err", p + "u_regs.status_crc_active_q"),
             (r + "tap_done", p + "u_regs.status_done_q"),
         ]
+        b = p + "u_bank."
+        taps += [
+            (r + "tap_" + w, b + n)
+            for w, n in [
+                ("state", "state_q"),
+                ("settle", "settle_q"),
+                ("diff", "diff_q"),
+                ("crc", "crc"),
+                ("busy_q", "busy_q"),
+                ("req", "req_q"),
+                ("fed", "fed_q"),
+                ("crc_done", "crc_done_q"),
+                ("cmp", "cmp_q"),
+                ("neq", "neq_q"),
+                ("sel", "sel_q"),
+                ("more", "more_q"),
+                ("ld", "ld_q"),
+                ("pend", "pend_q"),
+                ("crc_idle", "crc_idle"),
+            ]
+        ]
     cut = [] if serial else CUT_TOP
+    if shell_line:
+        cut = [top]
     # Memories whose read is cut (ABC engines): the folded top's output FIFO; the serial core's RAM
     # (coefficients and scratch words: data only, the schedule never reads it); the shell's shadow
     # bank (its words reach only the CRC and the top's words: any value is covered).
@@ -312,6 +363,55 @@ def stream_setup(line):
         "taps": taps,
         "bmc_depth": lat + 9,
         "proof": proof,
+    }
+
+
+# The board's observer (rtl/acore_track.v): its arithmetic is every adder, shifter and comparison
+# with an operand of this many bits or more (the angle, the loop state, the product, the
+# threshold); its control (the time-shared schedule's step counter, the bandwidth code) is narrower
+# and stays.
+TRACK_DATA_W = 16
+
+
+def board_setup(line):
+    """The board harness (acore_board_formal.sv) for a line of acore_board: the estimator in its
+    shell cut (its stream constrained by the shell's proven contract, in the harness), the
+    observer's arithmetic cut, the observer's timing from the elaborated RTL."""
+    params = list(line.params)
+    b = registry.rtl_constants(ROOT, "acore_board", params)
+    t = registry.rtl_constants(
+        ROOT,
+        "acore_track",
+        [
+            ("ANGLE_W", b["ANGLE_W"]),
+            ("FRAC_W", b["TRK_FRAC_W"]),
+            ("TURN_W", b["TRK_TURN_W"]),
+            ("LEAD_W", b["TRK_LEAD_LEAD_W"]),
+            ("LEAD_F", b["TRK_LEAD_LEAD_F"]),
+            ("LOOP_CLOCKS", b["TRK_LOOP_CLOCKS"]),
+            ("SERIAL", b["TRK_SERIAL"]),
+        ],
+    )
+    h = dict(params)
+    h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"]})
+    ops = ["$add", "$sub", "$neg", "$shl", "$shr", "$sshl", "$sshr", "$shift"]
+    ops += ["$lt", "$le", "$gt", "$ge"]
+    # (a selection of each type in the observer's module, their union, then the wide ones)
+    arith = " ".join(f"$paramod*\\acore_track*/t:{op}" for op in ops) + " %u" * (len(ops) - 1)
+    return {
+        "harness": "acore_board_formal.sv",
+        "top": "acore_board_formal",
+        "hparams": h,
+        "cut": ["acore_apb"],
+        "cut_sel": [f"{arith} r:A_WIDTH>={TRACK_DATA_W} %i"],
+        "mems": [],
+        "taps": [
+            ("tap_est_valid", "dut.est_valid"),
+            ("tap_est_angle", "dut.est_angle"),
+            ("tap_trk_ready", "dut.trk_ready"),
+        ],
+        "bmc_depth": t["LATENCY"] + 4,
+        "proof": "acore_board_serial" if b["TRK_SERIAL"] else "acore_board",
     }
 
 
@@ -350,6 +450,8 @@ def front_script(rtl_dir, line_module, line_params, st):
         # The derived modules keep the name in $paramod$<hash>\<name> or \<name>.
         s.append(f"select -set cut_{m} t:{m} t:$paramod*\\{m}* %u")
         s.append(f"cutpoint @cut_{m}")
+    for sel in st.get("cut_sel", []):
+        s.append(f"cutpoint {sel}")
     # (keep: a tapped register may feed nothing but the tap, which opt_clean would remove; then
     # opt_clean, which merges the aliases of a tap wire, which connect -set would otherwise cut.)
     s.append("flatten")
@@ -417,7 +519,9 @@ def abc_check(work, aig, mode, engine, depth):
     elif engine == "ind":
         # (one frame more than the step's: the base covers every frame the step assumes)
         runs.append(("base", f"read_aiger {aig}; fold; strash; bmc3 -F {depth + 1}"))
-        runs.append(("induction", f"read_aiger {aig}; orpos; strash; ind -F {depth}"))
+        # (fold first: the assumptions, AIGER constraints, become part of the property; `ind` on
+        # its own ignores them, and a step that needs an assumption stays undecided)
+        runs.append(("induction", f"read_aiger {aig}; fold; orpos; strash; ind -F {depth}"))
     else:
         runs.append(("pdr", f"read_aiger {aig}; fold; strash; pdr"))
     for what, cmd in runs:
@@ -528,7 +632,10 @@ def main(argv):
             line = registry.get(ROOT, a.config)
             if "formal" not in line.flows:
                 raise registry.RegistryError(f"{line.where}: '{a.config}' has no formal flow")
-            if line.module in ("acore_top", "acore_serial_top", "acore_apb"):
+            if line.module == "acore_board":
+                line_module, line_params = line.module, []
+                st = board_setup(line)
+            elif line.module in ("acore_top", "acore_serial_top", "acore_apb"):
                 # (the harness takes the line's parameters and passes them on: hparams holds them)
                 line_module, line_params = line.module, []
                 st = stream_setup(line)
@@ -552,7 +659,9 @@ def main(argv):
         return 2
     if st["top"] == "acore_stream_formal":
         # The timer properties are bounded ones (bmc); a proof has the reference invariants.
-        st["hparams"]["TIMERS"] = 0 if a.mode == "prove" else 1
+        # (a free core has no timing to check)
+        core = st["hparams"]["CORE"]
+        st["hparams"]["TIMERS"] = 0 if a.mode == "prove" or not core else 1
     front = front_script(rtl_dir, line_module, line_params, st)
     ys = os.path.join(work, "model.ys")
     if engine == "smtbmc":

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+// acore_board_formal: the formal harness of the board's stream path (rtl/acore_board.v: the
+// estimator's angle stream into the tracking observer, whose outputs feed ABZ, UVW and the SPI
+// port), driven by tb/formal/run.py. It wraps acore_board with the registry line's parameters and
+// drives every input freely (reset high in the first clock; APB, SPI and the sensor's inputs free).
+//
+// Assume-guarantee: the estimator in its shell (the board's u_shell) is cut by the driver (Yosys
+// `cutpoint`: its outputs are free values each clock) and constrained here by what the shell's own
+// proof shows of its output stream (acore_stream_formal.sv, SHELL = 1): out_valid low the clock
+// after a reset, and out_valid and the angle held while the observer does not take them. So the
+// proof covers every estimator, folded or serial, and any angle. The observer's arithmetic (every
+// adder, shifter and comparison of 16 bits or more in acore_track: the loop, the product, the
+// rounding, the loss-of-tracking test) is cut as well: its data registers and output registers
+// stay, and take free values when they load. The observer's control (valid bits, update clock,
+// the time-shared schedule and its counter) is kept.
+//
+//   reset     the observer's ready (the estimator's out_ready) low while rst_i is high; the
+//             observer's output valid low the clock after a reset.
+//   count     samples the estimator delivered (est_valid && trk_ready) = samples the observer gave
+//             (trk_valid_o: its output is always taken) + in flight; nothing given from an empty
+//             observer; in flight <= its LATENCY.
+//   delay     a reference delay line of LATENCY clocks (the board never stalls the observer's
+//             output) gives trk_valid_o exactly: every sample delivered comes out LATENCY clocks
+//             later, none lost, duplicated or invented, and in the order delivered (a fixed
+//             delay keeps order); the observer's ready is low exactly in the CYCLES - 1 clocks
+//             after it took a sample (its update clock, or its time-shared schedule).
+//   hold      the observer's outputs (tracked and compensated angle, velocity, turns, loss of
+//             tracking), which ABZ, UVW and the APB read between samples, change only in a clock
+//             that gives a sample.
+// The reference's valid bits are also the induction's invariant: in flight = the ones of the
+// delay line.
+`default_nettype none
+
+module acore_board_formal #(
+  // The datapath parameters, passed on to the board (the registry line's, set by the driver).
+`include "acore_datapath_params.vh"
+  parameter integer SERIAL = 0,
+  parameter integer TRK_FRAC_W = 25,
+  // The observer as the board elaborates it (the driver reads them from the RTL): clocks from a
+  // sample taken to its result, and clocks a sample.
+  parameter integer TRK_LAT = 4,
+  parameter integer TRK_CYC = 2
+) (
+  input wire               clk_i,
+  input wire               rst_i,
+  input wire               psel_i,
+  input wire               penable_i,
+  input wire               pwrite_i,
+  input wire [11:0]        paddr_i,
+  input wire [31:0]        pwdata_i,
+  input wire [3:0]         pstrb_i,
+  input wire               in_valid_i,
+  input wire [IN_W-1:0]    c1_i,
+  input wire [IN_W-1:0]    c2_i,
+  input wire [IN_W-1:0]    c3_i,
+  input wire [IN_W-1:0]    c4_i,
+  input wire               sclk_i,
+  input wire               csn_i,
+  input wire               mosi_i
+);
+  localparam integer P_W = ANGLE_W + TRK_FRAC_W;
+  wire [31:0]        prdata_o;
+  wire               pready_o, pslverr_o, irq_o, in_ready_o, out_valid_o, los_o, dos_o;
+  wire [ANGLE_W-1:0] angle_o;
+  wire               trk_valid_o, trk_lot_o;
+  wire [ANGLE_W-1:0] trk_angle_o, trk_angle_comp_o;
+  wire [P_W-1:0]     trk_velocity_o;
+  wire [15:0]        trk_turns_o;
+  wire               a_o, b_o, z_o, u_o, v_o, w_o, miso_o, miso_oe_o;
+
+  acore_board #(
+`include "acore_datapath_pass.vh"
+    .SERIAL(SERIAL), .INIT_FILE(""), .TRK_FRAC_W(TRK_FRAC_W)
+  ) dut (
+    .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i), .penable_i(penable_i), .pwrite_i(pwrite_i),
+    .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i), .prdata_o(prdata_o),
+    .pready_o(pready_o), .pslverr_o(pslverr_o), .irq_o(irq_o), .in_valid_i(in_valid_i),
+    .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
+    .out_valid_o(out_valid_o), .angle_o(angle_o), .los_o(los_o), .dos_o(dos_o),
+    .trk_valid_o(trk_valid_o), .trk_angle_o(trk_angle_o), .trk_angle_comp_o(trk_angle_comp_o),
+    .trk_velocity_o(trk_velocity_o), .trk_turns_o(trk_turns_o), .trk_lot_o(trk_lot_o),
+    .a_o(a_o), .b_o(b_o), .z_o(z_o), .u_o(u_o), .v_o(v_o), .w_o(w_o), .sclk_i(sclk_i),
+    .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o), .miso_oe_o(miso_oe_o));
+
+  // (taps, connected by the driver to the board's wires: the estimator's stream into the observer
+  // and the observer's ready)
+  wire               tap_est_valid, tap_trk_ready;
+  wire [ANGLE_W-1:0] tap_est_angle;
+
+  // Reset in the first clock (the flops' power-up values are free).
+  reg init_q = 1'b1;
+  always @(posedge clk_i) init_q <= 1'b0;
+  always @(*) if (init_q) assume (rst_i);
+
+  wire take = tap_est_valid && tap_trk_ready;
+
+  // ---- the estimator's stream as its shell's proof shows it (assumed) ----
+  reg               past_rst_q = 1'b1;
+  reg               past_est_held_q = 1'b0;
+  reg [ANGLE_W-1:0] past_est_angle_q;
+  always @(posedge clk_i) begin
+    past_rst_q <= rst_i;
+    past_est_held_q <= tap_est_valid && !tap_trk_ready && !rst_i;
+    past_est_angle_q <= tap_est_angle;
+  end
+  always @(*) begin
+    if (past_rst_q) assume (!tap_est_valid);
+    if (past_est_held_q && !rst_i) assume (tap_est_valid && tap_est_angle == past_est_angle_q);
+  end
+
+  // ---- count ----
+  localparam integer CW = 12;
+  reg [CW-1:0] taken_q, given_q;
+  wire [CW-1:0] inflight = taken_q - given_q;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      taken_q <= 0;
+      given_q <= 0;
+    end else begin
+      taken_q <= taken_q + take;
+      given_q <= given_q + trk_valid_o;
+    end
+  end
+
+  // ---- delay: the reference delay line (bit i: a sample taken i + 1 clocks ago) ----
+  reg [TRK_LAT-1:0] ref_q;
+  always @(posedge clk_i) begin
+    if (rst_i) ref_q <= 0;
+    else ref_q <= {ref_q[TRK_LAT-2:0], take};
+  end
+  integer i;
+  reg [CW-1:0] ones;
+  reg          busy;  // a sample taken in the last CYCLES - 1 clocks
+  always @(*) begin
+    ones = 0;
+    for (i = 0; i < TRK_LAT; i = i + 1) ones = ones + ref_q[i];
+    busy = 1'b0;
+    for (i = 0; i < TRK_CYC - 1; i = i + 1) busy = busy | ref_q[i];
+  end
+
+  // ---- hold: the observer's outputs of the clock before ----
+  localparam integer OUT_W = 2 * ANGLE_W + P_W + 16 + 1;
+  wire [OUT_W-1:0] trk_out = {trk_angle_o, trk_angle_comp_o, trk_velocity_o, trk_turns_o, trk_lot_o};
+  reg  [OUT_W-1:0] past_trk_out_q;
+  always @(posedge clk_i) past_trk_out_q <= trk_out;
+
+  always @(posedge clk_i) begin
+    if (!init_q) begin
+      // reset
+      if (rst_i) assert (!tap_trk_ready);
+      if (past_rst_q) assert (!trk_valid_o);
+      if (!rst_i) begin
+        // count
+        if (trk_valid_o) assert (inflight != 0);
+        assert (inflight <= TRK_LAT);
+        // delay (and the induction's invariant)
+        assert (trk_valid_o == ref_q[TRK_LAT-1]);
+        assert (inflight == ones);
+        assert (tap_trk_ready == !busy);
+        // hold
+        if (!past_rst_q && !trk_valid_o) assert (trk_out == past_trk_out_q);
+      end
+    end
+  end
+endmodule
