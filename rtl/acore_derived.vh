@@ -192,6 +192,16 @@ endfunction
 
 // ---- the folded schedule (FOLD > 1: acore_fold_*.v) ----
 
+// From this FOLD on, the folded datapath trades a few flops for block RAMs (an item every FOLD/2
+// clocks leaves time for it): its long delay lines (each curve to the Horner chain's subtraction,
+// the region to the output, the Horner steps' argument) are acore_sparse_delay, a few words of
+// flops instead of a block RAM each, and the scaler reads a curve's offset and reciprocal on one
+// port, one clock apart (one clock more of latency). Below it, block RAM where it fits, as
+// acore_fold_datapath.v gives the blocks out.
+function integer acore_fold_lean(input integer f_fold);
+  acore_fold_lean = (f_fold >= 16) ? 1 : 0;
+endfunction
+
 // acore_fold_mul: bits of b a clock (B_W over F clocks), and the latency from start_i to p_o.
 function integer acore_fold_mul_b(input integer f_b_w, input integer f_f);
   acore_fold_mul_b = (f_b_w + f_f - 1) / f_f;
@@ -202,8 +212,10 @@ function integer acore_fold_mul_latency(input integer f_b_w, input integer f_f);
 endfunction
 
 // acore_fold_scaler: t = d - O, the folded multiplier (rounding constant as its addend), saturate.
+// (acore_fold_lean: the reciprocal one clock after the offset, the product one clock later.)
 function integer acore_fold_scaler_latency(input integer f_reg_w, input integer f_f);
-  acore_fold_scaler_latency = 1 + acore_fold_mul_latency(f_reg_w, f_f) + 1;
+  acore_fold_scaler_latency = 1 + acore_fold_mul_latency(f_reg_w, f_f) + 1 +
+                              acore_fold_lean(2 * f_f);
 endfunction
 
 // acore_fold_poly: its coefficient read ports (a_n, then one per Horner step).
@@ -263,14 +275,6 @@ function integer acore_sparse_slots(input integer f_depth, input integer f_gap);
     acore_sparse_slots = 2;
     while (acore_sparse_slots * f_gap < f_depth - 1) acore_sparse_slots = acore_sparse_slots * 2;
   end
-endfunction
-
-// The folded datapath's long delay lines (each curve to the Horner chain's subtraction, the
-// region to the output, the Horner steps' argument) in acore_sparse_delay from this FOLD on: an
-// item every FOLD/2 clocks, so a line holds DEPTH/(FOLD/2) words, a few flops per bit instead of
-// a block RAM (below it, block RAM where it fits, as acore_fold_datapath.v gives the blocks out).
-function integer acore_fold_sparse(input integer f_fold);
-  acore_fold_sparse = (f_fold >= 16) ? 1 : 0;
 endfunction
 
 // An HX8K's iCE40 block RAMs (SB_RAM40_4K), the folded datapath's budget.

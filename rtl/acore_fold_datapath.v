@@ -87,9 +87,10 @@ module acore_fold_datapath #(
 
   // Derived, do not override: the map, the register file's read ports and the block RAM budget
   // (iCE40 SB_RAM40_4K, 256 x 16: an HX8K's 32, acore_hx8k_blocks). Fixed: the Horner chain's PP
-  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal), the host read-back copy
-  // (BPW blocks each) and the output FIFO. Then, while they fit, in this order (flops saved per
-  // block): the curves' and the region's delay lines (S_RAM), the Horner steps' argument lines
+  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal; 1 from acore_fold_lean()
+  // on), the host read-back copy (BPW blocks each) and the output FIFO. Then, while they fit, in
+  // this order (flops saved per block): the curves' and the region's delay lines (S_RAM; from
+  // acore_fold_lean() on they are acore_sparse_delay, no block), the Horner steps' argument lines
   // (U_RAM), and for as many CORDIC units as fit a port of their own for the arctangent words
   // (AT_UNITS; the other units take their words from flops, with an N:1 choice that shares the
   // negation's LUT at N = 2 only).
@@ -100,18 +101,21 @@ module acore_fold_datapath #(
   localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
-  localparam integer BLOCKS = FIFO_B + (PP + 3) * BPW;
+  // The scaler's ports: offset and reciprocal, or both on one (acore_fold_lean).
+  localparam integer SC_P = (acore_fold_lean(FOLD) != 0) ? 1 : 2;
+  localparam integer BLOCKS = FIFO_B + (PP + SC_P + 1) * BPW;
   localparam integer SR_B = ((CORRECTION == ACORE_CORR_NONE) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer RAM_BLOCKS = acore_hx8k_blocks();
-  // From acore_fold_sparse() on, the lines are in flops (acore_sparse_delay) and take no block.
-  localparam integer SPARSE = acore_fold_sparse(FOLD);
+  // From acore_fold_lean() on, the lines are in flops (acore_sparse_delay) and take no block.
+  localparam integer SPARSE = acore_fold_lean(FOLD);
   localparam integer S_RAM = (SPARSE == 0 && BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer U_RAM = (S_RAM != 0 && CORRECTION != ACORE_CORR_NONE && BLOCKS + SR_B + U_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer FREE_B = RAM_BLOCKS - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
   localparam integer AT_UNITS = (AT_FIT >= U) ? U : AT_FIT;
-  localparam integer PORTS = PP + 2 + AT_UNITS;
+  localparam integer AT_P = PP + SC_P;  // the first CORDIC unit's port
+  localparam integer PORTS = AT_P + AT_UNITS;
   localparam integer PA_W = PORTS * ADDR_W;
   localparam integer PD_W = PORTS * REG_W;
   localparam integer AT_BUS_W = K * REG_W;
@@ -166,17 +170,29 @@ module acore_fold_datapath #(
     .d13_o(d13), .d24_o(d24));
 
   // ---- 2: scaling, one item per curve: c13 at clock 0, c24 at clock H; the curve's offset and
-  // reciprocal read the clock before ----
+  // reciprocal read the clock before (SC_P = 1: the reciprocal at the item's clock) ----
   wire sc_second = v_q[H];
   wire sc_second_next = v_q[H - 1];
   localparam integer A_OFF13_I = acore_addr_offset(0), A_OFF24_I = acore_addr_offset(1);
   localparam integer A_RCP13_I = acore_addr_recip(0), A_RCP24_I = acore_addr_recip(1);
   localparam [ADDR_W-1:0] A_OFF13 = A_OFF13_I[ADDR_W-1:0], A_OFF24 = A_OFF24_I[ADDR_W-1:0];
   localparam [ADDR_W-1:0] A_RCP13 = A_RCP13_I[ADDR_W-1:0], A_RCP24 = A_RCP24_I[ADDR_W-1:0];
-  assign raddr[PP * ADDR_W +: ADDR_W] = sc_second_next ? A_OFF24 : A_OFF13;
-  assign raddr[(PP + 1) * ADDR_W +: ADDR_W] = sc_second_next ? A_RCP24 : A_RCP13;
-  wire [REG_W-1:0] offset = rdata[PP * REG_W +: REG_W];
-  wire [REG_W-1:0] recip = rdata[(PP + 1) * REG_W +: REG_W];
+  wire [REG_W-1:0] offset, recip;
+  generate
+    if (SC_P == 2) begin : g_sc2
+      assign raddr[PP * ADDR_W +: ADDR_W] = sc_second_next ? A_OFF24 : A_OFF13;
+      assign raddr[(PP + 1) * ADDR_W +: ADDR_W] = sc_second_next ? A_RCP24 : A_RCP13;
+      assign offset = rdata[PP * REG_W +: REG_W];
+      assign recip = rdata[(PP + 1) * REG_W +: REG_W];
+    end else begin : g_sc1
+      // One port: the offset the clock before the item, its reciprocal at the item's clock (on
+      // the port the clock after; the scaler waits for it).
+      assign raddr[PP * ADDR_W +: ADDR_W] = v_q[0] ? A_RCP13 : sc_second_next ? A_OFF24 :
+                                            sc_second ? A_RCP24 : A_OFF13;
+      assign offset = rdata[PP * REG_W +: REG_W];
+      assign recip = offset;
+    end
+  endgenerate
   wire [S_W-1:0] s_sc;
   wire ovf_sc;
   acore_fold_scaler #(
@@ -291,7 +307,7 @@ module acore_fold_datapath #(
     .at_word_i(at_word), .angle_o(angle_o), .mag_o(mag_o));
   genvar gu;
   generate
-    // Unit u < AT_UNITS reads word ATAN_BASE + its iteration index on port PP + 2 + u. (Indices
+    // Unit u < AT_UNITS reads word ATAN_BASE + its iteration index on port AT_P + u. (Indices
     // past K - 1, in a last unit that N does not fill, read words nobody uses.)
     localparam [ADDR_W-1:0] A_ATAN = ATAN_BASE[ADDR_W-1:0];
     for (gu = 0; gu < U; gu = gu + 1) begin : g_at
@@ -303,8 +319,8 @@ module acore_fold_datapath #(
         end else begin : g_same
           assign idx_a = idx;
         end
-        assign raddr[(PP + 2 + gu) * ADDR_W +: ADDR_W] = A_ATAN + idx_a;
-        assign at_word[gu * REG_W +: REG_W] = rdata[(PP + 2 + gu) * REG_W +: REG_W];
+        assign raddr[(AT_P + gu) * ADDR_W +: ADDR_W] = A_ATAN + idx_a;
+        assign at_word[gu * REG_W +: REG_W] = rdata[(AT_P + gu) * REG_W +: REG_W];
       end else begin : g_flops
         assign at_word[gu * REG_W +: REG_W] = {REG_W{1'b0}};
         wire unused_idx = ^at_idx[gu * AT_IDX_W +: AT_IDX_W];

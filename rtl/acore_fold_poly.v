@@ -193,7 +193,9 @@ module acore_fold_poly #(
       end else if (RAM_DELAY == 1) begin : g_uram
         acore_ram_delay #(.W(ADDR_W + S_W), .DEPTH(STEP)) u_du (
           .clk_i(clk_i), .rst_i(rst_i), .d_i({bs[m], us[m]}), .q_o({bs[m+1], us[m+1]}));
+        wire unused_stp = st_p;
       end else begin : g_uflop
+        wire unused_stp = st_p;
         acore_delay #(.W(ADDR_W + S_W), .DEPTH(STEP)) u_du (
           .clk_i(clk_i), .en_i(1'b1), .d_i({bs[m], us[m]}), .q_o({bs[m+1], us[m+1]}));
       end

@@ -83,7 +83,7 @@ DESCRIPTIONS = {
         "acore_apb around acore_top with CORRECTION=2 (no polynomial, fits), pin wrapper (P&R)"
     ),
 }
-for n in (2, 4, 8):
+for n in (2, 4, 8, 16, 32):
     DESCRIPTIONS[f"fold{n}"] = f"acore_top, default, FOLD={n} (folded: a sample every {n} clocks)"
     DESCRIPTIONS[f"fold{n}_pnr"] = (
         f"acore_top, default, FOLD={n}, whole top in the pin wrapper (P&R)"
