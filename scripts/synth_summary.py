@@ -251,6 +251,9 @@ if any(c for _, c, _ in fold_rows):
         target = {
             2: f"<= 87 % of the {fam.pnr_cell_label} ({int(0.87 * lcs_cap)}) and >= 100 MHz",
             8: f"<= 2500 {label('lut')}",
+            # The drive board's estimator: 1 M samples/s at 48 MHz and up, half the HX8K's blocks.
+            16: ">= 1e+06 samples/s, <= 16 BRAM",
+            32: ">= 1e+06 samples/s, <= 16 BRAM",
         }.get(n, "-")
         print(
             f"| {n} | {s(c, 'lut')} / {s(c, 'ff')} / {s(c, 'bram')} | {lcs} | "
