@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_fold_datapath: the estimator of acore_top folded N = FOLD times (FOLD = 2, 4, 8): a sample
+// acore_fold_datapath: the estimator of acore_top folded N = FOLD times (FOLD > 1, acore_fold_legal()): a sample
 // every N clocks or more, each piece of hardware used N times per sample, the same contract bit
 // for bit (model/ip/engine/fixed_model.cpp). The two curves share one scaler and one Horner chain: each
 // sample becomes two items (c13, then c24 N/2 clocks later), and the multipliers are folded
@@ -42,7 +42,7 @@ module acore_fold_datapath #(
   parameter integer CORDIC_G = 3,
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
-  // Clocks per sample (2, 4 or 8).
+  // Clocks per sample (a value of acore_fold_legal() above 1: 2, 4, 8, 16, 32).
   parameter integer FOLD = 2,
   // 1: the register file's last word is the ZERO word (after the arctangent words), on last_o.
   parameter integer ZERO = 0,
@@ -87,9 +87,10 @@ module acore_fold_datapath #(
 
   // Derived, do not override: the map, the register file's read ports and the block RAM budget
   // (iCE40 SB_RAM40_4K, 256 x 16: an HX8K's 32, acore_hx8k_blocks). Fixed: the Horner chain's PP
-  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal), the host read-back copy
-  // (BPW blocks each) and the output FIFO. Then, while they fit, in this order (flops saved per
-  // block): the curves' and the region's delay lines (S_RAM), the Horner steps' argument lines
+  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal; 1 from acore_fold_lean()
+  // on), the host read-back copy (BPW blocks each) and the output FIFO. Then, while they fit, in
+  // this order (flops saved per block): the curves' and the region's delay lines (S_RAM; from
+  // acore_fold_lean() on they are acore_sparse_delay, no block), the Horner steps' argument lines
   // (U_RAM), and for as many CORDIC units as fit a port of their own for the arctangent words
   // (AT_UNITS; the other units take their words from flops, with an N:1 choice that shares the
   // negation's LUT at N = 2 only).
@@ -100,16 +101,21 @@ module acore_fold_datapath #(
   localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
-  localparam integer BLOCKS = FIFO_B + (PP + 3) * BPW;
+  // The scaler's ports: offset and reciprocal, or both on one (acore_fold_lean).
+  localparam integer SC_P = (acore_fold_lean(FOLD) != 0) ? 1 : 2;
+  localparam integer BLOCKS = FIFO_B + (PP + SC_P + 1) * BPW;
   localparam integer SR_B = ((CORRECTION == ACORE_CORR_NONE) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer RAM_BLOCKS = acore_hx8k_blocks();
-  localparam integer S_RAM = (BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
+  // From acore_fold_lean() on, the lines are in flops (acore_sparse_delay) and take no block.
+  localparam integer SPARSE = acore_fold_lean(FOLD);
+  localparam integer S_RAM = (SPARSE == 0 && BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer U_RAM = (S_RAM != 0 && CORRECTION != ACORE_CORR_NONE && BLOCKS + SR_B + U_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer FREE_B = RAM_BLOCKS - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
   localparam integer AT_UNITS = (AT_FIT >= U) ? U : AT_FIT;
-  localparam integer PORTS = PP + 2 + AT_UNITS;
+  localparam integer AT_P = PP + SC_P;  // the first CORDIC unit's port
+  localparam integer PORTS = AT_P + AT_UNITS;
   localparam integer PA_W = PORTS * ADDR_W;
   localparam integer PD_W = PORTS * REG_W;
   localparam integer AT_BUS_W = K * REG_W;
@@ -126,9 +132,9 @@ module acore_fold_datapath #(
   localparam integer LATENCY = acore_fold_datapath_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOLD);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
-  acore_check #(.OK(FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
-    .MSG("illegal parameter: acore_fold_datapath: FOLD must be 2, 4 or 8"))
-    FOLD_must_be_2_4_or_8 ();
+  acore_check #(.OK(FOLD != 1 && acore_fold_legal(FOLD) != 0), .VALUE(FOLD),
+    .MSG("illegal parameter: acore_fold_datapath: FOLD must be a fold factor of acore_top above 1"))
+    FOLD_must_be_a_fold_factor_above_1 ();
   // The modes this datapath builds (the table's folded modes, rtl/acore_modes.vh, must be among
   // them: acore_top picks this datapath by acore_mode_on_folded).
   acore_check #(.OK(CORRECTION == ACORE_CORR_POLY || CORRECTION == ACORE_CORR_NONE), .VALUE(CORRECTION),
@@ -164,17 +170,29 @@ module acore_fold_datapath #(
     .d13_o(d13), .d24_o(d24));
 
   // ---- 2: scaling, one item per curve: c13 at clock 0, c24 at clock H; the curve's offset and
-  // reciprocal read the clock before ----
+  // reciprocal read the clock before (SC_P = 1: the reciprocal at the item's clock) ----
   wire sc_second = v_q[H];
   wire sc_second_next = v_q[H - 1];
   localparam integer A_OFF13_I = acore_addr_offset(0), A_OFF24_I = acore_addr_offset(1);
   localparam integer A_RCP13_I = acore_addr_recip(0), A_RCP24_I = acore_addr_recip(1);
   localparam [ADDR_W-1:0] A_OFF13 = A_OFF13_I[ADDR_W-1:0], A_OFF24 = A_OFF24_I[ADDR_W-1:0];
   localparam [ADDR_W-1:0] A_RCP13 = A_RCP13_I[ADDR_W-1:0], A_RCP24 = A_RCP24_I[ADDR_W-1:0];
-  assign raddr[PP * ADDR_W +: ADDR_W] = sc_second_next ? A_OFF24 : A_OFF13;
-  assign raddr[(PP + 1) * ADDR_W +: ADDR_W] = sc_second_next ? A_RCP24 : A_RCP13;
-  wire [REG_W-1:0] offset = rdata[PP * REG_W +: REG_W];
-  wire [REG_W-1:0] recip = rdata[(PP + 1) * REG_W +: REG_W];
+  wire [REG_W-1:0] offset, recip;
+  generate
+    if (SC_P == 2) begin : g_sc2
+      assign raddr[PP * ADDR_W +: ADDR_W] = sc_second_next ? A_OFF24 : A_OFF13;
+      assign raddr[(PP + 1) * ADDR_W +: ADDR_W] = sc_second_next ? A_RCP24 : A_RCP13;
+      assign offset = rdata[PP * REG_W +: REG_W];
+      assign recip = rdata[(PP + 1) * REG_W +: REG_W];
+    end else begin : g_sc1
+      // One port: the offset the clock before the item, its reciprocal at the item's clock (on
+      // the port the clock after; the scaler waits for it).
+      assign raddr[PP * ADDR_W +: ADDR_W] = v_q[0] ? A_RCP13 : sc_second_next ? A_OFF24 :
+                                            sc_second ? A_RCP24 : A_OFF13;
+      assign offset = rdata[PP * REG_W +: REG_W];
+      assign recip = offset;
+    end
+  endgenerate
   wire [S_W-1:0] s_sc;
   wire ovf_sc;
   acore_fold_scaler #(
@@ -229,7 +247,12 @@ module acore_fold_datapath #(
       // Each item's curve, straight from the scaler to the clock the polynomial's value is ready
       // (PL - 3 clocks after the item's start; block RAM with S_RAM).
       wire [S_W-1:0] s_pc;
-      if (S_RAM != 0) begin : g_sram
+      if (SPARSE != 0) begin : g_ssparse
+        // Pushed with each item's scaled curve (clocks SL, SL + H), due H + PL - 1 clocks later.
+        acore_sparse_delay #(.W(S_W), .DEPTH(H + PL - 1), .GAP(H)) u_ds (
+          .clk_i(clk_i), .rst_i(rst_i), .push_i(v_q[SL] | v_q[SL + H]), .d_i(s_sc),
+          .pop_i(v_q[SL + H + PL - 2] | v_q[SL + 2 * H + PL - 2]), .q_o(s_pc));
+      end else if (S_RAM != 0) begin : g_sram
         acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
       end else begin : g_sflop
@@ -247,7 +270,8 @@ module acore_fold_datapath #(
       wire ovf_pc;
       acore_fold_poly #(
         .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
-        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(U_RAM), .MULT(MULT)
+        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F),
+        .RAM_DELAY((SPARSE != 0) ? 2 : U_RAM), .MULT(MULT)
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
         .s_i(s_pc),
@@ -283,7 +307,7 @@ module acore_fold_datapath #(
     .at_word_i(at_word), .angle_o(angle_o), .mag_o(mag_o));
   genvar gu;
   generate
-    // Unit u < AT_UNITS reads word ATAN_BASE + its iteration index on port PP + 2 + u. (Indices
+    // Unit u < AT_UNITS reads word ATAN_BASE + its iteration index on port AT_P + u. (Indices
     // past K - 1, in a last unit that N does not fill, read words nobody uses.)
     localparam [ADDR_W-1:0] A_ATAN = ATAN_BASE[ADDR_W-1:0];
     for (gu = 0; gu < U; gu = gu + 1) begin : g_at
@@ -295,8 +319,8 @@ module acore_fold_datapath #(
         end else begin : g_same
           assign idx_a = idx;
         end
-        assign raddr[(PP + 2 + gu) * ADDR_W +: ADDR_W] = A_ATAN + idx_a;
-        assign at_word[gu * REG_W +: REG_W] = rdata[(PP + 2 + gu) * REG_W +: REG_W];
+        assign raddr[(AT_P + gu) * ADDR_W +: ADDR_W] = A_ATAN + idx_a;
+        assign at_word[gu * REG_W +: REG_W] = rdata[(AT_P + gu) * REG_W +: REG_W];
       end else begin : g_flops
         assign at_word[gu * REG_W +: REG_W] = {REG_W{1'b0}};
         wire unused_idx = ^at_idx[gu * AT_IDX_W +: AT_IDX_W];
@@ -307,7 +331,12 @@ module acore_fold_datapath #(
   // ---- sideband: region from the region select (in block RAM with S_RAM), overflow from the
   // CORDIC's input ----
   generate
-    if (S_RAM != 0) begin : g_rg_ram
+    if (SPARSE != 0) begin : g_rg_sparse
+      // One region a sample (clock R), due at valid_o.
+      acore_sparse_delay #(.W(RG_W), .DEPTH(C + CL - R), .GAP(FOLD)) u_d_region (
+        .clk_i(clk_i), .rst_i(rst_i), .push_i(v_q[R]), .d_i(region), .pop_i(v_q[C + CL - 1]),
+        .q_o(region_o));
+    end else if (S_RAM != 0) begin : g_rg_ram
       acore_ram_delay #(.W(RG_W), .DEPTH(C + CL - R)) u_d_region (
         .clk_i(clk_i), .rst_i(rst_i), .d_i(region), .q_o(region_o));
     end else begin : g_rg_flop

@@ -11,6 +11,8 @@
 //
 //   clock 0: d_i, offset_i, recip_i   1: t_q   1..1+ML: product   2+ML: s_o, ovf_o
 //   LATENCY = ML + 2 (ML = acore_fold_mul's LATENCY); a new item every F clocks.
+// From acore_fold_lean(2 F) on (one register-file port for both words), recip_i comes one clock
+// after d_i and offset_i, and everything after it one clock later: LATENCY = ML + 3.
 `resetall
 `default_nettype none
 
@@ -48,23 +50,41 @@ module acore_fold_scaler #(
   localparam integer RS = R_SHIFT - SCALE_G;
   localparam integer P_W = T_W + ((REG_W > RS) ? (REG_W - RS) : 0) + 2;
   localparam integer LATENCY = acore_fold_scaler_latency(REG_W, F);
+  localparam integer LATE_R = acore_fold_lean(2 * F);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),
     .MSG("illegal parameter: acore_fold_scaler: SCALE_G must be 0..R_SHIFT"))
     SCALE_G_must_be_0_to_R_SHIFT ();
-  acore_check #(.OK(F == 1 || F == 2 || F == 4), .VALUE(F),
-    .MSG("illegal parameter: acore_fold_scaler: F must be 1, 2 or 4"))
-    F_must_be_1_2_or_4 ();
+  acore_check #(.OK(F >= 1 && (F & (F - 1)) == 0), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_scaler: F must be a power of two (FOLD/2)"))
+    F_must_be_a_power_of_two ();
 
   reg [T_W-1:0]   t_q;
   reg [REG_W-1:0] r_q;
   reg             start_q;
+  wire [T_W-1:0]  t_m;    // t and the start at the reciprocal's clock
+  wire            start_m;
   always @(posedge clk_i) begin
     t_q     <= {{(T_W-D_W){d_i[D_W-1]}}, d_i} - {{(T_W-REG_W){offset_i[REG_W-1]}}, offset_i};
     r_q     <= recip_i;
     start_q <= start_i;
   end
+  generate
+    if (LATE_R != 0) begin : g_late
+      reg [T_W-1:0] t2_q;
+      reg           start2_q;
+      always @(posedge clk_i) begin
+        t2_q     <= t_q;
+        start2_q <= start_q;
+      end
+      assign t_m = t2_q;
+      assign start_m = start2_q;
+    end else begin : g_same
+      assign t_m = t_q;
+      assign start_m = start_q;
+    end
+  endgenerate
 
   // Half an output LSB: round half up.
   localparam integer H_W = SCALE_G + 1;
@@ -81,7 +101,7 @@ module acore_fold_scaler #(
   acore_fold_mul #(
     .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F), .MULT(MULT)
   ) u_mul (
-    .clk_i(clk_i), .start_i(start_q), .a_i(t_q), .b_i(r_q), .init_i(half), .p_o(p));
+    .clk_i(clk_i), .start_i(start_m), .a_i(t_m), .b_i(r_q), .init_i(half), .p_o(p));
 
   wire [S_W-1:0] s_d;
   wire ovf_d;

@@ -83,7 +83,7 @@ DESCRIPTIONS = {
         "acore_apb around acore_top with CORRECTION=2 (no polynomial, fits), pin wrapper (P&R)"
     ),
 }
-for n in (2, 4, 8):
+for n in (2, 4, 8, 16, 32):
     DESCRIPTIONS[f"fold{n}"] = f"acore_top, default, FOLD={n} (folded: a sample every {n} clocks)"
     DESCRIPTIONS[f"fold{n}_pnr"] = (
         f"acore_top, default, FOLD={n}, whole top in the pin wrapper (P&R)"
@@ -251,6 +251,9 @@ if any(c for _, c, _ in fold_rows):
         target = {
             2: f"<= 87 % of the {fam.pnr_cell_label} ({int(0.87 * lcs_cap)}) and >= 100 MHz",
             8: f"<= 2500 {label('lut')}",
+            # The drive board's estimator: 1 M samples/s at 48 MHz and up, half the HX8K's blocks.
+            16: ">= 1e+06 samples/s, <= 16 BRAM",
+            32: ">= 1e+06 samples/s, <= 16 BRAM",
         }.get(n, "-")
         print(
             f"| {n} | {s(c, 'lut')} / {s(c, 'ff')} / {s(c, 'bram')} | {lcs} | "

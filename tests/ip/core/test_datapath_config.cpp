@@ -94,6 +94,24 @@ TEST(DatapathConfig, EachRuleOnItsEdgeAndOnePast) {
   EXPECT_TRUE(legal("FOURIER_M=99 FOURIER_W=0 FOURIER_G=-5 FOURIER_CF=0"));
 }
 
+// FOLD: 1 (pipelined) and the folds of rtl/acore_fold_datapath.v, powers of two up to 32 (a
+// drive's 1 MS/s at 16 or 32 clocks a sample); nothing else, on acore_top. The RTL's rule is
+// generated from fold_values() (rtl/acore_mode_checks.vh), the message lists them.
+TEST(DatapathConfig, FoldIsOneOrAPowerOfTwoUpTo32) {
+  for (int f = -2; f <= 70; ++f) {
+    const bool want = f == 1 || f == 2 || f == 4 || f == 8 || f == 16 || f == 32;
+    EXPECT_EQ(legal(fmt::format("FOLD={}", f)), want) << f;
+  }
+  EXPECT_EQ(fold_value_list(), "1, 2, 4, 8, 16 or 32");
+  try {
+    DatapathConfig{}.with_rtl_params("FOLD=64").validate();
+    ADD_FAILURE() << "FOLD=64 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fold=64 must be 1, 2, 4, 8, 16 or 32"), std::string::npos)
+        << e.what();
+  }
+}
+
 // Every configuration of a datapath top in the registry: acore_top, acore_serial_top, and acore_apb
 // around either (its SERIAL parameter picks the top). The lines (kRegistryLines) come from
 // scripts/registry.py, the registry's one reader, through the variables CMake includes
@@ -243,7 +261,7 @@ TEST(DatapathConfig, EqualityIsFieldEqualityOverTheTable) {
       EXPECT_EQ(a == b, ignored) << f.key;
       EXPECT_EQ(a != b, !ignored) << f.key;
     }
-    // On legal values of zero_word (0, 1) and fold (1, 2, 4, 8), equality is describe()'s.
+    // On legal values of zero_word (0, 1) and fold (1, 2, 4, 8 here), equality is describe()'s.
     const DatapathConfig b = random_config(rng);
     EXPECT_EQ(a == b, legacy_describe(a) == legacy_describe(b));
   }
