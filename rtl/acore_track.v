@@ -42,7 +42,10 @@
 // after the sample, in_ready_o low until then (a sample every that many clocks at most); bw_i is
 // latched with each sample, lead_i and lot_thr_i are read during its schedule (static registers).
 // SERIAL = 2 (word-serial, below) likewise with acore_track_word_cycles() clocks (16 at the board's
-// widths and PROD_BITS = 1): whole words a clock, one shifter, v * D PROD_BITS bits of D a clock.
+// widths and PROD_BITS = 1): whole words a clock, one shifter, v * D PROD_BITS bits of D a clock;
+// its outputs other than out_angle_comp_o take the sample's values during the schedule, while
+// out_valid_o is low (all hold while out_valid_o is high and until the next sample is taken).
+// In every form out_angle_comp_o changes only in the clock out_valid_o rises.
 // rst_i is synchronous, active high.
 `resetall
 `default_nettype none
