@@ -40,7 +40,7 @@ localparam integer CONFIG0_CORRECTION = 8, CONFIG0_CORRECTION_W = 2;
 localparam integer CONFIG0_XCENTER = 10;
 localparam integer CONFIG0_ZERO = 11;
 localparam integer CONFIG0_SERIAL = 12;
-localparam integer CONFIG0_FOLD = 16, CONFIG0_FOLD_W = 4;
+localparam integer CONFIG0_FOLD = 16, CONFIG0_FOLD_W = 6;
 localparam integer CONFIG0_K = 24, CONFIG0_K_W = 5;
 localparam integer CONFIG1_WORDS = 0, CONFIG1_WORDS_W = 16;
 localparam integer CONFIG1_FOURIER_K = 16, CONFIG1_FOURIER_K_W = 5;
@@ -89,7 +89,7 @@ localparam [31:0] CONFIG0_VALUE =
     (((XCENTER) & 32'h1) << CONFIG0_XCENTER) |
     (((ZERO) & 32'h1) << CONFIG0_ZERO) |
     (((SERIAL) & 32'h1) << CONFIG0_SERIAL) |
-    (((FOLD) & 32'hF) << CONFIG0_FOLD) |
+    (((FOLD) & 32'h3F) << CONFIG0_FOLD) |
     (((K) & 32'h1F) << CONFIG0_K);
 localparam [31:0] CONFIG1_VALUE =
     (((WORDS) & 32'hFFFF) << CONFIG1_WORDS) |

@@ -117,10 +117,7 @@ module acore_config_check #(
     .MSG("illegal parameter: ANGLE_W must be <= REG_W with ZERO = 1 (the zero position is one word)"))
     ANGLE_W_must_fit_a_word_with_ZERO ();
 
-  // The fold factor (acore_top; the modes that fold are the table's, above).
-  acore_check #(.OK(FOLD == 1 || FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
-    .MSG("illegal parameter: FOLD must be 1, 2, 4 or 8"))
-    FOLD_must_be_1_2_4_or_8 ();
+  // The fold factor (acore_top): its values and the modes that fold are the table's, above.
   acore_check #(.OK(FOLD == 1 || FOURIER_K == 0), .VALUE(FOLD),
     .MSG("illegal parameter: FOLD must be 1 with FOURIER_K > 0: the Fourier correction is not folded"))
     FOLD_must_be_1_with_Fourier ();

@@ -55,7 +55,7 @@
   parameter integer FOURIER_G = 2,
   // 1: one more register word (the last), the zero position, subtracted from the angle.
   parameter integer ZERO = 0,
-  // Clocks per sample of acore_top: 1 pipelined, 2, 4 or 8 folded (the serial core: 1).
+  // Clocks per sample of acore_top: 1 pipelined, more folded (fold_values(); serial core: 1).
   parameter integer FOLD = 1,
   // Products: 0 adders and shifters (each partial product floored), 1 the multiply operator (DSP blocks; the full product floored once).
   parameter integer MULT = 0,

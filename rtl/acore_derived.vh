@@ -190,7 +190,7 @@ function integer acore_out_latency();
   acore_out_latency = 1;
 endfunction
 
-// ---- the folded schedule (FOLD = 2, 4, 8: acore_fold_*.v) ----
+// ---- the folded schedule (FOLD > 1: acore_fold_*.v) ----
 
 // acore_fold_mul: bits of b a clock (B_W over F clocks), and the latency from start_i to p_o.
 function integer acore_fold_mul_b(input integer f_b_w, input integer f_f);
@@ -257,6 +257,22 @@ function integer acore_fold_fifo_depth();
   acore_fold_fifo_depth = 256;
 endfunction
 
+// acore_sparse_delay: its buffer words, ceil((DEPTH - 1) / GAP) rounded up to a power of two >= 2.
+function integer acore_sparse_slots(input integer f_depth, input integer f_gap);
+  begin
+    acore_sparse_slots = 2;
+    while (acore_sparse_slots * f_gap < f_depth - 1) acore_sparse_slots = acore_sparse_slots * 2;
+  end
+endfunction
+
+// The folded datapath's long delay lines (each curve to the Horner chain's subtraction, the
+// region to the output, the Horner steps' argument) in acore_sparse_delay from this FOLD on: an
+// item every FOLD/2 clocks, so a line holds DEPTH/(FOLD/2) words, a few flops per bit instead of
+// a block RAM (below it, block RAM where it fits, as acore_fold_datapath.v gives the blocks out).
+function integer acore_fold_sparse(input integer f_fold);
+  acore_fold_sparse = (f_fold >= 16) ? 1 : 0;
+endfunction
+
 // An HX8K's iCE40 block RAMs (SB_RAM40_4K), the folded datapath's budget.
 function integer acore_hx8k_blocks();
   acore_hx8k_blocks = 32;
@@ -264,12 +280,12 @@ endfunction
 
 // ---- the tops ----
 
-// acore_top builds the folded datapath for a legal folded configuration only (FOLD 2, 4, 8, a
-// mode the table folds, no Fourier stage); otherwise the pipeline, and acore_config_check stops an
-// illegal one.
+// acore_top builds the folded datapath for a legal folded configuration only (FOLD > 1 and a
+// value of acore_fold_legal(), a mode the table folds, no Fourier stage); otherwise the pipeline,
+// and acore_config_check stops an illegal one.
 function integer acore_folded(input integer f_fold, input integer f_correction,
                               input integer f_fourier_k);
-  acore_folded = ((f_fold == 2 || f_fold == 4 || f_fold == 8) &&
+  acore_folded = ((f_fold != 1 && acore_fold_legal(f_fold) != 0) &&
                   acore_mode_on_folded(f_correction) != 0 && f_fourier_k == 0) ? 1 : 0;
 endfunction
 

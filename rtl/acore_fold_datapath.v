@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// acore_fold_datapath: the estimator of acore_top folded N = FOLD times (FOLD = 2, 4, 8): a sample
+// acore_fold_datapath: the estimator of acore_top folded N = FOLD times (FOLD > 1, acore_fold_legal()): a sample
 // every N clocks or more, each piece of hardware used N times per sample, the same contract bit
 // for bit (model/ip/engine/fixed_model.cpp). The two curves share one scaler and one Horner chain: each
 // sample becomes two items (c13, then c24 N/2 clocks later), and the multipliers are folded
@@ -42,7 +42,7 @@ module acore_fold_datapath #(
   parameter integer CORDIC_G = 3,
   parameter integer Z_W = 20,
   parameter integer ANGLE_W = 16,
-  // Clocks per sample (2, 4 or 8).
+  // Clocks per sample (a value of acore_fold_legal() above 1: 2, 4, 8, 16, 32).
   parameter integer FOLD = 2,
   // 1: the register file's last word is the ZERO word (after the arctangent words), on last_o.
   parameter integer ZERO = 0,
@@ -104,7 +104,9 @@ module acore_fold_datapath #(
   localparam integer SR_B = ((CORRECTION == ACORE_CORR_NONE) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer RAM_BLOCKS = acore_hx8k_blocks();
-  localparam integer S_RAM = (BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
+  // From acore_fold_sparse() on, the lines are in flops (acore_sparse_delay) and take no block.
+  localparam integer SPARSE = acore_fold_sparse(FOLD);
+  localparam integer S_RAM = (SPARSE == 0 && BLOCKS + SR_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer U_RAM = (S_RAM != 0 && CORRECTION != ACORE_CORR_NONE && BLOCKS + SR_B + U_B <= RAM_BLOCKS) ? 1 : 0;
   localparam integer FREE_B = RAM_BLOCKS - BLOCKS - ((S_RAM != 0) ? SR_B : 0) - ((U_RAM != 0) ? U_B : 0);
   localparam integer AT_FIT = (FREE_B > 0) ? (FREE_B >> (BPW - 1)) : 0;
@@ -126,9 +128,9 @@ module acore_fold_datapath #(
   localparam integer LATENCY = acore_fold_datapath_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOLD);
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
-  acore_check #(.OK(FOLD == 2 || FOLD == 4 || FOLD == 8), .VALUE(FOLD),
-    .MSG("illegal parameter: acore_fold_datapath: FOLD must be 2, 4 or 8"))
-    FOLD_must_be_2_4_or_8 ();
+  acore_check #(.OK(FOLD != 1 && acore_fold_legal(FOLD) != 0), .VALUE(FOLD),
+    .MSG("illegal parameter: acore_fold_datapath: FOLD must be a fold factor of acore_top above 1"))
+    FOLD_must_be_a_fold_factor_above_1 ();
   // The modes this datapath builds (the table's folded modes, rtl/acore_modes.vh, must be among
   // them: acore_top picks this datapath by acore_mode_on_folded).
   acore_check #(.OK(CORRECTION == ACORE_CORR_POLY || CORRECTION == ACORE_CORR_NONE), .VALUE(CORRECTION),
@@ -229,7 +231,12 @@ module acore_fold_datapath #(
       // Each item's curve, straight from the scaler to the clock the polynomial's value is ready
       // (PL - 3 clocks after the item's start; block RAM with S_RAM).
       wire [S_W-1:0] s_pc;
-      if (S_RAM != 0) begin : g_sram
+      if (SPARSE != 0) begin : g_ssparse
+        // Pushed with each item's scaled curve (clocks SL, SL + H), due H + PL - 1 clocks later.
+        acore_sparse_delay #(.W(S_W), .DEPTH(H + PL - 1), .GAP(H)) u_ds (
+          .clk_i(clk_i), .rst_i(rst_i), .push_i(v_q[SL] | v_q[SL + H]), .d_i(s_sc),
+          .pop_i(v_q[SL + H + PL - 2] | v_q[SL + 2 * H + PL - 2]), .q_o(s_pc));
+      end else if (S_RAM != 0) begin : g_sram
         acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
       end else begin : g_sflop
@@ -247,7 +254,8 @@ module acore_fold_datapath #(
       wire ovf_pc;
       acore_fold_poly #(
         .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
-        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F), .RAM_DELAY(U_RAM), .MULT(MULT)
+        .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F),
+        .RAM_DELAY((SPARSE != 0) ? 2 : U_RAM), .MULT(MULT)
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
         .s_i(s_pc),
@@ -307,7 +315,12 @@ module acore_fold_datapath #(
   // ---- sideband: region from the region select (in block RAM with S_RAM), overflow from the
   // CORDIC's input ----
   generate
-    if (S_RAM != 0) begin : g_rg_ram
+    if (SPARSE != 0) begin : g_rg_sparse
+      // One region a sample (clock R), due at valid_o.
+      acore_sparse_delay #(.W(RG_W), .DEPTH(C + CL - R), .GAP(FOLD)) u_d_region (
+        .clk_i(clk_i), .rst_i(rst_i), .push_i(v_q[R]), .d_i(region), .pop_i(v_q[C + CL - 1]),
+        .q_o(region_o));
+    end else if (S_RAM != 0) begin : g_rg_ram
       acore_ram_delay #(.W(RG_W), .DEPTH(C + CL - R)) u_d_region (
         .clk_i(clk_i), .rst_i(rst_i), .d_i(region), .q_o(region_o));
     end else begin : g_rg_flop

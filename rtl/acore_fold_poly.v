@@ -36,8 +36,9 @@ module acore_fold_poly #(
   parameter integer ADDR_W = 6,
   // Clocks per item of each multiplier.
   parameter integer F = 1,
-  // 1: the argument (with the base address) waits for the Horner steps in block RAM
-  // (acore_ram_delay), not in flops: DEGREE - 1 lines of S_W + ADDR_W bits.
+  // Where the argument (with the base address) waits for the Horner steps, DEGREE - 1 lines of
+  // S_W + ADDR_W bits: 0 flop chains (acore_delay), 1 block RAM (acore_ram_delay), 2 a few
+  // words of flops (acore_sparse_delay: the items come F clocks apart at least).
   parameter integer RAM_DELAY = 0,
   // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
   parameter integer MULT = 0,
@@ -45,7 +46,7 @@ module acore_fold_poly #(
   parameter integer PORTS = acore_fold_poly_ports(DEGREE)
 ) (
   input  wire                     clk_i,
-  // Synchronous reset (of the block RAM delay lines' pointers).
+  // Synchronous reset (of the start bits and the delay lines' pointers).
   input  wire                     rst_i,
   // An item starts: x_i, base_i, ovf_i are valid.
   input  wire                     start_i,
@@ -97,9 +98,9 @@ module acore_fold_poly #(
   acore_check #(.OK(XCENTER == 0 || (XCENTER == 1 && S_F >= 3)), .VALUE(XCENTER),
     .MSG("illegal parameter: acore_fold_poly: XCENTER must be 0, or 1 with S_F >= 3"))
     XCENTER_must_be_0_or_1 ();
-  acore_check #(.OK(F == 1 || F == 2 || F == 4), .VALUE(F),
-    .MSG("illegal parameter: acore_fold_poly: F must be 1, 2 or 4"))
-    F_must_be_1_2_or_4 ();
+  acore_check #(.OK(F >= 1 && (F & (F - 1)) == 0), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_poly: F must be a power of two (FOLD/2)"))
+    F_must_be_a_power_of_two ();
   acore_check #(.OK(PORTS == acore_fold_poly_ports(DEGREE)), .VALUE(PORTS),
     .MSG("illegal parameter: acore_fold_poly: PORTS is derived (DEGREE+1), do not override"))
     PORTS_is_derived ();
@@ -139,12 +140,17 @@ module acore_fold_poly #(
     u0_q  <= u_next;
     b0_q  <= base_i;
     ov0_q <= ovf_i;
-    st0_q <= start_i;
     an_q  <= coef_acc(coef_i[0 +: REG_W]);
     u1_q  <= u0_q;
     b1_q  <= b0_q;
     ov1_q <= ov0_q;
-    st1_q <= st0_q;
+    if (rst_i) begin
+      st0_q <= 1'b0;
+      st1_q <= 1'b0;
+    end else begin
+      st0_q <= start_i;
+      st1_q <= st0_q;
+    end
   end
   assign acc[0] = an_q;
   assign us[0]  = u1_q;
@@ -168,11 +174,23 @@ module acore_fold_poly #(
         .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
         .init_i(coef_acc(coef_i[(m + 1) * REG_W +: REG_W])), .p_o(sum));
       // The item beside the multiplier to the next step: start, and argument with base address.
-      acore_delay #(.W(1), .DEPTH(STEP)) u_dst (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(st[m]), .q_o(st[m+1]));
+      // The start bits are reset (as the chain's first two), so a sparse line's pushes and pops
+      // pair up from reset on; st_p: the start one clock early, the sparse line's pop.
+      reg [STEP-1:0] st_d_q;
+      always @(posedge clk_i) begin
+        if (rst_i) st_d_q <= {STEP{1'b0}};
+        else st_d_q <= {st_d_q[STEP-2:0], st[m]};
+      end
+      wire st_p = st_d_q[STEP-2];
+      assign st[m+1] = st_d_q[STEP-1];
       if (m == DEGREE - 1) begin : g_ulast
         assign {bs[m+1], us[m+1]} = {(ADDR_W+S_W){1'b0}};  // no step after the last
-      end else if (RAM_DELAY != 0) begin : g_uram
+        wire unused_stp = st_p;
+      end else if (RAM_DELAY == 2) begin : g_usparse
+        acore_sparse_delay #(.W(ADDR_W + S_W), .DEPTH(STEP), .GAP(F)) u_du (
+          .clk_i(clk_i), .rst_i(rst_i), .push_i(st[m]), .d_i({bs[m], us[m]}), .pop_i(st_p),
+          .q_o({bs[m+1], us[m+1]}));
+      end else if (RAM_DELAY == 1) begin : g_uram
         acore_ram_delay #(.W(ADDR_W + S_W), .DEPTH(STEP)) u_du (
           .clk_i(clk_i), .rst_i(rst_i), .d_i({bs[m], us[m]}), .q_o({bs[m+1], us[m+1]}));
       end else begin : g_uflop
@@ -194,12 +212,6 @@ module acore_fold_poly #(
       end
       assign acc[m+1] = acc_q;
       assign ov[m+1]  = ov_q;
-    end
-  endgenerate
-
-  generate
-    if (RAM_DELAY == 0) begin : g_flops
-      wire unused_rst = rst_i;  // the flop delay lines have no pointer
     end
   endgenerate
 

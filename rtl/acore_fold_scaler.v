@@ -53,9 +53,9 @@ module acore_fold_scaler #(
   acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),
     .MSG("illegal parameter: acore_fold_scaler: SCALE_G must be 0..R_SHIFT"))
     SCALE_G_must_be_0_to_R_SHIFT ();
-  acore_check #(.OK(F == 1 || F == 2 || F == 4), .VALUE(F),
-    .MSG("illegal parameter: acore_fold_scaler: F must be 1, 2 or 4"))
-    F_must_be_1_2_or_4 ();
+  acore_check #(.OK(F >= 1 && (F & (F - 1)) == 0), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_scaler: F must be a power of two (FOLD/2)"))
+    F_must_be_a_power_of_two ();
 
   reg [T_W-1:0]   t_q;
   reg [REG_W-1:0] r_q;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The correction modes' parameter rules, from the model's mode table
 // (model/ip/core/correction_modes.hpp), included in rtl/acore_config_check.v: the same
-// rules as DatapathConfig::validate() (a known mode, its DEGREE, the tops that build it).
+// rules as DatapathConfig::validate() (a known mode, its DEGREE, FOLD's values, the tops that
+// build it).
 // Written by (from the repository root)
 //   acore_gen_tables rtl_mode_checks > rtl/acore_mode_checks.vh
 // (model/cli/gen_tables.cpp, scripts/gen_tables.sh); do not edit: the CTest gen_tables_current
@@ -22,6 +23,11 @@
   acore_check #(.OK(CORRECTION != ACORE_CORR_NONE || (DEGREE >= 1 && DEGREE <= 7)), .VALUE(DEGREE),
     .MSG("illegal parameter: DEGREE must be 1..7 for none (CORRECTION=2)"))
     DEGREE_must_be_1_to_7_for_none ();
+
+  // FOLD is a fold factor of acore_top (fold_values()).
+  acore_check #(.OK(acore_fold_legal(FOLD) != 0), .VALUE(FOLD),
+    .MSG("illegal parameter: FOLD must be 1, 2, 4, 8, 16 or 32"))
+    FOLD_must_be_1_2_4_8_16_or_32 ();
 
   // The modes a top does not build: acore_top pipelined (FOLD = 1) or folded (FOLD > 1),
   // the serial core (SERIAL = 1).

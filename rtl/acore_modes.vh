@@ -62,11 +62,25 @@ function integer acore_correction_latency(input integer f_correction, input inte
   endcase
 endfunction
 
-// 1 when acore_top builds the mode folded (FOLD = 2, 4, 8).
+// 1 when acore_top builds the mode folded (FOLD > 1).
 function integer acore_mode_on_folded(input integer f_correction);
   case (f_correction)
     0: acore_mode_on_folded = 1;  // poly
     2: acore_mode_on_folded = 1;  // none
     default: acore_mode_on_folded = 0;  // not folded, or no mode
+  endcase
+endfunction
+
+// 1 when FOLD is a fold factor of acore_top (fold_values(), model/ip/core/datapath_config.hpp:
+// 1, 2, 4, 8, 16, 32): 1 the pipeline, the others the folded datapath.
+function integer acore_fold_legal(input integer f_fold);
+  case (f_fold)
+    1: acore_fold_legal = 1;
+    2: acore_fold_legal = 1;
+    4: acore_fold_legal = 1;
+    8: acore_fold_legal = 1;
+    16: acore_fold_legal = 1;
+    32: acore_fold_legal = 1;
+    default: acore_fold_legal = 0;
   endcase
 endfunction

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // acore_top: the AngleCore estimator, one sample per clock (model/ip/engine/fixed_model.cpp, bit for bit), or
-// with FOLD = 2, 4, 8 one sample every FOLD clocks on folded hardware (acore_fold_datapath.v).
+// with FOLD > 1 one sample every FOLD clocks on folded hardware (acore_fold_datapath.v).
 //
 //   c1..c4 -> prefilter -> scaler x2 -> region_select -> correction x2 -> cordic -> [fourier] -> [- zero] -> angle, flags
 //                            ^ O, 1/A        (coef_regfile, 52 words)  ^ a_j        ^ atan_i    ^ a_k, b_k   ^ ZERO word
@@ -45,7 +45,7 @@
 module acore_top #(
   // The datapath parameters (IN_W .. MULT; generated from the model's field table, each with its
   // default and meaning). FOLD: 1 = one sample per clock (the pipeline below, with a stall
-  // enable); 2, 4 or 8 = the folded datapath (acore_fold_datapath.v: the hardware reused FOLD
+  // enable); above 1 (acore_fold_legal()) the folded datapath (acore_fold_datapath.v: the hardware reused FOLD
   // times per sample, an output FIFO and credits instead of the stall), the same contract and
   // register map at any FOLD. ZERO = 1: one more register word (the last) holding the zero
   // position, subtracted from the output angle. MULT = 1: every product on the hardware
@@ -102,7 +102,7 @@ module acore_top #(
   localparam integer CORDIC_LATENCY = acore_cordic_latency(K, 0, 0);
   localparam integer FOURIER_LATENCY = acore_fourier_latency(FOURIER_K, FOURIER_M);
   // The folded datapath is built only for a legal folded configuration; an illegal one (FOLD not
-  // 1, 2, 4, 8, or folded poly2d/Fourier) elaborates the pipeline, and acore_config_check stops it.
+  // a value of acore_fold_legal(), or folded poly2d/Fourier) elaborates the pipeline, and acore_config_check stops it.
   localparam integer FOLDED = acore_folded(FOLD, CORRECTION, FOURIER_K);
   // Pipelined: the stages in a row; folded (acore_fold_datapath.v's schedule): the accepting edge
   // to out_valid_o with the output FIFO empty.

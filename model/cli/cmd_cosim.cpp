@@ -10,6 +10,7 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "core/datapath_config.hpp"
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
 #include "engine/fixed_model.hpp"
@@ -87,7 +88,7 @@ void add_cosim(CLI::App& app) {
        "--fold", args->fold,
        "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
        "register image does not depend on it; default 1)")
-      ->check(CLI::IsMember({1, 2, 4, 8}));
+      ->check(CLI::IsMember(acore::fold_values()));
   c->add_option("--trace", args->trace, "Write an FST waveform of the RTL run");
   c->add_option("--backpressure", args->backpressure,
                 "Probability of a stalled output and of an input gap per clock (default 0)")

@@ -15,6 +15,7 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "core/angle.hpp"
+#include "core/datapath_config.hpp"
 #include "core/error_stats.hpp"
 #include "core/errors.hpp"
 #include "engine/estimator.hpp"
@@ -133,7 +134,7 @@ void add_estimate(CLI::App& app) {
        "--fold", args->fold,
        "--engine rtl: the build folded to this many clocks per sample (rtl/configs.txt; the "
        "register image does not depend on it; default 1)")
-      ->check(CLI::IsMember({1, 2, 4, 8}));
+      ->check(CLI::IsMember(acore::fold_values()));
   c->add_option(
       "--out", args->out,
       "Write per-sample angles (CSV): angle_rad and uncorrected_rad in the reference frame (the "

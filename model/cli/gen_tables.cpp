@@ -264,9 +264,22 @@ std::string rtl_modes() {
   out += mode_case("acore_correction_latency",
                    "input integer f_correction, input integer f_degree, input integer f_s_w",
                    latency, "0", "no mode");
-  out += "\n// 1 when acore_top builds the mode folded (FOLD = 2, 4, 8).\n";
+  out += "\n// 1 when acore_top builds the mode folded (FOLD > 1).\n";
   out += mode_case("acore_mode_on_folded", "input integer f_correction", folded, "0",
                    "not folded, or no mode");
+  // FOLD's values, from the model's one list (acore_config_check's rule, acore_top's choice of
+  // the folded datapath).
+  std::string folds, fold_cases;
+  for (int f : acore::fold_values()) {
+    folds += fmt::format("{}{}", folds.empty() ? "" : ", ", f);
+    fold_cases += fmt::format("    {}: acore_fold_legal = 1;\n", f);
+  }
+  out += fmt::format(
+      "\n// 1 when FOLD is a fold factor of acore_top (fold_values(), model/ip/core/"
+      "datapath_config.hpp:\n// {}): 1 the pipeline, the others the folded datapath.\n"
+      "function integer acore_fold_legal(input integer f_fold);\n  case (f_fold)\n{}"
+      "    default: acore_fold_legal = 0;\n  endcase\nendfunction\n",
+      folds, fold_cases);
   return out;
 }
 
@@ -276,8 +289,8 @@ std::string rtl_mode_checks() {
   std::string out = generated_head(
       "// The correction modes' parameter rules, from the model's mode table\n"
       "// (model/ip/core/correction_modes.hpp), included in rtl/acore_config_check.v: the same\n"
-      "// rules as DatapathConfig::validate() (a known mode, its DEGREE, the tops that build "
-      "it).\n",
+      "// rules as DatapathConfig::validate() (a known mode, its DEGREE, FOLD's values, the tops "
+      "that\n// build it).\n",
       "rtl/acore_mode_checks.vh");
   std::string ids;
   for (size_t i = 0; i < modes.size(); ++i)
@@ -296,6 +309,16 @@ std::string rtl_mode_checks() {
         "    DEGREE_must_be_{}_to_{}_for_{} ();\n",
         m.rtl_constant(), m.degree_min, m.degree_max, m.degree_min, m.degree_max, m.name, m.id,
         m.degree_min, m.degree_max, m.name);
+  std::string fold_ids;
+  const auto& folds = acore::fold_values();
+  for (size_t i = 0; i < folds.size(); ++i)
+    fold_ids += fmt::format("{}{}", i == 0 ? "" : i + 1 == folds.size() ? "_or_" : "_", folds[i]);
+  out += fmt::format(
+      "\n  // FOLD is a fold factor of acore_top (fold_values()).\n"
+      "  acore_check #(.OK(acore_fold_legal(FOLD) != 0), .VALUE(FOLD),\n"
+      "    .MSG(\"illegal parameter: FOLD must be {}\"))\n"
+      "    FOLD_must_be_{} ();\n",
+      acore::fold_value_list(), fold_ids);
   out +=
       "\n  // The modes a top does not build: acore_top pipelined (FOLD = 1) or folded (FOLD > 1),"
       "\n  // the serial core (SERIAL = 1).\n";

@@ -29,8 +29,8 @@ struct RtlRunOptions {
   std::string trace;                   // FST waveform file; empty = no tracing (no overhead)
   std::optional<StatusWindow> window;  // mag_lo/mag_hi; default StatusWindow::defaults(cfg)
   // The pipelined build's FOLD (clocks per sample): 0 = the image's configuration (cfg.fold, 1
-  // for every image read from a file: a register image does not depend on FOLD); 1, 2, 4, 8 =
-  // that build.
+  // for every image read from a file: a register image does not depend on FOLD); a value of
+  // fold_values() = that build.
   int fold = 0;
   std::string module_dir;  // where the build's module is ("" = rtl_plugin_dir())
 };

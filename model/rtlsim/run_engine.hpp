@@ -16,7 +16,7 @@
 namespace acore {
 
 struct EngineOptions {
-  // rtl: the pipelined build folded to this many clocks per sample (1, 2, 4, 8; a register image
+  // rtl: the pipelined build folded to this many clocks per sample (fold_values(); a register image
   // does not depend on it); 1 for every other engine.
   int fold = 1;
   // The RTL engines only: the stream's random input gaps and output backpressure (probabilities

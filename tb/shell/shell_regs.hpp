@@ -49,10 +49,10 @@ constexpr uint32_t kConfig0Xcenter = 1u << 10;
 constexpr uint32_t kConfig0Zero = 1u << 11;
 // SERIAL [12] (RO): The top: 0 acore_top, 1 acore_serial_top.
 constexpr uint32_t kConfig0Serial = 1u << 12;
-// FOLD [19:16] (RO): acore_top's clocks per sample: 1 (pipelined), 2, 4 or 8 (folded).
+// FOLD [21:16] (RO): acore_top's clocks per sample: 1 (pipelined), 2, 4, 8, 16 or 32 (folded).
 constexpr int kConfig0FoldShift = 16;
-constexpr uint32_t kConfig0FoldMask = 0xF0000u;
-constexpr int kConfig0FoldBits = 4;
+constexpr uint32_t kConfig0FoldMask = 0x3F0000u;
+constexpr int kConfig0FoldBits = 6;
 // K [28:24] (RO): CORDIC iterations.
 constexpr int kConfig0KShift = 24;
 constexpr uint32_t kConfig0KMask = 0x1F000000u;

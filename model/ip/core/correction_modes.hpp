@@ -18,7 +18,7 @@ enum CorrectionEngine : unsigned {
   kEngineFixed = 1u << 1,      // the bit-accurate model, one sample (FixedModel::step)
   kEngineBatch = 1u << 2,      // FixedModel::run_batch (its vector kernel, or step() per sample)
   kEnginePipelined = 1u << 3,  // rtl/acore_top.v with FOLD = 1
-  kEngineFolded = 1u << 4,     // rtl/acore_top.v with FOLD = 2, 4, 8 (rtl/acore_fold_datapath.v)
+  kEngineFolded = 1u << 4,     // rtl/acore_top.v with FOLD > 1 (rtl/acore_fold_datapath.v)
   kEngineSerial = 1u << 5,     // rtl/acore_serial_top.v
 };
 constexpr unsigned kEngineModel = kEngineFloat | kEngineFixed | kEngineBatch;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,6 +17,19 @@ std::string correction_name(int correction) {
 }
 
 int parse_correction(const std::string& name) { return correction_mode(name).id; }
+
+const std::vector<int>& fold_values() {
+  static const std::vector<int> v = {1, 2, 4, 8, 16, 32};
+  return v;
+}
+
+std::string fold_value_list() {
+  const auto& v = fold_values();
+  std::string s;
+  for (size_t i = 0; i < v.size(); ++i)
+    s += fmt::format("{}{}", i == 0 ? "" : i + 1 == v.size() ? " or " : ", ", v[i]);
+  return s;
+}
 
 int DatapathConfig::coef_per_curve() const { return correction_mode(correction).terms(degree); }
 
@@ -63,8 +77,9 @@ void DatapathConfig::validate(DatapathTop top) const {
                                                    "zero position is an angle code in one word)",
                                                    angle_w, reg_w));
   need(mult == 0 || mult == 1, fmt::format("mult={} must be 0 or 1", mult));
-  need(fold == 1 || fold == 2 || fold == 4 || fold == 8,
-       fmt::format("fold={} must be 1, 2, 4 or 8", fold));
+  const auto& folds = fold_values();
+  need(std::find(folds.begin(), folds.end(), fold) != folds.end(),
+       fmt::format("fold={} must be {}", fold, fold_value_list()));
   need(fold == 1 || mode->runs_on(kEngineFolded),
        fmt::format("fold={}: the {} correction is not folded", fold, mode->name));
   need(fold != 1 || top != DatapathTop::kTop || mode->runs_on(kEnginePipelined),
@@ -183,7 +198,7 @@ const std::vector<ConfigField>& config_fields() {
       {&D::zero_word, "ZERO", "zero_word", S::kWhenOne, true,
        "1: one more register word (the last), the zero position, subtracted from the angle."},
       {&D::fold, "FOLD", "fold", S::kWhenNotOne, false,
-       "Clocks per sample of acore_top: 1 pipelined, 2, 4 or 8 folded (the serial core: 1)."},
+       "Clocks per sample of acore_top: 1 pipelined, more folded (fold_values(); serial core: 1)."},
       {&D::mult, "MULT", "mult", S::kWhenOne, true,
        "Products: 0 adders and shifters (each partial product floored), 1 the multiply operator "
        "(DSP blocks; the full product floored once)."},

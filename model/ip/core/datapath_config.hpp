@@ -26,6 +26,14 @@ enum class DatapathTop { kTop, kSerial };
 // (|v| <= 0.35 on the paper scenario) is close to x's and the coefficients stay in Q3.15.
 constexpr int kVShift = 2;
 
+// FOLD's legal values, the one list of them: validate() checks it, and the RTL's rule
+// (acore_fold_legal() in rtl/acore_modes.vh and its check in rtl/acore_mode_checks.vh) is
+// generated from it (model/cli/gen_tables.cpp). 1 is the pipelined top; every other value is a
+// power of two >= 2 (the folded datapath's rule: rtl/acore_fold_datapath.v).
+const std::vector<int>& fold_values();
+// fold_values() as text for a message: "1, 2, 4, 8, 16 or 32".
+std::string fold_value_list();
+
 struct DatapathConfig {
   // --- input and pre-filter ---
   int in_w = 16;  // IN_W: channel code width, signed two's complement
@@ -63,8 +71,9 @@ struct DatapathConfig {
   // after the CORDIC (after the Fourier correction). 0 = no word, no adder (no header key).
   int zero_word = 0;
   // --- RTL schedule (not the arithmetic: the model and the register image do not depend on it) ---
-  // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock), 2, 4 or 8
-  // (folded: the hardware reused FOLD times per sample; the modes whose row says so).
+  // FOLD: clocks per sample of rtl/acore_top.v: 1 (pipelined, one sample per clock) or another
+  // value of fold_values() (folded: the hardware reused FOLD times per sample; the modes whose
+  // row says so).
   int fold = 1;
   // --- multipliers ---
   // MULT: how every product of the datapath is built. 0: adders and shifters (the paper's minimum),
