@@ -190,7 +190,10 @@ module acore_abz #(
   wire moving = (tgt_q != cnt_q) & ~rehome_q;
   wire up = (diff <= m2_cur);
   wire [C_W-1:0] top_cnt = m4_cur[C_W-1:0] - 1'b1;
-  wire [SP_W-1:0] sp_load = (spacing_i == {SP_W{1'b0}}) ? {SP_W{1'b0}} : spacing_i - 1'b1;
+  // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
+  // come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next clock), so the
+  // load needs no subtractor.
+  wire sp_ready = ((sp_q >> 1) == {SP_W{1'b0}});
   // The window lm .. lp round the turn holds the target.
   wire in_win = (lm_q <= lp_q) ? (tgt_q >= lm_q && tgt_q <= lp_q) : (tgt_q >= lm_q || tgt_q <= lp_q);
   wire [C_W-1:0] new_tgt = in_win ? tgt_q : lo_q;
@@ -199,13 +202,18 @@ module acore_abz #(
   // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
   // target lo: lo + d with d = (count - lo) mod 4 in 0 .. 2, or lo - 1 for d = 3, round the turn.
   wire [1:0] dlow = cnt_q[1:0] - lo_q[1:0];
-  wire [M_W-1:0] m4_res = {n_res_q, 2'b00};
   wire [M_W-1:0] lo_w = {1'b0, lo_q};
   wire [M_W-1:0] home_up = lo_w + {{(M_W-2){1'b0}}, dlow};
+  // Past the turn, lo + d - 4N is 0 or 1 (lo < 4N, d <= 2): its two low bits are lo + d's (4N's
+  // are zero), the rest zero. A result is used only with the N in use: its 4N is m4_cur.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [M_W-1:0] home_w = (dlow == 2'd3) ? ((lo_q == {C_W{1'b0}}) ? m4_res - 1'b1 : lo_w - 1'b1) :
-                          (home_up >= m4_res) ? home_up - m4_res : home_up;  // < 4N
+  wire [M_W-1:0] home_w = (dlow == 2'd3) ? ((lo_q == {C_W{1'b0}}) ? {1'b0, top_cnt} : lo_w - 1'b1) :
+                          (home_up >= m4_cur) ? {{(M_W-2){1'b0}}, home_up[1:0]} : home_up;  // < 4N
   /* verilator lint_on UNUSEDSIGNAL */
+  // One step of the count, up or down by one on one adder, round the turn.
+  wire [C_W-1:0] step = cnt_q + (up ? {{(C_W-1){1'b0}}, 1'b1} : {C_W{1'b1}});
+  wire wrap_up = up & (cnt_q == top_cnt);
+  wire wrap_dn = ~up & (cnt_q == {C_W{1'b0}});
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
@@ -225,10 +233,9 @@ module acore_abz #(
         tgt_q <= lo_q;
       end else begin
         if (res_ok) tgt_q <= new_tgt;
-        if (moving && sp_q == {SP_W{1'b0}}) begin
-          sp_q <= sp_load;
-          if (up) cnt_q <= (cnt_q == top_cnt) ? {C_W{1'b0}} : cnt_q + 1'b1;
-          else cnt_q <= (cnt_q == {C_W{1'b0}}) ? top_cnt : cnt_q - 1'b1;
+        if (moving && sp_ready) begin
+          sp_q <= spacing_i;
+          cnt_q <= wrap_up ? {C_W{1'b0}} : wrap_dn ? top_cnt : step;
         end
       end
     end

@@ -127,13 +127,18 @@ module acore_board #(
   // The observer: its turn count and LEAD as wide as their fields (TRK_POSITION.TURNS, TRK_LEAD);
   // the loop over two clocks when the estimator delivers a sample every CYCLES >= 2 clocks (a
   // shorter clock period, nothing lost), time-shared on one adder when it delivers one every
-  // acore_track_serial_cycles() clocks or fewer often (the serial core: a quarter of the area), and
-  // the estimator's LATENCY in whole samples compensated.
+  // acore_track_serial_cycles() clocks or fewer often (the serial core: a quarter of the area),
+  // else word-serial when one every acore_track_word_cycles() clocks with at most 4 bits of D a
+  // clock (the fewest that fit: FOLD 16 or 32, about half the area of the loop a clock), and the
+  // estimator's LATENCY in whole samples compensated.
   localparam integer TRK_TURN_W = TRK_POSITION_TURNS_W;
   localparam integer TRK_LOOP_CLOCKS = (CYCLES >= 2) ? 2 : 1;
-  localparam integer TRK_SERIAL =
-      (CYCLES >= acore_track_serial_cycles(ANGLE_W, TRK_FRAC_W, TRK_LEAD_LEAD_W)) ? 1 : 0;
   localparam integer COMP_LATENCY = acore_comp_latency(LATENCY, CYCLES);
+  localparam integer TRK_PROD_BITS =
+      acore_track_word_prod_bits(CYCLES, COMP_LATENCY, TRK_LEAD_LEAD_W, TRK_LEAD_LEAD_F);
+  localparam integer TRK_SERIAL =
+      (CYCLES >= acore_track_serial_cycles(ANGLE_W, TRK_FRAC_W, TRK_LEAD_LEAD_W)) ? 1 :
+      (TRK_PROD_BITS != 0) ? 2 : 0;
   localparam integer TRK_P_W = ANGLE_W + TRK_FRAC_W;
 
   acore_check #(.OK(ANGLE_W >= TRK_POSITION_ANGLE_W), .VALUE(ANGLE_W),
@@ -208,7 +213,7 @@ module acore_board #(
   acore_track #(
     .ANGLE_W(ANGLE_W), .FRAC_W(TRK_FRAC_W), .TURN_W(TRK_TURN_W), .COMP_LATENCY(COMP_LATENCY),
     .LEAD_W(TRK_LEAD_LEAD_W), .LEAD_F(TRK_LEAD_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS),
-    .SERIAL(TRK_SERIAL)
+    .SERIAL(TRK_SERIAL), .PROD_BITS((TRK_PROD_BITS != 0) ? TRK_PROD_BITS : 1)
   ) u_track (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(est_valid), .in_ready_o(trk_ready),
     .in_angle_i(est_angle), .bw_i(rg_trk_bw_bw), .lead_i(rg_trk_lead_lead),
@@ -216,7 +221,8 @@ module acore_board #(
     .out_valid_o(trk_valid), .out_ready_i(1'b1), .out_angle_o(trk_tracked),
     .out_angle_comp_o(trk_angle), .out_velocity_o(trk_velocity), .out_turns_o(trk_turns),
     .out_lot_o(trk_lot));
-  // The observer's outputs hold between its samples: the APB reads them as they are.
+  // The observer's outputs hold between its samples: the APB reads them as they are (the
+  // word-serial form writes velocity and position a few clocks before its valid: the newest).
   assign rg_trk_velocity_velocity = trk_velocity[TRK_P_W-1 -: TRK_VELOCITY_VELOCITY_W];
   assign rg_trk_position_turns = trk_turns;
   assign rg_trk_position_angle = trk_tracked[ANGLE_W-1 -: TRK_POSITION_ANGLE_W];
@@ -226,23 +232,23 @@ module acore_board #(
   assign trk_velocity_o = trk_velocity;
   assign trk_turns_o = trk_turns;
   assign trk_lot_o = trk_lot;
-  // The compensated angle and the loss of tracking last delivered (ANGLECOM, DIAAGC.LF).
-  reg [ANGLE_W-1:0] trk_q;
+  // The loss of tracking last delivered (DIAAGC.LF; the word-serial observer sets its LOT output
+  // before the sample's other outputs). The compensated angle last delivered (ANGLECOM) is the
+  // observer's output itself: it changes only with the observer's valid, in every form.
   reg lot_q;
   always @(posedge clk_i) begin
     if (rst_i) lot_q <= 1'b0;
     else if (trk_valid) lot_q <= trk_lot;
   end
-  always @(posedge clk_i) if (trk_valid) trk_q <= trk_angle;
   // The interfaces' angle (IF_ZERO, IF_CTRL: the AS5047P's ZPOS, DIR, DAECDIS): the compensated
   // angle (with DAEC 0 the estimator's last), the zero taken away, negated with DIR. ABZ and UVW
   // take it with each observer output; the SPI port reads it at once (a new zero or direction
   // shows in the next ANGLECOM, as on the AS5047P).
   wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
+  // (ANGLECOM is the same angle: one subtractor for both.)
   wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
-  wire [ANGLE_W-1:0] com_src = rg_if_ctrl_daec ? trk_q : unc_q;
   wire [ANGLE_W-1:0] if_angle = rg_if_ctrl_dir ? if_zero - if_src : if_src - if_zero;
-  wire [ANGLE_W-1:0] if_com = rg_if_ctrl_dir ? if_zero - com_src : com_src - if_zero;
+  wire [ANGLE_W-1:0] if_com = if_angle;
   wire [ANGLE_W-1:0] if_unc = rg_if_ctrl_dir ? if_zero - unc_q : unc_q - if_zero;
 
   // ---- the interfaces ----

@@ -372,6 +372,32 @@ function integer acore_track_serial_cycles(input integer f_angle_w, input intege
                                            input integer f_lead_w);
   acore_track_serial_cycles = 4 + (f_angle_w + f_frac_w + 1) + 1 + (f_lead_w + 10 + 2) + 3 + 1;
 endfunction
+// The word-serial observer (SERIAL = 2): the bits of D = COMP_LATENCY + LEAD / 2^LEAD_F (LEAD_F
+// fraction bits) that can be nonzero, and its clocks from a sample taken to its result, which are
+// also its clocks per sample. Its fixed schedule (rtl/acore_track.v): five clocks of the loop (the
+// prediction, the error, two shifts with phi's update between, v's update), the product v * D
+// PROD_BITS bits of D a clock, the compensated angle, the output register.
+function integer acore_track_word_d_w(input integer f_comp_latency, input integer f_lead_w,
+                                      input integer f_lead_f);
+  acore_track_word_d_w = $clog2(f_comp_latency * (2 ** f_lead_f) + (2 ** f_lead_w));
+endfunction
+function integer acore_track_word_cycles(input integer f_comp_latency, input integer f_lead_w,
+                                         input integer f_lead_f, input integer f_prod_bits);
+  acore_track_word_cycles = 5 + (acore_track_word_d_w(f_comp_latency, f_lead_w, f_lead_f) +
+                                 f_prod_bits - 1) / f_prod_bits + 1 + 1;
+endfunction
+// The fewest bits of D a clock (PROD_BITS, 1..4) with which the word-serial observer takes a sample
+// every f_cycles clocks; 0 when none does.
+function integer acore_track_word_prod_bits(input integer f_cycles, input integer f_comp_latency,
+                                            input integer f_lead_w, input integer f_lead_f);
+  integer r;
+  begin
+    acore_track_word_prod_bits = 0;
+    for (r = 4; r >= 1; r = r - 1)
+      if (acore_track_word_cycles(f_comp_latency, f_lead_w, f_lead_f, r) <= f_cycles)
+        acore_track_word_prod_bits = r;
+  end
+endfunction
 // The latency the observer compensates (COMP_LATENCY), in whole samples: a top's LATENCY in clocks
 // over its clocks per sample at full rate, rounded down (the rest of a sample, and the observer's
 // own clocks, are the LEAD register's: LEAD is unsigned, so the whole part must not overshoot).

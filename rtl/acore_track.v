@@ -41,6 +41,11 @@
 // LOOP_CLOCKS = 2). SERIAL = 1 (time-shared, below): the result acore_track_serial_cycles() clocks
 // after the sample, in_ready_o low until then (a sample every that many clocks at most); bw_i is
 // latched with each sample, lead_i and lot_thr_i are read during its schedule (static registers).
+// SERIAL = 2 (word-serial, below) likewise with acore_track_word_cycles() clocks (16 at the board's
+// widths and PROD_BITS = 1): whole words a clock, one shifter, v * D PROD_BITS bits of D a clock;
+// its outputs other than out_angle_comp_o take the sample's values during the schedule, while
+// out_valid_o is low (all hold while out_valid_o is high and until the next sample is taken).
+// In every form out_angle_comp_o changes only in the clock out_valid_o rises.
 // rst_i is synchronous, active high.
 `resetall
 `default_nettype none
@@ -63,8 +68,12 @@ module acore_track #(
   parameter integer LOOP_CLOCKS = 1,
   // 1: time-shared over the clocks a sample takes (one adder for every sum, the shifts one bit a
   // clock; acore_track_serial_cycles() of rtl/acore_derived.vh clocks a sample, LOOP_CLOCKS unused):
-  // for an estimator that delivers a sample every that many clocks or fewer often.
-  parameter integer SERIAL = 0
+  // for an estimator that delivers a sample every that many clocks or fewer often. 2: word-serial
+  // (whole words a clock on an adder for phi, one for v, one shifter and a PROD_BITS-term product
+  // step; acore_track_word_cycles() clocks a sample): for the folded estimators at FOLD 16 or 32.
+  parameter integer SERIAL = 0,
+  // SERIAL = 2: bits of D the product takes a clock (1..4; each one more adder, fewer clocks).
+  parameter integer PROD_BITS = 1
 ) (
   input  wire                      clk_i,
   input  wire                      rst_i,
@@ -90,7 +99,8 @@ module acore_track #(
 
   // The block's own pipeline, as the other modules state it: LATENCY clocks from a sample taken to
   // its result on the output (no stall), CYCLES clocks a sample at full rate.
-  localparam integer LATENCY = (SERIAL != 0) ? acore_track_serial_cycles(ANGLE_W, FRAC_W, LEAD_W) :
+  localparam integer LATENCY = (SERIAL == 1) ? acore_track_serial_cycles(ANGLE_W, FRAC_W, LEAD_W) :
+      (SERIAL == 2) ? acore_track_word_cycles(COMP_LATENCY, LEAD_W, LEAD_F, PROD_BITS) :
       acore_track_latency(LOOP_CLOCKS);
   localparam integer CYCLES = (SERIAL != 0) ? LATENCY : LOOP_CLOCKS;
   localparam integer P_W = ANGLE_W + FRAC_W;
@@ -119,9 +129,12 @@ module acore_track #(
   acore_check #(.OK(LOOP_CLOCKS == 1 || LOOP_CLOCKS == 2), .VALUE(LOOP_CLOCKS),
     .MSG("illegal parameter: LOOP_CLOCKS must be 1 or 2"))
     LOOP_CLOCKS_must_be_1_or_2 ();
-  acore_check #(.OK(SERIAL == 0 || SERIAL == 1), .VALUE(SERIAL),
-    .MSG("illegal parameter: SERIAL must be 0 or 1"))
-    SERIAL_must_be_0_or_1 ();
+  acore_check #(.OK(SERIAL >= 0 && SERIAL <= 2), .VALUE(SERIAL),
+    .MSG("illegal parameter: SERIAL must be 0, 1 or 2"))
+    SERIAL_must_be_0_to_2 ();
+  acore_check #(.OK(PROD_BITS >= 1 && PROD_BITS <= 4), .VALUE(PROD_BITS),
+    .MSG("illegal parameter: PROD_BITS must be 1..4"))
+    PROD_BITS_must_be_1_to_4 ();
   acore_check #(.OK(COMP_LATENCY >= 0 && COMP_LATENCY <= 255), .VALUE(COMP_LATENCY),
     .MSG("illegal parameter: COMP_LATENCY must be 0..255"))
     COMP_LATENCY_must_be_0_to_255 ();
@@ -275,6 +288,141 @@ module acore_track #(
           out_lot_o <= b_lot_q;
         end
       end
+    end
+
+    end else if (SERIAL == 2) begin : g_word
+    // ---- word-serial: whole words a clock, a fixed schedule of acore_track_word_cycles() clocks ----
+    // The same arithmetic as the one-sample-a-clock form, spread so that each resource serves
+    // several steps: an adder on phi (x_q + B with B one of v, ~theta, the shifted error, half),
+    // one on v, one arithmetic right shifter of the error (amounts up to K_MAX + 1, the
+    // error shifted in place twice: by k, then by k + 1 more, so 2k + 1 in all), and the product
+    // v * D, MSB first, PROD_BITS bits of D a clock (m = m * 2^PROD_BITS + digit * v modulo 2^M_W,
+    // the model's product modulo 2^(P_W + LEAD_F) exactly). D's bits above DE_W are zero
+    // (COMP_LATENCY is a parameter, lead_i at most 2^LEAD_W - 1), so the product takes
+    // ceil(DE_W / PROD_BITS) clocks. Per sample, after the clock taking it (m = 0 there):
+    //   c1  phi = phi + v (the prediction; with its turn carry)
+    //   c2  e = theta - phi (on phi's adder)
+    //   c3  loss of tracking from e (its upper ANGLE_W bits against the threshold, the rest
+    //       nonzero or not) to its output; e = e >>> k
+    //   c4  phi = phi + e; e = e >>> (k + 1)
+    //   c5  v = v + e; the rounded angle and turn count (phi + half) to the outputs
+    //   c6.. the product steps; then the compensated angle phi + half + (v * D) / 2^LEAD_F and the
+    //       output's valid. The first sample after reset: phi and v are 0, k is taken as 0, so
+    //       phi = theta; the turn count and v stay.
+    localparam integer DE_W = acore_track_word_d_w(COMP_LATENCY, LEAD_W, LEAD_F);
+    localparam integer NP = (DE_W + PROD_BITS - 1) / PROD_BITS;  // product steps
+    localparam integer SH_W = $clog2(K_MAX + 2);                 // shift amounts 0 .. K_MAX + 1
+    localparam integer J_W = (NP > 1) ? $clog2(NP) : 1;
+    localparam integer J_LAST_I = NP - 1;
+    localparam [J_W-1:0] J_LAST = J_LAST_I[J_W-1:0];
+
+    reg             busy_q;
+    reg             c1, c2, c3, c4, c5, pp, fin;  // the schedule's phases (one hot)
+    reg [J_W-1:0]   j_q;      // the product's digit (NP - 1 down to 0)
+    reg [3:0]       k_q;
+    reg             started_q;
+    reg [ANGLE_W-1:0] th_q;
+    reg [X_W-1:0]   x_q;      // {turns, phi}
+    // v is the velocity output register itself: a sample's v changes at its c5, and a sample is
+    // taken only once the output before it has been read.
+    wire [P_W-1:0]  v_q = out_velocity_o;
+    reg [P_W-1:0]   e_q;      // the error, shifted in place
+    reg [P_W-1:0]   xr_q;     // phi + half
+    reg [M_W-1:0]   m_q;      // v * D so far
+
+    assign in_ready_o = !rst_i && !busy_q && (!out_valid_o || out_ready_i);
+    wire take = in_valid_i && in_ready_o;
+
+    // phi's adder: B = v (c1), ~theta (c2: e = theta - phi = ~(phi + ~theta)), the shifted error
+    // (c4), half (c5); all sign-extended.
+    wire [P_W-1:0] bx = ({P_W{c1}} & v_q) | ({P_W{c2}} & {~th_q, {FRAC_W{1'b1}}}) |
+                        ({P_W{c4}} & e_q) | ({P_W{c5}} & half);
+    wire [X_W-1:0] x_sum = x_q + {{TURN_W{bx[P_W-1]}}, bx};
+    wire [P_W-1:0] v_sum = v_q + e_q;
+    // The shifter: by k (by 0 for the first sample) at c3, by k + 1 at c4.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [4:0] sh5 = c3 ? (started_q ? {1'b0, k_q} : 5'd0) : {1'b0, k_q} + 5'd1;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [SH_W-1:0] sh_a = sh5[SH_W-1:0];
+    wire [P_W-1:0] e_sh = $signed(e_q) >>> sh_a;
+    // Loss of tracking: e > thr * 2^FRAC_W or e < -thr * 2^FRAC_W, on e's upper ANGLE_W bits
+    // (e > thr * 2^FRAC_W: above thr, or equal with low bits not all zero, which is {e's upper
+    // bits, low bits nonzero} > {thr, 0}; e < -thr * 2^FRAC_W: its upper bits below -thr).
+    wire signed [ANGLE_W:0] e_gt = {e_q[P_W-1:FRAC_W], |e_q[FRAC_W-1:0]};
+    wire signed [ANGLE_W:0] thr_gt = {1'b0, lot_thr_i, 1'b0};
+    wire signed [ANGLE_W-1:0] e_hi = e_q[P_W-1:FRAC_W];
+    wire signed [ANGLE_W-1:0] thr_hi = {1'b0, lot_thr_i};
+    wire lot_cmp = (e_gt > thr_gt) || (e_hi < -thr_hi);
+    // The product step: D's digit (MSB first) times v, added to m shifted by a digit.
+    // (d's bits from DE_W up are zero; padded so that the last digit may reach above D_W.)
+    wire [D_W+3:0] d_pad = {4'b0000, d};
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [D_W+3:0] d_sh = d_pad >> (j_q * PROD_BITS);
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [PROD_BITS-1:0] dig = d_sh[PROD_BITS-1:0];
+    wire [M_W-1:0] v_ext = {{LEAD_F{v_q[P_W-1]}}, v_q};
+    reg  [M_W-1:0] m_n;
+    integer i;
+    always @* begin
+      m_n = m_q << PROD_BITS;
+      for (i = 0; i < PROD_BITS; i = i + 1) if (dig[i]) m_n = m_n + (v_ext << i);
+    end
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [P_W-1:0] comp = xr_q + m_q[M_W-1:LEAD_F];  // its low FRAC_W bits are rounded away
+    /* verilator lint_on UNUSEDSIGNAL */
+
+    always @(posedge clk_i) begin
+      if (rst_i) begin
+        busy_q <= 1'b0;
+        {c1, c2, c3, c4, c5, pp, fin} <= 7'd0;
+        started_q <= 1'b0;
+        x_q <= {X_W{1'b0}};
+        out_valid_o <= 1'b0;
+        out_angle_o <= {ANGLE_W{1'b0}};
+        out_angle_comp_o <= {ANGLE_W{1'b0}};
+        out_velocity_o <= {P_W{1'b0}};
+        out_turns_o <= {TURN_W{1'b0}};
+        out_lot_o <= 1'b0;
+      end else begin
+        if (out_valid_o && out_ready_i) out_valid_o <= 1'b0;
+        if (take) busy_q <= 1'b1;
+        if (fin) busy_q <= 1'b0;
+        c1 <= take;
+        c2 <= c1;
+        c3 <= c2;
+        c4 <= c3;
+        c5 <= c4;
+        pp <= c5 || (pp && j_q != {J_W{1'b0}});
+        fin <= pp && j_q == {J_W{1'b0}};
+        if (c1 || c4) begin
+          x_q[P_W-1:0] <= x_sum[P_W-1:0];
+          if (started_q) x_q[X_W-1:P_W] <= x_sum[X_W-1:P_W];
+        end
+        if (c5 && started_q) out_velocity_o <= v_sum;
+        if (c3) out_lot_o <= started_q && lot_cmp;
+        if (c5) begin
+          out_angle_o <= x_sum[P_W-1:FRAC_W];
+          out_turns_o <= x_sum[X_W-1:P_W];
+        end
+        if (fin) begin
+          started_q <= 1'b1;
+          out_valid_o <= 1'b1;
+          out_angle_comp_o <= comp[P_W-1:FRAC_W];
+        end
+      end
+    end
+    // Data registers without reset (each sample sets them before use).
+    always @(posedge clk_i) begin
+      if (take) begin
+        k_q <= k;
+        th_q <= in_angle_i;
+      end
+      if (c2) e_q <= ~x_sum[P_W-1:0];
+      if (c3 || c4) e_q <= e_sh;
+      if (c5) xr_q <= x_sum[P_W-1:0];
+      j_q <= c5 ? J_LAST : j_q - 1'b1;
+      if (take) m_q <= {M_W{1'b0}};
+      else if (pp) m_q <= m_n;
     end
 
     end else begin : g_ser

@@ -2,7 +2,7 @@
 // The tracking observer (rtl/acore_track.v) against the model (model/ip/stages/tracker.cpp) bit for
 // bit, in the registry's parameter sets Verilated by tb/CMakeLists.txt (lines track, track_a20,
 // track_l2: the loop over two clocks; track_s: time-shared, one adder, at the 20-bit widths with
-// LEAD_F = 0; the same outputs):
+// LEAD_F = 0; track_w, track_w3: word-serial, one and three bits of D a clock; the same outputs):
 // every output word (angle, compensated angle, velocity, turns, LOT) of every sample, with random
 // input gaps and output stalls, on an angle stream that accelerates, reverses, carries noise and
 // jumps (LOT raised and cleared), at several bandwidth codes, LEAD and threshold values, with
@@ -15,11 +15,14 @@
 #include <deque>
 #include <memory>
 #include <random>
+#include <vector>
 
 #include "Vtrack.h"
 #include "Vtrack_a20.h"
 #include "Vtrack_l2.h"
 #include "Vtrack_s.h"
+#include "Vtrack_w.h"
+#include "Vtrack_w3.h"
 #include "core/fixed_point.hpp"
 #include "stages/tracker.hpp"
 
@@ -130,10 +133,51 @@ void run(const TrackConfig& c, uint64_t seed) {
               c.angle_w, c.frac_w, checked, bad, lots);
 }
 
+// The word-serial form's rate: with the input always offered and the output always read, one
+// sample every 7 + ceil(DE_W / PROD_BITS) clocks (five loop clocks, the product over D's nonzero
+// bits DE_W = bits of COMP_LATENCY * 2^LEAD_F + 2^LEAD_W - 1, the compensated angle, the output
+// register), the figure the board's choice of PROD_BITS rests on.
+template <class V>
+void word_rate(const TrackConfig& c, int prod_bits) {
+  auto ctx = std::make_unique<VerilatedContext>();
+  auto top = std::make_unique<V>(ctx.get());
+  const uint64_t dmax = (static_cast<uint64_t>(c.comp_latency) << c.lead_f) + mask(c.lead_w);
+  int de_w = 0;
+  while ((dmax >> de_w) != 0) ++de_w;
+  const int expect = 7 + (de_w + prod_bits - 1) / prod_bits;
+  top->bw_i = 4;
+  top->lead_i = 0;
+  top->lot_thr_i = 0;
+  top->out_ready_i = 1;
+  top->in_valid_i = 0;
+  top->rst_i = 1;
+  for (int i = 0; i < 3; ++i) top->clk_i = 0, top->eval(), top->clk_i = 1, top->eval();
+  top->rst_i = 0;
+  std::vector<long> takes;
+  for (long t = 0; t < 40L * expect; ++t) {
+    top->clk_i = 0;
+    top->in_valid_i = 1;
+    top->in_angle_i = static_cast<uint32_t>(t * 37) & static_cast<uint32_t>(mask(c.angle_w));
+    top->eval();
+    if (top->in_ready_o) takes.push_back(t);
+    top->clk_i = 1;
+    top->eval();
+  }
+  ASSERT_GT(takes.size(), 10u);
+  for (size_t i = 1; i < takes.size(); ++i)
+    EXPECT_EQ(takes[i] - takes[i - 1], expect) << "between samples " << i - 1 << " and " << i;
+}
+
 TEST(Track, RtlEqualsModel) { run<Vtrack>(ACORE_TRACK_CONFIG(TRACK), 1); }
 TEST(Track, RtlEqualsModelA20) { run<Vtrack_a20>(ACORE_TRACK_CONFIG(TRACK_A20), 2); }
 TEST(Track, RtlEqualsModelLoop2) { run<Vtrack_l2>(ACORE_TRACK_CONFIG(TRACK_L2), 3); }
 TEST(Track, RtlEqualsModelSerial) { run<Vtrack_s>(ACORE_TRACK_CONFIG(TRACK_S), 4); }
+TEST(Track, RtlEqualsModelWordSerial) { run<Vtrack_w>(ACORE_TRACK_CONFIG(TRACK_W), 5); }
+TEST(Track, RtlEqualsModelWordSerial3) { run<Vtrack_w3>(ACORE_TRACK_CONFIG(TRACK_W3), 6); }
+TEST(Track, WordSerialRate) {
+  word_rate<Vtrack_w>(ACORE_TRACK_CONFIG(TRACK_W), ACORE_TRACK_W_PROD_BITS);
+  word_rate<Vtrack_w3>(ACORE_TRACK_CONFIG(TRACK_W3), ACORE_TRACK_W3_PROD_BITS);
+}
 
 }  // namespace
 }  // namespace acore

@@ -25,10 +25,17 @@ import pytest
 BENCHES = {
     "bench_stream": ["default", "fold8", "serial"],
     "bench_apb": ["apb"],
-    "bench_board": ["board_fold8"],
+    "bench_board": ["board_fold8", "board_fold16"],
 }
 # Samples a bench streams by default: the serial core takes 226 clocks a sample.
-SAMPLES = {"default": 400, "fold8": 200, "serial": 24, "apb": 200, "board_fold8": 120}
+SAMPLES = {
+    "default": 400,
+    "fold8": 200,
+    "serial": 24,
+    "apb": 200,
+    "board_fold8": 120,
+    "board_fold16": 60,
+}
 
 
 def _build_dir(config, *parts):
