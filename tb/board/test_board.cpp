@@ -300,7 +300,7 @@ TEST(Board, MagAndAgcFollowTheField) {
   EXPECT_TRUE(b.apb(true, bd::kMagAgc, 1, nullptr)) << "read only";
   load_identity(b);
   if (::testing::Test::HasFatalFailure()) return;
-  const DatapathConfig cfg;
+  const DatapathConfig cfg = board_datapath();
   const int mag_w = cfg.s_w + 2;  // rtl/acore_derived.vh's acore_mag_w
   const FixedModel model(cosim::identity_image(cfg), StatusWindow{0, INT64_MAX});
   double gain = 1.0;
@@ -439,11 +439,11 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     EXPECT_EQ(com & 0x3FFFu, m.angle_comp >> 2) << "ANGLECOM after " << k;
     EXPECT_EQ(unc & 0x3FFFu, est_model[k - 1].angle >> 2) << "ANGLEUNC after " << k;
     EXPECT_EQ((dia >> 8) & 1, m.lot ? 0 : 1) << "DIAAGC.LF after " << k;
-    EXPECT_EQ(dia & as5047::kDiaagcAgcMask, as5047::agc_field(mags[k - 1], DatapathConfig{}.s_f))
+    EXPECT_EQ(dia & as5047::kDiaagcAgcMask, as5047::agc_field(mags[k - 1], board_datapath().s_f))
         << "DIAAGC.AGC after " << k;
     b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kMag));
     EXPECT_EQ(b.spi_frame(as5047::kNop) & 0x3FFF,
-              as5047::mag_field(mags[k - 1], DatapathConfig{}.s_w + 2))
+              as5047::mag_field(mags[k - 1], board_datapath().s_w + 2))
         << "MAG after " << k;
     uint32_t vel = 0, posn = 0;
     EXPECT_FALSE(b.apb(false, bd::kTrkVelocity, 0, &vel));
