@@ -94,7 +94,9 @@ module acore_apb #(
   output wire               ovf_o,
   output wire               los_o,
   output wire               dos_o,
-  output wire               out_tag_o
+  output wire               out_tag_o,
+  // The top's magnitude with the angle (rtl/acore_top.v's mag_o).
+  output wire [MAG_W-1:0]   mag_o
 );
 
 `include "acore_derived.vh"
@@ -157,6 +159,7 @@ module acore_apb #(
   wire [ANGLE_W-1:0] top_angle;
   wire [RG_W-1:0] top_region;
   wire top_ovf, top_los, top_dos;
+  wire [MAG_W-1:0] top_mag;
   wire [ADDR_W-1:0] top_addr;
   wire [REG_W-1:0] top_wdata, top_rdata;
   wire top_we;
@@ -170,7 +173,8 @@ module acore_apb #(
         .reg_rdata_o(top_rdata), .mag_lo_i(rg_mag_lo), .mag_hi_i(rg_mag_hi),
         .in_valid_i(top_in_valid), .in_ready_o(top_in_ready), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
         .c4_i(c4_i), .out_valid_o(top_out_valid), .out_ready_i(out_ready_i), .angle_o(top_angle),
-        .region_o(top_region), .ovf_o(top_ovf), .los_o(top_los), .dos_o(top_dos));
+        .region_o(top_region), .ovf_o(top_ovf), .los_o(top_los), .dos_o(top_dos),
+        .mag_o(top_mag));
     end else begin : g_pipe
       acore_top #(
 `include "acore_datapath_pass.vh"
@@ -180,7 +184,8 @@ module acore_apb #(
         .reg_rdata_o(top_rdata), .mag_lo_i(rg_mag_lo), .mag_hi_i(rg_mag_hi),
         .in_valid_i(top_in_valid), .in_ready_o(top_in_ready), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i),
         .c4_i(c4_i), .out_valid_o(top_out_valid), .out_ready_i(out_ready_i), .angle_o(top_angle),
-        .region_o(top_region), .ovf_o(top_ovf), .los_o(top_los), .dos_o(top_dos));
+        .region_o(top_region), .ovf_o(top_ovf), .los_o(top_los), .dos_o(top_dos),
+        .mag_o(top_mag));
     end
   endgenerate
 
@@ -197,6 +202,7 @@ module acore_apb #(
   assign ovf_o = top_ovf;
   assign los_o = top_los;
   assign dos_o = top_dos;
+  assign mag_o = top_mag;
   assign out_tag_o = bank & top_out_valid;
 
   // ---- status and interrupt ----

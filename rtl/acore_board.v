@@ -9,7 +9,7 @@
 //                 |        |            +--> TRK_VELOCITY, TRK_POSITION (APB)
 //                 |        +--angle (ANGLEUNC)--+--> acore_spi_as5047 SCLK, CSn, MOSI -> MISO
 //                 |        compensated (ANGLECOM), loss of tracking --+
-//   APB --+--> the board's registers (0x060..0x093, rtl/acore_board_regblock.v): ABZ_N .. IF_CTRL
+//   APB --+--> the board's registers (0x060..0x097, rtl/acore_board_regblock.v): ABZ_N .. MAG_AGC
 //         +--> every other address: the shell
 //
 // THE REGISTERS. The board's registers are generated, with their widths, ranges and reset values,
@@ -40,8 +40,30 @@
 // IF_CTRL, ABZ_N, UVW_PP and ABZ_HYS (rtl/acore_spi_as5047.v has the mapping);
 // DIAAGC.LF = not loss of tracking (the AS5047P's LF: 1 when the angle is valid, its loop
 // settled; here 0 while the observer's error of the last sample exceeds TRK_LOT), MAGL/MAGH/COF =
-// the estimator's los/dos/ovf. The estimator has no magnitude output, so MAG and DIAAGC's AGC
-// read 0.
+// the estimator's los/dos/ovf.
+//
+// MAG AND AGC (the AS5047P's CORDIC magnitude and automatic gain control, what a driver reads to
+// check the magnet's placement). The estimator delivers its CORDIC magnitude m with each angle
+// (rtl/acore_top.v's mag_o: MAG_W = S_W + 2 bits, the corrected vector length times the CORDIC
+// gain 1.6468, 2^S_F per unit of the scaled inputs; below 2^(MAG_W-1) for any input, as the
+// scaled curves saturate at 2^(S_W-1)). The scaler normalises the channels with the calibrated
+// amplitude, so m near its nominal 1.6468 * 2^S_F is a healthy magnet and the field's strength
+// relative to the calibration is m over the nominal.
+//   MAG = m >> (MAG_W - 15): its upper 14 bits below the always-clear top bit (saturated at
+//         0x3FFF should it ever be set). 1 LSB = 2^(MAG_W-15-S_F) / 1.6468 of the scaled vector
+//         length (S_W = 18, S_F = 16: 2^-11 / 1.6468); the nominal reads 1.6468 * 2^(S_F+15-MAG_W)
+//         (3373 at the defaults), half the field half of it.
+//   AGC = 128 + 32 (S_F + 20/32 - lg m), clamped to 0..255, where lg m = e + f/32 is the base-2
+//         logarithm of m by its leading one e and the 5 bits f below it (exact at powers of two,
+//         linear between: at most 0.09 below log2 m, and f is truncated). The datasheet's sense:
+//         the gain an AGC would set, high for a weak field and low for a strong one. 128 at
+//         m = 1.625 * 2^S_F (20/32 is the CORDIC gain's mantissa 0.6468 to five bits: the nominal
+//         field reads 128), 32 codes per factor of two of the field (half the field: +32), 255
+//         for no field (m = 0) or one below about 1/16 of the nominal; 0 would be 16 times above
+//         it, beyond the scaled curves' range (at the defaults AGC stays above 52).
+// Both are taken with each estimator output (MAG with the angle, AGC from it one clock later),
+// read over SPI (MAG, DIAAGC.AGC) and APB (the board's MAG_AGC register); the model is
+// model/ip/stages/interfaces.cpp's as5047::mag_field and as5047::agc_field.
 `resetall
 `default_nettype none
 
@@ -140,6 +162,14 @@ module acore_board #(
       (CYCLES >= acore_track_serial_cycles(ANGLE_W, TRK_FRAC_W, TRK_LEAD_LEAD_W)) ? 1 :
       (TRK_PROD_BITS != 0) ? 2 : 0;
   localparam integer TRK_P_W = ANGLE_W + TRK_FRAC_W;
+  // MAG and AGC (the header): the magnitude's width, the SPI fields' widths and AGC's constants
+  // (the middle code, codes per factor of two, and 20/32 = the CORDIC gain's mantissa 0.6468).
+  localparam integer MAG_W = acore_mag_w(S_W);
+  localparam integer MAG_F_W = MAG_AGC_MAG_W;
+  localparam integer AGC_W = MAG_AGC_AGC_W;
+  localparam integer AGC_MID = 128;
+  localparam integer AGC_OCTAVE = 32;
+  localparam integer AGC_GAIN_F = 20;
 
   acore_check #(.OK(ANGLE_W >= TRK_POSITION_ANGLE_W), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be >= 16 (TRK_POSITION reads its upper 16 bits)"))
@@ -147,6 +177,9 @@ module acore_board #(
   acore_check #(.OK(ANGLE_W + TRK_FRAC_W >= TRK_VELOCITY_VELOCITY_W), .VALUE(ANGLE_W + TRK_FRAC_W),
     .MSG("illegal parameter: ANGLE_W+TRK_FRAC_W must be >= 32 (TRK_VELOCITY reads 32 bits)"))
     ANGLE_W_plus_TRK_FRAC_W_must_be_at_least_32 ();
+  acore_check #(.OK(MAG_W >= MAG_F_W + 1), .VALUE(S_W),
+    .MSG("illegal parameter: S_W must be >= 13 (MAG reads the magnitude's upper 14 bits)"))
+    S_W_must_be_at_least_13 ();
   // The description's ranges are what the interfaces take (acore_abz.v and acore_uvw.v clamp N and
   // the pole pairs to 1 .. 2^(W-1) of their input's width W): a write the board accepts reaches
   // them unchanged.
@@ -170,6 +203,7 @@ module acore_board #(
   // ---- the estimator and its register shell ----
   wire est_valid, est_ovf, est_los, est_dos, est_tag;
   wire [ANGLE_W-1:0] est_angle;
+  wire [MAG_W-1:0] est_mag;
   wire [RG_W-1:0] est_region;
   wire trk_ready;
   acore_apb #(
@@ -181,7 +215,7 @@ module acore_board #(
     .prdata_o(sh_prdata), .pready_o(pready_o), .pslverr_o(sh_pslverr), .irq_o(irq_o),
     .in_valid_i(in_valid_i), .in_ready_o(in_ready_o), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
     .out_valid_o(est_valid), .out_ready_i(trk_ready), .angle_o(est_angle), .region_o(est_region),
-    .ovf_o(est_ovf), .los_o(est_los), .dos_o(est_dos), .out_tag_o(est_tag));
+    .ovf_o(est_ovf), .los_o(est_los), .dos_o(est_dos), .out_tag_o(est_tag), .mag_o(est_mag));
   wire est_take = est_valid & trk_ready;
   assign out_valid_o = est_valid;
   assign angle_o = est_angle;
@@ -204,6 +238,42 @@ module acore_board #(
   // The uncompensated angle last delivered (ANGLEUNC).
   reg [ANGLE_W-1:0] unc_q;
   always @(posedge clk_i) if (est_take) unc_q <= est_angle;
+
+  // ---- MAG and AGC (the header): the magnitude last delivered, its upper bits and its logarithm ----
+  reg [MAG_W-1:0] mag_q;
+  always @(posedge clk_i) begin
+    if (rst_i) mag_q <= {MAG_W{1'b0}};
+    else if (est_take) mag_q <= est_mag;
+  end
+  wire [MAG_F_W-1:0] mag_field =
+      mag_q[MAG_W-1] ? {MAG_F_W{1'b1}} : mag_q[MAG_W-2 -: MAG_F_W];
+  // lg m in 1/32: the leading one's position e (0 for m = 0 too) and the 5 bits below it.
+  localparam integer MAG_E_W = $clog2(MAG_W);
+  reg [MAG_E_W-1:0] mag_e;
+  always @* begin : p_lead
+    integer i;
+    mag_e = {MAG_E_W{1'b0}};
+    for (i = 0; i < MAG_W; i = i + 1) if (mag_q[i]) mag_e = i[MAG_E_W-1:0];
+  end
+  localparam integer MAG_TOP_I = MAG_W - 1;
+  localparam [MAG_E_W-1:0] MAG_TOP = MAG_TOP_I[MAG_E_W-1:0];
+  wire [MAG_W-1:0] mag_norm = mag_q << (MAG_TOP - mag_e);  // leading one at the top
+  wire [4:0] mag_f = mag_norm[MAG_W-2 -: 5];
+  // The leading one itself and the bits below f are not part of lg m (named unused_* for lint).
+  wire unused_mag_norm = ^{mag_norm[MAG_W-1], mag_norm[MAG_W-7:0]};
+  localparam integer AGC_D_W = MAG_E_W + 5 + 3;  // signed, holds AGC_REF - lg m
+  localparam integer AGC_REF = AGC_MID + AGC_OCTAVE * S_F + AGC_GAIN_F;
+  localparam [AGC_D_W-1:0] AGC_REF_W = AGC_REF[AGC_D_W-1:0];
+  wire [AGC_D_W-1:0] agc_d = AGC_REF_W - {3'b000, mag_e, mag_f};
+  reg [AGC_W-1:0] agc_q;
+  always @(posedge clk_i) begin
+    if (rst_i) agc_q <= {AGC_W{1'b1}};
+    else if (agc_d[AGC_D_W-1]) agc_q <= {AGC_W{1'b0}};  // a strong field: 0
+    else if (|agc_d[AGC_D_W-2:AGC_W]) agc_q <= {AGC_W{1'b1}};  // weak or none: 255
+    else agc_q <= agc_d[AGC_W-1:0];
+  end
+  assign rg_mag_agc_mag = mag_field;
+  assign rg_mag_agc_agc = agc_q;
 
   // ---- the tracking observer ----
   wire trk_valid, trk_lot;
@@ -273,7 +343,7 @@ module acore_board #(
   acore_spi_as5047 #(.ANGLE_W(ANGLE_W), .SYNC(2), .SCLK_MIN(4), .N_W(ABZ_N_N_W),
     .PP_W(UVW_PP_POLE_PAIRS_W), .HYS_W(ABZ_HYS_WIDTH_W)) u_spi (
     .clk_i(clk_i), .rst_i(rst_i), .sclk_i(sclk_i), .csn_i(csn_i), .mosi_i(mosi_i), .miso_o(miso_o),
-    .miso_oe_o(miso_oe_o), .angle_unc_i(if_unc), .angle_com_i(if_com), .mag_i(14'd0), .agc_i(8'd0),
+    .miso_oe_o(miso_oe_o), .angle_unc_i(if_unc), .angle_com_i(if_com), .mag_i(mag_field), .agc_i(agc_q),
     .los_i(los_q), .dos_i(dos_q), .ovf_i(ovf_q), .lot_i(lot_q),
     .cfg_zero_i(rg_if_zero_zero), .cfg_dir_i(rg_if_ctrl_dir), .cfg_daec_i(rg_if_ctrl_daec),
     .cfg_n_i(rg_abz_n_n), .cfg_pp_i(rg_uvw_pp_pole_pairs), .cfg_hys_i(rg_abz_hys_width),

@@ -114,7 +114,11 @@ module acore_board_regblock #(
   // IF_CTRL.DAEC: the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
   input  wire if_ctrl_daec_hw_we_i,
   // IF_CTRL.DAEC: the value the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
-  input  wire if_ctrl_daec_hw_d_i
+  input  wire if_ctrl_daec_hw_d_i,
+  // MAG_AGC.MAG: the hardware's value
+  input  wire [13:0] mag_agc_mag_i,
+  // MAG_AGC.AGC: the hardware's value
+  input  wire [7:0] mag_agc_agc_i
 );
 
   // Word indices (byte address / 4), the register sets, field positions.
@@ -131,7 +135,8 @@ module acore_board_regblock #(
   localparam [5:0] R_ABZ_HYS = 6'h22;
   localparam [5:0] R_IF_ZERO = 6'h23;
   localparam [5:0] R_IF_CTRL = 6'h24;
-  localparam [63:0] REGS_RO = 64'h0000000300000000;
+  localparam [5:0] R_MAG_AGC = 6'h25;
+  localparam [63:0] REGS_RO = 64'h0000002300000000;
   localparam [63:0] REGS_WR = 64'h0000001CFF000000;
   localparam integer ABZ_N_N = 0;
   localparam integer ABZ_INDEX_POS = 0;
@@ -148,6 +153,8 @@ module acore_board_regblock #(
   localparam integer IF_ZERO_ZERO = 0;
   localparam integer IF_CTRL_DIR = 0;
   localparam integer IF_CTRL_DAEC = 1;
+  localparam integer MAG_AGC_MAG = 8;
+  localparam integer MAG_AGC_AGC = 0;
   // Reset values of fields whose reset or width is a parameter (the field's low bits).
   localparam [31:0] UVW_OFFSET_OFFSET_RST = 0;
   localparam [31:0] TRK_LOT_THRESHOLD_RST = 4096;
@@ -239,6 +246,10 @@ module acore_board_regblock #(
       R_IF_CTRL: begin
         rd_d[IF_CTRL_DIR] = if_ctrl_dir_q;
         rd_d[IF_CTRL_DAEC] = if_ctrl_daec_q;
+      end
+      R_MAG_AGC: begin
+        rd_d[MAG_AGC_MAG +: 14] = mag_agc_mag_i;
+        rd_d[MAG_AGC_AGC +: 8] = mag_agc_agc_i;
       end
       default: rd_d = 32'd0;
     endcase

@@ -20,10 +20,11 @@ localparam [5:0] R_TRK_POSITION = 6'h21;
 localparam [5:0] R_ABZ_HYS = 6'h22;
 localparam [5:0] R_IF_ZERO = 6'h23;
 localparam [5:0] R_IF_CTRL = 6'h24;
+localparam [5:0] R_MAG_AGC = 6'h25;
 // The registers the block answers, one bit per word index: read only, writable, either.
-localparam [63:0] REGS_RO = 64'h0000000300000000;
+localparam [63:0] REGS_RO = 64'h0000002300000000;
 localparam [63:0] REGS_WR = 64'h0000001CFF000000;
-localparam [63:0] REGS_ALL = 64'h0000001FFF000000;
+localparam [63:0] REGS_ALL = 64'h0000003FFF000000;
 // Fields.
 localparam integer ABZ_N_N = 0, ABZ_N_N_W = 13;
 localparam integer ABZ_INDEX_POS = 0, ABZ_INDEX_POS_W = 14;
@@ -40,6 +41,8 @@ localparam integer ABZ_HYS_WIDTH = 0, ABZ_HYS_WIDTH_W = 8;
 localparam integer IF_ZERO_ZERO = 0, IF_ZERO_ZERO_W = 14;
 localparam integer IF_CTRL_DIR = 0;
 localparam integer IF_CTRL_DAEC = 1;
+localparam integer MAG_AGC_MAG = 8, MAG_AGC_MAG_W = 14;
+localparam integer MAG_AGC_AGC = 0, MAG_AGC_AGC_W = 8;
 // Ranges (a write outside is refused).
 localparam integer ABZ_N_N_MIN = 1, ABZ_N_N_MAX = 4096;
 localparam integer UVW_PP_POLE_PAIRS_MIN = 1, UVW_PP_POLE_PAIRS_MAX = 16;
@@ -102,6 +105,8 @@ wire rg_if_ctrl_daec;  // IF_CTRL.DAEC: the value
 wire rg_if_ctrl_daec_we;  // IF_CTRL.DAEC: written in this clock
 wire rg_if_ctrl_daec_hw_we;  // in: IF_CTRL.DAEC: the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
 wire rg_if_ctrl_daec_hw_d;  // in: IF_CTRL.DAEC: the value the SPI port (AS5047P SETTINGS1.DAECDIS, inverted; rtl/acore_spi_as5047.v) writes
+wire [13:0] rg_mag_agc_mag;  // in: MAG_AGC.MAG: the hardware's value
+wire [7:0] rg_mag_agc_agc;  // in: MAG_AGC.AGC: the hardware's value
 acore_board_regblock #(
   .APB_AW(APB_AW),
   .ANGLE_W(ANGLE_W),
@@ -157,5 +162,7 @@ acore_board_regblock #(
   .if_ctrl_daec_o(rg_if_ctrl_daec),
   .if_ctrl_daec_we_o(rg_if_ctrl_daec_we),
   .if_ctrl_daec_hw_we_i(rg_if_ctrl_daec_hw_we),
-  .if_ctrl_daec_hw_d_i(rg_if_ctrl_daec_hw_d)
+  .if_ctrl_daec_hw_d_i(rg_if_ctrl_daec_hw_d),
+  .mag_agc_mag_i(rg_mag_agc_mag),
+  .mag_agc_agc_i(rg_mag_agc_agc)
 );

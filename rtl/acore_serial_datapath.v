@@ -61,6 +61,8 @@ module acore_serial_datapath #(
   parameter integer PSH_SC = 9,
   parameter integer PSH_H = 16,
   parameter integer PSH_H0 = 12,
+  // CORDIC guard bits (T1 holds X_K with G of them: the magnitude is T1 >>> G).
+  parameter integer G = 3,
   // Derived, do not override.
   parameter integer RG_W = $clog2(REGIONS),
   parameter integer MAG_W = acore_mag_w(S_W)
@@ -121,7 +123,9 @@ module acore_serial_datapath #(
   output wire [RG_W-1:0]    out_region_o,
   output wire               ovf_o,
   output wire               los_o,
-  output wire               dos_o
+  output wire               dos_o,
+  // The magnitude X_K >>> G (the LOS/DOS operand), with the angle.
+  output wire [MAG_W-1:0]   mag_o
 );
 
 `include "acore_derived.vh"
@@ -381,9 +385,13 @@ module acore_serial_datapath #(
   reg [ANGLE_W-1:0] angle_q;
   reg [RG_W-1:0] out_region_q;
   reg out_ovf_q, out_los_q, out_dos_q;
+  // T1 still holds X_K at OUT (only T2 and the flags change after the last CB; the next sample's
+  // move into T1 lands at this same edge). X_K >= 0 has XY_W = MAG_W + G bits: the slice is exact.
+  reg [MAG_W-1:0] mag_q;
   always @(posedge clk_i) begin
     if (en_i && out_we_i) begin
       angle_q      <= res[ANGLE_W-1:0];
+      mag_q        <= t1_q[G +: MAG_W];
       out_region_q <= region_q;
       out_ovf_q    <= ovf_q;
       out_los_q    <= los_q;
@@ -395,6 +403,7 @@ module acore_serial_datapath #(
   assign ovf_o = out_ovf_q;
   assign los_o = out_los_q;
   assign dos_o = out_dos_q;
+  assign mag_o = mag_q;
 
 endmodule
 

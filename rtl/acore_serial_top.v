@@ -91,7 +91,9 @@ module acore_serial_top #(
   output wire [RG_W-1:0]    region_o,
   output wire               ovf_o,
   output wire               los_o,
-  output wire               dos_o
+  output wire               dos_o,
+  // Magnitude with the angle: the CORDIC's X_K >>> CORDIC_G, as acore_top's mag_o.
+  output wire [MAG_W-1:0]   mag_o
 );
 
 `include "acore_derived.vh"
@@ -199,10 +201,12 @@ module acore_serial_top #(
   wire [ANGLE_W-1:0] angle;
   wire [RG_W-1:0] out_region;
   wire ovf, los, dos;
+  wire [MAG_W-1:0] mag;
   acore_serial_datapath #(
     .IN_W(IN_W), .REG_W(REG_W), .MEM_W(MEM_W), .S_W(S_W), .ACC_W(ACC_W), .Z_W(Z_W),
     .ANGLE_W(ANGLE_W), .REGIONS(REGIONS), .W(W), .LS(LS), .SHA_W(SHA_W), .BI_W(BI_W),
-    .MULT(MULT), .MA_W(MA_W), .PSH_SC(RS), .PSH_H(S_F), .PSH_H0(PSH_H0)
+    .MULT(MULT), .MA_W(MA_W), .PSH_SC(RS), .PSH_H(S_F), .PSH_H0(PSH_H0),
+    .G(CORDIC_G)
   ) u_dp (
     .clk_i(clk_i), .en_i(en), .c1_i(c1_i), .c2_i(c2_i), .c3_i(c3_i), .c4_i(c4_i),
     .mag_lo_i(mag_lo_i), .mag_hi_i(mag_hi_i), .q_i(q),
@@ -214,13 +218,15 @@ module acore_serial_top #(
     .ovf_clr_i(ovf_clr), .region_we_i(region_we), .neg_we_i(neg_we),
     .los_we_i(los_we), .dos_we_i(dos_we), .out_we_i(out_we),
     .wdata_o(wdata), .region_o(region),
-    .angle_o(angle), .out_region_o(out_region), .ovf_o(ovf), .los_o(los), .dos_o(dos));
+    .angle_o(angle), .out_region_o(out_region), .ovf_o(ovf), .los_o(los), .dos_o(dos),
+    .mag_o(mag));
 
   assign angle_o  = angle & {ANGLE_W{out_valid_o}};
   assign region_o = out_region & {RG_W{out_valid_o}};
   assign ovf_o    = ovf & out_valid_o;
   assign los_o    = los & out_valid_o;
   assign dos_o    = dos & out_valid_o;
+  assign mag_o    = mag & {MAG_W{out_valid_o}};
 
 endmodule
 

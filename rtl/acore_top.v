@@ -38,7 +38,9 @@
 // output is forced to zero while out_valid_o is low, so no unknown ever leaves the core.
 // Flags: ovf_o = saturation in any stage; los_o = magnitude < mag_lo_i (loss of signal);
 // dos_o = magnitude > mag_hi_i (degradation / saturation of signal). The magnitude is the CORDIC's
-// X_K >>> CORDIC_G, the corrected vector length (1.0 = 2^S_F) times the CORDIC gain (1.6468).
+// X_K >>> CORDIC_G, the corrected vector length (1.0 = 2^S_F) times the CORDIC gain (1.6468), and
+// mag_o delivers it with the angle (same beat; 1 LSB = 2^-S_F / 1.6468 of the corrected, i.e.
+// scaled, vector length: a field at the calibrated amplitude reads about 1.6468 * 2^S_F).
 `resetall
 `default_nettype none
 
@@ -89,7 +91,10 @@ module acore_top #(
   output wire [RG_W-1:0]    region_o,
   output wire               ovf_o,
   output wire               los_o,
-  output wire               dos_o
+  output wire               dos_o,
+  // Magnitude, unsigned, with the angle: the CORDIC's X_K >>> CORDIC_G (header; the LOS/DOS
+  // window compares it), the corrected vector length (1.0 = 2^S_F) times the CORDIC gain.
+  output wire [MAG_W-1:0]   mag_o
 );
 
 `include "acore_derived.vh"
@@ -142,8 +147,8 @@ module acore_top #(
   wire [MAG_W-1:0]   mag_c;
   wire               sc_ovf_d, pc_ovf_d;
   wire [RG_W-1:0]    region_d;
-  // The output register's word and the word on the output pins: {dos, los, ovf, region, angle}.
-  localparam integer OUT_W = ANGLE_W + RG_W + 3;
+  // The output register's word and the word on the output pins: {mag, dos, los, ovf, region, angle}.
+  localparam integer OUT_W = ANGLE_W + RG_W + 3 + MAG_W;
   wire [OUT_W-1:0]   out_word_q, out_word;
   // The ZERO word (ZERO = 1; else zero), from either datapath's register file.
   wire [REG_W-1:0]   zero_word;
@@ -352,9 +357,11 @@ module acore_top #(
   reg [ANGLE_W-1:0] angle_q;
   reg [RG_W-1:0] region_q;
   reg ovf_q, los_q, dos_q;
+  reg [MAG_W-1:0] mag_q;
   always @(posedge clk_i) begin
     if (out_en) begin
       angle_q  <= angle_c - zero_pos;
+      mag_q    <= mag_c;
       region_q <= region_d;
       ovf_q    <= sc_ovf_d | pc_ovf_d;
       los_q    <= mag_c < mag_lo_i;
@@ -362,12 +369,13 @@ module acore_top #(
     end
   end
 
-  assign out_word_q = {dos_q, los_q, ovf_q, region_q, angle_q};
+  assign out_word_q = {mag_q, dos_q, los_q, ovf_q, region_q, angle_q};
   assign angle_o  = out_word[ANGLE_W-1:0] & {ANGLE_W{out_valid_o}};
   assign region_o = out_word[ANGLE_W +: RG_W] & {RG_W{out_valid_o}};
   assign ovf_o    = out_word[ANGLE_W + RG_W] & out_valid_o;
   assign los_o    = out_word[ANGLE_W + RG_W + 1] & out_valid_o;
   assign dos_o    = out_word[ANGLE_W + RG_W + 2] & out_valid_o;
+  assign mag_o    = out_word[ANGLE_W + RG_W + 3 +: MAG_W] & {MAG_W{out_valid_o}};
 
 endmodule
 

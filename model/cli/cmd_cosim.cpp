@@ -29,7 +29,8 @@ struct CosimArgs {
 nlohmann::json sample_json(const FixedSample& s) {
   return {{"angle", s.angle},
           {"region", s.region},
-          {"flags", {{"ovf", s.ovf}, {"los", s.los}, {"dos", s.dos}}}};
+          {"flags", {{"ovf", s.ovf}, {"los", s.los}, {"dos", s.dos}}},
+          {"magnitude", s.magnitude}};
 }
 
 void run_cosim(const CosimArgs& a) {

@@ -110,7 +110,7 @@ FixedSample RtlHarness::output() const { return impl_->top->output(); }
 
 bool RtlHarness::outputs_zero() const {
   const FixedSample s = impl_->top->output();
-  return s.angle == 0 && s.region == 0 && !s.ovf && !s.los && !s.dos;
+  return s.angle == 0 && s.region == 0 && !s.ovf && !s.los && !s.dos && s.magnitude == 0;
 }
 
 std::vector<FixedSample> RtlHarness::stream(const std::vector<ChannelCodes>& in, double gaps,

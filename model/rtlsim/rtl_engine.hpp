@@ -3,7 +3,7 @@
 // run_rtl() picks the build of the register image's configuration (rtl_builds.hpp: the pipelined
 // top acore_top at any FOLD, or the serial core acore_serial_top), loads the image through the
 // register write port, streams the samples with optional random input gaps and output
-// backpressure, and returns one FixedSample per input (angle, region, ovf, los, dos; the
+// backpressure, and returns one FixedSample per input (angle, region, ovf, los, dos, magnitude; the
 // model-only fields stay zero).
 // RtlHarness is the pin-level driver underneath, one for both tops (they share their port list and
 // host-port timing), for testbenches: reset mid-stream, reprogramming, host port while computing.
@@ -73,7 +73,7 @@ class RtlHarness {
   void set_reset(bool rst);
   bool in_ready() const;
   bool out_valid() const;
-  FixedSample output() const;  // angle, region, ovf, los, dos of the current output pins
+  FixedSample output() const;  // angle, region, ovf, los, dos, magnitude of the current output pins
   // True when every data output is zero (they are forced to zero while out_valid is low).
   bool outputs_zero() const;
   uint64_t cycles() const;

@@ -43,7 +43,8 @@ class Model {
   virtual void set_out_ready(bool v) = 0;
   virtual bool in_ready() const = 0;
   virtual bool out_valid() const = 0;
-  virtual FixedSample output() const = 0;  // angle, region, ovf, los, dos of the output pins
+  // angle, region, ovf, los, dos, magnitude of the output pins
+  virtual FixedSample output() const = 0;
   // The data of a Verilator-public variable (scope as "acore_apb.g_serial.u_top", name "mem_q"),
   // or nullptr when the build has no such public variable.
   virtual void* public_var(const char* scope, const char* name) = 0;

@@ -70,6 +70,7 @@ class Verilated : public Base {
     s.ovf = top_->ovf_o;
     s.los = top_->los_o;
     s.dos = top_->dos_o;
+    s.magnitude = static_cast<int64_t>(top_->mag_o);
     return s;
   }
   void* public_var(const char* scope, const char* name) override {

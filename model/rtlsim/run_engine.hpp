@@ -37,8 +37,8 @@ struct EngineRun {
   // Angles in the reference frame; for the RTL engines the uncorrected angle is the bit-accurate
   // model's (the RTL has no such output; the front end is the same).
   AngleSeries series;
-  // fixed, rtl, rtl-serial: one row per sample (angle, region, ovf, los, dos; the model's
-  // intermediate fields too for fixed); empty for float.
+  // fixed, rtl, rtl-serial: one row per sample (angle, region, ovf, los, dos, magnitude; the
+  // model's intermediate fields too for fixed); empty for float.
   std::vector<FixedSample> rows;
 };
 

@@ -31,6 +31,7 @@ __all__ = [
     "Recording",
     "RegisterImage",
     "RtlNotBuilt",
+    "board_mag_agc",
     "calibrate",
     "diagnose",
     "estimate",
@@ -297,6 +298,10 @@ class Estimate:
     turns: Optional[np.ndarray] = None  # int64: signed electrical turns, 0 at the first sample
     angle_comp: Optional[np.ndarray] = None  # rad, [0, 2 pi): angle looked ahead by track_lead
     lot: Optional[np.ndarray] = None  # uint8: 1 where the observer lost tracking
+    # int64: the CORDIC magnitude of each sample (the RTL's mag_o: the corrected vector length
+    # times the CORDIC gain, 2^S_F a unit); None for the float engine and the fixed fast path
+    # (uncorrected=False): ask with uncorrected=True.
+    magnitude: Optional[np.ndarray] = None
 
     @property
     def error_deg(self) -> Optional[dict]:
@@ -368,14 +373,14 @@ def estimate(
     _check_recording(recording)
     p = int(periodicity) if periodicity else recording.periodicity
     theta = recording.columns.get("theta_ref")
-    unc = unc_err = err = None
+    unc = unc_err = err = magnitude = None
     if engine == "fixed" and not uncorrected and fold == 1 and trace is None:
         arrays = [recording.columns[n] for n in recording.channel_names]
         angle, flags, region, err = _core.estimate_fixed_batch(
             image._img, recording.channels, arrays, theta, p
         )
     else:
-        angle, unc, region, flags = _core.estimate_series(
+        angle, unc, region, flags, magnitude = _core.estimate_series(
             image._img,
             recording._core(),
             engine,
@@ -409,7 +414,18 @@ def estimate(
         )
         report.update(extra)
         drive = {"velocity": velocity, "turns": turns, "angle_comp": comp, "lot": lot}
-    return Estimate(angle, region, flags, err, unc, unc_err, report, **drive)
+    return Estimate(angle, region, flags, err, unc, unc_err, report, magnitude=magnitude, **drive)
+
+
+def board_mag_agc(image: RegisterImage, magnitude: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The board's AS5047P MAG and DIAAGC.AGC (rtl/acore_board.v) of CORDIC magnitudes
+    (Estimate.magnitude) at the image's widths: (mag uint16, agc uint8). MAG = the magnitude's upper
+    14 bits (m >> (S_W - 13)); AGC = 128 + 32 (S_F + 20/32 - lg m) clamped to 0..255 (lg: the
+    piecewise-linear base-2 logarithm), high for a weak field, low for a strong one."""
+    if not isinstance(image, RegisterImage):
+        raise TypeError(f"expected an anglecore.RegisterImage, got {type(image).__name__}")
+    m = np.ascontiguousarray(np.asarray(magnitude, dtype=np.int64).reshape(-1))
+    return _core.board_mag_agc(image._img, m)
 
 
 def harmonics(spec: Any, grid: int = 0, attribute: bool = False) -> dict:

@@ -31,6 +31,7 @@
 #include "regmap/regimage.hpp"
 #include "rtlsim/run_engine.hpp"
 #include "sim/simulator.hpp"
+#include "stages/interfaces.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -188,8 +189,9 @@ nb::tuple estimate_fixed_batch(const RegImage& img, int channels, const std::vec
                         to_numpy(std::move(region)), theta ? to_numpy(std::move(err)) : nb::none());
 }
 
-// Any engine through run_engine (the command's dispatch): (angle, uncorrected, region, flags) as
-// the command computes them. fold, trace and rtl_dir are the RTL's (EngineOptions).
+// Any engine through run_engine (the command's dispatch): (angle, uncorrected, region, flags,
+// magnitude) as the command computes them; magnitude (the CORDIC's, the RTL's mag_o) is None for
+// the float engine, which has no rows. fold, trace and rtl_dir are the RTL's (EngineOptions).
 nb::tuple estimate_series(const RegImage& img, const nb::dict& rec_py, const std::string& engine,
                           int fold, const std::string& trace, const std::string& rtl_dir) {
   const Engine e = parse_engine(engine);
@@ -199,15 +201,34 @@ nb::tuple estimate_series(const RegImage& img, const nb::dict& rec_py, const std
   opt.module_dir = rtl_dir;
   check_engine_options(e, opt);
   const Recording rec = recording_from_python(rec_py);
-  AngleSeries s;
+  EngineRun run;
   {
     nb::gil_scoped_release release;
-    s = run_engine(e, rec, img, opt).series;
+    run = run_engine(e, rec, img, opt);
   }
+  AngleSeries& s = run.series;
   std::vector<uint8_t> region(s.region.begin(), s.region.end()),
       flags(s.flags.begin(), s.flags.end());
+  std::vector<int64_t> magnitude;
+  magnitude.reserve(run.rows.size());
+  for (const FixedSample& r : run.rows) magnitude.push_back(r.magnitude);
   return nb::make_tuple(to_numpy(std::move(s.angle)), to_numpy(std::move(s.uncorrected)),
-                        to_numpy(std::move(region)), to_numpy(std::move(flags)));
+                        to_numpy(std::move(region)), to_numpy(std::move(flags)),
+                        run.rows.empty() ? nb::none() : to_numpy(std::move(magnitude)));
+}
+
+// The board's MAG and DIAAGC.AGC (as5047::mag_field, as5047::agc_field) of magnitudes at the
+// image's widths: (mag uint16, agc uint8).
+nb::tuple board_mag_agc(const RegImage& img,
+                        nb::ndarray<const int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu> m) {
+  const int mag_w = img.cfg.s_w + 2, s_f = img.cfg.s_f;
+  std::vector<uint16_t> mag(m.shape(0));
+  std::vector<uint8_t> agc(m.shape(0));
+  for (size_t i = 0; i < m.shape(0); ++i) {
+    mag[i] = as5047::mag_field(m(i), mag_w);
+    agc[i] = as5047::agc_field(m(i), s_f);
+  }
+  return nb::make_tuple(to_numpy(std::move(mag)), to_numpy(std::move(agc)));
 }
 
 // The error an image is judged by (judged_error_deg: about the mean when its zero is unknown).
@@ -493,6 +514,7 @@ NB_MODULE(_core, m) {
   m.def("calibrate", &calibrate_py, "recording"_a, "options"_a, "what"_a, "command"_a);
   m.def("estimate_fixed_batch", &estimate_fixed_batch, "image"_a, "channels"_a,
         "arrays"_a.noconvert(), "theta_ref"_a.noconvert().none(), "periodicity"_a);
+  m.def("board_mag_agc", &board_mag_agc, "image"_a, "magnitude"_a.noconvert());
   m.def("estimate_series", &estimate_series, "image"_a, "recording"_a, "engine"_a, "fold"_a = 1,
         "trace"_a = "", "rtl_dir"_a = "");
   m.def("judged_error_deg", &judged_error_py, "image"_a, "angle"_a.noconvert(),

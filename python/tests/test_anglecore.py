@@ -4,6 +4,7 @@ bit-accurate angles and statistics identical; input errors as ValueError/TypeErr
 
 import csv
 import json
+import math
 import subprocess
 import sys
 
@@ -246,7 +247,46 @@ def test_fixed_batch_equals_per_sample_model(paper):
     np.testing.assert_array_equal(fast.angle, slow[0])
     np.testing.assert_array_equal(fast.region, slow[2])
     np.testing.assert_array_equal(fast.flags, slow[3])
+    np.testing.assert_array_equal(ac.estimate(img, val, engine="fixed").magnitude, slow[4])
     assert fast.uncorrected is None and "uncorrected_error_deg" not in fast.report
+
+
+def test_magnitude_and_board_mag_agc(paper):
+    """Estimate.magnitude (the CORDIC's, the RTL's mag_o) on the calibrated recording is near its
+    nominal, the CORDIC gain times 2^S_F; board_mag_agc is the shift and 128 + 32 (S_F + 0.625 -
+    log2 m) within the piecewise-linear logarithm's bound; the recording at half amplitude about
+    the calibrated offsets halves MAG and adds 32 to AGC (the AS5047P's sense)."""
+    img = ac.calibrate(ac.read_recording(paper / "cal.csv"))
+    val = ac.read_recording(paper / "val.csv")
+    res = ac.estimate(img, val, engine="fixed")
+    assert ac.estimate(img, val, engine="fixed", uncorrected=False).magnitude is None
+    m = res.magnitude
+    assert m.dtype == np.int64 and len(m) == len(val)
+    s_w, s_f, k = (int(img.header[f]) for f in ("s_w", "s_f", "iterations"))
+    gain = math.prod(math.sqrt(1.0 + 2.0 ** (-2 * i)) for i in range(k))
+    nominal = gain * 2.0**s_f
+    assert abs(np.median(m) / nominal - 1) < 0.05
+    mag, agc = ac.board_mag_agc(img, m)
+    np.testing.assert_array_equal(mag, m >> (s_w - 13))
+    exact = 128 + 32 * (s_f + 0.625 - np.log2(m))
+    assert np.all(agc >= np.floor(exact)) and np.all(agc <= exact + 32 * 0.0861 + 1)
+    assert abs(int(np.median(agc)) - 128) <= 2
+    # Half the field: the channels halved (the paper scenario's offsets are zero, as calibrated),
+    # on an image without correction (its polynomial adds the same terms at any amplitude, so the
+    # corrected length would not halve exactly).
+    assert max(abs(o) for o in img.report["offset"]) < 1e-6
+    lin = ac.calibrate(ac.read_recording(paper / "cal.csv"), correction="none")
+    full = ac.estimate(lin, val, engine="fixed", track=False)
+    cols = {n: val.columns[n] / 2 for n in val.channel_names}
+    half = ac.estimate(lin, ac.Recording(**cols), engine="fixed", track=False)
+    fmag, fagc = ac.board_mag_agc(lin, full.magnitude)
+    hmag, hagc = ac.board_mag_agc(lin, half.magnitude)
+    assert np.all(np.abs(half.magnitude - full.magnitude / 2) <= 0.002 * full.magnitude)
+    assert np.all(np.abs(hmag.astype(int) - fmag / 2) <= 0.002 * fmag + 1)
+    assert np.median(hagc.astype(int) - fagc) == 32 and np.all(
+        np.abs(hagc.astype(int) - fagc - 32) <= 1
+    )
+    assert ac.board_mag_agc(img, [0])[1][0] == 255
 
 
 def test_harmonics_equals_cli(cli, tmp_path):

@@ -11,7 +11,10 @@
 //     and COMP_LATENCY = the estimator's LATENCY over its CYCLES (read from CONFIG2), bit for bit;
 //   - the ABZ decoder's count equals the model's target of the compensated angle before every
 //     sample, UVW follows the compensated angle, and the SPI port's ANGLECOM, ANGLEUNC and
-//     DIAAGC.LF, and the APB's TRK_VELOCITY and TRK_POSITION, read the model's values.
+//     DIAAGC.LF, and the APB's TRK_VELOCITY and TRK_POSITION, read the model's values;
+//   - MAG and DIAAGC.AGC over SPI and MAG_AGC over APB read the model's (as5047::mag_field,
+//     as5047::agc_field of the last sample's magnitude), and at the full, half and quarter field
+//     they follow the closed form of the field's length: MAG halves, AGC rises by 32.
 #include <gtest/gtest.h>
 #include <verilated.h>
 
@@ -249,7 +252,7 @@ TEST(Board, EveryAddressIsAnsweredByOneMap) {
   const std::vector<uint32_t> board = {
       bd::kAbzN,   bd::kAbzIndex, bd::kAbzSpacing, bd::kUvwPp,       bd::kUvwOffset,
       bd::kTrkBw,  bd::kTrkLead,  bd::kTrkLot,     bd::kTrkVelocity, bd::kTrkPosition,
-      bd::kAbzHys, bd::kIfZero,   bd::kIfCtrl};
+      bd::kAbzHys, bd::kIfZero,   bd::kIfCtrl,     bd::kMagAgc};
   uint32_t cfg1 = 0;
   ASSERT_FALSE(b.apb(false, sh::kConfig1, 0, &cfg1));
   const uint32_t words = (cfg1 & sh::kConfig1WordsMask) >> sh::kConfig1WordsShift;
@@ -281,6 +284,74 @@ TEST(Board, EveryAddressIsAnsweredByOneMap) {
   EXPECT_EQ(v, 0x12345678u);
   EXPECT_FALSE(b.apb(false, bd::kAbzSpacing, 0, &v));
   EXPECT_EQ(v, 0x4321u);
+}
+
+// MAG and AGC after streams of a rotating vector at the full, half and quarter field (2 x 8000,
+// 8000, 4000 codes of differential amplitude: 1.95, 0.98, 0.49 of the identity image's calibrated
+// unit): over SPI (MAG, DIAAGC.AGC) and APB (MAG_AGC) the model's values of the last sample, and
+// against the closed form of the vector length L (scaled units) times the CORDIC gain g:
+// m = L g 2^S_F, MAG = m / 2^(S_W-13) within 1 %, AGC = 128 + 32 (S_F + 0.625 - log2 m) within
+// its 4-code bound; each halving halves MAG and adds 32 to AGC (the AS5047P's sense).
+TEST(Board, MagAndAgcFollowTheField) {
+  Board b;
+  uint32_t v = 0;
+  EXPECT_FALSE(b.apb(false, bd::kMagAgc, 0, &v));
+  EXPECT_EQ(v, 0xFFu) << "before any sample: MAG 0, AGC 255 (no field)";
+  EXPECT_TRUE(b.apb(true, bd::kMagAgc, 1, nullptr)) << "read only";
+  load_identity(b);
+  if (::testing::Test::HasFatalFailure()) return;
+  const DatapathConfig cfg = board_datapath();
+  const int mag_w = cfg.s_w + 2;  // rtl/acore_derived.vh's acore_mag_w
+  const FixedModel model(cosim::identity_image(cfg), StatusWindow{0, INT64_MAX});
+  double gain = 1.0;
+  for (int i = 0; i < cfg.iterations; ++i) gain *= std::sqrt(1.0 + std::ldexp(1.0, -2 * i));
+  int prev_mag = -1, prev_agc = -1;
+  double th = 0.3;
+  for (double amp : {1.0, 0.5, 0.25}) {
+    int64_t m = 0;
+    for (int i = 0; i < 40; ++i) {
+      th += 0.013;
+      const ChannelCodes c{unit_code(amp * std::cos(th)), unit_code(amp * std::sin(th)),
+                           unit_code(-amp * std::cos(th)), unit_code(-amp * std::sin(th))};
+      m = model.step(c).magnitude;
+      const auto word = [](int32_t x) { return static_cast<uint32_t>(x) & 0xFFFF; };
+      b.top->c1_i = word(c[0]);
+      b.top->c2_i = word(c[1]);
+      b.top->c3_i = word(c[2]);
+      b.top->c4_i = word(c[3]);
+      b.top->in_valid_i = 1;
+      b.top->eval();
+      while (!b.top->in_ready_o) b.tick();
+      b.tick();
+      b.top->in_valid_i = 0;
+    }
+    for (int i = 0; i < 600; ++i) b.tick();
+    b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kMag));
+    const uint16_t mag = b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kDiaagc)) & 0x3FFF;
+    const uint16_t dia = b.spi_frame(as5047::kNop);
+    const int agc = dia & as5047::kDiaagcAgcMask;
+    EXPECT_TRUE(as5047::parity_even(dia));
+    EXPECT_EQ(mag, as5047::mag_field(m, mag_w)) << "MAG at amplitude " << amp;
+    EXPECT_EQ(agc, as5047::agc_field(m, cfg.s_f)) << "AGC at amplitude " << amp;
+    EXPECT_FALSE(b.apb(false, bd::kMagAgc, 0, &v));
+    EXPECT_EQ((v & bd::kMagAgcMagMask) >> bd::kMagAgcMagShift, mag);
+    EXPECT_EQ((v & bd::kMagAgcAgcMask) >> bd::kMagAgcAgcShift, static_cast<uint32_t>(agc));
+    // The closed form: L = 2 amp 8000 / 8192 scaled units.
+    const double m_exact = 2 * amp * 8000 / 8192 * gain * std::ldexp(1.0, cfg.s_f);
+    const double mag_exact = m_exact / std::ldexp(1.0, mag_w - 15);
+    EXPECT_NEAR(mag, mag_exact, 0.01 * mag_exact) << amp;
+    const double agc_exact = 128 + 32 * (cfg.s_f + 0.625 - std::log2(m_exact));
+    EXPECT_GE(agc, agc_exact - 1) << amp;
+    EXPECT_LE(agc, agc_exact + 32 * 0.0861 + 2) << amp;
+    if (prev_mag >= 0) {
+      EXPECT_NEAR(mag, prev_mag / 2.0, 2.0) << "half the field: half MAG";
+      EXPECT_NEAR(agc - prev_agc, 32, 2) << "half the field: AGC + 32";
+    }
+    std::printf("board_serial MAG/AGC at %.2f of the stream's field: m %lld, MAG %u, AGC %d\n", amp,
+                static_cast<long long>(m), mag, agc);
+    prev_mag = mag;
+    prev_agc = agc;
+  }
 }
 
 // One co-sim run: the registers written, `n` samples of a rotating vector streamed at full rate
@@ -334,8 +405,11 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
   const FixedModel model(cosim::identity_image(board_datapath()), StatusWindow{0, INT64_MAX});
   std::vector<FixedOutput> est_model;
   std::vector<uint32_t> angles;
+  std::vector<int64_t> mags;
   for (const auto& c : in) {
-    FixedOutput o = to_output(model.step(c));
+    const FixedSample fs = model.step(c);
+    mags.push_back(fs.magnitude);
+    FixedOutput o = to_output(fs);
     o.region = 0;  // the board shows the angle, los and dos (not the region, nor ovf)
     o.flags &= 6;
     est_model.push_back(o);
@@ -365,6 +439,12 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     EXPECT_EQ(com & 0x3FFFu, m.angle_comp >> 2) << "ANGLECOM after " << k;
     EXPECT_EQ(unc & 0x3FFFu, est_model[k - 1].angle >> 2) << "ANGLEUNC after " << k;
     EXPECT_EQ((dia >> 8) & 1, m.lot ? 0 : 1) << "DIAAGC.LF after " << k;
+    EXPECT_EQ(dia & as5047::kDiaagcAgcMask, as5047::agc_field(mags[k - 1], board_datapath().s_f))
+        << "DIAAGC.AGC after " << k;
+    b.spi_frame(as5047::with_even_parity(0x4000 | as5047::kMag));
+    EXPECT_EQ(b.spi_frame(as5047::kNop) & 0x3FFF,
+              as5047::mag_field(mags[k - 1], board_datapath().s_w + 2))
+        << "MAG after " << k;
     uint32_t vel = 0, posn = 0;
     EXPECT_FALSE(b.apb(false, bd::kTrkVelocity, 0, &vel));
     EXPECT_FALSE(b.apb(false, bd::kTrkPosition, 0, &posn));

@@ -163,6 +163,19 @@ def reference(img, codes: np.ndarray, s: Settings) -> Expected:
     return Expected(angle, res.region.astype(np.int64), res.flags.astype(np.int64))
 
 
+def board_mag_agc(img, codes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The board's SPI MAG and DIAAGC.AGC after each of these codes, from the package: the
+    bit-accurate model's CORDIC magnitude (Estimate.magnitude, the per-sample path) through
+    anglecore.board_mag_agc."""
+    import anglecore as ac
+
+    channels = 4 if codes[:, 2:].any() else 2
+    names = ("c1", "c2", "c3", "c4") if channels == 4 else ("sin", "cos")
+    cols = {n: codes[:, i] / img.in_scale for i, n in enumerate(names)}
+    res = ac.estimate(img, ac.Recording(**cols), engine="fixed", track=False)
+    return ac.board_mag_agc(img, res.magnitude)
+
+
 def status_window(img) -> tuple[int, int]:
     """mag_lo, mag_hi as the model flags them (its default window: 0.5 and 1.5 times the nominal
     corrected vector length 2^S_F times the CORDIC gain of K iterations)."""

@@ -9,14 +9,17 @@ board's estimator output is never held: the tracking observer takes every sample
   read as ODrive's driver does (the read command every frame, each answer the previous frame's)
   the observer's compensated angle on its pins, TRK_POSITION its tracked angle;
 - a quadrature decoder on A/B from reset: no step changing A and B together, Z only at the index
-  count, and caught up at the count of the compensated angle."""
+  count, and caught up at the count of the compensated angle;
+- MAG and DIAAGC.AGC over SPI the package's (anglecore.board_mag_agc of the model's magnitude)
+  after the stream, then after a few of the scenario's codes at full and at half amplitude: the
+  weaker field reads a lower MAG and a higher AGC, as the AS5047P's."""
 
 import acore_cocotb as acb
 import cocotb
 from cocotb.clock import Clock
 from cocotb.triggers import ClockCycles
 
-ANGLEUNC, ANGLECOM, DIAAGC = 0x3FFE, 0x3FFF, 0x3FFC
+ANGLEUNC, ANGLECOM, DIAAGC, MAG = 0x3FFE, 0x3FFF, 0x3FFC, 0x3FFD
 ABZ_INDEX = 1234  # Z at this count
 
 
@@ -96,6 +99,11 @@ async def board_against_model(dut):
         "LF": 1 - int(dut.trk_lot_o.value),
     }
     assert got == want, f"SPI DIAAGC {diag:#06x}: {got}, expected {want}"
+    want_mag, want_agc = acb.board_mag_agc(img, codes)
+    got_mag = await spi.read(MAG)
+    assert (got_mag, diag & 0xFF) == (int(want_mag[-1]), int(want_agc[-1])), (
+        f"SPI MAG {got_mag}, AGC {diag & 0xFF}; the model's {want_mag[-1]}, {want_agc[-1]}"
+    )
     # ODrive's habit: the read command every frame; each answer is the previous frame's.
     comp = int(dut.trk_angle_comp_o.value)
     answers = [await spi.frame(acb.as5047_command(ANGLECOM)) for _ in range(3)]
@@ -115,6 +123,26 @@ async def board_against_model(dut):
     assert count in allowed, f"ABZ count {count}, the compensated angle {comp} gives {allowed}"
     zs = {z % (4 * abz_n) for z in dec.z_counts}
     assert zs <= {ABZ_INDEX}, f"ABZ: Z high at counts {sorted(zs)}, the index is {ABZ_INDEX}"
+
+    # A weaker field: a few of the scenario's codes (its calibrated amplitude), then the same at
+    # half amplitude; MAG and AGC after each are the package's, MAG falls and AGC rises.
+    field = []
+    for scale in (1, 2):
+        few = codes[:8] // scale
+        await acb.stream(dut, dut.clk_i, few, s, per * len(few), drain)
+        await ClockCycles(dut.clk_i, 64)
+        m_want, a_want = acb.board_mag_agc(img, few)
+        got_mag = await spi.read(MAG)
+        got_agc = await spi.read(DIAAGC) & 0xFF
+        assert (got_mag, got_agc) == (int(m_want[-1]), int(a_want[-1])), (
+            f"amplitude 1/{scale}: SPI MAG {got_mag}, AGC {got_agc}; the model's "
+            f"{m_want[-1]}, {a_want[-1]}"
+        )
+        field.append((got_mag, got_agc))
+    (mag_full, agc_full), (mag_half, agc_half) = field
+    assert mag_half < mag_full and agc_half > agc_full, f"MAG, AGC at full and half field: {field}"
+    dut._log.info("MAG/AGC: full field %d/%d, half field %d/%d", *field[0], *field[1])
+
     dut._log.info(
         "%d samples bit-exact to anglecore (fixed) on the board: %d idle input clocks; ABZ %d "
         "edges, count %d, Z seen %d clocks; SPI reads matched",

@@ -22,9 +22,9 @@
 namespace acore::cosim {
 
 inline std::string show(const FixedSample& s) {
-  char b[96];
-  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d", s.angle, s.region, s.ovf,
-                s.los, s.dos);
+  char b[128];
+  std::snprintf(b, sizeof b, "angle=%u region=%d ovf=%d los=%d dos=%d magnitude=%lld", s.angle,
+                s.region, s.ovf, s.los, s.dos, static_cast<long long>(s.magnitude));
   return b;
 }
 

@@ -59,7 +59,7 @@ SC_MODULE(Bench) {
   sc_out<bool> rst, reg_we, in_valid, out_ready;
   sc_out<uint32_t> reg_addr, reg_wdata, mag_lo, mag_hi, c1, c2, c3, c4;
   sc_in<bool> in_ready, out_valid, ovf, los, dos;
-  sc_in<uint32_t> angle, region;
+  sc_in<uint32_t> angle, region, mag;
   RefModel* ref = nullptr;
   std::vector<Frame> frames;
   size_t compared = 0, mismatches = 0, invalid_nonzero = 0;
@@ -69,7 +69,7 @@ SC_MODULE(Bench) {
   void check() {
     if (rst.read()) return;
     if (!out_valid.read()) {
-      if (angle.read() || region.read() || ovf.read() || los.read() || dos.read())
+      if (angle.read() || region.read() || ovf.read() || los.read() || dos.read() || mag.read())
         ++invalid_nonzero;
       return;
     }
@@ -86,14 +86,14 @@ SC_MODULE(Bench) {
     r.ovf = ovf.read();
     r.los = los.read();
     r.dos = dos.read();
+    r.magnitude = mag.read();
     if (!(r == m)) {
       if (mismatches == 0)
         std::printf(
-            "first mismatch at output %zu: rtl angle=%u region=%d flags=%d%d%d, model angle=%u "
-            "region=%d "
-            "flags=%d%d%d\n",
-            compared, r.angle, r.region, r.ovf, r.los, r.dos, m.angle, m.region, m.ovf, m.los,
-            m.dos);
+            "first mismatch at output %zu: rtl angle=%u region=%d flags=%d%d%d magnitude=%lld, "
+            "model angle=%u region=%d flags=%d%d%d magnitude=%lld\n",
+            compared, r.angle, r.region, r.ovf, r.los, r.dos, static_cast<long long>(r.magnitude),
+            m.angle, m.region, m.ovf, m.los, m.dos, static_cast<long long>(m.magnitude));
       ++mismatches;
     }
     ++compared;
@@ -195,7 +195,8 @@ int sc_main(int argc, char** argv) {
 
   sc_clock clk("clk", 10, SC_NS);
   sc_signal<bool> rst, reg_we, in_valid, in_ready, out_valid, out_ready, ovf, los, dos;
-  sc_signal<uint32_t> reg_addr, reg_wdata, reg_rdata, mag_lo, mag_hi, c1, c2, c3, c4, angle, region;
+  sc_signal<uint32_t> reg_addr, reg_wdata, reg_rdata, mag_lo, mag_hi, c1, c2, c3, c4, angle, region,
+      mag;
 
   Vacore_top_sc dut("dut");
   dut.clk_i(clk);
@@ -219,6 +220,7 @@ int sc_main(int argc, char** argv) {
   dut.ovf_o(ovf);
   dut.los_o(los);
   dut.dos_o(dos);
+  dut.mag_o(mag);
 
   RefModel ref("ref");
   ref.clk(clk);
@@ -253,6 +255,7 @@ int sc_main(int argc, char** argv) {
   bench.dos(dos);
   bench.angle(angle);
   bench.region(region);
+  bench.mag(mag);
 
   sc_trace_file* tf = nullptr;
   if (trace) {

@@ -32,7 +32,8 @@ StatusWindow StatusWindow::defaults(const DatapathConfig& cfg) {
 }
 
 bool FixedSample::operator==(const FixedSample& o) const {
-  return angle == o.angle && region == o.region && ovf == o.ovf && los == o.los && dos == o.dos;
+  return angle == o.angle && region == o.region && ovf == o.ovf && los == o.los && dos == o.dos &&
+         magnitude == o.magnitude;
 }
 
 FixedOutput to_output(const FixedSample& s) {

@@ -30,10 +30,11 @@ struct FixedSample {
   bool dos = false;                // magnitude > mag_hi
   int64_t s13 = 0, s24 = 0;        // scaled curves (Q2.16)
   int64_t y13 = 0, y24 = 0;        // corrected curves (Q2.16)
-  int64_t magnitude = 0;           // CORDIC X_K >>> G
+  int64_t magnitude = 0;           // CORDIC X_K >>> G (the RTL's mag_o, delivered with the angle)
   uint32_t uncorrected_angle = 0;  // CORDIC of (s24, s13) (- zero): the chain without correction
   uint32_t cordic_angle = 0;       // CORDIC of (y24, y13): the angle before the Fourier correction
-  bool operator==(const FixedSample& o) const;  // the RTL-visible fields: angle, region, flags
+  // The RTL-visible fields: angle, region, flags, magnitude.
+  bool operator==(const FixedSample& o) const;
 };
 
 // The RTL-visible outputs only, compact: what the batch path and the co-sim compare.

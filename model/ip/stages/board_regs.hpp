@@ -155,4 +155,19 @@ constexpr uint32_t kIfCtrlReset = 0x2u;
 // The bits that read back.
 constexpr uint32_t kIfCtrlReadMask = 0x3u;
 
+// MAG_AGC (RO): Drive interfaces: the field's strength (the SPI port's MAG and DIAAGC.AGC).
+constexpr uint32_t kMagAgc = 0x094;
+// MAG [21:8] (RO): The estimator's CORDIC magnitude m of the last sample, its upper 14 bits (m >>
+// (S_W - 13); the AS5047P's MAG): the scaled vector length times the CORDIC gain 1.6468 in units
+// of 2^(S_W-13-S_F), 3373 at the calibrated amplitude with the defaults (rtl/acore_board.v's
+// header).
+constexpr int kMagAgcMagShift = 8;
+constexpr uint32_t kMagAgcMagMask = 0x3FFF00u;
+constexpr int kMagAgcMagBits = 14;
+// AGC [7:0] (RO): An AGC figure with the AS5047P's sense: 128 + 32 (S_F + 20/32 - lg m), 0..255;
+// 128 at the calibrated amplitude, +32 for half the field, -32 for twice it, 255 with no field.
+constexpr int kMagAgcAgcShift = 0;
+constexpr uint32_t kMagAgcAgcMask = 0xFFu;
+constexpr int kMagAgcAgcBits = 8;
+
 }  // namespace acore::board

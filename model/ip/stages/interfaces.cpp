@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "stages/interfaces.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "core/errors.hpp"
@@ -150,6 +151,25 @@ int uvwpp_pole_pairs(int code) {
   return code + kUvwppOffset >= kUvwppMaxPp ? kUvwppMaxPp : code + kUvwppOffset;
 }
 }  // namespace
+
+uint16_t as5047::mag_field(int64_t magnitude, int mag_w) {
+  if (mag_w < kMagFieldBits + 1 || magnitude < 0)
+    throw InputError("MAG: magnitude " + std::to_string(magnitude) + " of " +
+                     std::to_string(mag_w) + " bits (at least " +
+                     std::to_string(kMagFieldBits + 1) + " bits, not negative)");
+  const int64_t field_max = (int64_t{1} << kMagFieldBits) - 1;
+  return static_cast<uint16_t>(std::min(magnitude >> (mag_w - kMagFieldBits - 1), field_max));
+}
+
+uint8_t as5047::agc_field(int64_t magnitude, int s_f) {
+  if (magnitude < 0) throw InputError("AGC: negative magnitude " + std::to_string(magnitude));
+  // lg m in 1/32: the leading one's position e and the 5 bits below it (zeros below bit 0).
+  int e = 0;
+  while (e < 62 && (magnitude >> (e + 1)) != 0) ++e;
+  const int64_t f = e >= 5 ? (magnitude >> (e - 5)) & 31 : (magnitude << (5 - e)) & 31;
+  const int64_t agc = kAgcMid + int64_t{kAgcOctave} * s_f + kAgcGainF - (kAgcOctave * e + f);
+  return static_cast<uint8_t>(std::clamp<int64_t>(agc, 0, (int64_t{1} << kAgcBits) - 1));
+}
 
 uint16_t As5047Port::read_register(uint16_t addr, const As5047Inputs& in) const {
   using namespace as5047;

@@ -81,6 +81,18 @@ namespace as5047 {
 // for an N (the first entry, largest N first, not above it; the last otherwise).
 int64_t abires_n(bool binary, int code);
 int abires_code(bool binary, int64_t n);
+// MAG and DIAAGC.AGC of the board (rtl/acore_board.v's header has the definition) from the
+// estimator's magnitude m (FixedSample::magnitude, mag_w = S_W + 2 bits, 2^s_f per unit of the
+// scaled inputs times the CORDIC gain): MAG = m >> (mag_w - 15), saturated to 14 bits; AGC =
+// 128 + 32 (s_f + 20/32 - lg m) clamped to 0..255, lg m = e + f/32 by m's leading one e and the
+// 5 bits f below it (m = 0: 255). High for a weak field, low for a strong one, as the AS5047P's.
+// The fields' widths are the board's MAG_AGC register's (its description); the AGC constants are
+// rtl/acore_board.v's AGC_MID, AGC_OCTAVE and AGC_GAIN_F.
+constexpr int kMagFieldBits = board::kMagAgcMagBits;
+constexpr int kAgcBits = board::kMagAgcAgcBits;
+constexpr int kAgcMid = 128, kAgcOctave = 32, kAgcGainF = 20;
+uint16_t mag_field(int64_t magnitude, int mag_w);
+uint8_t agc_field(int64_t magnitude, int s_f);
 // The 16-bit word with bit 15 set so that its parity is even.
 uint16_t with_even_parity(uint16_t word15);
 bool parity_even(uint16_t word);

@@ -3,10 +3,13 @@
 // the ABZ count as floor of the exact rational angle 4N / 2^W (128-bit), its hysteresis band, the
 // counter's walk (never more than one count a step, the shorter way, the spacing); the UVW sector
 // from the electrical angle in degrees against 60-degree boundaries (rational compare); the
-// AS5047P frame's parity, answers, ERRFL and error flag; and the refusal of out-of-range values.
+// AS5047P frame's parity, answers, ERRFL and error flag; MAG and AGC of a magnitude against the
+// shift and against 128 + 32 (S_F + 0.625 - log2 m) in floating point; and the refusal of
+// out-of-range values.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "core/errors.hpp"
@@ -144,6 +147,43 @@ TEST(UvwModel, SectorsAgainstSixtyDegreeBoundaries) {
       EXPECT_EQ(s.w, in(240, 360) || in(0, 60));
     }
   }
+}
+
+// MAG: the magnitude's upper 14 bits below its top bit (every magnitude of 20 bits, the defaults,
+// sampled). AGC: exact at powers of two (lg m = log2 m there), within the linear interpolation's
+// 0.0861 (times 32 codes) plus the truncation to 1/32 of the real logarithm elsewhere, monotone
+// non-increasing in m, 255 for no field, 128 at the nominal 1.6468 * 2^S_F.
+TEST(As5047Model, MagAndAgcOfTheMagnitude) {
+  const int mag_w = 20, s_f = 16;
+  EXPECT_EQ(as5047::mag_field(0, mag_w), 0);
+  EXPECT_EQ(as5047::mag_field((int64_t{1} << 19) - 1, mag_w), 0x3FFF);
+  EXPECT_EQ(as5047::mag_field(int64_t{1} << 19, mag_w), 0x3FFF) << "saturated";
+  EXPECT_EQ(as5047::mag_field(107925, mag_w), 107925 / 32);
+  EXPECT_EQ(as5047::agc_field(0, s_f), 255);
+  EXPECT_EQ(as5047::agc_field(107925, s_f), 128) << "the nominal magnitude";
+  EXPECT_EQ(as5047::agc_field(107925 / 2, s_f), 160) << "half the field: +32";
+  EXPECT_EQ(as5047::agc_field(107925 * 2, s_f), 96) << "twice the field: -32";
+  for (int e = 0; e < 20; ++e) {
+    const double want = 128 + 32 * (s_f + 0.625 - e);
+    EXPECT_EQ(as5047::agc_field(int64_t{1} << e, s_f),
+              static_cast<int>(std::clamp(want, 0.0, 255.0)))
+        << "2^" << e;
+  }
+  int prev = 256;
+  for (int64_t m = 1; m < (int64_t{1} << 20); m += 1 + m / 97) {
+    EXPECT_EQ(as5047::mag_field(m, mag_w), std::min<int64_t>(m >> 5, 0x3FFF));
+    const int agc = as5047::agc_field(m, s_f);
+    EXPECT_LE(agc, prev) << m;
+    prev = agc;
+    const double exact = 128 + 32 * (s_f + 0.625 - std::log2(static_cast<double>(m)));
+    if (exact > 0 && exact < 255) {
+      EXPECT_GE(agc, exact - 1e-9) << m;
+      EXPECT_LE(agc, exact + 32 * 0.0861 + 1) << m;
+    }
+  }
+  EXPECT_THROW(as5047::mag_field(5, 14), InputError);
+  EXPECT_THROW(as5047::mag_field(-1, mag_w), InputError);
+  EXPECT_THROW(as5047::agc_field(-1, s_f), InputError);
 }
 
 TEST(InterfaceModels, OutOfRangeValuesAreRefused) {
