@@ -355,10 +355,16 @@ module acore_track #(
     wire lot_cmp = (e_gt > thr_gt) || (e_hi < -thr_hi);
     // The product step: D's digit (MSB first) times v, added to m shifted by a digit.
     // (d's bits from DE_W up are zero; padded so that the last digit may reach above D_W.)
+    // (the shift by j * PROD_BITS as a select over the NP digits: constant shifts, no product)
     wire [D_W+3:0] d_pad = {4'b0000, d};
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [D_W+3:0] d_sh = d_pad >> (j_q * PROD_BITS);
+    reg  [D_W+3:0] d_sh;
     /* verilator lint_on UNUSEDSIGNAL */
+    integer jd;
+    always @* begin
+      d_sh = d_pad;
+      for (jd = 0; jd < NP; jd = jd + 1) if (j_q == jd[J_W-1:0]) d_sh = d_pad >> (jd * PROD_BITS);
+    end
     wire [PROD_BITS-1:0] dig = d_sh[PROD_BITS-1:0];
     wire [M_W-1:0] v_ext = {{LEAD_F{v_q[P_W-1]}}, v_q};
     reg  [M_W-1:0] m_n;

@@ -136,6 +136,14 @@ std::vector<const RtlBuild*> rtl_builds_of(RtlTop top) {
   return v;
 }
 
+std::vector<const RtlBuild*> rtl_builds_made(RtlTop top) {
+  const std::string unbuilt = std::string(",") + ACORE_RTL_LONG_UNBUILT + ",";
+  std::vector<const RtlBuild*> v;
+  for (const RtlBuild* b : rtl_builds_of(top))
+    if (unbuilt.find("," + b->name + ",") == std::string::npos) v.push_back(b);
+  return v;
+}
+
 const RtlBuild& rtl_build_named(const std::string& name) {
   std::vector<const RtlBuild*> all;
   for (const RtlBuild& b : rtl_builds()) {

@@ -47,6 +47,9 @@ const RtlBuild& rtl_build_named(const std::string& name);
 const RtlBuild& rtl_build_for(RtlTop top, const DatapathConfig& cfg);
 // The builds of one top (the co-sim tests run over them).
 std::vector<const RtlBuild*> rtl_builds_of(RtlTop top);
+// Those of rtl_builds_of(top) this CMake build Verilates: without -DACORE_RTL_LONG=ON the lines
+// tagged long-sim are left out (the benches parametrized over builds run on these).
+std::vector<const RtlBuild*> rtl_builds_made(RtlTop top);
 // The registry's lines as model/rtlsim/CMakeLists.txt writes them into the generated
 // rtl_registry.cpp.
 struct RtlRegistryLine {

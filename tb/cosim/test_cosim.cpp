@@ -293,7 +293,7 @@ std::string build_name(const ::testing::TestParamInfo<const RtlBuild*>& i) { ret
 // The pipelined top in its default configuration and every build of the serial core.
 std::vector<const RtlBuild*> data_builds() {
   std::vector<const RtlBuild*> v = {&rtl_build_named("default")};
-  for (const RtlBuild* b : rtl_builds_of(RtlTop::kSerial)) v.push_back(b);
+  for (const RtlBuild* b : rtl_builds_made(RtlTop::kSerial)) v.push_back(b);
   return v;
 }
 INSTANTIATE_TEST_SUITE_P(Cosim, Cosim, ::testing::ValuesIn(data_builds()), build_name);
@@ -309,7 +309,7 @@ std::vector<const RtlBuild*> host_port_builds() {
     c.fold = fold;
     v.push_back(&rtl_build_for(RtlTop::kPipelined, c));
   }
-  for (const RtlBuild* b : rtl_builds_of(RtlTop::kSerial)) v.push_back(b);
+  for (const RtlBuild* b : rtl_builds_made(RtlTop::kSerial)) v.push_back(b);
   return v;
 }
 
@@ -424,7 +424,7 @@ TEST_P(CosimSerial, HostPortWhileComputing) {
   EXPECT_EQ(idle_wrong, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cosim, CosimSerial, ::testing::ValuesIn(rtl_builds_of(RtlTop::kSerial)),
+INSTANTIATE_TEST_SUITE_P(Cosim, CosimSerial, ::testing::ValuesIn(rtl_builds_made(RtlTop::kSerial)),
                          build_name);
 
 }  // namespace

@@ -79,7 +79,7 @@ TEST(RegImage, FoldIsTheRtlScheduleNotPartOfTheImage) {
   const std::string d = four.describe();
   EXPECT_EQ(d.substr(d.size() - 7), " fold=4");
   for (const char* bad :
-       {"FOLD=3", "FOLD=16", "FOLD=0", "FOLD=2 CORRECTION=1", "FOLD=8 FOURIER_K=4"})
+       {"FOLD=3", "FOLD=64", "FOLD=0", "FOLD=2 CORRECTION=1", "FOLD=8 FOURIER_K=4"})
     EXPECT_THROW(DatapathConfig{}.with_rtl_params(bad).validate(), InputError) << bad;
   EXPECT_NO_THROW(DatapathConfig{}.with_rtl_params("FOLD=8 CORRECTION=2").validate());
 
