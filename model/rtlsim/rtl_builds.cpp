@@ -88,6 +88,13 @@ ModuleDir module_dir(const std::string& dir) {
   return {ACORE_RTL_PLUGIN_DIR, "the module folder fixed at build time"};
 }
 
+// A line tagged long-sim in rtl/configs.txt, which this build leaves out without
+// -DACORE_RTL_LONG=ON.
+bool long_left_out(const std::string& name) {
+  const std::string unbuilt = std::string(",") + ACORE_RTL_LONG_UNBUILT + ",";
+  return unbuilt.find("," + name + ",") != std::string::npos;
+}
+
 // The command that builds a module. The build tree is the parent of the module folder fixed at
 // build time (CMake writes the modules to <build>/rtl); ACORE_RTL_MODULES_HERE says whether that
 // build makes them (1), was configured without them (0), or is another build (-1: the Python
@@ -105,9 +112,7 @@ std::string build_command(const std::string& name, bool elsewhere) {
   if (build.empty())
     return "`cmake --build build --target " + target + "` in the repository (it writes build/rtl/)";
   const std::string writes = elsewhere ? " (it writes " + build + "/rtl/)" : "";
-  // A line tagged long-sim in rtl/configs.txt, which this build leaves out without the option.
-  const std::string unbuilt = std::string(",") + ACORE_RTL_LONG_UNBUILT + ",";
-  if (unbuilt.find("," + name + ",") != std::string::npos)
+  if (long_left_out(name))
     return "`cmake -DACORE_RTL_LONG=ON " + build + " && cmake --build " + build + " --target " +
            target + "` (a line tagged long-sim)" + writes;
   if (ACORE_RTL_MODULES_HERE == 0)
@@ -137,10 +142,9 @@ std::vector<const RtlBuild*> rtl_builds_of(RtlTop top) {
 }
 
 std::vector<const RtlBuild*> rtl_builds_made(RtlTop top) {
-  const std::string unbuilt = std::string(",") + ACORE_RTL_LONG_UNBUILT + ",";
   std::vector<const RtlBuild*> v;
   for (const RtlBuild* b : rtl_builds_of(top))
-    if (unbuilt.find("," + b->name + ",") == std::string::npos) v.push_back(b);
+    if (!long_left_out(b->name)) v.push_back(b);
   return v;
 }
 
