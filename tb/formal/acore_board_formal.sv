@@ -24,9 +24,11 @@
 //             later, none lost, duplicated or invented, and in the order delivered (a fixed
 //             delay keeps order); the observer's ready is low exactly in the CYCLES - 1 clocks
 //             after it took a sample (its update clock, or its time-shared schedule).
-//   hold      the observer's outputs (tracked and compensated angle, velocity, turns, loss of
-//             tracking), which ABZ, UVW and the APB read between samples, change only in a clock
-//             that gives a sample.
+//   hold      the observer's compensated angle, which ABZ, UVW and the SPI port read between
+//             samples, changes only in a clock that gives a sample; its other outputs (tracked
+//             angle, velocity, turns, loss of tracking: the APB's) likewise, except in the
+//             word-serial form (TRK_SERIAL = 2), whose schedule writes them while its sample is in
+//             flight (rtl/acore_track.v): there they hold while no sample is in flight.
 // The reference's valid bits are also the induction's invariant: in flight = the ones of the
 // delay line.
 `default_nettype none
@@ -39,7 +41,10 @@ module acore_board_formal #(
   // The observer as the board elaborates it (the driver reads them from the RTL): clocks from a
   // sample taken to its result, and clocks a sample.
   parameter integer TRK_LAT = 4,
-  parameter integer TRK_CYC = 2
+  parameter integer TRK_CYC = 2,
+  // The observer's form (acore_track's SERIAL: 2 word-serial, whose outputs other than the
+  // compensated angle move during its schedule).
+  parameter integer TRK_SERIAL = 0
 ) (
   input wire               clk_i,
   input wire               rst_i,
@@ -139,10 +144,17 @@ module acore_board_formal #(
   end
 
   // ---- hold: the observer's outputs of the clock before ----
-  localparam integer OUT_W = 2 * ANGLE_W + P_W + 16 + 1;
-  wire [OUT_W-1:0] trk_out = {trk_angle_o, trk_angle_comp_o, trk_velocity_o, trk_turns_o, trk_lot_o};
+  localparam integer OUT_W = ANGLE_W + P_W + 16 + 1;
+  wire [OUT_W-1:0] trk_out = {trk_angle_o, trk_velocity_o, trk_turns_o, trk_lot_o};
   reg  [OUT_W-1:0] past_trk_out_q;
-  always @(posedge clk_i) past_trk_out_q <= trk_out;
+  reg  [ANGLE_W-1:0] past_trk_comp_q;
+  always @(posedge clk_i) begin
+    past_trk_out_q <= trk_out;
+    past_trk_comp_q <= trk_angle_comp_o;
+  end
+  // (the word-serial observer's tracked angle, velocity, turns and LOT may move while one of its
+  // samples is in flight; every form's hold with none in flight)
+  wire out_may_move = trk_valid_o || (TRK_SERIAL == 2 && inflight != 0);
 
   always @(posedge clk_i) begin
     if (!init_q) begin
@@ -158,7 +170,8 @@ module acore_board_formal #(
         assert (inflight == ones);
         assert (tap_trk_ready == !busy);
         // hold
-        if (!past_rst_q && !trk_valid_o) assert (trk_out == past_trk_out_q);
+        if (!past_rst_q && !trk_valid_o) assert (trk_angle_comp_o == past_trk_comp_q);
+        if (!past_rst_q && !out_may_move) assert (trk_out == past_trk_out_q);
       end
     end
   end

@@ -200,6 +200,26 @@ MUTANTS = {
         "count/delay: a sample delivered to the observer never comes out",
         8,
     ),
+    # Board, word-serial observer: the compensated angle (ABZ, UVW, SPI) written at each product
+    # step, not once with the result: it shows the partial sums between samples.
+    "board_word_comp_moves": (
+        "board_fold16",
+        "acore_track.v",
+        r"(\n\s*)if \(c5\) begin",
+        r"\1if (pp) out_angle_comp_o <= comp[P_W-1:FRAC_W];\1if (c5) begin",
+        "hold: the compensated angle moves while no sample is given",
+        12,
+    ),
+    # Board, word-serial observer: the product ends a digit early (the schedule one clock short of
+    # its LATENCY): the result, without D's last digit, comes out a clock before the delay line's.
+    "board_word_product_short": (
+        "board_fold32",
+        "acore_track.v",
+        r"fin <= pp && j_q == \{J_W\{1'b0\}\};",
+        "fin <= pp && j_q == {{(J_W - 1){1'b0}}, 1'b1};",
+        "delay: a result a clock before the observer's LATENCY",
+        20,
+    ),
 }
 
 
@@ -207,7 +227,8 @@ MUTANTS = {
 SHORT_BMC = 16
 
 # The proof of each harness: harness -> (engine, depth k of the base case and the induction step;
-# None: the engine needs none). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
+# None: the engine needs none; a function of the harness's parameters: a depth its elaborated
+# timing gives). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
 # with FOLD = 1 or folded, "acore_serial_top").
 PROOFS = {
     # The reference valid pipeline and the top's valid bits tapped: 4-induction closes.
@@ -227,6 +248,11 @@ PROOFS = {
     # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction; pdr had
     # no verdict after 3 CPU minutes (no registry line runs it yet).
     "acore_board_serial": ("pdr", None),
+    # The word-serial observer (FOLD 16 and 32): its schedule's state (phase bits, the product's
+    # digit counter, which has no reset) is not tied to the harness's delay line, so the induction
+    # must span a whole schedule: LATENCY + 4 clocks (LATENCY + 3 stays undecided). pdr also
+    # closes, in about 2 CPU minutes.
+    "acore_board_word": ("ind", lambda h: h["TRK_LAT"] + 4),
 }
 
 
@@ -378,22 +404,11 @@ def board_setup(line):
     shell cut (its stream constrained by the shell's proven contract, in the harness), the
     observer's arithmetic cut, the observer's timing from the elaborated RTL."""
     params = list(line.params)
-    b = registry.rtl_constants(ROOT, "acore_board", params)
-    t = registry.rtl_constants(
-        ROOT,
-        "acore_track",
-        [
-            ("ANGLE_W", b["ANGLE_W"]),
-            ("FRAC_W", b["TRK_FRAC_W"]),
-            ("TURN_W", b["TRK_TURN_W"]),
-            ("LEAD_W", b["TRK_LEAD_LEAD_W"]),
-            ("LEAD_F", b["TRK_LEAD_LEAD_F"]),
-            ("LOOP_CLOCKS", b["TRK_LOOP_CLOCKS"]),
-            ("SERIAL", b["TRK_SERIAL"]),
-        ],
-    )
+    # The observer as the board instantiates it (every parameter the board gives it: the
+    # word-serial schedule's length depends on COMP_LATENCY and PROD_BITS too).
+    t = registry.rtl_instance_constants(ROOT, "acore_board", "u_track", params)
     h = dict(params)
-    h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"]})
+    h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"], "TRK_SERIAL": t["SERIAL"]})
     ops = ["$add", "$sub", "$neg", "$shl", "$shr", "$sshl", "$sshr", "$shift"]
     ops += ["$lt", "$le", "$gt", "$ge"]
     # (a selection of each type in the observer's module, their union, then the wide ones)
@@ -411,7 +426,7 @@ def board_setup(line):
             ("tap_trk_ready", "dut.trk_ready"),
         ],
         "bmc_depth": t["LATENCY"] + 4,
-        "proof": "acore_board_serial" if b["TRK_SERIAL"] else "acore_board",
+        "proof": ["acore_board", "acore_board_serial", "acore_board_word"][t["SERIAL"]],
     }
 
 
@@ -647,6 +662,9 @@ def main(argv):
         print(f"run.py: {e}", file=sys.stderr)
         return 2
     engine, prove_depth = PROOFS[st["proof"]]
+    if callable(prove_depth):
+        # (a depth the harness's elaborated timing gives)
+        prove_depth = prove_depth(st["hparams"])
     engine = a.engine or engine
     if a.mode == "auto":
         a.mode = "bmc" if a.mutant else "prove"
