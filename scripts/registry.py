@@ -338,10 +338,11 @@ def _elaborate(root, module, params):
     return header, local, subs
 
 
-def _module_constants(mod):
-    """(header parameters, localparams) of a module of Verilator's XML, integers only."""
+def _module_constants(mod, nested=False):
+    """(header parameters, localparams) of a module of Verilator's XML, integers only (nested: with
+    those of its generate blocks)."""
     header, local = {}, {}
-    for var in mod.findall("var"):
+    for var in mod.iter("var") if nested else mod.findall("var"):
         const = var.find("const")
         if var.get("vartype") != "integer" or const is None:
             continue
@@ -363,7 +364,7 @@ def _instances(root, module, params):
     for cell in tree.iter("cell"):
         path = cell.get("hier", "").split(".", 1)
         if len(path) == 2 and cell.get("submodname") in mods:
-            header, local = _module_constants(mods[cell.get("submodname")])
+            header, local = _module_constants(mods[cell.get("submodname")], nested=True)
             out[path[1]] = dict(header, **local)
     return out
 
@@ -383,7 +384,8 @@ def rtl_constants(root, module, params=()):
 
 def rtl_instance_constants(root, module, instance, params=()):
     """Every integer parameter and localparam of one instance inside the elaborated module, named by
-    its hierarchical path below it ("u_track"): the values the module gives it."""
+    its hierarchical path below it ("u_track"): the values the module gives it (with the
+    localparams of its elaborated generate blocks)."""
     inst = _instances(os.path.abspath(root), module, tuple(params))
     if instance not in inst:
         raise RegistryError(

@@ -220,6 +220,15 @@ MUTANTS = {
         "delay: a result a clock before the observer's LATENCY",
         20,
     ),
+    # Board, time-shared observer: its input freed in its schedule's second-last clock: it takes a
+    # sample before its CYCLES are over (found at the schedule's end: the harness's BMC depth).
+    "board_serial_ready_early": (
+        "board_serial",
+        "acore_track.v",
+        r"if \(r3\) busy_q <= 1'b0;",
+        "if (r2) busy_q <= 1'b0;",
+        "ready: a sample taken before the observer's CYCLES are over",
+    ),
 }
 
 
@@ -245,9 +254,9 @@ PROOFS = {
     # The board's stream path (estimator cut, its stream assumed as the shell's proof shows it).
     # The observer over one or two clocks: its valid bits follow the delay line after 4 clocks.
     "acore_board": ("ind", 4),
-    # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction; pdr had
-    # no verdict after 3 CPU minutes (no registry line runs it yet).
-    "acore_board_serial": ("pdr", None),
+    # The time-shared observer: a schedule of 71 clocks; without its phases tied to the delay line
+    # (the harness's taps) 4-induction is undecided and pdr had no verdict after 3 CPU minutes.
+    "acore_board_serial": ("ind", 4),
     # The word-serial observer (FOLD 16 and 32): its schedule's state (phase bits, the product's
     # digit counter, which has no reset) is not tied to the harness's delay line, so the induction
     # must span a whole schedule: LATENCY + 4 clocks (LATENCY + 3 stays undecided). pdr also
@@ -409,6 +418,33 @@ def board_setup(line):
     t = registry.rtl_instance_constants(ROOT, "acore_board", "u_track", params)
     h = dict(params)
     h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"], "TRK_SERIAL": t["SERIAL"]})
+    taps = [
+        ("tap_est_valid", "dut.est_valid"),
+        ("tap_est_angle", "dut.est_angle"),
+        ("tap_trk_ready", "dut.trk_ready"),
+    ]
+    if t["SERIAL"] == 1:
+        # The time-shared observer's schedule, tied to the harness's delay line (its invariants).
+        for k in ("LOOP_END", "PROD_END", "K_MIN", "K_MAX", "S_W"):
+            h["TRK_" + k] = t[k]
+        # (Yosys names the block of the generate's else-if chain genblk1)
+        g = "dut.u_track.genblk1.g_ser."
+        taps += [
+            (f"g_ser_inv.tap_{w}", g + n)
+            for w, n in [
+                *[(p, p) for p in ("p1", "p2", "p3", "p4", "pl", "pc", "ph", "r1", "r2", "r3")],
+                ("busy", "busy_q"),
+                ("xd", "xd_q"),
+                ("vd", "vd_q"),
+                ("at_x", "at_x"),
+                ("at_v", "at_v"),
+                ("started", "started_q"),
+                ("eq_lend", "eq_lend"),
+                ("eq_pend", "eq_pend"),
+                ("s", "s_q"),
+                ("k", "k_q"),
+            ]
+        ]
     ops = ["$add", "$sub", "$neg", "$shl", "$shr", "$sshl", "$sshr", "$shift"]
     ops += ["$lt", "$le", "$gt", "$ge"]
     # (a selection of each type in the observer's module, their union, then the wide ones)
@@ -420,11 +456,7 @@ def board_setup(line):
         "cut": ["acore_apb"],
         "cut_sel": [f"{arith} r:A_WIDTH>={TRACK_DATA_W} %i"],
         "mems": [],
-        "taps": [
-            ("tap_est_valid", "dut.est_valid"),
-            ("tap_est_angle", "dut.est_angle"),
-            ("tap_trk_ready", "dut.trk_ready"),
-        ],
+        "taps": taps,
         "bmc_depth": t["LATENCY"] + 4,
         "proof": ["acore_board", "acore_board_serial", "acore_board_word"][t["SERIAL"]],
     }
