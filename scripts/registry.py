@@ -297,8 +297,9 @@ def _const(text):
     return v - (1 << width) if signed and v >> (width - 1) & 1 else v
 
 
-@functools.cache
-def _elaborate(root, module, params):
+def _xml_tree(root, module, params):
+    """The elaborated module as `verilator --xml-only` writes it (parsed; not kept: its users keep
+    what they read of it)."""
     rtl = os.path.join(root, "rtl")
     with tempfile.TemporaryDirectory(prefix="acore_xml_") as tmp:
         xml = os.path.join(tmp, "top.xml")
@@ -325,11 +326,23 @@ def _elaborate(root, module, params):
                 f"verilator --xml-only {module} {' '.join(f'{k}={v}' for k, v in params)}: "
                 f"{r.stderr.strip()[:500]}"
             )
-        tree = ET.parse(xml)
+        return ET.parse(xml)
+
+
+@functools.cache
+def _elaborate(root, module, params):
+    tree = _xml_tree(root, module, params)
     subs = frozenset(m.get("origName") for m in tree.iter("module") if m.get("topModule") != "1")
     mod = next(m for m in tree.iter("module") if m.get("topModule") == "1")
+    header, local = _module_constants(mod)
+    return header, local, subs
+
+
+def _module_constants(mod, nested=False):
+    """(header parameters, localparams) of a module of Verilator's XML, integers only (nested: with
+    those of its generate blocks)."""
     header, local = {}, {}
-    for var in mod.findall("var"):
+    for var in mod.iter("var") if nested else mod.findall("var"):
         const = var.find("const")
         if var.get("vartype") != "integer" or const is None:
             continue
@@ -338,7 +351,22 @@ def _elaborate(root, module, params):
             header[var.get("name")] = value
         elif var.get("localparam") == "true":
             local[var.get("name")] = value
-    return header, local, subs
+    return header, local
+
+
+@functools.cache
+def _instances(root, module, params):
+    """{hierarchical instance path below the top ("u_track", "u_shell.u_top"): its elaborated
+    module's constants}."""
+    tree = _xml_tree(root, module, params)
+    mods = {m.get("name"): m for m in tree.iter("module")}
+    out = {}
+    for cell in tree.iter("cell"):
+        path = cell.get("hier", "").split(".", 1)
+        if len(path) == 2 and cell.get("submodname") in mods:
+            header, local = _module_constants(mods[cell.get("submodname")], nested=True)
+            out[path[1]] = dict(header, **local)
+    return out
 
 
 def rtl_parameters(root, module, params=()):
@@ -352,6 +380,18 @@ def rtl_constants(root, module, params=()):
     (WORDS, LATENCY, CYCLES, ...)."""
     header, local, _ = _elaborate(os.path.abspath(root), module, tuple(params))
     return dict(header, **local)
+
+
+def rtl_instance_constants(root, module, instance, params=()):
+    """Every integer parameter and localparam of one instance inside the elaborated module, named by
+    its hierarchical path below it ("u_track"): the values the module gives it (with the
+    localparams of its elaborated generate blocks)."""
+    inst = _instances(os.path.abspath(root), module, tuple(params))
+    if instance not in inst:
+        raise RegistryError(
+            f"{module}: no instance {instance} (instances: {', '.join(sorted(inst))})"
+        )
+    return inst[instance]
 
 
 def rtl_submodules(root, module, params=()):

@@ -24,9 +24,11 @@
 //             later, none lost, duplicated or invented, and in the order delivered (a fixed
 //             delay keeps order); the observer's ready is low exactly in the CYCLES - 1 clocks
 //             after it took a sample (its update clock, or its time-shared schedule).
-//   hold      the observer's outputs (tracked and compensated angle, velocity, turns, loss of
-//             tracking), which ABZ, UVW and the APB read between samples, change only in a clock
-//             that gives a sample.
+//   hold      the observer's compensated angle, which ABZ, UVW and the SPI port read between
+//             samples, changes only in a clock that gives a sample; its other outputs (tracked
+//             angle, velocity, turns, loss of tracking: the APB's) likewise, except in the
+//             word-serial form (TRK_SERIAL = 2), whose schedule writes them while its sample is in
+//             flight (rtl/acore_track.v): there they hold while no sample is in flight.
 // The reference's valid bits are also the induction's invariant: in flight = the ones of the
 // delay line.
 `default_nettype none
@@ -39,7 +41,17 @@ module acore_board_formal #(
   // The observer as the board elaborates it (the driver reads them from the RTL): clocks from a
   // sample taken to its result, and clocks a sample.
   parameter integer TRK_LAT = 4,
-  parameter integer TRK_CYC = 2
+  parameter integer TRK_CYC = 2,
+  // The observer's form (acore_track's SERIAL: 2 word-serial, whose outputs other than the
+  // compensated angle move during its schedule).
+  parameter integer TRK_SERIAL = 0,
+  // The time-shared observer's schedule (TRK_SERIAL = 1; its elaborated LOOP_END, PROD_END, K_MIN,
+  // K_MAX and its counter's width S_W): the invariants below.
+  parameter integer TRK_LOOP_END = 0,
+  parameter integer TRK_PROD_END = 0,
+  parameter integer TRK_K_MIN = 0,
+  parameter integer TRK_K_MAX = 0,
+  parameter integer TRK_S_W = 6
 ) (
   input wire               clk_i,
   input wire               rst_i,
@@ -139,10 +151,73 @@ module acore_board_formal #(
   end
 
   // ---- hold: the observer's outputs of the clock before ----
-  localparam integer OUT_W = 2 * ANGLE_W + P_W + 16 + 1;
-  wire [OUT_W-1:0] trk_out = {trk_angle_o, trk_angle_comp_o, trk_velocity_o, trk_turns_o, trk_lot_o};
+  localparam integer OUT_W = ANGLE_W + P_W + 16 + 1;
+  wire [OUT_W-1:0] trk_out = {trk_angle_o, trk_velocity_o, trk_turns_o, trk_lot_o};
   reg  [OUT_W-1:0] past_trk_out_q;
-  always @(posedge clk_i) past_trk_out_q <= trk_out;
+  reg  [ANGLE_W-1:0] past_trk_comp_q;
+  always @(posedge clk_i) begin
+    past_trk_out_q <= trk_out;
+    past_trk_comp_q <= trk_angle_comp_o;
+  end
+  // (the word-serial observer's tracked angle, velocity, turns and LOT may move while one of its
+  // samples is in flight; every form's hold with none in flight)
+  wire out_may_move = trk_valid_o || (TRK_SERIAL == 2 && inflight != 0);
+
+  // ---- the time-shared observer's schedule tied to the delay line (TRK_SERIAL = 1) ----
+  // Its schedule (rtl/acore_track.v, g_ser) after the clock that takes a sample (age 0): P1..P4 at
+  // ages 1..4; the loop (PL) from age 5, one clock a shift (s, up to LOOP_END) or a pause for phi's
+  // update (xd) or v's (xd, vd; at s = k and s = 2k + 1); PC; the product (PH, s = 0..PROD_END);
+  // R1..R3, the last at age LATENCY - 1. Tapped and asserted exactly, so that the induction need
+  // not unroll a 71-clock schedule: the age is the delay line's one bit (one sample at a time).
+  generate
+    if (TRK_SERIAL == 1) begin : g_ser_inv
+      localparam integer A_PL1 = TRK_LOOP_END + 7;     // the loop's last clock
+      localparam integer A_PC = TRK_LOOP_END + 8;
+      localparam integer A_PH0 = TRK_LOOP_END + 9;
+      localparam integer A_PH1 = A_PH0 + TRK_PROD_END;
+      localparam integer AGE_W = 8;
+      wire       tap_p1, tap_p2, tap_p3, tap_p4, tap_pl, tap_pc, tap_ph, tap_r1, tap_r2, tap_r3;
+      wire       tap_busy, tap_xd, tap_vd, tap_at_x, tap_at_v, tap_started, tap_eq_lend, tap_eq_pend;
+      wire [TRK_S_W-1:0] tap_s;
+      wire [3:0] tap_k;
+      reg [AGE_W-1:0] age;  // clocks since the sample in the schedule was taken; 0: none
+      integer a;
+      always @(*) begin
+        age = 0;
+        for (a = 0; a < TRK_LAT - 1; a = a + 1) if (ref_q[a]) age = a + 1;
+      end
+      wire [7:0] s = {{(8 - TRK_S_W){1'b0}}, tap_s};
+      wire [7:0] kx = tap_started ? {4'b0000, tap_k} : 8'd0;
+      wire [7:0] k2 = {3'b000, tap_k, 1'b1};
+      wire [7:0] pl_clock = age - 8'd5;
+      wire [7:0] ph_clock = age - A_PH0[7:0];
+      always @(posedge clk_i) begin
+        if (!init_q && !rst_i) begin
+          assert (A_PH1 + 3 == TRK_LAT - 1);  // (the schedule read as the RTL elaborates it)
+          assert (ones - ref_q[TRK_LAT-1] <= 1);  // one sample in the schedule at a time
+          assert (tap_busy == (age != 0));
+          if (tap_at_x || tap_at_v) assert (tap_pl);
+          if (age != 0) assert (tap_k >= TRK_K_MIN && tap_k <= TRK_K_MAX);
+          assert (tap_p1 == (age == 1) && tap_p2 == (age == 2));
+          assert (tap_p3 == (age == 3) && tap_p4 == (age == 4));
+          assert (tap_pl == (age >= 5 && age <= A_PL1));
+          assert (tap_pc == (age == A_PC));
+          assert (tap_ph == (age >= A_PH0 && age <= A_PH1));
+          assert (tap_r1 == (age == A_PH1 + 1) && tap_r2 == (age == A_PH1 + 2));
+          assert (tap_r3 == (age == A_PH1 + 3));
+          assert (tap_eq_lend == (s == TRK_LOOP_END) && tap_eq_pend == (s == TRK_PROD_END));
+          if (tap_pl) begin
+            assert (s + tap_xd + tap_vd == pl_clock);
+            assert (tap_xd ? s >= kx : s <= kx);
+            assert (tap_vd ? (tap_xd && s >= k2) : s <= k2);
+            assert (tap_at_x == (!tap_xd && s == kx));
+            assert (tap_at_v == (tap_xd && !tap_vd && s == k2));
+          end
+          if (tap_ph) assert (s == ph_clock);
+        end
+      end
+    end
+  endgenerate
 
   always @(posedge clk_i) begin
     if (!init_q) begin
@@ -158,7 +233,8 @@ module acore_board_formal #(
         assert (inflight == ones);
         assert (tap_trk_ready == !busy);
         // hold
-        if (!past_rst_q && !trk_valid_o) assert (trk_out == past_trk_out_q);
+        if (!past_rst_q && !trk_valid_o) assert (trk_angle_comp_o == past_trk_comp_q);
+        if (!past_rst_q && !out_may_move) assert (trk_out == past_trk_out_q);
       end
     end
   end

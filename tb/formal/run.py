@@ -200,6 +200,35 @@ MUTANTS = {
         "count/delay: a sample delivered to the observer never comes out",
         8,
     ),
+    # Board, word-serial observer: the compensated angle (ABZ, UVW, SPI) written at each product
+    # step, not once with the result: it shows the partial sums between samples.
+    "board_word_comp_moves": (
+        "board_fold16",
+        "acore_track.v",
+        r"(\n\s*)if \(c5\) begin",
+        r"\1if (pp) out_angle_comp_o <= comp[P_W-1:FRAC_W];\1if (c5) begin",
+        "hold: the compensated angle moves while no sample is given",
+        12,
+    ),
+    # Board, word-serial observer: the product ends a digit early (the schedule one clock short of
+    # its LATENCY): the result, without D's last digit, comes out a clock before the delay line's.
+    "board_word_product_short": (
+        "board_fold32",
+        "acore_track.v",
+        r"fin <= pp && j_q == \{J_W\{1'b0\}\};",
+        "fin <= pp && j_q == {{(J_W - 1){1'b0}}, 1'b1};",
+        "delay: a result a clock before the observer's LATENCY",
+        20,
+    ),
+    # Board, time-shared observer: its input freed in its schedule's second-last clock: it takes a
+    # sample before its CYCLES are over (found at the schedule's end: the harness's BMC depth).
+    "board_serial_ready_early": (
+        "board_serial",
+        "acore_track.v",
+        r"if \(r3\) busy_q <= 1'b0;",
+        "if (r2) busy_q <= 1'b0;",
+        "ready: a sample taken before the observer's CYCLES are over",
+    ),
 }
 
 
@@ -207,7 +236,8 @@ MUTANTS = {
 SHORT_BMC = 16
 
 # The proof of each harness: harness -> (engine, depth k of the base case and the induction step;
-# None: the engine needs none). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
+# None: the engine needs none; a function of the harness's parameters: a depth its elaborated
+# timing gives). The harness of a CONFIG: "fifo", or the line's module ("acore_top"
 # with FOLD = 1 or folded, "acore_serial_top").
 PROOFS = {
     # The reference valid pipeline and the top's valid bits tapped: 4-induction closes.
@@ -224,9 +254,14 @@ PROOFS = {
     # The board's stream path (estimator cut, its stream assumed as the shell's proof shows it).
     # The observer over one or two clocks: its valid bits follow the delay line after 4 clocks.
     "acore_board": ("ind", 4),
-    # The time-shared observer: a schedule of about 70 clocks, too deep for k-induction; pdr had
-    # no verdict after 3 CPU minutes (no registry line runs it yet).
-    "acore_board_serial": ("pdr", None),
+    # The time-shared observer: a schedule of 71 clocks; without its phases tied to the delay line
+    # (the harness's taps) 4-induction is undecided and pdr had no verdict after 3 CPU minutes.
+    "acore_board_serial": ("ind", 4),
+    # The word-serial observer (FOLD 16 and 32): its schedule's state (phase bits, the product's
+    # digit counter, which has no reset) is not tied to the harness's delay line, so the induction
+    # must span a whole schedule: LATENCY + 4 clocks (LATENCY + 3 stays undecided). pdr also
+    # closes, in about 2 CPU minutes.
+    "acore_board_word": ("ind", lambda h: h["TRK_LAT"] + 4),
 }
 
 
@@ -378,22 +413,38 @@ def board_setup(line):
     shell cut (its stream constrained by the shell's proven contract, in the harness), the
     observer's arithmetic cut, the observer's timing from the elaborated RTL."""
     params = list(line.params)
-    b = registry.rtl_constants(ROOT, "acore_board", params)
-    t = registry.rtl_constants(
-        ROOT,
-        "acore_track",
-        [
-            ("ANGLE_W", b["ANGLE_W"]),
-            ("FRAC_W", b["TRK_FRAC_W"]),
-            ("TURN_W", b["TRK_TURN_W"]),
-            ("LEAD_W", b["TRK_LEAD_LEAD_W"]),
-            ("LEAD_F", b["TRK_LEAD_LEAD_F"]),
-            ("LOOP_CLOCKS", b["TRK_LOOP_CLOCKS"]),
-            ("SERIAL", b["TRK_SERIAL"]),
-        ],
-    )
+    # The observer as the board instantiates it (every parameter the board gives it: the
+    # word-serial schedule's length depends on COMP_LATENCY and PROD_BITS too).
+    t = registry.rtl_instance_constants(ROOT, "acore_board", "u_track", params)
     h = dict(params)
-    h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"]})
+    h.update({"TRK_LAT": t["LATENCY"], "TRK_CYC": t["CYCLES"], "TRK_SERIAL": t["SERIAL"]})
+    taps = [
+        ("tap_est_valid", "dut.est_valid"),
+        ("tap_est_angle", "dut.est_angle"),
+        ("tap_trk_ready", "dut.trk_ready"),
+    ]
+    if t["SERIAL"] == 1:
+        # The time-shared observer's schedule, tied to the harness's delay line (its invariants).
+        for k in ("LOOP_END", "PROD_END", "K_MIN", "K_MAX", "S_W"):
+            h["TRK_" + k] = t[k]
+        # (Yosys names the block of the generate's else-if chain genblk1)
+        g = "dut.u_track.genblk1.g_ser."
+        taps += [
+            (f"g_ser_inv.tap_{w}", g + n)
+            for w, n in [
+                *[(p, p) for p in ("p1", "p2", "p3", "p4", "pl", "pc", "ph", "r1", "r2", "r3")],
+                ("busy", "busy_q"),
+                ("xd", "xd_q"),
+                ("vd", "vd_q"),
+                ("at_x", "at_x"),
+                ("at_v", "at_v"),
+                ("started", "started_q"),
+                ("eq_lend", "eq_lend"),
+                ("eq_pend", "eq_pend"),
+                ("s", "s_q"),
+                ("k", "k_q"),
+            ]
+        ]
     ops = ["$add", "$sub", "$neg", "$shl", "$shr", "$sshl", "$sshr", "$shift"]
     ops += ["$lt", "$le", "$gt", "$ge"]
     # (a selection of each type in the observer's module, their union, then the wide ones)
@@ -405,13 +456,9 @@ def board_setup(line):
         "cut": ["acore_apb"],
         "cut_sel": [f"{arith} r:A_WIDTH>={TRACK_DATA_W} %i"],
         "mems": [],
-        "taps": [
-            ("tap_est_valid", "dut.est_valid"),
-            ("tap_est_angle", "dut.est_angle"),
-            ("tap_trk_ready", "dut.trk_ready"),
-        ],
+        "taps": taps,
         "bmc_depth": t["LATENCY"] + 4,
-        "proof": "acore_board_serial" if b["TRK_SERIAL"] else "acore_board",
+        "proof": ["acore_board", "acore_board_serial", "acore_board_word"][t["SERIAL"]],
     }
 
 
@@ -647,6 +694,9 @@ def main(argv):
         print(f"run.py: {e}", file=sys.stderr)
         return 2
     engine, prove_depth = PROOFS[st["proof"]]
+    if callable(prove_depth):
+        # (a depth the harness's elaborated timing gives)
+        prove_depth = prove_depth(st["hparams"])
     engine = a.engine or engine
     if a.mode == "auto":
         a.mode = "bmc" if a.mutant else "prove"
