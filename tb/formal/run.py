@@ -286,7 +286,7 @@ def stream_setup(line, words=None):
         }
     )
     if shell_line:
-        h["WORDS"] = words or shell["WORDS"]
+        h["WORDS"] = shell["WORDS"] if words is None else words
     # Where the top is after flattening: the harness's instance, or the shell's.
     if shell_line:
         p = "g_shell.dut."
