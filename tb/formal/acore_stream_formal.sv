@@ -37,6 +37,10 @@ module acore_stream_formal #(
   // The shell's in-flight counter width, and its APB address width.
   parameter integer CNT_W = 4,
   parameter integer APB_AW = 12,
+  // The shell's image length: the words its shadow bank holds, checks and commits (the driver
+  // sets the shell's own, the datapath's WORDS, or a smaller image for a short trace;
+  // docs/verification.md says why a proof there is sound).
+  parameter integer WORDS = 52,
   // The top's constants as it elaborates them (the driver reads them from the RTL).
   parameter integer LATENCY = 8,
   parameter integer CAP = 8,
@@ -47,6 +51,10 @@ module acore_stream_formal #(
   // 1: the timer properties (lost, latency), closed by a bound of LATENCY + 8 clocks; 0: left out
   // (k-induction: there the reference invariants below imply them).
   parameter integer TIMERS = 1,
+  // The shell: 1, its commit's invariants asserted (a proof: they make k-induction close); 0, left
+  // out (a bounded run: a planted bug is then caught by the property it breaks, not by an
+  // invariant a clock earlier).
+  parameter integer INVARIANTS = 1,
   // Folded: the datapath's valid bits (acore_fold_datapath.v's v_q), LATENCY - 3 of them (the
   // output register's valid bit, the FIFO's write and read clocks follow).
   parameter integer DPV_W = 1,
@@ -85,7 +93,7 @@ module acore_stream_formal #(
     if (SHELL != 0) begin : g_shell
       acore_apb #(
 `include "acore_datapath_pass.vh"
-        .SERIAL(SERIAL), .INIT_FILE(""), .APB_AW(APB_AW)
+        .SERIAL(SERIAL), .INIT_FILE(""), .APB_AW(APB_AW), .WORDS(WORDS)
       ) dut (
         .clk_i(clk_i), .rst_i(rst_i), .psel_i(psel_i), .penable_i(penable_i), .pwrite_i(pwrite_i),
         .paddr_i(paddr_i), .pwdata_i(pwdata_i), .pstrb_i(pstrb_i), .prdata_o(prdata_o),
@@ -419,15 +427,16 @@ module acore_stream_formal #(
       // engine's value and idle flag.
       localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3,
                        C_SETTLE = 3'd4;
-      wire [2:0] tap_state;
-      wire [3:0] tap_settle;
-      wire [31:0] tap_diff, tap_crc;
-      wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel, tap_more, tap_ld;
-      wire tap_pend, tap_crc_idle;
+      // (keep: with INVARIANTS = 0 nothing reads them, and the driver still connects them)
+      (* keep *) wire [2:0] tap_state;
+      (* keep *) wire [3:0] tap_settle;
+      (* keep *) wire [31:0] tap_diff, tap_crc;
+      (* keep *) wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel;
+      (* keep *) wire tap_more, tap_ld, tap_pend, tap_crc_idle;
       wire streaming = tap_state == C_STREAM || tap_state == C_SETTLE;
       wire checked = tap_state == C_CHECK && tap_crc_done;
       always @(posedge clk_i) begin
-        if (!init_q && !rst_i) begin
+        if (INVARIANTS != 0 && !init_q && !rst_i) begin
           assert (tap_state <= C_SETTLE);
           assert (tap_busy_q == (tap_state != C_IDLE));
           assert (tap_busy == (tap_busy_q || tap_req));

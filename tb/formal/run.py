@@ -3,8 +3,9 @@
 """Formal proofs of AngleCore's handshakes with Yosys and its bundled ABC, or yosys-smtbmc (z3).
 
 usage: run.py CONFIG [--mode auto|bmc|prove] [--engine E] [--depth N] [--mutant NAME]
-                     [--workdir DIR]
-       run.py --list            the registry lines with the formal flow, and the planted bugs
+                     [--words N] [--workdir DIR]
+       run.py --list            the registry lines with the formal flow, the planted bugs, and
+                                the shell's proofs at the small image
 
 CONFIG is a line of rtl/configs.txt with the `formal` flow (scripts/registry.py): acore_top,
 acore_serial_top, the shell acore_apb (its top cut), the board acore_board (its estimator cut;
@@ -33,6 +34,11 @@ Engines (--engine overrides the table's):
 
 --mutant NAME runs on a copy of the RTL with one planted bug (MUTANTS below) and expects the solver
 to find a counterexample: exit 0 when it does (the property can fail), 1 when the bug goes unseen.
+
+--words N (a shell line): the shell's image length, N coefficient words instead of the datapath's
+WORDS (the bank, its scrubber and the COEF window at N; the top, cut anyway, read as a black box
+so its own WORDS rule does not apply; the bank's rule WORDS >= 2 still does). SMALL_WORDS below:
+a commit then ends within ~20 clocks of reset, so BMC reaches the commit path's planted bugs.
 
 Abstraction: the arithmetic (every stage instance of the datapath: pre-filter, scalers, region
 select, correction, CORDIC, Fourier, delay lines, register files) is cut (Yosys `cutpoint`: its
@@ -81,9 +87,19 @@ CUT_TOP = [
     "acore_ram_delay",
 ]
 
+# The shell's image length for the proofs at a small image: the shell's harness at this many
+# coefficient words (its bank, scrubber and COEF window; the top, cut, read as a black box), where
+# a commit ends within about 20 clocks of reset, so BMC reaches the commit path's planted bugs
+# (at the datapath's 52 words a commit needs ~120 clocks). Every shell line with the formal flow
+# is proved at both lengths (CTest formal_<name> and formal_<name>_w<N>); docs/verification.md says
+# what the short one shows about the long one. 3: not a power of two, as 52 is not (the address
+# counters have unused codes), and the smallest such image the bank's rule (WORDS >= 2) allows.
+SMALL_WORDS = 3
+
 # Planted bugs: name -> (config, RTL file, regex, replacement, what it breaks[, BMC depth: clocks
-# from reset it needs, when fewer than the harness's]). Each must make the solver find a
-# counterexample (run.py CONFIG --mutant NAME, CTest formal_mutant_NAME).
+# from reset it needs, when fewer than the harness's[, the shell's image length it runs at]]).
+# Each must make the solver find a counterexample (run.py CONFIG --mutant NAME, CTest
+# formal_mutant_NAME).
 MUTANTS = {
     # FOLD = 1: a sample offered while the output is held is taken, but the pipeline does not move:
     # it is lost (overwritten).
@@ -172,23 +188,26 @@ MUTANTS = {
         "scrub: a write to the top outside a commit",
         16,
     ),
-    # Shell: the commit streams without waiting for the samples in flight (a mixed image).
+    # Shell: the commit streams without waiting for the samples in flight (a mixed image). At the
+    # small image its first write is in clock 20 (14 + 2 WORDS: CHECK reads a word every 2 clocks).
     "apb_commit_not_drained": (
         "apb",
         "acore_coef_bank.v",
         r"wire decide = \(state_q == C_CHECK\) & cmp_q & drained;",
         "wire decide = (state_q == C_CHECK) & cmp_q;",
         "atomic: the top's words change with a sample in flight",
-        130,
+        24,
+        SMALL_WORDS,
     ),
-    # Shell: the commit's verdict inverted: a wrong CRC is applied.
+    # Shell: the commit's verdict inverted: a wrong CRC is applied (clock 20 at the small image).
     "apb_wrong_crc_applied": (
         "apb",
         "acore_coef_bank.v",
         r"wire refuse = decide & check_i & neq_q;",
         "wire refuse = decide & check_i & ~neq_q;",
         "crc: a commit with a wrong CRC writes the top",
-        130,
+        24,
+        SMALL_WORDS,
     ),
     # Board: the observer does not take a sample the estimator flags (loss of signal) while the
     # estimator, seeing the observer ready, delivers it: the sample is lost between the two.
@@ -233,7 +252,7 @@ MUTANTS = {
 
 
 # A planted bug found within this many clocks from reset is checked in the default run (seconds).
-SHORT_BMC = 16
+SHORT_BMC = 24
 
 # The proof of each harness: harness -> (engine, depth k of the base case and the induction step;
 # None: the engine needs none; a function of the harness's parameters: a depth its elaborated
@@ -269,9 +288,10 @@ def rtl_files():
     return [os.path.join(ROOT, "rtl", f) for f in registry.rtl_files(ROOT)]
 
 
-def stream_setup(line):
+def stream_setup(line, words=None):
     """The harness, its parameters, cuts, memories and taps for a line of acore_top,
-    acore_serial_top or the shell acore_apb around either (its SERIAL)."""
+    acore_serial_top or the shell acore_apb around either (its SERIAL); the shell at its own image
+    length (the datapath's WORDS) or at `words` (its top read as a black box: see SMALL_WORDS)."""
     shell_line = line.module == "acore_apb"
     params = [(k, v) for k, v in line.params if k != "SERIAL"]
     serial = line.module == "acore_serial_top" or (
@@ -300,6 +320,8 @@ def stream_setup(line):
             "MAG_W": c["MAG_W"],
         }
     )
+    if shell_line:
+        h["WORDS"] = shell["WORDS"] if words is None else words
     # Where the top is after flattening: the harness's instance, or the shell's.
     if shell_line:
         p = "g_shell.dut."
@@ -378,8 +400,12 @@ def stream_setup(line):
             ]
         ]
     cut = [] if serial else CUT_TOP
+    # The shell's top: cut, and read as a black box (its ports only): its contents are never
+    # looked at, so its own rules (WORDS equal to the datapath's) do not stop a smaller image.
+    lib = []
     if shell_line:
         cut = [top]
+        lib = [top]
     # Memories whose read is cut (ABC engines): the folded top's output FIFO; the serial core's RAM
     # (coefficients and scratch words: data only, the schedule never reads it); the shell's shadow
     # bank (its words reach only the CRC and the top's words: any value is covered).
@@ -394,6 +420,7 @@ def stream_setup(line):
         "top": "acore_stream_formal",
         "hparams": h,
         "cut": cut,
+        "lib": lib,
         "mems": mems,
         "taps": taps,
         "bmc_depth": lat + 9,
@@ -477,8 +504,11 @@ def fifo_setup():
 
 def front_script(rtl_dir, line_module, line_params, st):
     """Yosys commands up to the flattened design with its taps connected (both back ends)."""
+    # (the files of the modules read as black boxes: -lib, their ports only)
+    lib = {os.path.basename(registry.module_source(ROOT, m)) for m in st.get("lib", [])}
     s = [
-        f"read_verilog -sv -formal -I{rtl_dir} {os.path.join(rtl_dir, os.path.basename(f))}"
+        f"read_verilog -sv -formal{' -lib' if os.path.basename(f) in lib else ''} -I{rtl_dir} "
+        f"{os.path.join(rtl_dir, os.path.basename(f))}"
         for f in rtl_files()
         if f.endswith(".v")
     ]
@@ -627,6 +657,7 @@ def main(argv):
     ap.add_argument("--engine", choices=("ind", "pdr", "bmc", "smtbmc"))
     ap.add_argument("--depth", type=int)
     ap.add_argument("--mutant")
+    ap.add_argument("--words", type=int)
     ap.add_argument("--workdir")
     ap.add_argument("--list", action="store_true")
     try:
@@ -642,6 +673,14 @@ def main(argv):
             # (LATENCY + 9 clocks, up to a minute of CPU each) run long.
             long = not (m[0] == "fifo" or (len(m) > 5 and m[5] <= SHORT_BMC))
             print(f"mutant {n}: {m[0]}: {'long' if long else 'formal'}: {m[4]}")
+        for l in registry.select(ROOT, flows=["formal"]):
+            # The shell's lines are proved again at the small image (CTest formal_<name>_w<N>): in
+            # the default run where a planted bug runs at that image (the proof is its control:
+            # the unbroken shell holds there), long otherwise.
+            if l.module == "acore_apb":
+                ctl = any(m[0] == l.name and m[6:] == (SMALL_WORDS,) for m in MUTANTS.values())
+                long = "long-proof" in l.tags or not ctl
+                print(f"image {l.name}: {SMALL_WORDS}: {'long' if long else 'formal'}")
         return 0
     if not a.config:
         print("run.py: a CONFIG is needed (run.py --list)", file=sys.stderr)
@@ -654,6 +693,9 @@ def main(argv):
     rtl_dir = os.path.join(ROOT, "rtl")
     if a.mutant:
         _, fname, pat, rep, _, *mdepth = MUTANTS[a.mutant]
+        if len(mdepth) > 1 and a.words is None:
+            # (a planted bug the table runs at a shell image of its own)
+            a.words = mdepth[1]
         mdir = os.path.join(work, "rtl")
         shutil.rmtree(mdir, ignore_errors=True)
         shutil.copytree(rtl_dir, mdir)
@@ -685,7 +727,11 @@ def main(argv):
             elif line.module in ("acore_top", "acore_serial_top", "acore_apb"):
                 # (the harness takes the line's parameters and passes them on: hparams holds them)
                 line_module, line_params = line.module, []
-                st = stream_setup(line)
+                if a.words is not None and line.module != "acore_apb":
+                    raise registry.RegistryError(
+                        f"{line.where}: --words: '{a.config}' is not a shell line (acore_apb)"
+                    )
+                st = stream_setup(line, a.words)
             else:
                 raise registry.RegistryError(
                     f"{line.where}: no formal harness for module {line.module}"
@@ -712,6 +758,8 @@ def main(argv):
         # (a free core has no timing to check)
         core = st["hparams"]["CORE"]
         st["hparams"]["TIMERS"] = 0 if a.mode == "prove" or not core else 1
+        # (the shell's commit invariants: in a proof; a bounded run checks the properties alone)
+        st["hparams"]["INVARIANTS"] = int(a.mode == "prove")
     front = front_script(rtl_dir, line_module, line_params, st)
     ys = os.path.join(work, "model.ys")
     if engine == "smtbmc":
@@ -737,6 +785,8 @@ def main(argv):
     how = f"{a.mode} {engine}" + (
         "" if engine == "pdr" and a.mode == "prove" else f" depth {depth}"
     )
+    if a.words is not None:
+        how = f"{a.words} words, {how}"
     what = (
         f"{a.config}{' mutant ' + a.mutant if a.mutant else ''}: {how}: {status} "
         f"({dt:.1f} s; {work})"
