@@ -47,7 +47,10 @@ module acore_abz #(
   // Bits of the minimum edge spacing (clocks).
   parameter integer SP_W = 16,
   // Bits of the hysteresis width (angle LSBs): 1 .. ANGLE_W - 2 (the board's is ABZ_HYS.WIDTH's).
-  parameter integer HYS_W = 8
+  parameter integer HYS_W = 8,
+  // 1: n_i is always 1 .. 2^(N_W-1) (a register that refuses other values feeds it, as the
+  // board's ABZ_N): no clamp. 0: N outside that range is clamped.
+  parameter integer N_IN_RANGE = 0
 ) (
   input  wire               clk_i,
   // Synchronous, active high: count 0 (A = B = 0), no target.
@@ -74,7 +77,6 @@ module acore_abz #(
   localparam integer C_W = N_W + 1;          // a count, 0 .. 4 NMAX - 1
   localparam integer M_W = N_W + 2;          // 4N itself (and a signed difference of counts)
   localparam integer P_W = ANGLE_W + N_W;    // angle N
-  localparam integer Q_W = HYS_W + N_W;      // HYS N
   localparam integer NMAX = 1 << (N_W - 1);
   localparam integer LATENCY = N_W + 3;      // clocks from an accepted angle to its target
 
@@ -82,6 +84,8 @@ module acore_abz #(
     .MSG("illegal parameter: ANGLE_W must be 2..32")) ANGLE_W_must_be_2_to_32 ();
   acore_check #(.OK(N_W >= 2 && N_W <= 16), .VALUE(N_W),
     .MSG("illegal parameter: N_W must be 2..16 (N up to 2^(N_W-1) pulses a turn)")) N_W_must_be_2_to_16 ();
+  acore_check #(.OK(N_IN_RANGE == 0 || N_IN_RANGE == 1), .VALUE(N_IN_RANGE),
+    .MSG("illegal parameter: N_IN_RANGE must be 0 or 1")) N_IN_RANGE_must_be_0_or_1 ();
   acore_check #(.OK(SP_W >= 1 && SP_W <= 24), .VALUE(SP_W),
     .MSG("illegal parameter: SP_W must be 1..24")) SP_W_must_be_1_to_24 ();
   acore_check #(.OK(HYS_W >= 1 && HYS_W <= ANGLE_W - 2), .VALUE(HYS_W),
@@ -91,23 +95,28 @@ module acore_abz #(
   // ---- N clamped to 1 .. NMAX ----
   localparam [N_W-1:0] NMAX_V = NMAX[N_W-1:0];
   localparam [N_W-1:0] ONE_N = {{(N_W-1){1'b0}}, 1'b1};
-  wire [N_W-1:0] n_clamped = (n_i == {N_W{1'b0}}) ? ONE_N : (n_i > NMAX_V) ? NMAX_V : n_i;
+  wire [N_W-1:0] n_clamped = (N_IN_RANGE != 0) ? n_i :
+                             (n_i == {N_W{1'b0}}) ? ONE_N : (n_i > NMAX_V) ? NMAX_V : n_i;
 
   // ---- N: the one in use, and a change seen in the clock it happens ----
   reg [N_W-1:0] n_cur_q;
   reg have_q;                    // an angle has arrived since reset
   wire n_change = (n_clamped != n_cur_q);
 
-  // ---- the target: angle N and HYS N, one bit of N a clock, MSB first ----
+  // ---- the target: three products, one bit of N a clock, LSB first ----
+  // lo = floor(angle 4N / 2^ANGLE_W) and the hysteresis window's ends lm, lp: the same with the
+  // angle taken as (angle - HYS) and (angle + HYS) modulo a turn. A window end that passes a turn
+  // then lies exactly 4N counts lower or higher, so each product lands on its count modulo 4N with
+  // no wrap to undo, and each takes an adder as wide as the angle: the partial sum keeps the
+  // product's upper ANGLE_W bits and shifts the settled low bit out (kept below it only as far
+  // as a count reaches, when N_W > ANGLE_W - 2), instead of an adder as wide as the product.
   reg pend_q, run_q, res_q;
-  reg [ANGLE_W-1:0] ang_q, a_run_q;
-  reg [HYS_W-1:0] h_run_q;
+  reg [ANGLE_W-1:0] ang_q;
   reg [N_W-1:0] n_run_q, nsh_q;
-  reg [P_W-1:0] acc_q;
-  reg [Q_W-1:0] hacc_q;
   reg [$clog2(N_W + 1)-1:0] k_q;
-  wire [P_W-1:0] addend = nsh_q[N_W-1] ? {{N_W{1'b0}}, a_run_q} : {P_W{1'b0}};
-  wire [Q_W-1:0] haddend = nsh_q[N_W-1] ? {{N_W{1'b0}}, h_run_q} : {Q_W{1'b0}};
+  wire load = ~run_q & (pend_q | angle_valid_i);
+  wire [ANGLE_W-1:0] a_new = angle_valid_i ? angle_i : ang_q;
+  wire [ANGLE_W-1:0] hys_a = {{(ANGLE_W-HYS_W){1'b0}}, hys_i};
   // A new N converts the latest angle again (the count re-homes on that result).
   wire redo = n_change & have_q;
   always @(posedge clk_i) begin
@@ -121,20 +130,11 @@ module acore_abz #(
       if (angle_valid_i) have_q <= 1'b1;
       if (angle_valid_i || redo) pend_q <= 1'b1;
       else if (!run_q) pend_q <= 1'b0;
-      if (!run_q && (pend_q || angle_valid_i)) begin
+      if (load) begin
         run_q <= 1'b1;
         k_q <= N_W[$clog2(N_W + 1)-1:0];
-        a_run_q <= angle_valid_i ? angle_i : ang_q;
-        h_run_q <= hys_i;
-        n_run_q <= n_clamped;
-        nsh_q <= n_clamped;
-        acc_q <= {P_W{1'b0}};
-        hacc_q <= {Q_W{1'b0}};
         pend_q <= redo;
       end else if (run_q) begin
-        acc_q <= {acc_q[P_W-2:0], 1'b0} + addend;
-        hacc_q <= {hacc_q[Q_W-2:0], 1'b0} + haddend;
-        nsh_q <= {nsh_q[N_W-2:0], 1'b0};
         k_q <= k_q - 1'b1;
         if (k_q == 1) begin
           run_q <= 1'b0;
@@ -142,27 +142,44 @@ module acore_abz #(
         end
       end
     end
+    if (load) begin
+      n_run_q <= n_clamped;
+      nsh_q <= n_clamped;
+    end else if (run_q) begin
+      nsh_q <= nsh_q >> 1;
+    end
     if (angle_valid_i) ang_q <= angle_i;
   end
-
-  // lo = floor(P / 2^(ANGLE_W-2)) with P = angle N; the window's ends floor((P -+ Q) / 2^(ANGLE_W-2))
-  // with Q = HYS N, taken modulo 4N (P - Q may be negative, P + Q may pass a turn: one 4N added or
-  // taken away, as HYS < 2^ANGLE_W / 4).
-  localparam integer S_W = P_W + 1;          // P - Q signed (> -2^ANGLE_W N), P + Q unsigned (< 2^(ANGLE_W+1) N)
-  wire [M_W-1:0] m4 = {n_run_q, 2'b00};
-  wire [S_W-1:0] p_s = {1'b0, acc_q};
-  wire [S_W-1:0] q_s = {{(S_W-Q_W){1'b0}}, hacc_q};
-  // (Their bits below the count and the wrapped ends' bits above it are not needed.)
-  /* verilator lint_off UNUSEDSIGNAL */
-  wire [S_W-1:0] p_lo = p_s - q_s;
-  wire [S_W-1:0] p_hi = p_s + q_s;
-  wire [M_W:0] m4_s = {1'b0, m4};
-  wire [M_W:0] lm_raw = p_lo[S_W-1:ANGLE_W-2];   // signed, -4N < lm_raw < 4N
-  wire [M_W:0] lp_raw = p_hi[S_W-1:ANGLE_W-2];   // 0 <= lp_raw < 8N
-  wire [M_W:0] lm_w = lm_raw[M_W] ? lm_raw + m4_s : lm_raw;
-  wire [M_W:0] lp_w = (lp_raw >= m4_s) ? lp_raw - m4_s : lp_raw;
-  wire [M_W-1:0] lo = acc_q[P_W-1:ANGLE_W-2];      // < 4N: its top bit is 0
-  /* verilator lint_on UNUSEDSIGNAL */
+  // The three products (0: angle, 1: angle - HYS, 2: angle + HYS, modulo a turn), each the upper
+  // ANGLE_W bits of its partial sum and the settled low bits below them (the last at the top);
+  // their counts are the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them). The datapath
+  // needs no reset: run_q and res_q say when it holds a product.
+  wire [3*C_W-1:0] cnt_of;
+  genvar g;
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : g_prod
+      reg [ANGLE_W-1:0] op_q, acc_q;
+      reg [N_W-1:0] low_q;
+      wire [ANGLE_W-1:0] op_d = (g == 0) ? a_new : (g == 1) ? a_new - hys_a : a_new + hys_a;
+      wire [ANGLE_W:0] psum = {1'b0, acc_q} + (nsh_q[0] ? {1'b0, op_q} : {(ANGLE_W+1){1'b0}});
+      always @(posedge clk_i) begin
+        if (load) begin
+          op_q <= op_d;
+          acc_q <= {ANGLE_W{1'b0}};
+          low_q <= {N_W{1'b0}};
+        end else if (run_q) begin
+          {acc_q, low_q} <= {psum, low_q[N_W-1:1]};
+        end
+      end
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [P_W-1:0] prod = {acc_q, low_q};
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign cnt_of[g*C_W +: C_W] = prod[ANGLE_W-2 +: C_W];
+    end
+  endgenerate
+  wire [C_W-1:0] lo = cnt_of[0 +: C_W];
+  wire [C_W-1:0] lm_w = cnt_of[C_W +: C_W];
+  wire [C_W-1:0] lp_w = cnt_of[2*C_W +: C_W];
   // Registered once (the products' carry chains stay off the count's path).
   reg res2_q;
   reg [C_W-1:0] lo_q, lm_q, lp_q;
@@ -171,9 +188,9 @@ module acore_abz #(
     if (rst_i) res2_q <= 1'b0;
     else res2_q <= res_q;
     if (res_q) begin
-      lo_q <= lo[C_W-1:0];
-      lm_q <= lm_w[C_W-1:0];
-      lp_q <= lp_w[C_W-1:0];
+      lo_q <= lo;
+      lm_q <= lm_w;
+      lp_q <= lp_w;
       n_res_q <= n_run_q;
     end
   end

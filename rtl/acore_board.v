@@ -315,25 +315,30 @@ module acore_board #(
   // take it with each observer output; the SPI port reads it at once (a new zero or direction
   // shows in the next ANGLECOM, as on the AS5047P).
   wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
-  // (ANGLECOM is the same angle: one subtractor for both.)
+  // (ANGLECOM is the same angle: one subtractor for both.) With DIR, zero - x = ~x - ~zero: each
+  // angle takes one subtractor of its operands inverted with DIR, not two and a multiplexer.
+  wire [ANGLE_W-1:0] if_inv = {ANGLE_W{rg_if_ctrl_dir}};
   wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
-  wire [ANGLE_W-1:0] if_angle = rg_if_ctrl_dir ? if_zero - if_src : if_src - if_zero;
+  wire [ANGLE_W-1:0] if_angle = (if_src ^ if_inv) - (if_zero ^ if_inv);
   wire [ANGLE_W-1:0] if_com = if_angle;
-  wire [ANGLE_W-1:0] if_unc = rg_if_ctrl_dir ? if_zero - unc_q : unc_q - if_zero;
+  wire [ANGLE_W-1:0] if_unc = (unc_q ^ if_inv) - (if_zero ^ if_inv);
 
   // ---- the interfaces ----
   // Their inputs as wide as their registers' fields (ABZ_INDEX.POS has one bit more than N: a
   // count 0..4N-1).
   wire [ABZ_N_N_W:0] abz_count;
   wire abz_settled;
-  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W), .HYS_W(ABZ_HYS_WIDTH_W)) u_abz (
+  // (ABZ_N and UVW_PP hold only values of their ranges, the ones the interfaces take: the APB
+  // refuses others, the SPI port writes table entries within them; so no clamp.)
+  acore_abz #(.ANGLE_W(ANGLE_W), .N_W(ABZ_N_N_W), .SP_W(ABZ_SPACING_SPACING_W), .HYS_W(ABZ_HYS_WIDTH_W),
+    .N_IN_RANGE(1)) u_abz (
     .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(if_angle), .n_i(rg_abz_n_n),
     .index_i(rg_abz_index_pos), .spacing_i(rg_abz_spacing_spacing), .hys_i(rg_abz_hys_width),
     .a_o(a_o), .b_o(b_o), .z_o(z_o),
     .count_o(abz_count), .settled_o(abz_settled));
   wire [2:0] uvw_sector;
   wire uvw_valid;
-  acore_uvw #(.ANGLE_W(ANGLE_W), .PP_W(UVW_PP_POLE_PAIRS_W)) u_uvw (
+  acore_uvw #(.ANGLE_W(ANGLE_W), .PP_W(UVW_PP_POLE_PAIRS_W), .PP_IN_RANGE(1)) u_uvw (
     .clk_i(clk_i), .rst_i(rst_i), .angle_valid_i(trk_valid), .angle_i(if_angle),
     .pp_i(rg_uvw_pp_pole_pairs), .offset_i(rg_uvw_offset_offset), .u_o(u_o), .v_o(v_o), .w_o(w_o),
     .sector_o(uvw_sector), .valid_o(uvw_valid));

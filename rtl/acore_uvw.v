@@ -17,7 +17,10 @@ module acore_uvw #(
   // Bits of the angle: one turn = 2^ANGLE_W.
   parameter integer ANGLE_W = 16,
   // Bits of the pole-pair input: PP = 1 .. 2^(PP_W-1) (5: up to 16).
-  parameter integer PP_W = 5
+  parameter integer PP_W = 5,
+  // 1: pp_i is always 1 .. 2^(PP_W-1) (a register that refuses other values feeds it, as the
+  // board's UVW_PP): no clamp. 0: PP outside that range is clamped.
+  parameter integer PP_IN_RANGE = 0
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -39,6 +42,8 @@ module acore_uvw #(
 
   acore_check #(.OK(ANGLE_W >= 3 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 3..32")) ANGLE_W_must_be_3_to_32 ();
+  acore_check #(.OK(PP_IN_RANGE == 0 || PP_IN_RANGE == 1), .VALUE(PP_IN_RANGE),
+    .MSG("illegal parameter: PP_IN_RANGE must be 0 or 1")) PP_IN_RANGE_must_be_0_or_1 ();
   acore_check #(.OK(PP_W >= 1 && PP_W <= 8), .VALUE(PP_W),
     .MSG("illegal parameter: PP_W must be 1..8 (up to 2^(PP_W-1) pole pairs)")) PP_W_must_be_1_to_8 ();
 
@@ -51,7 +56,8 @@ module acore_uvw #(
 
   localparam [PP_W-1:0] PPMAX_V = PPMAX[PP_W-1:0];
   localparam [PP_W-1:0] ONE_PP = {{(PP_W-1){1'b0}}, 1'b1};
-  wire [PP_W-1:0] pp = (pp_i == {PP_W{1'b0}}) ? ONE_PP : (pp_i > PPMAX_V) ? PPMAX_V : pp_i;
+  wire [PP_W-1:0] pp = (PP_IN_RANGE != 0) ? pp_i :
+                       (pp_i == {PP_W{1'b0}}) ? ONE_PP : (pp_i > PPMAX_V) ? PPMAX_V : pp_i;
 
   // Stage 1: the offset; stage 2: the electrical angle; stage 3: the sector and the signals.
   reg [ANGLE_W-1:0] d_q, e_q;
@@ -59,10 +65,13 @@ module acore_uvw #(
   reg v1_q, v2_q;
   reg [ANGLE_W-1:0] e_d;
   integer i;
+  // PP's top bit is set only for PP = 2^(PP_W-1) alone (PP is clamped to at most that): a shift,
+  // one adder fewer than a product over all of PP's bits.
   always @(*) begin
     e_d = {ANGLE_W{1'b0}};
-    for (i = 0; i < PP_W; i = i + 1)
+    for (i = 0; i < PP_W - 1; i = i + 1)
       if (pp_q[i]) e_d = e_d + (d_q << i);
+    if (pp_q[PP_W-1]) e_d = d_q << (PP_W - 1);
   end
   wire [39:0] e40 = {{(40-ANGLE_W){1'b0}}, e_q};
   wire [2:0] sector = (e40 >= T5) ? 3'd5 : (e40 >= T4) ? 3'd4 : (e40 >= T3) ? 3'd3 :
