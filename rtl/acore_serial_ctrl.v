@@ -130,6 +130,12 @@ module acore_serial_ctrl #(
   output reg  [2:0]        sub_sel_o,
   output reg  [1:0]        cin_sel_o,
   output reg  [1:0]        mul_sel_o,
+  // The product's operand sources (MULT = 1), registered: decoded from the next state a clock
+  // ahead, so the multiplier's inputs come through a 3:1 mux on a register's select instead of
+  // the state decode and the A operand's mux (the ECP5's critical path): the multiplicand
+  // (MA_T1, MA_T2, MA_ACC) and the multiplier (1: R from Q, the scaling; 0: x, a Horner step).
+  output wire [1:0]        mul_a_o,
+  output wire              mul_r_o,
   // ---- stage 2 (registered) ----
   output reg               a_acc_o,
   output reg  [1:0]        sat_sel_o,
@@ -169,6 +175,7 @@ module acore_serial_ctrl #(
   localparam [1:0] C_SUB = 2'd0, C_RND = 2'd1, C_NRND = 2'd2, C_ZERO = 2'd3;
   localparam [1:0] SAT_NONE = 2'd0, SAT_S = 2'd1, SAT_ACC = 2'd2;
   localparam [1:0] P_NONE = 2'd0, P_SC = 2'd1, P_H = 2'd2, P_H0 = 2'd3;
+  localparam [1:0] MA_T1 = 2'd0, MA_T2 = 2'd1, MA_ACC = 2'd2;
 
   localparam [4:0] ST_IDLE = 5'd0, ST_PRE = 5'd1, ST_OFF13 = 5'd2, ST_OFF24 = 5'd3, ST_SC = 5'd4,
                    ST_SCB = 5'd5, ST_RND = 5'd6, ST_RNDB = 5'd7, ST_RS0 = 5'd8, ST_RS1 = 5'd9,
@@ -645,6 +652,27 @@ module acore_serial_ctrl #(
       curve_q <= curve_d;
     end
   end
+
+  // The product's operands of the next operation (SC: t of the curve, R; HM: a_n in T1 in the
+  // first step, ACC after, x), as the SC and HM cases issue them; only an SC or HM reads them.
+  generate
+    if (MULT != 0) begin : g_mul_src
+      reg [1:0] mul_a_q;
+      reg       mul_r_q;
+      always @(posedge clk_i) begin
+        if (en) begin
+          if (state_d == ST_SC) mul_a_q <= curve_d ? MA_T1 : MA_T2;
+          else mul_a_q <= (j_d == J_TOP) ? MA_T1 : MA_ACC;
+          mul_r_q <= (state_d == ST_SC);
+        end
+      end
+      assign mul_a_o = mul_a_q;
+      assign mul_r_o = mul_r_q;
+    end else begin : g_no_mul_src
+      assign mul_a_o = MA_T1;
+      assign mul_r_o = 1'b0;
+    end
+  endgenerate
 
   // Stage-2 register: the enables are control (reset to a bubble), the modes are not.
   always @(posedge clk_i) begin

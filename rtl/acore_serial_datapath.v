@@ -25,8 +25,10 @@
 //
 // MULT = 1 adds the hardware product (rtl/acore_hw_mul.v, the product register in stage 1's clock):
 //
-//   stage 1 (operand):  P_q = A * M, A the A operand (or ACC, A_ACC), M = R (Q, unsigned: the
-//                       scaling) or x (T2's low S_W bits, signed: a Horner step), the exact product
+//   stage 1 (operand):  P_q = A * M, A = T1, T2 or ACC, M = R (Q, unsigned: the scaling) or x
+//                       (T2's low S_W bits, signed: a Horner step), the exact product; A and M
+//                       chosen by selects the controller registers a clock ahead (mul_a_i,
+//                       mul_r_i), so the multiplier's inputs do not wait for the state decode
 //   stage 2 (execute):  res = (P_q >>> PSH) + ((B_q & {gate_q}) ^ {sub_q}) + cin_q, the product in
 //                       place of A, PSH = RS (scaling), S_F (Horner) or S_F - ACC_G (the first
 //                       Horner step, whose multiplicand is the coefficient without its ACC_G)
@@ -97,6 +99,9 @@ module acore_serial_datapath #(
   input  wire [1:0]         cin_sel_i,
   // The product (MULT = 1; 0: none, else its shift, the encodings below).
   input  wire [1:0]         mul_sel_i,
+  // Its operand sources, registered by the controller (MA_T1, MA_T2, MA_ACC; 1: R, 0: x).
+  input  wire [1:0]         mul_a_i,
+  input  wire               mul_r_i,
   // ---- stage 2 of the previous operation ----
   // A = ACC (else A_q).
   input  wire               a_acc_i,
@@ -144,6 +149,7 @@ module acore_serial_datapath #(
   localparam [1:0] C_SUB = 2'd0, C_RND = 2'd1, C_NRND = 2'd2, C_ZERO = 2'd3;
   localparam [1:0] SAT_S = 2'd1, SAT_ACC = 2'd2;  // 0: none
   localparam [1:0] P_NONE = 2'd0, P_SC = 2'd1, P_H = 2'd2, P_H0 = 2'd3;
+  localparam [1:0] MA_T1 = 2'd0, MA_T2 = 2'd1, MA_ACC = 2'd2;
 
   localparam integer BW = W + LS + 1;  // shifter width
   localparam integer NB = 1 << BI_W;   // bit-select vector width
@@ -274,12 +280,22 @@ module acore_serial_datapath #(
       localparam integer PR_W = MA_W + MB_W;
       wire [MB_W-1:0] m_r = {{(MB_W-REG_W){1'b0}}, q_i[REG_W-1:0]};
       wire [MB_W-1:0] m_x = {{(MB_W-S_W){t2_q[S_W-1]}}, t2_q[S_W-1:0]};
+      // The multiplicand from the registers on the controller's registered select (not a_d).
+      reg [MA_W-1:0] m_a;
+      always @(*) begin
+        case (mul_a_i)
+          MA_T1:   m_a = t1_q[MA_W-1:0];
+          MA_T2:   m_a = t2_q[MA_W-1:0];
+          MA_ACC:  m_a = acc_q[MA_W-1:0];
+          default: m_a = t1_q[MA_W-1:0];
+        endcase
+      end
       wire [PR_W-1:0] p;
       acore_hw_mul #(
         .A_W(MA_W), .B_W(MB_W), .B_SIGNED(1), .RSHIFT(0), .P_W(PR_W), .DEPTH(1)
       ) u_mul (
-        .clk_i(clk_i), .en_i(en_i), .a_i(a_d[MA_W-1:0]),
-        .b_i((mul_sel_i == P_SC) ? m_r : m_x), .p_o(p));
+        .clk_i(clk_i), .en_i(en_i), .a_i(m_a),
+        .b_i(mul_r_i ? m_r : m_x), .p_o(p));
       reg [1:0] mul_sel_q;
       always @(posedge clk_i) if (en_i) mul_sel_q <= mul_sel_i;
       wire signed [PR_W-1:0] p_s = p;
@@ -309,7 +325,7 @@ module acore_serial_datapath #(
     end else begin : g_nomul
       assign p_sh = {W{1'b0}};
       assign mul_op = 1'b0;
-      wire unused_mul = ^mul_sel_i;
+      wire unused_mul = ^{mul_sel_i, mul_a_i, mul_r_i};
     end
   endgenerate
 

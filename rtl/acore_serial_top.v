@@ -166,7 +166,8 @@ module acore_serial_top #(
   wire a_acc, acc_we, t1_we, t2_we, t2_we_u13, ovf_clr, region_we, neg_we;
   wire los_we, dos_we, out_we;
   wire [2:0] a_sel, b_sel, sub_sel;
-  wire [1:0] q_ext, gate_sel, t1_mv_src, cin_sel, sat_sel, mul_sel;
+  wire [1:0] q_ext, gate_sel, t1_mv_src, cin_sel, sat_sel, mul_sel, mul_a;
+  wire mul_r;
   wire [SHA_W-1:0] sh_amt;
   wire [BI_W-1:0] bit_idx;
   wire [DA_W-1:0] raddr, waddr;
@@ -182,7 +183,7 @@ module acore_serial_top #(
     .a_sel_o(a_sel), .a_half_o(a_half), .b_sel_o(b_sel), .q_ext_o(q_ext), .sh_amt_o(sh_amt),
     .gate_sel_o(gate_sel), .bit_idx_o(bit_idx), .t1_mv_o(t1_mv), .t1_mv_src_o(t1_mv_src),
     .t2_mv_o(t2_mv), .t2_mv_src_o(t2_mv_src), .sub_sel_o(sub_sel), .cin_sel_o(cin_sel),
-    .mul_sel_o(mul_sel), .a_acc_o(a_acc), .sat_sel_o(sat_sel),
+    .mul_sel_o(mul_sel), .mul_a_o(mul_a), .mul_r_o(mul_r), .a_acc_o(a_acc), .sat_sel_o(sat_sel),
     .acc_we_o(acc_we), .t1_we_o(t1_we), .t2_we_o(t2_we), .t2_we_u13_o(t2_we_u13),
     .ovf_clr_o(ovf_clr), .region_we_o(region_we), .neg_we_o(neg_we),
     .los_we_o(los_we), .dos_we_o(dos_we), .out_we_o(out_we),
@@ -213,7 +214,7 @@ module acore_serial_top #(
     .a_sel_i(a_sel), .a_half_i(a_half), .b_sel_i(b_sel), .q_ext_i(q_ext), .sh_amt_i(sh_amt),
     .gate_sel_i(gate_sel), .bit_idx_i(bit_idx), .t1_mv_i(t1_mv), .t1_mv_src_i(t1_mv_src),
     .t2_mv_i(t2_mv), .t2_mv_src_i(t2_mv_src), .sub_sel_i(sub_sel), .cin_sel_i(cin_sel),
-    .mul_sel_i(mul_sel), .a_acc_i(a_acc), .sat_sel_i(sat_sel),
+    .mul_sel_i(mul_sel), .mul_a_i(mul_a), .mul_r_i(mul_r), .a_acc_i(a_acc), .sat_sel_i(sat_sel),
     .acc_we_i(acc_we), .t1_we_i(t1_we), .t2_we_i(t2_we), .t2_we_u13_i(t2_we_u13),
     .ovf_clr_i(ovf_clr), .region_we_i(region_we), .neg_we_i(neg_we),
     .los_we_i(los_we), .dos_we_i(dos_we), .out_we_i(out_we),

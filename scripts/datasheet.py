@@ -117,12 +117,19 @@ def build(root):
             stat = registry.cells(registry.report(root, fam.name, design))
             fmax, lc, why = registry.pnr_result(log, dev)
             io = registry.pnr_count(log, "USER_IO")
-            if io:
-                why = f"does not fit ({io[0]} I/O of {io[1]} pins)"
-            elif why == "does not fit" and lc:
-                why = f"does not fit ({lc[0]}/{lc[1]} {fam.pnr_cell_label})"
             bram = registry.pnr_count(log, fam.pnr_bram)
             dsp = registry.pnr_count(log, fam.pnr_dsp) if dev.capacity["dsp"] else None
+            # The resources over the device's (the logic cells when the log names none over).
+            over = [
+                f"{n[0]}/{n[1]} {label}"
+                for n, label in ((lc, fam.pnr_cell_label), (bram, "BRAM"), (dsp, "DSP"))
+                if n and n[0] > n[1]
+            ]
+            if io:
+                why = f"does not fit ({io[0]} I/O of {io[1]} pins)"
+            elif why == "does not fit" and (over or lc):
+                over = over or [f"{lc[0]}/{lc[1]} {fam.pnr_cell_label}"]
+                why = f"does not fit ({', '.join(over)})"
             if why == "failed":
                 # The program stopped (its counts are not the design's): its message and Yosys's.
                 err = re.findall(r"^ERROR: (.*)$", open(log).read(), re.MULTILINE)

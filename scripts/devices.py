@@ -40,6 +40,9 @@ PNR_FIELDS = {
     "measured_with": str,
     "constraint_line": str,
 }
+# Optional fields of a family: Yosys commands after its synthesis command ({root}: the repository).
+# A family with them writes its netlist after them: its netlist field is then that Yosys command.
+FAMILY_OPTIONAL = {"after": list}
 DEVICE_FIELDS = {
     "family": str,
     "title": str,
@@ -75,9 +78,10 @@ class Family:
     """A synthesis target: Yosys command, the cell classes it counts, its report columns, and, for
     a family whose devices are placed, its place-and-route program."""
 
-    def __init__(self, name, f):
+    def __init__(self, name, f, root="."):
         self.name = name
         self.title, self.synth, self.options = f["title"], f["synth"], list(f["options"])
+        self.after = [c.format(root=os.path.abspath(root)) for c in f.get("after", [])]
         self.cells = dict(f["cells"])
         self.columns = [(c["label"], list(c["count"])) for c in f["columns"]]
         self.placed = "pnr" in f
@@ -89,7 +93,10 @@ class Family:
         device's own options, such as the UP5K's hard multipliers, when given)."""
         out = [a.format(file=netlist) for a in self.netlist] if netlist else []
         extra = list(device.synth_options) if device else []
-        return " ".join([self.synth, *self.options, *extra, "-top", top, *out])
+        if not self.after:
+            return " ".join([self.synth, *self.options, *extra, "-top", top, *out])
+        cmd = " ".join([self.synth, *self.options, *extra, "-top", top])
+        return "; ".join([cmd, *self.after, *([" ".join(out)] if out else [])])
 
     def count(self, cells, classes):
         """Sum of the cells of these classes in a `registry.cells()` dict (None when it is None)."""
@@ -320,13 +327,14 @@ def _load(root):
         if not isinstance(f, dict):
             raise DevicesError(f"{where(t)}: family '{name}' is not a table")
         _check(where, t, f, FAMILY_FIELDS)
+        _check(where, t, f, FAMILY_OPTIONAL, required=False)
         placed = any(k in f for k in PNR_FIELDS)
         _check(where, t, f, PNR_FIELDS, required=placed)
         for k in f:
-            if k not in FAMILY_FIELDS and k not in PNR_FIELDS:
+            if k not in FAMILY_FIELDS and k not in PNR_FIELDS and k not in FAMILY_OPTIONAL:
                 raise DevicesError(
                     f"{where(t, k)}: {k}: unknown field of a family (known: "
-                    f"{', '.join(list(FAMILY_FIELDS) + list(PNR_FIELDS))})"
+                    f"{', '.join(list(FAMILY_FIELDS) + list(PNR_FIELDS) + list(FAMILY_OPTIONAL))})"
                 )
         for c, pat in f["cells"].items():
             if not isinstance(pat, str) or c == "total":
@@ -370,7 +378,7 @@ def _load(root):
                     f"{where(t, 'constraint_line')}: constraint_line: '{f['constraint_line']}' "
                     "must name {port} and {pin} in a line that constraint_pin reads back"
                 )
-        families[name] = Family(name, f)
+        families[name] = Family(name, f, root)
     devices = {}
     for name, d in data.get("device", {}).items():
         t = f"device.{name}"
