@@ -87,8 +87,9 @@ module acore_fold_datapath #(
 
   // Derived, do not override: the map, the register file's read ports and the block RAM budget
   // (iCE40 SB_RAM40_4K, 256 x 16: an HX8K's 32, acore_hx8k_blocks). Fixed: the Horner chain's PP
-  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal; 1 from acore_fold_lean()
-  // on), the host read-back copy (BPW blocks each) and the output FIFO. Then, while they fit, in
+  // ports (a_n, then one per step; a_n and the first step on one with acore_fold_poly_share), the
+  // scaler's 2 (offset, reciprocal; from acore_fold_lean() on one port that reads the four words
+  // from flops, no block), the host read-back copy (BPW blocks each) and the output FIFO. Then, while they fit, in
   // this order (flops saved per block): the curves' and the region's delay lines (S_RAM; from
   // acore_fold_lean() on they are acore_sparse_delay, no block), the Horner steps' argument lines
   // (U_RAM), and for as many CORDIC units as fit a port of their own for the arctangent words
@@ -98,12 +99,14 @@ module acore_fold_datapath #(
   localparam integer ATAN_BASE = acore_addr_atan(TERMS, REGIONS, 0);
   localparam integer H = FOLD / 2;
   localparam integer U = acore_fold_cordic_units(K, FOLD);
-  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE);
+  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE, S_W, FOLD / 2);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
   // The scaler's ports: offset and reciprocal, or both on one (acore_fold_lean).
   localparam integer SC_P = (acore_fold_lean(FOLD) != 0) ? 1 : 2;
-  localparam integer BLOCKS = FIFO_B + (PP + SC_P + 1) * BPW;
+  // The scaler's ports in block RAM (acore_fold_lean: its one port on the flop copy).
+  localparam integer SC_B = (SC_P == 2) ? 2 : 0;
+  localparam integer BLOCKS = FIFO_B + (PP + SC_B + 1) * BPW;
   localparam integer SR_B = ((CORRECTION == ACORE_CORR_NONE) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer RAM_BLOCKS = acore_hx8k_blocks();
@@ -150,7 +153,8 @@ module acore_fold_datapath #(
   wire [AT_BUS_W-1:0] atan;
   acore_fold_regs #(
     .REG_W(REG_W), .WORDS(WORDS), .ATAN_BASE(ATAN_BASE), .K(K), .PORTS(PORTS),
-    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .LAST_FLOP(ZERO), .INIT_FILE(INIT_FILE)
+    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .LAST_FLOP(ZERO),
+    .FLOP_PORT((SC_P == 1) ? PP : -1), .FLOP_WORDS(4), .INIT_FILE(INIT_FILE)
   ) u_regs (
     .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .atan_o(atan), .last_o(last_o), .raddr_i(raddr), .rdata_p_o(rdata));
@@ -177,6 +181,10 @@ module acore_fold_datapath #(
   localparam integer A_RCP13_I = acore_addr_recip(0), A_RCP24_I = acore_addr_recip(1);
   localparam [ADDR_W-1:0] A_OFF13 = A_OFF13_I[ADDR_W-1:0], A_OFF24 = A_OFF24_I[ADDR_W-1:0];
   localparam [ADDR_W-1:0] A_RCP13 = A_RCP13_I[ADDR_W-1:0], A_RCP24 = A_RCP24_I[ADDR_W-1:0];
+  // (SC_P = 1: the port reads the register file's flop copy of words 0..3.)
+  acore_check #(.OK(A_OFF13_I < 4 && A_OFF24_I < 4 && A_RCP13_I < 4 && A_RCP24_I < 4), .VALUE(A_RCP24_I),
+    .MSG("illegal parameter: acore_fold_datapath: the scaler's words must be words 0..3 of the map"))
+    scaler_words_must_be_words_0_to_3 ();
   wire [REG_W-1:0] offset, recip;
   generate
     if (SC_P == 2) begin : g_sc2
