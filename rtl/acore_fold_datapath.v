@@ -85,6 +85,62 @@ module acore_fold_datapath #(
 
 `include "acore_derived.vh"
 
+  // The valid bits read below (acore_fold_lean: v_q[t] for these t only), i = 0 .. 12 (-1 past).
+  function integer vtap(input integer i, input integer h, input integer sl, input integer r,
+                        input integer pl, input integer c, input integer cl, input integer lat);
+    case (i)
+      0: vtap = 0;
+      1: vtap = h - 1;
+      2: vtap = h;
+      3: vtap = sl;
+      4: vtap = sl + h;
+      5: vtap = r;
+      6: vtap = r + h;
+      7: vtap = r + pl;
+      8: vtap = c;
+      9: vtap = sl + h + pl - 2;
+      10: vtap = sl + 2 * h + pl - 2;
+      11: vtap = c + cl - 1;
+      12: vtap = lat;
+      default: vtap = -1;
+    endcase
+  endfunction
+  // 1 when t is one of them.
+  function integer vtap_is(input integer t, input integer h, input integer sl, input integer r,
+                           input integer pl, input integer c, input integer cl, input integer lat);
+    integer i;
+    begin
+      vtap_is = 0;
+      for (i = 0; i < 13; i = i + 1)
+        if (vtap(i, h, sl, r, pl, c, cl, lat) == t) vtap_is = 1;
+    end
+  endfunction
+  // How many distinct ones are below t.
+  function integer vtap_rank(input integer t, input integer h, input integer sl, input integer r,
+                             input integer pl, input integer c, input integer cl, input integer lat);
+    integer i, j, first;
+    begin
+      vtap_rank = 0;
+      for (i = 0; i < 13; i = i + 1) begin
+        first = 1;
+        for (j = 0; j < i; j = j + 1)
+          if (vtap(j, h, sl, r, pl, c, cl, lat) == vtap(i, h, sl, r, pl, c, cl, lat)) first = 0;
+        if (first != 0 && vtap(i, h, sl, r, pl, c, cl, lat) < t) vtap_rank = vtap_rank + 1;
+      end
+    end
+  endfunction
+  // The k-th smallest distinct one (k = 0: the smallest).
+  function integer vtap_kth(input integer k, input integer h, input integer sl, input integer r,
+                            input integer pl, input integer c, input integer cl, input integer lat);
+    integer i;
+    begin
+      vtap_kth = -1;
+      for (i = 0; i < 13; i = i + 1)
+        if (vtap_rank(vtap(i, h, sl, r, pl, c, cl, lat), h, sl, r, pl, c, cl, lat) == k)
+          vtap_kth = vtap(i, h, sl, r, pl, c, cl, lat);
+    end
+  endfunction
+
   // Derived, do not override: the map, the register file's read ports and the block RAM budget
   // (iCE40 SB_RAM40_4K, 256 x 16: an HX8K's 32, acore_hx8k_blocks). Fixed: the Horner chain's PP
   // ports (a_n, then one per step; a_n and the first step on one with acore_fold_poly_share), the
@@ -160,11 +216,39 @@ module acore_fold_datapath #(
     .rdata_o(reg_rdata_o), .atan_o(atan), .last_o(last_o), .raddr_i(raddr), .rdata_p_o(rdata));
 
   // ---- valid bits: v[t] is high t clocks after the accepting edge (t = 0 the next clock) ----
-  reg [LATENCY:0] v_q;
-  always @(posedge clk_i) begin
-    if (rst_i) v_q <= {(LATENCY+1){1'b0}};
-    else v_q <= {v_q[LATENCY-1:0], accept_i};
-  end
+  wire [LATENCY:0] v_q;
+  genvar gt;
+  generate
+    if (SPARSE == 0) begin : g_vchain
+      reg [LATENCY:0] v_sh_q;
+      always @(posedge clk_i) begin
+        if (rst_i) v_sh_q <= {(LATENCY+1){1'b0}};
+        else v_sh_q <= {v_sh_q[LATENCY-1:0], accept_i};
+      end
+      assign v_q = v_sh_q;
+    end else begin : g_vsparse
+      // acore_fold_lean: only the clocks read below (vtap) are made, each from the one before by
+      // an acore_pulse_delay (samples are FOLD clocks apart at least: a counter per FOLD clocks,
+      // not a flop a clock); every other bit is zero.
+      localparam integer ND = vtap_rank(LATENCY + 1, H, SL, R, PL, C, CL, LATENCY);
+      wire [ND:0] vd;
+      assign vd[0] = accept_i;
+      for (gt = 0; gt < ND; gt = gt + 1) begin : g_seg
+        localparam integer T = vtap_kth(gt, H, SL, R, PL, C, CL, LATENCY);
+        localparam integer T0 = (gt == 0) ? -1 : vtap_kth(gt - 1, H, SL, R, PL, C, CL, LATENCY);
+        acore_pulse_delay #(.DEPTH(T - T0), .GAP(FOLD)) u_v (
+          .clk_i(clk_i), .rst_i(rst_i), .d_i(vd[gt]), .q_o(vd[gt + 1]));
+      end
+      for (gt = 0; gt <= LATENCY; gt = gt + 1) begin : g_vbit
+        if (vtap_is(gt, H, SL, R, PL, C, CL, LATENCY) != 0) begin : g_tap
+          assign v_q[gt] = vd[vtap_rank(gt, H, SL, R, PL, C, CL, LATENCY) + 1];
+        end else begin : g_none
+          assign v_q[gt] = 1'b0;
+        end
+      end
+      wire unused_v = ^v_q;
+    end
+  endgenerate
   assign valid_o = v_q[LATENCY];
 
   // ---- 1: pre-filter, held until the next sample ----
