@@ -218,9 +218,17 @@ function integer acore_fold_scaler_latency(input integer f_reg_w, input integer 
                               acore_fold_lean(2 * f_f);
 endfunction
 
-// acore_fold_poly: its coefficient read ports (a_n, then one per Horner step).
-function integer acore_fold_poly_ports(input integer f_degree);
-  acore_fold_poly_ports = f_degree + 1;
+// acore_fold_poly: 1 when a_n and the first Horner step's word share one read port. An item reads
+// a_n at its start and the first step's word INIT_AT + 1 clocks later (INIT_AT = the multiplier's
+// latency - F: when it adds the word), and items come F clocks apart at least, so no two of these
+// reads ever fall on one clock when INIT_AT + 1 < F (from F = 8 on at S_W = 18).
+function integer acore_fold_poly_share(input integer f_s_w, input integer f_f);
+  acore_fold_poly_share = (acore_fold_mul_latency(f_s_w, f_f) - f_f + 1 < f_f) ? 1 : 0;
+endfunction
+// acore_fold_poly: its coefficient read ports (a_n, then one per Horner step; a_n and the first
+// step's on one with acore_fold_poly_share).
+function integer acore_fold_poly_ports(input integer f_degree, input integer f_s_w, input integer f_f);
+  acore_fold_poly_ports = f_degree + 1 - acore_fold_poly_share(f_s_w, f_f);
 endfunction
 
 // acore_fold_poly: a_n addressed and read, DEGREE steps (folded multiplier with a_j as addend,

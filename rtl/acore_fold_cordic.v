@@ -187,11 +187,19 @@ module acore_fold_cordic #(
       wire signed [XY_W-1:0] ya = take ? yr[u] : yr[u+1];
       wire [Z_W-1:0]  za = take ? zr[u] : zr[u+1];
       // Operands shifted by I0 + phase: the fixed I0 is wiring, the phase a barrel of log2(N)
-      // 2:1 stages (the last one shares its LUT with the conditional negation).
+      // 2:1 stages (the last one shares its LUT with the conditional negation). Only the phases
+      // of real iterations (below K - I0) need their shift: when N is above that (N = 32 for
+      // K = 16) the high phase bits are masked and their stages vanish; the phases past K - 1
+      // compute values nobody reads either way.
+      localparam integer NS = (K - I0 < N) ? K - I0 : N;
+      localparam integer SW = (NS > 1) ? $clog2(NS) : 0;
+      localparam integer SH_MASK_I = (1 << SW) - 1;
+      localparam [PW-1:0] SH_MASK = SH_MASK_I[PW-1:0];
+      wire [PW-1:0] sh = ph_q & SH_MASK;
       wire signed [XY_W-1:0] ys0 = ya >>> I0;
-      wire [XY_W-1:0] ys_full = barrel(ys0, ph_q, 1'b1);
+      wire [XY_W-1:0] ys_full = barrel(ys0, sh, 1'b1);
       wire [XY_W-2:0] ys = ys_full[XY_W-2:0];
-      wire [XY_W-1:0] xs = barrel({1'b0, xa >> I0}, ph_q, 1'b0);
+      wire [XY_W-1:0] xs = barrel({1'b0, xa >> I0}, sh, 1'b0);
       // The arctangent word of iteration I0 + phase: from the bus (an N:1 choice) or, with
       // AT_RAM, from a memory port addressed the clock before (iteration I0 + ph_d).
       wire [Z_W-1:0] at;

@@ -85,10 +85,67 @@ module acore_fold_datapath #(
 
 `include "acore_derived.vh"
 
+  // The valid bits read below (acore_fold_lean: v_q[t] for these t only), i = 0 .. 12 (-1 past).
+  function integer vtap(input integer i, input integer h, input integer sl, input integer r,
+                        input integer pl, input integer c, input integer cl, input integer lat);
+    case (i)
+      0: vtap = 0;
+      1: vtap = h - 1;
+      2: vtap = h;
+      3: vtap = sl;
+      4: vtap = sl + h;
+      5: vtap = r;
+      6: vtap = r + h;
+      7: vtap = r + pl;
+      8: vtap = c;
+      9: vtap = sl + h + pl - 2;
+      10: vtap = sl + 2 * h + pl - 2;
+      11: vtap = c + cl - 1;
+      12: vtap = lat;
+      default: vtap = -1;
+    endcase
+  endfunction
+  // 1 when t is one of them.
+  function integer vtap_is(input integer t, input integer h, input integer sl, input integer r,
+                           input integer pl, input integer c, input integer cl, input integer lat);
+    integer i;
+    begin
+      vtap_is = 0;
+      for (i = 0; i < 13; i = i + 1)
+        if (vtap(i, h, sl, r, pl, c, cl, lat) == t) vtap_is = 1;
+    end
+  endfunction
+  // How many distinct ones are below t.
+  function integer vtap_rank(input integer t, input integer h, input integer sl, input integer r,
+                             input integer pl, input integer c, input integer cl, input integer lat);
+    integer i, j, first;
+    begin
+      vtap_rank = 0;
+      for (i = 0; i < 13; i = i + 1) begin
+        first = 1;
+        for (j = 0; j < i; j = j + 1)
+          if (vtap(j, h, sl, r, pl, c, cl, lat) == vtap(i, h, sl, r, pl, c, cl, lat)) first = 0;
+        if (first != 0 && vtap(i, h, sl, r, pl, c, cl, lat) < t) vtap_rank = vtap_rank + 1;
+      end
+    end
+  endfunction
+  // The k-th smallest distinct one (k = 0: the smallest).
+  function integer vtap_kth(input integer k, input integer h, input integer sl, input integer r,
+                            input integer pl, input integer c, input integer cl, input integer lat);
+    integer i;
+    begin
+      vtap_kth = -1;
+      for (i = 0; i < 13; i = i + 1)
+        if (vtap_rank(vtap(i, h, sl, r, pl, c, cl, lat), h, sl, r, pl, c, cl, lat) == k)
+          vtap_kth = vtap(i, h, sl, r, pl, c, cl, lat);
+    end
+  endfunction
+
   // Derived, do not override: the map, the register file's read ports and the block RAM budget
   // (iCE40 SB_RAM40_4K, 256 x 16: an HX8K's 32, acore_hx8k_blocks). Fixed: the Horner chain's PP
-  // ports (a_n, then one per step), the scaler's 2 (offset, reciprocal; 1 from acore_fold_lean()
-  // on), the host read-back copy (BPW blocks each) and the output FIFO. Then, while they fit, in
+  // ports (a_n, then one per step; a_n and the first step on one with acore_fold_poly_share), the
+  // scaler's 2 (offset, reciprocal; from acore_fold_lean() on one port that reads the four words
+  // from flops, no block), the host read-back copy (BPW blocks each) and the output FIFO. Then, while they fit, in
   // this order (flops saved per block): the curves' and the region's delay lines (S_RAM; from
   // acore_fold_lean() on they are acore_sparse_delay, no block), the Horner steps' argument lines
   // (U_RAM), and for as many CORDIC units as fit a port of their own for the arctangent words
@@ -98,12 +155,14 @@ module acore_fold_datapath #(
   localparam integer ATAN_BASE = acore_addr_atan(TERMS, REGIONS, 0);
   localparam integer H = FOLD / 2;
   localparam integer U = acore_fold_cordic_units(K, FOLD);
-  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE);
+  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE, S_W, FOLD / 2);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
   // The scaler's ports: offset and reciprocal, or both on one (acore_fold_lean).
   localparam integer SC_P = (acore_fold_lean(FOLD) != 0) ? 1 : 2;
-  localparam integer BLOCKS = FIFO_B + (PP + SC_P + 1) * BPW;
+  // The scaler's ports in block RAM (acore_fold_lean: its one port on the flop copy).
+  localparam integer SC_B = (SC_P == 2) ? 2 : 0;
+  localparam integer BLOCKS = FIFO_B + (PP + SC_B + 1) * BPW;
   localparam integer SR_B = ((CORRECTION == ACORE_CORR_NONE) ? 0 : (S_W > 16) ? 2 : 1) + 1;   // s line, region line
   localparam integer U_B = (DEGREE - 1) * ((S_W + ADDR_W > 16) ? 2 : 1);        // argument lines
   localparam integer RAM_BLOCKS = acore_hx8k_blocks();
@@ -150,17 +209,46 @@ module acore_fold_datapath #(
   wire [AT_BUS_W-1:0] atan;
   acore_fold_regs #(
     .REG_W(REG_W), .WORDS(WORDS), .ATAN_BASE(ATAN_BASE), .K(K), .PORTS(PORTS),
-    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .LAST_FLOP(ZERO), .INIT_FILE(INIT_FILE)
+    .ATAN_FLOPS((AT_UNITS < U) ? 1 : 0), .LAST_FLOP(ZERO),
+    .FLOP_PORT((SC_P == 1) ? PP : -1), .FLOP_WORDS(4), .INIT_FILE(INIT_FILE)
   ) u_regs (
     .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .atan_o(atan), .last_o(last_o), .raddr_i(raddr), .rdata_p_o(rdata));
 
   // ---- valid bits: v[t] is high t clocks after the accepting edge (t = 0 the next clock) ----
-  reg [LATENCY:0] v_q;
-  always @(posedge clk_i) begin
-    if (rst_i) v_q <= {(LATENCY+1){1'b0}};
-    else v_q <= {v_q[LATENCY-1:0], accept_i};
-  end
+  wire [LATENCY:0] v_q;
+  genvar gt;
+  generate
+    if (SPARSE == 0) begin : g_vchain
+      reg [LATENCY:0] v_sh_q;
+      always @(posedge clk_i) begin
+        if (rst_i) v_sh_q <= {(LATENCY+1){1'b0}};
+        else v_sh_q <= {v_sh_q[LATENCY-1:0], accept_i};
+      end
+      assign v_q = v_sh_q;
+    end else begin : g_vsparse
+      // acore_fold_lean: only the clocks read below (vtap) are made, each from the one before by
+      // an acore_pulse_delay (samples are FOLD clocks apart at least: a counter per FOLD clocks,
+      // not a flop a clock); every other bit is zero.
+      localparam integer ND = vtap_rank(LATENCY + 1, H, SL, R, PL, C, CL, LATENCY);
+      wire [ND:0] vd;
+      assign vd[0] = accept_i;
+      for (gt = 0; gt < ND; gt = gt + 1) begin : g_seg
+        localparam integer T = vtap_kth(gt, H, SL, R, PL, C, CL, LATENCY);
+        localparam integer T0 = (gt == 0) ? -1 : vtap_kth(gt - 1, H, SL, R, PL, C, CL, LATENCY);
+        acore_pulse_delay #(.DEPTH(T - T0), .GAP(FOLD)) u_v (
+          .clk_i(clk_i), .rst_i(rst_i), .d_i(vd[gt]), .q_o(vd[gt + 1]));
+      end
+      for (gt = 0; gt <= LATENCY; gt = gt + 1) begin : g_vbit
+        if (vtap_is(gt, H, SL, R, PL, C, CL, LATENCY) != 0) begin : g_tap
+          assign v_q[gt] = vd[vtap_rank(gt, H, SL, R, PL, C, CL, LATENCY) + 1];
+        end else begin : g_none
+          assign v_q[gt] = 1'b0;
+        end
+      end
+      wire unused_v = ^v_q;
+    end
+  endgenerate
   assign valid_o = v_q[LATENCY];
 
   // ---- 1: pre-filter, held until the next sample ----
@@ -177,6 +265,10 @@ module acore_fold_datapath #(
   localparam integer A_RCP13_I = acore_addr_recip(0), A_RCP24_I = acore_addr_recip(1);
   localparam [ADDR_W-1:0] A_OFF13 = A_OFF13_I[ADDR_W-1:0], A_OFF24 = A_OFF24_I[ADDR_W-1:0];
   localparam [ADDR_W-1:0] A_RCP13 = A_RCP13_I[ADDR_W-1:0], A_RCP24 = A_RCP24_I[ADDR_W-1:0];
+  // (SC_P = 1: the port reads the register file's flop copy of words 0..3.)
+  acore_check #(.OK(A_OFF13_I < 4 && A_OFF24_I < 4 && A_RCP13_I < 4 && A_RCP24_I < 4), .VALUE(A_RCP24_I),
+    .MSG("illegal parameter: acore_fold_datapath: the scaler's words must be words 0..3 of the map"))
+    scaler_words_must_be_words_0_to_3 ();
   wire [REG_W-1:0] offset, recip;
   generate
     if (SC_P == 2) begin : g_sc2

@@ -10,7 +10,10 @@
 //
 // The coefficients come from a synchronous-read memory (the register file's block RAM copies):
 // port 0 reads a_n when the item enters, port m + 1 reads a_j (j = DEGREE-1-m) for step m, each
-// address one clock before the word is used (coef_addr_o, coef_i one clock later).
+// address one clock before the word is used (coef_addr_o, coef_i one clock later). With
+// acore_fold_poly_share (F >= 8 at S_W = 18) port 0 also reads step 0's word, on every clock but
+// an item's start (the step's read is INIT_AT + 1 < F clocks after its item's start, so never on
+// another item's), and step m reads on port m.
 //
 //   clock 0: item in, a_n addressed | 1: a_n read | 2: step 0 | step m: ML clocks of multiplier
 //   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
@@ -43,7 +46,7 @@ module acore_fold_poly #(
   // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
   parameter integer MULT = 0,
   // Derived, do not override: coefficient read ports.
-  parameter integer PORTS = acore_fold_poly_ports(DEGREE)
+  parameter integer PORTS = acore_fold_poly_ports(DEGREE, S_W, F)
 ) (
   input  wire                     clk_i,
   // Synchronous reset (of the start bits and the delay lines' pointers).
@@ -79,6 +82,7 @@ module acore_fold_poly #(
   localparam integer STEP = ML + 1;
   localparam integer LATENCY = acore_fold_poly_latency(DEGREE, S_W, F);
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
+  localparam integer SHARE = acore_fold_poly_share(S_W, F);  // a_n and step 0 on port 0
   // The address of the item's word of power j, from its word 0 (the map: the powers of a region's
   // curve are consecutive words).
   function integer term_off(input integer j);
@@ -101,8 +105,8 @@ module acore_fold_poly #(
   acore_check #(.OK(F >= 1 && (F & (F - 1)) == 0), .VALUE(F),
     .MSG("illegal parameter: acore_fold_poly: F must be a power of two (FOLD/2)"))
     F_must_be_a_power_of_two ();
-  acore_check #(.OK(PORTS == acore_fold_poly_ports(DEGREE)), .VALUE(PORTS),
-    .MSG("illegal parameter: acore_fold_poly: PORTS is derived (DEGREE+1), do not override"))
+  acore_check #(.OK(PORTS == acore_fold_poly_ports(DEGREE, S_W, F)), .VALUE(PORTS),
+    .MSG("illegal parameter: acore_fold_poly: PORTS is derived (acore_fold_poly_ports), do not override"))
     PORTS_is_derived ();
 
   // A coefficient word, sign-extended and shifted to ACC_F fraction bits.
@@ -123,7 +127,15 @@ module acore_fold_poly #(
   endgenerate
   localparam integer DEG_I = term_off(DEGREE);
   localparam [ADDR_W-1:0] DEG_A = DEG_I[ADDR_W-1:0];
-  assign coef_addr_o[ADDR_W-1:0] = base_i + DEG_A;
+  // Step m's word address, one clock before its multiplier adds the word.
+  wire [ADDR_W-1:0] step_a [0:DEGREE-1];
+  generate
+    if (SHARE != 0) begin : g_share
+      assign coef_addr_o[ADDR_W-1:0] = start_i ? base_i + DEG_A : step_a[0];
+    end else begin : g_own
+      assign coef_addr_o[ADDR_W-1:0] = base_i + DEG_A;
+    end
+  endgenerate
 
   // Per step m: its inputs at its start clock (accumulator, argument, curve, base address,
   // overflow so far, start).
@@ -166,13 +178,16 @@ module acore_fold_poly #(
       localparam integer J_I = term_off(DEGREE - 1 - m);
       localparam [ADDR_W-1:0] J_A = J_I[ADDR_W-1:0];
       acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_da (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(coef_addr_o[(m + 1) * ADDR_W +: ADDR_W]));
+        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(step_a[m]));
+      if (SHARE == 0 || m > 0) begin : g_port
+        assign coef_addr_o[(m + 1 - SHARE) * ADDR_W +: ADDR_W] = step_a[m];
+      end
       wire [P_W-1:0] sum;
       acore_fold_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F), .MULT(MULT)
       ) u_mul (
         .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
-        .init_i(coef_acc(coef_i[(m + 1) * REG_W +: REG_W])), .p_o(sum));
+        .init_i(coef_acc(coef_i[(m + 1 - SHARE) * REG_W +: REG_W])), .p_o(sum));
       // The item beside the multiplier to the next step: start, and argument with base address.
       // The start bits are reset (as the chain's first two), so a sparse line's pushes and pops
       // pair up from reset on; st_p: the start one clock early, the sparse line's pop.

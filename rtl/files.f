@@ -33,6 +33,7 @@ acore_fold_regs.v
 acore_fold_fifo.v
 acore_ram_delay.v
 acore_sparse_delay.v
+acore_pulse_delay.v
 acore_fold_datapath.v
 acore_top.v
 acore_serial_ram.v
