@@ -145,6 +145,16 @@ MUTANTS = {
         "spacing: two samples less than FOLD clocks apart",
         6,
     ),
+    # The same at FOLD 2 (its own schedule and FIFO depth): the proof of FOLD 2 has a bug it must
+    # catch within the default run's BMC depth (fold_fifo_ignores_ready needs ~LATENCY clocks).
+    "fold2_no_spacing": (
+        "fold2",
+        "acore_top.v",
+        r"rdy_q <= \(cnt_d == CNT_FULL\) && \(occ_d < OCC_MAX\);",
+        "rdy_q <= (occ_d < OCC_MAX);",
+        "spacing: two samples less than FOLD clocks apart",
+        6,
+    ),
     # Folded: the output register's valid bit not reset: a sample of before the reset comes out.
     "fold_valid_not_reset": (
         "fold8",
