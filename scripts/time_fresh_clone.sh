@@ -14,7 +14,9 @@ results=()
 for cmd in demo test; do
   dir=$work/$cmd
   rm -rf "$dir"
+  # (the commit read at the start, for both: a commit made on the branch meanwhile is not measured)
   git clone -q "$root" "$dir"
+  git -C "$dir" checkout -q "$commit"
   echo "time_fresh_clone: ./scripts/$cmd.sh in $dir (log $dir.log)" >&2
   start=$(date +%s)
   rc=0
