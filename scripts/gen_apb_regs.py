@@ -84,9 +84,10 @@ KINDS = {
     "range": (
         "range LO HI [word]",
         (
-            "the RW field above accepts LO..HI (numbers or parameters of the "
-            "owner); a write outside is an error without effect; `word`: the whole written word "
-            "from the field's lsb up is compared (bits above the field must be 0)"
+            "the RW field above accepts LO..HI (numbers, or parameters of the "
+            "owner on a field of at most 8 bits); a write outside is an error without effect; "
+            "`word`: the whole written word from the field's lsb up is compared (bits above the "
+            "field must be 0)"
         ),
     ),
     "lock": (
