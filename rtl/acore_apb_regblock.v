@@ -220,90 +220,151 @@ module acore_apb_regblock #(
   wire is_ro = REGS_RO[ridx];
   wire is_rw = REGS_WR[ridx];
   wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));
+  // Selects: the fewest word-index bits that tell a register from the others it can
+  // be (an error-free read: any register; an error-free write: a writable one). Every
+  // other address is an error: it reads 0 and writes nothing, the selects ignore it.
+  wire rs_id = (ridx & 6'h1F) == (R_ID & 6'h1F);
+  wire rs_config0 = (ridx & 6'h1B) == (R_CONFIG0 & 6'h1B);
+  wire rs_config1 = (ridx & 6'h1B) == (R_CONFIG1 & 6'h1B);
+  wire rs_config2 = (ridx & 6'h13) == (R_CONFIG2 & 6'h13);
+  wire rs_config3 = (ridx & 6'h1C) == (R_CONFIG3 & 6'h1C);
+  wire rs_ctrl = (ridx & 6'h0F) == (R_CTRL & 6'h0F);
+  wire rs_status = (ridx & 6'h0D) == (R_STATUS & 6'h0D);
+  wire rs_irq = (ridx & 6'h0A) == (R_IRQ & 6'h0A);
+  wire rs_mag_lo = (ridx & 6'h0D) == (R_MAG_LO & 6'h0D);
+  wire rs_mag_hi = (ridx & 6'h05) == (R_MAG_HI & 6'h05);
+  wire rs_crc_expected = (ridx & 6'h17) == (R_CRC_EXPECTED & 6'h17);
+  wire rs_crc_shadow = (ridx & 6'h13) == (R_CRC_SHADOW & 6'h13);
+  wire rs_crc_ref = (ridx & 6'h13) == (R_CRC_REF & 6'h13);
+  wire rs_crc_scrub = (ridx & 6'h13) == (R_CRC_SCRUB & 6'h13);
+  wire rs_scrub_passes = (ridx & 6'h14) == (R_SCRUB_PASSES & 6'h14);
+  wire ws_ctrl = (ridx & 6'h0D) == (R_CTRL & 6'h0D);
+  wire ws_status = (ridx & 6'h05) == (R_STATUS & 6'h05);
+  wire ws_mag_lo = (ridx & 6'h05) == (R_MAG_LO & 6'h05);
+  wire ws_mag_hi = (ridx & 6'h05) == (R_MAG_HI & 6'h05);
+  wire ws_crc_expected = (ridx & 6'h08) == (R_CRC_EXPECTED & 6'h08);
   // Refused while the owner locks them: a window's any access, a register's write.
   wire lock_err = (in_coef & coef_lock_i) |
-      (in_regs & pwrite_i & (((ridx == R_CTRL) & (ctrl_commit_lock_i & pwdata_i[CTRL_COMMIT])) |
-        ((ridx == R_CRC_EXPECTED) & (crc_expected_lock_i))));
+      (in_regs & pwrite_i & ((ws_ctrl & (ctrl_commit_lock_i & pwdata_i[CTRL_COMMIT])) |
+        (ws_crc_expected & (crc_expected_lock_i))));
   wire err_d = (paddr_i[1:0] != 2'b00) |
       (pwrite_i & (pstrb_i != 4'hF)) |
       ~(reg_ok | in_coef) |
       lock_err;
 
-  // Each register's fields at their positions, zero elsewhere (W1 fields read 0).
-  reg [31:0] rd_d;
+  // Each register's fields at their positions, zero elsewhere (W1 fields read 0),
+  // and the read data: the OR of the selected register's (an AND-OR over the bits each
+  // has).
+  reg [31:0] rv_ctrl;
+  reg [31:0] rv_status;
+  reg [31:0] rv_irq;
+  reg [31:0] rv_mag_lo;
+  reg [31:0] rv_mag_hi;
+  reg [31:0] rv_crc_expected;
+  reg [31:0] rv_crc_shadow;
+  reg [31:0] rv_crc_ref;
+  reg [31:0] rv_crc_scrub;
+  reg [31:0] rv_scrub_passes;
   always @(*) begin
-    rd_d = 32'd0;
-    case (ridx)
-      R_ID: rd_d = ID_VALUE;
-      R_CONFIG0: rd_d = CONFIG0_VALUE;
-      R_CONFIG1: rd_d = CONFIG1_VALUE;
-      R_CONFIG2: rd_d = CONFIG2_VALUE;
-      R_CONFIG3: rd_d = CONFIG3_VALUE;
-      R_CTRL: begin
-        rd_d[CTRL_CRC_CHECK] = ctrl_crc_check_q;
-        rd_d[CTRL_SCRUB] = ctrl_scrub_q;
-        rd_d[CTRL_IRQ_EN +: 6] = ctrl_irq_en_q;
-      end
-      R_STATUS: begin
-        rd_d[STATUS_OVF] = status_ovf_q;
-        rd_d[STATUS_LOS] = status_los_q;
-        rd_d[STATUS_DOS] = status_dos_q;
-        rd_d[STATUS_CRC_SHADOW] = status_crc_shadow_q;
-        rd_d[STATUS_CRC_ACTIVE] = status_crc_active_q;
-        rd_d[STATUS_DONE] = status_done_q;
-        rd_d[STATUS_BUSY] = status_busy_i;
-        rd_d[STATUS_BANK] = status_bank_i;
-        rd_d[STATUS_REF_VALID] = status_ref_valid_i;
-      end
-      R_IRQ: rd_d[IRQ_PENDING +: 6] = irq_pending_i;
-      R_MAG_LO: rd_d[MAG_LO_MAG_LO +: MAG_W] = mag_lo_q;
-      R_MAG_HI: rd_d[MAG_HI_MAG_HI +: MAG_W] = mag_hi_q;
-      R_CRC_EXPECTED: rd_d[CRC_EXPECTED_CRC_EXPECTED +: 32] = crc_expected_q;
-      R_CRC_SHADOW: rd_d[CRC_SHADOW_CRC_SHADOW +: 32] = crc_shadow_i;
-      R_CRC_REF: rd_d[CRC_REF_CRC_REF +: 32] = crc_ref_i;
-      R_CRC_SCRUB: rd_d[CRC_SCRUB_CRC_SCRUB +: 32] = crc_scrub_i;
-      R_SCRUB_PASSES: rd_d[SCRUB_PASSES_PASSES +: 16] = scrub_passes_passes_i;
-      default: rd_d = 32'd0;
-    endcase
+    rv_ctrl = 32'd0;
+    rv_ctrl[CTRL_CRC_CHECK] = ctrl_crc_check_q;
+    rv_ctrl[CTRL_SCRUB] = ctrl_scrub_q;
+    rv_ctrl[CTRL_IRQ_EN +: 6] = ctrl_irq_en_q;
+    rv_status = 32'd0;
+    rv_status[STATUS_OVF] = status_ovf_q;
+    rv_status[STATUS_LOS] = status_los_q;
+    rv_status[STATUS_DOS] = status_dos_q;
+    rv_status[STATUS_CRC_SHADOW] = status_crc_shadow_q;
+    rv_status[STATUS_CRC_ACTIVE] = status_crc_active_q;
+    rv_status[STATUS_DONE] = status_done_q;
+    rv_status[STATUS_BUSY] = status_busy_i;
+    rv_status[STATUS_BANK] = status_bank_i;
+    rv_status[STATUS_REF_VALID] = status_ref_valid_i;
+    rv_irq = 32'd0;
+    rv_irq[IRQ_PENDING +: 6] = irq_pending_i;
+    rv_mag_lo = 32'd0;
+    rv_mag_lo[MAG_LO_MAG_LO +: MAG_W] = mag_lo_q;
+    rv_mag_hi = 32'd0;
+    rv_mag_hi[MAG_HI_MAG_HI +: MAG_W] = mag_hi_q;
+    rv_crc_expected = 32'd0;
+    rv_crc_expected[CRC_EXPECTED_CRC_EXPECTED +: 32] = crc_expected_q;
+    rv_crc_shadow = 32'd0;
+    rv_crc_shadow[CRC_SHADOW_CRC_SHADOW +: 32] = crc_shadow_i;
+    rv_crc_ref = 32'd0;
+    rv_crc_ref[CRC_REF_CRC_REF +: 32] = crc_ref_i;
+    rv_crc_scrub = 32'd0;
+    rv_crc_scrub[CRC_SCRUB_CRC_SCRUB +: 32] = crc_scrub_i;
+    rv_scrub_passes = 32'd0;
+    rv_scrub_passes[SCRUB_PASSES_PASSES +: 16] = scrub_passes_passes_i;
   end
+  wire [31:0] rd_d =
+      ({32{rs_id}} & ID_VALUE) |
+      ({32{rs_config0}} & CONFIG0_VALUE) |
+      ({32{rs_config1}} & CONFIG1_VALUE) |
+      ({32{rs_config2}} & CONFIG2_VALUE) |
+      ({32{rs_config3}} & CONFIG3_VALUE) |
+      ({32{rs_ctrl}} & rv_ctrl) |
+      ({32{rs_status}} & rv_status) |
+      ({32{rs_irq}} & rv_irq) |
+      ({32{rs_mag_lo}} & rv_mag_lo) |
+      ({32{rs_mag_hi}} & rv_mag_hi) |
+      ({32{rs_crc_expected}} & rv_crc_expected) |
+      ({32{rs_crc_shadow}} & rv_crc_shadow) |
+      ({32{rs_crc_ref}} & rv_crc_ref) |
+      ({32{rs_crc_scrub}} & rv_crc_scrub) |
+      ({32{rs_scrub_passes}} & rv_scrub_passes);
 
-  // Setup phase: the answer (error, register data, or a window's word next clock) and which
-  // register an error-free write will change: the access phase's write enables are one gate
-  // from these flops, so the address decode stays off the data registers' enables.
-  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);
-  wire ok_reg_wr = ok_wr & in_regs;
+  // Setup phase: the answer and which register an error-free write will change,
+  // each a flop set only by a setup phase and clear in every other clock. Under the
+  // APB4 protocol the access phase is the clock after the setup phase, so these flops
+  // are the access phase's PRDATA (0 unless an error-free read), PSLVERR and write
+  // enables as they are: no gate after them, the address decode off the data
+  // registers' enables.
+  wire ok = setup & ~err_d;
+  wire ok_wr = ok & pwrite_i;
+  wire ok_rd = ok & ~pwrite_i & in_regs;
   reg err_q, win_coef_q, w_ctrl_q, w_status_q, w_mag_lo_q, w_mag_hi_q;
   reg w_crc_expected_q, w_coef_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
-    if (setup) begin
-      err_q <= err_d;
-      win_coef_q <= in_coef;
-      rdata_q <= rd_d;
-      w_ctrl_q <= ok_reg_wr & (ridx == R_CTRL) & ~(ctrl_commit_lock_i & pwdata_i[CTRL_COMMIT]);
-      w_status_q <= ok_reg_wr & (ridx == R_STATUS);
-      w_mag_lo_q <= ok_reg_wr & (ridx == R_MAG_LO);
-      w_mag_hi_q <= ok_reg_wr & (ridx == R_MAG_HI);
-      w_crc_expected_q <= ok_reg_wr & (ridx == R_CRC_EXPECTED) & ~(crc_expected_lock_i);
-      w_coef_q <= ok_wr & in_coef & ~coef_lock_i;
+    if (rst_i) begin
+      err_q <= 1'b0;
+      rdata_q <= 32'd0;
+      win_coef_q <= 1'b0;
+      w_ctrl_q <= 1'b0;
+      w_status_q <= 1'b0;
+      w_mag_lo_q <= 1'b0;
+      w_mag_hi_q <= 1'b0;
+      w_crc_expected_q <= 1'b0;
+      w_coef_q <= 1'b0;
+    end else begin
+      err_q <= setup & err_d;
+      rdata_q <= ok_rd ? rd_d : 32'd0;
+      win_coef_q <= ok & ~pwrite_i & in_coef;
+      w_ctrl_q <= ok_wr & in_regs & ws_ctrl;
+      w_status_q <= ok_wr & in_regs & ws_status;
+      w_mag_lo_q <= ok_wr & in_regs & ws_mag_lo;
+      w_mag_hi_q <= ok_wr & in_regs & ws_mag_hi;
+      w_crc_expected_q <= ok_wr & in_regs & ws_crc_expected;
+      w_coef_q <= ok_wr & in_coef;
     end
   end
 
   // ---- the access phase ----
-  wire rd_access = access & ~pwrite_i & ~err_q;
-  assign prdata_o = ~rd_access ? 32'd0 : win_coef_q ? {{(32-REG_W){1'b0}}, coef_rdata_i} : rdata_q;
-  assign pslverr_o = access & err_q;
+  assign prdata_o = rdata_q | ({32{win_coef_q}} & {{(32-REG_W){1'b0}}, coef_rdata_i});
+  assign pslverr_o = err_q;
   // COEF: every setup phase reads the word (used only for a read of the window): the
-  // address decode stays off the memory's read enable.
+  // address decode stays off the memory's read enable; its write enable is gated
+  // by the access phase (the memory is the owner's).
   assign coef_re_o = setup;
   assign coef_addr_o = coef_idx[COEF_ADDR_W-1:0];
   assign coef_we_o = access & w_coef_q;
   assign coef_wdata_o = pwdata_i[REG_W-1:0];
-  wire wr_ctrl = access & w_ctrl_q;
-  wire wr_status = access & w_status_q;
-  wire wr_mag_lo = access & w_mag_lo_q;
-  wire wr_mag_hi = access & w_mag_hi_q;
-  wire wr_crc_expected = access & w_crc_expected_q;
+  wire wr_ctrl = w_ctrl_q;
+  wire wr_status = w_status_q;
+  wire wr_mag_lo = w_mag_lo_q;
+  wire wr_mag_hi = w_mag_hi_q;
+  wire wr_crc_expected = w_crc_expected_q;
   assign ctrl_commit_o = wr_ctrl & pwdata_i[CTRL_COMMIT];
   wire clear_status = (wr_ctrl & pwdata_i[CTRL_CLEAR]);
   always @(posedge clk_i) begin

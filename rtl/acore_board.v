@@ -61,8 +61,9 @@
 //         field reads 128), 32 codes per factor of two of the field (half the field: +32), 255
 //         for no field (m = 0) or one below about 1/16 of the nominal; 0 would be 16 times above
 //         it, beyond the scaled curves' range (at the defaults AGC stays above 52).
-// Both are taken with each estimator output (MAG with the angle, AGC from it one clock later),
-// read over SPI (MAG, DIAAGC.AGC) and APB (the board's MAG_AGC register); the model is
+// Both are taken with each estimator output (MAG with the angle; AGC from it one clock later, or,
+// where a sample's clocks leave room (CYCLES > MAG_W), from a normaliser shifting one bit a clock:
+// MAG_W - e clocks later, at most MAG_W, the last sample's AGC until then), read over SPI (MAG, DIAAGC.AGC) and APB (the board's MAG_AGC register); the model is
 // model/ip/stages/interfaces.cpp's as5047::mag_field and as5047::agc_field.
 `resetall
 `default_nettype none
@@ -240,27 +241,67 @@ module acore_board #(
   always @(posedge clk_i) if (est_take) unc_q <= est_angle;
 
   // ---- MAG and AGC (the header): the magnitude last delivered, its upper bits and its logarithm ----
-  reg [MAG_W-1:0] mag_q;
-  always @(posedge clk_i) begin
-    if (rst_i) mag_q <= {MAG_W{1'b0}};
-    else if (est_take) mag_q <= est_mag;
-  end
-  wire [MAG_F_W-1:0] mag_field =
-      mag_q[MAG_W-1] ? {MAG_F_W{1'b1}} : mag_q[MAG_W-2 -: MAG_F_W];
-  // lg m in 1/32: the leading one's position e (0 for m = 0 too) and the 5 bits below it.
+  // MAG is taken with the sample. lg m = e + f/32 needs the leading one e of m and the 5 bits f
+  // below it: when a sample's clocks leave room (MAG_NORM_SEQ: CYCLES > MAG_W), a normaliser
+  // shifts m left one bit a clock until its top bit is set, counting e down from the top (at most
+  // MAG_W - 1 clocks after the take), and AGC is taken from e and f when it stops (until then
+  // AGC holds the last sample's); else a priority encoder and a shifter find them in one clock
+  // (AGC the clock after the take).
   localparam integer MAG_E_W = $clog2(MAG_W);
-  reg [MAG_E_W-1:0] mag_e;
-  always @* begin : p_lead
-    integer i;
-    mag_e = {MAG_E_W{1'b0}};
-    for (i = 0; i < MAG_W; i = i + 1) if (mag_q[i]) mag_e = i[MAG_E_W-1:0];
-  end
   localparam integer MAG_TOP_I = MAG_W - 1;
   localparam [MAG_E_W-1:0] MAG_TOP = MAG_TOP_I[MAG_E_W-1:0];
-  wire [MAG_W-1:0] mag_norm = mag_q << (MAG_TOP - mag_e);  // leading one at the top
-  wire [4:0] mag_f = mag_norm[MAG_W-2 -: 5];
-  // The leading one itself and the bits below f are not part of lg m (named unused_* for lint).
-  wire unused_mag_norm = ^{mag_norm[MAG_W-1], mag_norm[MAG_W-7:0]};
+  localparam integer MAG_NORM_SEQ = (CYCLES > MAG_W) ? 1 : 0;
+  wire [MAG_F_W-1:0] mag_field;
+  wire [MAG_E_W-1:0] mag_e;  // lg m in 1/32: the leading one's position e (0 for m = 0 too)
+  wire [4:0] mag_f;          // and the 5 bits below it
+  wire mag_lg_ok;            // e and f are the last sample's
+  generate
+    if (MAG_NORM_SEQ != 0) begin : g_mag_seq
+      reg [MAG_F_W-1:0] field_q;
+      reg [MAG_W-1:0] norm_q;
+      reg [MAG_E_W-1:0] e_q;
+      wire stop = norm_q[MAG_W-1] | (e_q == {MAG_E_W{1'b0}});
+      always @(posedge clk_i) begin
+        if (rst_i) begin
+          field_q <= {MAG_F_W{1'b0}};
+          norm_q <= {MAG_W{1'b0}};
+          e_q <= {MAG_E_W{1'b0}};
+        end else if (est_take) begin
+          field_q <= est_mag[MAG_W-1] ? {MAG_F_W{1'b1}} : est_mag[MAG_W-2 -: MAG_F_W];
+          norm_q <= est_mag;
+          e_q <= MAG_TOP;
+        end else if (!stop) begin
+          norm_q <= {norm_q[MAG_W-2:0], 1'b0};
+          e_q <= e_q - 1'b1;
+        end
+      end
+      assign mag_field = field_q;
+      assign mag_e = e_q;
+      assign mag_f = norm_q[MAG_W-2 -: 5];
+      assign mag_lg_ok = stop;
+      // The leading one itself and the bits below f are not part of lg m (named unused_* for lint).
+      wire unused_norm = ^{norm_q[MAG_W-1], norm_q[MAG_W-7:0]};
+    end else begin : g_mag_comb
+      reg [MAG_W-1:0] mag_q;
+      always @(posedge clk_i) begin
+        if (rst_i) mag_q <= {MAG_W{1'b0}};
+        else if (est_take) mag_q <= est_mag;
+      end
+      assign mag_field = mag_q[MAG_W-1] ? {MAG_F_W{1'b1}} : mag_q[MAG_W-2 -: MAG_F_W];
+      reg [MAG_E_W-1:0] lead;
+      always @* begin : p_lead
+        integer i;
+        lead = {MAG_E_W{1'b0}};
+        for (i = 0; i < MAG_W; i = i + 1) if (mag_q[i]) lead = i[MAG_E_W-1:0];
+      end
+      wire [MAG_W-1:0] mag_norm = mag_q << (MAG_TOP - lead);  // leading one at the top
+      assign mag_e = lead;
+      assign mag_f = mag_norm[MAG_W-2 -: 5];
+      assign mag_lg_ok = 1'b1;
+      // The leading one itself and the bits below f are not part of lg m (named unused_* for lint).
+      wire unused_mag_norm = ^{mag_norm[MAG_W-1], mag_norm[MAG_W-7:0]};
+    end
+  endgenerate
   localparam integer AGC_D_W = MAG_E_W + 5 + 3;  // signed, holds AGC_REF - lg m
   localparam integer AGC_REF = AGC_MID + AGC_OCTAVE * S_F + AGC_GAIN_F;
   localparam [AGC_D_W-1:0] AGC_REF_W = AGC_REF[AGC_D_W-1:0];
@@ -268,9 +309,11 @@ module acore_board #(
   reg [AGC_W-1:0] agc_q;
   always @(posedge clk_i) begin
     if (rst_i) agc_q <= {AGC_W{1'b1}};
-    else if (agc_d[AGC_D_W-1]) agc_q <= {AGC_W{1'b0}};  // a strong field: 0
-    else if (|agc_d[AGC_D_W-2:AGC_W]) agc_q <= {AGC_W{1'b1}};  // weak or none: 255
-    else agc_q <= agc_d[AGC_W-1:0];
+    else if (mag_lg_ok) begin
+      if (agc_d[AGC_D_W-1]) agc_q <= {AGC_W{1'b0}};  // a strong field: 0
+      else if (|agc_d[AGC_D_W-2:AGC_W]) agc_q <= {AGC_W{1'b1}};  // weak or none: 255
+      else agc_q <= agc_d[AGC_W-1:0];
+    end
   end
   assign rg_mag_agc_mag = mag_field;
   assign rg_mag_agc_agc = agc_q;
@@ -315,13 +358,17 @@ module acore_board #(
   // take it with each observer output; the SPI port reads it at once (a new zero or direction
   // shows in the next ANGLECOM, as on the AS5047P).
   wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
-  // (ANGLECOM is the same angle: one subtractor for both.) With DIR, zero - x = ~x - ~zero: each
-  // angle takes one subtractor of its operands inverted with DIR, not two and a multiplexer.
+  // (ANGLECOM is the same angle: one adder for both.) x - zero, or with DIR zero - x =
+  // ~(x - zero - 1) = ~(x + ~zero): each angle takes one adder, x + ~zero plus 1 without DIR and
+  // its complement with it, whose operands reach the carry chain as they are (the complement
+  // folds into the sum bits' logic), not an inversion of each operand and a subtractor.
   wire [ANGLE_W-1:0] if_inv = {ANGLE_W{rg_if_ctrl_dir}};
+  wire [ANGLE_W-1:0] if_nzero = ~if_zero;
+  wire [ANGLE_W-1:0] if_ci = {{(ANGLE_W-1){1'b0}}, ~rg_if_ctrl_dir};
   wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
-  wire [ANGLE_W-1:0] if_angle = (if_src ^ if_inv) - (if_zero ^ if_inv);
+  wire [ANGLE_W-1:0] if_angle = (if_src + if_nzero + if_ci) ^ if_inv;
   wire [ANGLE_W-1:0] if_com = if_angle;
-  wire [ANGLE_W-1:0] if_unc = (unc_q ^ if_inv) - (if_zero ^ if_inv);
+  wire [ANGLE_W-1:0] if_unc = (unc_q + if_nzero + if_ci) ^ if_inv;
 
   // ---- the interfaces ----
   // Their inputs as wide as their registers' fields (ABZ_INDEX.POS has one bit more than N: a

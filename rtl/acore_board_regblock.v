@@ -189,113 +189,191 @@ module acore_board_regblock #(
 
   // ---- decode and read in the setup phase ----
   wire setup = psel_i & ~penable_i;
-  wire access = psel_i & penable_i;
   wire [5:0] ridx = paddr_i[7:2];
   wire in_regs = (paddr_i[APB_AW-1:8] == {(APB_AW-8){1'b0}});
   wire is_ro = REGS_RO[ridx];
   wire is_rw = REGS_WR[ridx];
   wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));
+  // Selects: the fewest word-index bits that tell a register from the others it can
+  // be (an error-free read: any register; an error-free write: a writable one). Every
+  // other address is an error: it reads 0 and writes nothing, the selects ignore it.
+  wire rs_abz_n = (ridx & 6'h0F) == (R_ABZ_N & 6'h0F);
+  wire rs_abz_index = (ridx & 6'h0F) == (R_ABZ_INDEX & 6'h0F);
+  wire rs_abz_spacing = (ridx & 6'h0F) == (R_ABZ_SPACING & 6'h0F);
+  wire rs_uvw_pp = (ridx & 6'h0F) == (R_UVW_PP & 6'h0F);
+  wire rs_uvw_offset = (ridx & 6'h0F) == (R_UVW_OFFSET & 6'h0F);
+  wire rs_trk_bw = (ridx & 6'h0F) == (R_TRK_BW & 6'h0F);
+  wire rs_trk_lead = (ridx & 6'h07) == (R_TRK_LEAD & 6'h07);
+  wire rs_trk_lot = (ridx & 6'h07) == (R_TRK_LOT & 6'h07);
+  wire rs_trk_velocity = (ridx & 6'h0F) == (R_TRK_VELOCITY & 6'h0F);
+  wire rs_trk_position = (ridx & 6'h0F) == (R_TRK_POSITION & 6'h0F);
+  wire rs_abz_hys = (ridx & 6'h0B) == (R_ABZ_HYS & 6'h0B);
+  wire rs_if_zero = (ridx & 6'h0B) == (R_IF_ZERO & 6'h0B);
+  wire rs_if_ctrl = (ridx & 6'h0D) == (R_IF_CTRL & 6'h0D);
+  wire rs_mag_agc = (ridx & 6'h0D) == (R_MAG_AGC & 6'h0D);
+  wire ws_abz_n = (ridx & 6'h07) == (R_ABZ_N & 6'h07);
+  wire ws_abz_index = (ridx & 6'h07) == (R_ABZ_INDEX & 6'h07);
+  wire ws_abz_spacing = (ridx & 6'h0F) == (R_ABZ_SPACING & 6'h0F);
+  wire ws_uvw_pp = (ridx & 6'h0F) == (R_UVW_PP & 6'h0F);
+  wire ws_uvw_offset = (ridx & 6'h0F) == (R_UVW_OFFSET & 6'h0F);
+  wire ws_trk_bw = (ridx & 6'h07) == (R_TRK_BW & 6'h07);
+  wire ws_trk_lead = (ridx & 6'h07) == (R_TRK_LEAD & 6'h07);
+  wire ws_trk_lot = (ridx & 6'h07) == (R_TRK_LOT & 6'h07);
+  wire ws_abz_hys = (ridx & 6'h0B) == (R_ABZ_HYS & 6'h0B);
+  wire ws_if_zero = (ridx & 6'h09) == (R_IF_ZERO & 6'h09);
+  wire ws_if_ctrl = (ridx & 6'h0A) == (R_IF_CTRL & 6'h0A);
   // ABZ_N.N: 1..4096.
   wire [12:0] abz_n_n_wr = pwdata_i[ABZ_N_N +: 13];
-  wire abz_n_n_bad = (abz_n_n_wr == 13'd0) | (abz_n_n_wr > 13'd4096);
+  wire abz_n_n_bad = ((~abz_n_n_wr[0] & (abz_n_n_wr[12:1] == 12'd0))) | ((abz_n_n_wr[0] & (abz_n_n_wr[12:1] == 12'd2048)) | (abz_n_n_wr[1] & (abz_n_n_wr[12:2] == 11'd1024)) | (abz_n_n_wr[2] & (abz_n_n_wr[12:3] == 10'd512)) | (abz_n_n_wr[3] & (abz_n_n_wr[12:4] == 9'd256)) | (abz_n_n_wr[4] & (abz_n_n_wr[12:5] == 8'd128)) | (abz_n_n_wr[5] & (abz_n_n_wr[12:6] == 7'd64)) | (abz_n_n_wr[6] & (abz_n_n_wr[12:7] == 6'd32)) | (abz_n_n_wr[7] & (abz_n_n_wr[12:8] == 5'd16)) | (abz_n_n_wr[8] & (abz_n_n_wr[12:9] == 4'd8)) | (abz_n_n_wr[9] & (abz_n_n_wr[12:10] == 3'd4)) | (abz_n_n_wr[10] & (abz_n_n_wr[12:11] == 2'd2)) | (abz_n_n_wr[11] & (abz_n_n_wr[12:12] == 1'd1)));
   // UVW_PP.POLE_PAIRS: 1..16.
   wire [4:0] uvw_pp_pole_pairs_wr = pwdata_i[UVW_PP_POLE_PAIRS +: 5];
-  wire uvw_pp_pole_pairs_bad = (uvw_pp_pole_pairs_wr == 5'd0) | (uvw_pp_pole_pairs_wr > 5'd16);
+  wire uvw_pp_pole_pairs_bad = ((~uvw_pp_pole_pairs_wr[0] & (uvw_pp_pole_pairs_wr[4:1] == 4'd0))) | ((uvw_pp_pole_pairs_wr[0] & (uvw_pp_pole_pairs_wr[4:1] == 4'd8)) | (uvw_pp_pole_pairs_wr[1] & (uvw_pp_pole_pairs_wr[4:2] == 3'd4)) | (uvw_pp_pole_pairs_wr[2] & (uvw_pp_pole_pairs_wr[4:3] == 2'd2)) | (uvw_pp_pole_pairs_wr[3] & (uvw_pp_pole_pairs_wr[4:4] == 1'd1)));
   // TRK_BW.BW: TRK_BW_MIN..TRK_BW_MAX (the whole word).
-  wire [31:0] trk_bw_bw_wr = pwdata_i;
-  localparam [31:0] TRK_BW_BW_LO = TRK_BW_MIN;
-  localparam [31:0] TRK_BW_BW_HI = TRK_BW_MAX;
-  wire trk_bw_bw_lo_bad;
+  wire [3:0] trk_bw_bw_wr = pwdata_i[TRK_BW_BW +: 4];
+  localparam integer TRK_BW_BW_LO = TRK_BW_MIN;
+  localparam integer TRK_BW_BW_HI = TRK_BW_MAX;
+  // Its values' table: bit v is 1 when v is outside TRK_BW_MIN..TRK_BW_MAX.
+  wire [15:0] trk_bw_bw_out;
+  genvar trk_bw_bw_v;
   generate
-    if (TRK_BW_MIN > 0) begin : g_trk_bw_bw_lo
-      assign trk_bw_bw_lo_bad = trk_bw_bw_wr < TRK_BW_BW_LO;
-    end else begin : g_trk_bw_bw_lo_all
-      assign trk_bw_bw_lo_bad = 1'b0;
+    for (trk_bw_bw_v = 0; trk_bw_bw_v < 16; trk_bw_bw_v = trk_bw_bw_v + 1) begin : g_trk_bw_bw_out
+      assign trk_bw_bw_out[trk_bw_bw_v] = (trk_bw_bw_v < TRK_BW_BW_LO) || (trk_bw_bw_v > TRK_BW_BW_HI);
     end
   endgenerate
-  wire trk_bw_bw_bad = trk_bw_bw_lo_bad | (trk_bw_bw_wr > TRK_BW_BW_HI);
+  wire trk_bw_bw_bad = (|pwdata_i[31:4]) | trk_bw_bw_out[trk_bw_bw_wr];
   wire range_err = in_regs & pwrite_i & (
-      ((ridx == R_ABZ_N) & (abz_n_n_bad)) |
-      ((ridx == R_UVW_PP) & (uvw_pp_pole_pairs_bad)) |
-      ((ridx == R_TRK_BW) & (trk_bw_bw_bad)));
+      (ws_abz_n & (abz_n_n_bad)) |
+      (ws_uvw_pp & (uvw_pp_pole_pairs_bad)) |
+      (ws_trk_bw & (trk_bw_bw_bad)));
   wire err_d = (paddr_i[1:0] != 2'b00) |
       (pwrite_i & (pstrb_i != 4'hF)) |
       ~reg_ok |
       range_err;
 
-  // Each register's fields at their positions, zero elsewhere (W1 fields read 0).
-  reg [31:0] rd_d;
+  // Each register's fields at their positions, zero elsewhere (W1 fields read 0),
+  // and the read data: the OR of the selected register's (an AND-OR over the bits each
+  // has).
+  reg [31:0] rv_abz_n;
+  reg [31:0] rv_abz_index;
+  reg [31:0] rv_abz_spacing;
+  reg [31:0] rv_uvw_pp;
+  reg [31:0] rv_uvw_offset;
+  reg [31:0] rv_trk_bw;
+  reg [31:0] rv_trk_lead;
+  reg [31:0] rv_trk_lot;
+  reg [31:0] rv_trk_velocity;
+  reg [31:0] rv_trk_position;
+  reg [31:0] rv_abz_hys;
+  reg [31:0] rv_if_zero;
+  reg [31:0] rv_if_ctrl;
+  reg [31:0] rv_mag_agc;
   always @(*) begin
-    rd_d = 32'd0;
-    case (ridx)
-      R_ABZ_N: rd_d[ABZ_N_N +: 13] = abz_n_n_q;
-      R_ABZ_INDEX: rd_d[ABZ_INDEX_POS +: 14] = abz_index_pos_q;
-      R_ABZ_SPACING: rd_d[ABZ_SPACING_SPACING +: 16] = abz_spacing_spacing_q;
-      R_UVW_PP: rd_d[UVW_PP_POLE_PAIRS +: 5] = uvw_pp_pole_pairs_q;
-      R_UVW_OFFSET: rd_d[UVW_OFFSET_OFFSET +: ANGLE_W] = uvw_offset_offset_q;
-      R_TRK_BW: rd_d[TRK_BW_BW +: 4] = trk_bw_bw_q;
-      R_TRK_LEAD: rd_d[TRK_LEAD_LEAD +: 8] = trk_lead_lead_q;
-      R_TRK_LOT: rd_d[TRK_LOT_THRESHOLD +: TRK_LOT_W] = trk_lot_threshold_q;
-      R_TRK_VELOCITY: rd_d[TRK_VELOCITY_VELOCITY +: 32] = trk_velocity_velocity_i;
-      R_TRK_POSITION: begin
-        rd_d[TRK_POSITION_TURNS +: 16] = trk_position_turns_i;
-        rd_d[TRK_POSITION_ANGLE +: 16] = trk_position_angle_i;
-      end
-      R_ABZ_HYS: rd_d[ABZ_HYS_WIDTH +: 8] = abz_hys_width_q;
-      R_IF_ZERO: rd_d[IF_ZERO_ZERO +: 14] = if_zero_zero_q;
-      R_IF_CTRL: begin
-        rd_d[IF_CTRL_DIR] = if_ctrl_dir_q;
-        rd_d[IF_CTRL_DAEC] = if_ctrl_daec_q;
-      end
-      R_MAG_AGC: begin
-        rd_d[MAG_AGC_MAG +: 14] = mag_agc_mag_i;
-        rd_d[MAG_AGC_AGC +: 8] = mag_agc_agc_i;
-      end
-      default: rd_d = 32'd0;
-    endcase
+    rv_abz_n = 32'd0;
+    rv_abz_n[ABZ_N_N +: 13] = abz_n_n_q;
+    rv_abz_index = 32'd0;
+    rv_abz_index[ABZ_INDEX_POS +: 14] = abz_index_pos_q;
+    rv_abz_spacing = 32'd0;
+    rv_abz_spacing[ABZ_SPACING_SPACING +: 16] = abz_spacing_spacing_q;
+    rv_uvw_pp = 32'd0;
+    rv_uvw_pp[UVW_PP_POLE_PAIRS +: 5] = uvw_pp_pole_pairs_q;
+    rv_uvw_offset = 32'd0;
+    rv_uvw_offset[UVW_OFFSET_OFFSET +: ANGLE_W] = uvw_offset_offset_q;
+    rv_trk_bw = 32'd0;
+    rv_trk_bw[TRK_BW_BW +: 4] = trk_bw_bw_q;
+    rv_trk_lead = 32'd0;
+    rv_trk_lead[TRK_LEAD_LEAD +: 8] = trk_lead_lead_q;
+    rv_trk_lot = 32'd0;
+    rv_trk_lot[TRK_LOT_THRESHOLD +: TRK_LOT_W] = trk_lot_threshold_q;
+    rv_trk_velocity = 32'd0;
+    rv_trk_velocity[TRK_VELOCITY_VELOCITY +: 32] = trk_velocity_velocity_i;
+    rv_trk_position = 32'd0;
+    rv_trk_position[TRK_POSITION_TURNS +: 16] = trk_position_turns_i;
+    rv_trk_position[TRK_POSITION_ANGLE +: 16] = trk_position_angle_i;
+    rv_abz_hys = 32'd0;
+    rv_abz_hys[ABZ_HYS_WIDTH +: 8] = abz_hys_width_q;
+    rv_if_zero = 32'd0;
+    rv_if_zero[IF_ZERO_ZERO +: 14] = if_zero_zero_q;
+    rv_if_ctrl = 32'd0;
+    rv_if_ctrl[IF_CTRL_DIR] = if_ctrl_dir_q;
+    rv_if_ctrl[IF_CTRL_DAEC] = if_ctrl_daec_q;
+    rv_mag_agc = 32'd0;
+    rv_mag_agc[MAG_AGC_MAG +: 14] = mag_agc_mag_i;
+    rv_mag_agc[MAG_AGC_AGC +: 8] = mag_agc_agc_i;
   end
+  wire [31:0] rd_d =
+      ({32{rs_abz_n}} & rv_abz_n) |
+      ({32{rs_abz_index}} & rv_abz_index) |
+      ({32{rs_abz_spacing}} & rv_abz_spacing) |
+      ({32{rs_uvw_pp}} & rv_uvw_pp) |
+      ({32{rs_uvw_offset}} & rv_uvw_offset) |
+      ({32{rs_trk_bw}} & rv_trk_bw) |
+      ({32{rs_trk_lead}} & rv_trk_lead) |
+      ({32{rs_trk_lot}} & rv_trk_lot) |
+      ({32{rs_trk_velocity}} & rv_trk_velocity) |
+      ({32{rs_trk_position}} & rv_trk_position) |
+      ({32{rs_abz_hys}} & rv_abz_hys) |
+      ({32{rs_if_zero}} & rv_if_zero) |
+      ({32{rs_if_ctrl}} & rv_if_ctrl) |
+      ({32{rs_mag_agc}} & rv_mag_agc);
 
-  // Setup phase: the answer (error, register data, or a window's word next clock) and which
-  // register an error-free write will change: the access phase's write enables are one gate
-  // from these flops, so the address decode stays off the data registers' enables.
-  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);
-  wire ok_reg_wr = ok_wr & in_regs;
+  // Setup phase: the answer and which register an error-free write will change,
+  // each a flop set only by a setup phase and clear in every other clock. Under the
+  // APB4 protocol the access phase is the clock after the setup phase, so these flops
+  // are the access phase's PRDATA (0 unless an error-free read), PSLVERR and write
+  // enables as they are: no gate after them, the address decode off the data
+  // registers' enables.
+  wire ok = setup & ~err_d;
+  wire ok_wr = ok & pwrite_i;
+  wire ok_rd = ok & ~pwrite_i;
   reg err_q, w_abz_n_q, w_abz_index_q, w_abz_spacing_q, w_uvw_pp_q, w_uvw_offset_q;
   reg w_trk_bw_q, w_trk_lead_q, w_trk_lot_q, w_abz_hys_q, w_if_zero_q, w_if_ctrl_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
-    if (setup) begin
-      err_q <= err_d;
-      rdata_q <= rd_d;
-      w_abz_n_q <= ok_reg_wr & (ridx == R_ABZ_N) & ~range_err;
-      w_abz_index_q <= ok_reg_wr & (ridx == R_ABZ_INDEX);
-      w_abz_spacing_q <= ok_reg_wr & (ridx == R_ABZ_SPACING);
-      w_uvw_pp_q <= ok_reg_wr & (ridx == R_UVW_PP) & ~range_err;
-      w_uvw_offset_q <= ok_reg_wr & (ridx == R_UVW_OFFSET);
-      w_trk_bw_q <= ok_reg_wr & (ridx == R_TRK_BW) & ~range_err;
-      w_trk_lead_q <= ok_reg_wr & (ridx == R_TRK_LEAD);
-      w_trk_lot_q <= ok_reg_wr & (ridx == R_TRK_LOT);
-      w_abz_hys_q <= ok_reg_wr & (ridx == R_ABZ_HYS);
-      w_if_zero_q <= ok_reg_wr & (ridx == R_IF_ZERO);
-      w_if_ctrl_q <= ok_reg_wr & (ridx == R_IF_CTRL);
+    if (rst_i) begin
+      err_q <= 1'b0;
+      rdata_q <= 32'd0;
+      w_abz_n_q <= 1'b0;
+      w_abz_index_q <= 1'b0;
+      w_abz_spacing_q <= 1'b0;
+      w_uvw_pp_q <= 1'b0;
+      w_uvw_offset_q <= 1'b0;
+      w_trk_bw_q <= 1'b0;
+      w_trk_lead_q <= 1'b0;
+      w_trk_lot_q <= 1'b0;
+      w_abz_hys_q <= 1'b0;
+      w_if_zero_q <= 1'b0;
+      w_if_ctrl_q <= 1'b0;
+    end else begin
+      err_q <= setup & err_d;
+      rdata_q <= ok_rd ? rd_d : 32'd0;
+      w_abz_n_q <= ok_wr & in_regs & ws_abz_n;
+      w_abz_index_q <= ok_wr & in_regs & ws_abz_index;
+      w_abz_spacing_q <= ok_wr & in_regs & ws_abz_spacing;
+      w_uvw_pp_q <= ok_wr & in_regs & ws_uvw_pp;
+      w_uvw_offset_q <= ok_wr & in_regs & ws_uvw_offset;
+      w_trk_bw_q <= ok_wr & in_regs & ws_trk_bw;
+      w_trk_lead_q <= ok_wr & in_regs & ws_trk_lead;
+      w_trk_lot_q <= ok_wr & in_regs & ws_trk_lot;
+      w_abz_hys_q <= ok_wr & in_regs & ws_abz_hys;
+      w_if_zero_q <= ok_wr & in_regs & ws_if_zero;
+      w_if_ctrl_q <= ok_wr & in_regs & ws_if_ctrl;
     end
   end
 
   // ---- the access phase ----
-  wire rd_access = access & ~pwrite_i & ~err_q;
-  assign prdata_o = ~rd_access ? 32'd0 : rdata_q;
-  assign pslverr_o = access & err_q;
-  wire wr_abz_n = access & w_abz_n_q;
-  wire wr_abz_index = access & w_abz_index_q;
-  wire wr_abz_spacing = access & w_abz_spacing_q;
-  wire wr_uvw_pp = access & w_uvw_pp_q;
-  wire wr_uvw_offset = access & w_uvw_offset_q;
-  wire wr_trk_bw = access & w_trk_bw_q;
-  wire wr_trk_lead = access & w_trk_lead_q;
-  wire wr_trk_lot = access & w_trk_lot_q;
-  wire wr_abz_hys = access & w_abz_hys_q;
-  wire wr_if_zero = access & w_if_zero_q;
-  wire wr_if_ctrl = access & w_if_ctrl_q;
+  assign prdata_o = rdata_q;
+  assign pslverr_o = err_q;
+  wire wr_abz_n = w_abz_n_q;
+  wire wr_abz_index = w_abz_index_q;
+  wire wr_abz_spacing = w_abz_spacing_q;
+  wire wr_uvw_pp = w_uvw_pp_q;
+  wire wr_uvw_offset = w_uvw_offset_q;
+  wire wr_trk_bw = w_trk_bw_q;
+  wire wr_trk_lead = w_trk_lead_q;
+  wire wr_trk_lot = w_trk_lot_q;
+  wire wr_abz_hys = w_abz_hys_q;
+  wire wr_if_zero = w_if_zero_q;
+  wire wr_if_ctrl = w_if_ctrl_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       abz_n_n_q <= 13'd1024;

@@ -26,6 +26,7 @@ ROOT, or to OUT when given):
 import argparse
 import difflib
 import glob
+import itertools
 import os
 import re
 import sys
@@ -83,9 +84,10 @@ KINDS = {
     "range": (
         "range LO HI [word]",
         (
-            "the RW field above accepts LO..HI (numbers or parameters of the "
-            "owner); a write outside is an error without effect; `word`: the whole written word "
-            "from the field's lsb up is compared (bits above the field must be 0)"
+            "the RW field above accepts LO..HI (numbers, or parameters of the "
+            "owner on a field of at most 8 bits); a write outside is an error without effect; "
+            "`word`: the whole written word from the field's lsb up is compared (bits above the "
+            "field must be 0)"
         ),
     ),
     "lock": (
@@ -814,6 +816,43 @@ def gen_vh(blk):
 # ---- rtl/<owner>_regblock.v: the register block --------------------------------------------------
 
 
+def decode_bits(idx, others):
+    """The fewest bits of a 6-bit word index that tell idx from every index of others."""
+    for size in range(7):
+        for bits in itertools.combinations(range(6), size):
+            if all(any((idx ^ x) >> b & 1 for b in bits) for x in others):
+                return bits
+    raise ValueError(f"index {idx} is among the others")
+
+
+def const_gt(x, w, c):
+    """A Verilog expression: the w-bit x > the constant c (None when it cannot be)."""
+    if c >= (1 << w) - 1:
+        return None
+    if c < 0:
+        return "1'b1"
+    terms = []
+    for i in range(w):
+        if not c >> i & 1:
+            hi = f" & ({x}[{w - 1}:{i + 1}] == {w - 1 - i}'d{c >> (i + 1)})" if i < w - 1 else ""
+            terms.append(f"({x}[{i}]{hi})")
+    return "(" + " | ".join(terms) + ")"
+
+
+def const_lt(x, w, c):
+    """A Verilog expression: the w-bit x < the constant c (None when it cannot be)."""
+    if c <= 0:
+        return None
+    if c > (1 << w) - 1:
+        return "1'b1"
+    terms = []
+    for i in range(w):
+        if c >> i & 1:
+            hi = f" & ({x}[{w - 1}:{i + 1}] == {w - 1 - i}'d{c >> (i + 1)})" if i < w - 1 else ""
+            terms.append(f"(~{x}[{i}]{hi})")
+    return "(" + " | ".join(terms) + ")"
+
+
 def gen_regblock(blk):
     mod = f"{blk.owner}_regblock"
     plain, wins = blk.plain(), blk.windows()
@@ -940,8 +979,9 @@ def gen_regblock(blk):
     # Decode.
     o.append(
         "\n  // ---- decode and read in the setup phase ----\n"
-        "  wire setup = psel_i & ~penable_i;\n  wire access = psel_i & penable_i;\n"
-        "  wire [5:0] ridx = paddr_i[7:2];\n"
+        "  wire setup = psel_i & ~penable_i;\n"
+        + ("  wire access = psel_i & penable_i;\n" if wins else "")
+        + "  wire [5:0] ridx = paddr_i[7:2];\n"
         "  wire in_regs = (paddr_i[APB_AW-1:8] == {(APB_AW-8){1'b0}});\n"
     )
     for w in wins:
@@ -962,6 +1002,22 @@ def gen_regblock(blk):
         "  wire is_ro = REGS_RO[ridx];\n  wire is_rw = REGS_WR[ridx];\n"
         "  wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));\n"
     )
+    # Selects: an error-free transfer's address is one of the map's, so a register is told from
+    # the others of its kind (read: every register; write: the writable ones) by the fewest
+    # word-index bits; any other address is an error, which loads no data and changes nothing.
+    wregs = [r for r in plain if r.writable()]
+    o.append(
+        "  // Selects: the fewest word-index bits that tell a register from the others it can\n"
+        "  // be (an error-free read: any register; an error-free write: a writable one). Every\n"
+        "  // other address is an error: it reads 0 and writes nothing, the selects ignore it.\n"
+    )
+    for kind, regs in (("rs", plain), ("ws", wregs)):
+        for r in regs:
+            mask = sum(1 << b for b in decode_bits(r.idx(), [x.idx() for x in regs if x is not r]))
+            o.append(
+                f"  wire {kind}_{r.name.lower()} = "
+                f"(ridx & 6'h{mask:02X}) == (R_{r.name} & 6'h{mask:02X});\n"
+            )
     # Locks, per register and window.
     lock_terms, reg_lock = [], {}
     for r in plain:
@@ -982,7 +1038,7 @@ def gen_regblock(blk):
             reg_lock[r.name] = (
                 " | ".join(terms) if len(terms) == 1 else " | ".join(f"({t})" for t in terms)
             )
-            lock_terms.append(f"((ridx == R_{r.name}) & ({reg_lock[r.name]}))")
+            lock_terms.append(f"(ws_{r.name.lower()} & ({reg_lock[r.name]}))")
     win_lock = [f"(in_{w.name.lower()} & {w.name.lower()}_lock_i)" for w in wins if w.lock]
     if lock_terms or win_lock:
         o.append(
@@ -994,7 +1050,9 @@ def gen_regblock(blk):
             else []
         )
         o.append("  wire lock_err = " + " |\n      ".join(terms) + ";\n")
-    # Ranges.
+    # Ranges: logic on the written word's bits, no comparator (a constant bound is a sum of
+    # products of the bits; a parameter's, a table of the field's values when the field is
+    # narrow).
     range_terms = {}
     for r in plain:
         for f in r.fields:
@@ -1003,49 +1061,39 @@ def gen_regblock(blk):
             lo, hi, word = f.range
             s = f.port()
             w = f.width()
-            if word:
-                val = f"pwdata_i >> {f.lp()}" if f.lsb else "pwdata_i"
-                vw, vmax = 32 - f.lsb, (1 << (32 - f.lsb)) - 1
-            else:
-                val = f"pwdata_i[{f.lp()} +: {w}]"
-                vw, vmax = w, (1 << w) - 1
+            val = f"pwdata_i[{f.lp()} +: {w}]"
             o.append(f"  // {r.name}.{f.name}: {lo}..{hi}{' (the whole word)' if word else ''}.\n")
-            o.append(f"  wire [{vw - 1}:0] {s}_wr = {val};\n")
-            bad, gen = [], []
-            for side, v in (("lo", lo), ("hi", hi)):
-                op = "<" if side == "lo" else ">"
-                if isinstance(v, int):
-                    if side == "lo" and v == 1:
-                        bad.append(f"({s}_wr == {vw}'d0)")
-                    elif (side == "lo" and v > 1) or (side == "hi" and v < vmax):
-                        bad.append(f"({s}_wr {op} {vw}'d{v})")
-                    continue
-                lp = f"{s.upper()}_{side.upper()}"
-                o.append(f"  localparam [{vw - 1}:0] {lp} = {v};\n")
-                if side == "hi" and vw > w:
-                    bad.append(f"({s}_wr > {lp})")  # a word above the field's bits: always outside
-                    continue
-                # A limit set by the owner: a comparison only where it can exclude a value.
-                cond = f"{v} > 0" if side == "lo" else f"{v} < {vmax}"
-                gen.append(
-                    f"    if ({cond}) begin : g_{s}_{side}\n"
-                    f"      assign {s}_{side}_bad = {s}_wr {op} {lp};\n"
-                    f"    end else begin : g_{s}_{side}_all\n"
-                    f"      assign {s}_{side}_bad = 1'b0;\n    end\n"
-                )
-                bad.append(f"{s}_{side}_bad")
-            if gen:
+            o.append(f"  wire [{w - 1}:0] {s}_wr = {val};\n")
+            bad = []
+            if word and f.lsb + w < 32:
+                # (the bounds lie within the field: any bit above it set is outside)
+                bad.append(f"(|pwdata_i[31:{f.lsb + w}])")
+            if isinstance(lo, int) and isinstance(hi, int):
+                bad += [t for t in (const_lt(f"{s}_wr", w, lo), const_gt(f"{s}_wr", w, hi)) if t]
+            else:
+                if w > 8:
+                    raise DescError(
+                        f"{f.where}: field {f.name}: a range set by parameters needs a field of at "
+                        "most 8 bits (its values' table)"
+                    )
+                lp = f"{s.upper()}"
                 o.append(
-                    f"  wire {', '.join(b for b in bad if not b.startswith('('))};\n"
-                    "  generate\n" + "".join(gen) + "  endgenerate\n"
+                    f"  localparam integer {lp}_LO = {lo};\n  localparam integer {lp}_HI = {hi};\n"
+                    f"  // Its values' table: bit v is 1 when v is outside {lo}..{hi}.\n"
+                    f"  wire [{(1 << w) - 1}:0] {s}_out;\n"
+                    f"  genvar {s}_v;\n  generate\n"
+                    f"    for ({s}_v = 0; {s}_v < {1 << w}; {s}_v = {s}_v + 1) begin : g_{s}_out\n"
+                    f"      assign {s}_out[{s}_v] = ({s}_v < {lp}_LO) || ({s}_v > {lp}_HI);\n"
+                    f"    end\n  endgenerate\n"
                 )
+                bad.append(f"{s}_out[{s}_wr]")
             o.append(f"  wire {s}_bad = {' | '.join(bad) if bad else chr(49) + chr(39) + 'b0'};\n")
             range_terms.setdefault(r.name, []).append(f"{s}_bad")
     if range_terms:
         o.append(
             "  wire range_err = in_regs & pwrite_i & (\n      "
             + " |\n      ".join(
-                f"((ridx == R_{n}) & ({' | '.join(t)}))" for n, t in range_terms.items()
+                f"(ws_{n.lower()} & ({' | '.join(t)}))" for n, t in range_terms.items()
             )
             + ");\n"
         )
@@ -1062,14 +1110,18 @@ def gen_regblock(blk):
     if range_terms:
         err.append("range_err")
     o.append("  wire err_d = " + " |\n      ".join(err) + ";\n")
-    # Read mux.
+    # Read mux: an AND-OR of the selects over each register's bits.
     o.append(
-        "\n  // Each register's fields at their positions, zero elsewhere (W1 fields read 0).\n"
-        "  reg [31:0] rd_d;\n  always @(*) begin\n    rd_d = 32'd0;\n    case (ridx)\n"
+        "\n  // Each register's fields at their positions, zero elsewhere (W1 fields read 0),\n"
+        "  // and the read data: the OR of the selected register's (an AND-OR over the bits each\n"
+        "  // has).\n"
     )
+    words = []
+    body = []
     for r in plain:
+        lr = r.name.lower()
         if r.kind == "const":
-            o.append(f"      R_{r.name}: rd_d = {r.name}_VALUE;\n")
+            words.append(f"({{32{{rs_{lr}}}}} & {r.name}_VALUE)")
             continue
         items = []
         for f in r.fields:
@@ -1077,27 +1129,34 @@ def gen_regblock(blk):
                 continue
             src = f"{f.port()}_i" if f.live() else f"{f.port()}_q"
             if f.width() == 1:
-                items.append(f"rd_d[{f.lp()}] = {src};")
+                items.append(f"rv_{lr}[{f.lp()}] = {src};")
             else:
-                items.append(f"rd_d[{f.lp()} +: {f.vwidth()}] = {src};")
-        if len(items) == 1:
-            o.append(f"      R_{r.name}: {items[0]}\n")
-        elif items:
-            o.append(
-                f"      R_{r.name}: begin\n"
-                + "".join(f"        {i}\n" for i in items)
-                + "      end\n"
+                items.append(f"rv_{lr}[{f.lp()} +: {f.vwidth()}] = {src};")
+        if items:
+            body.append((lr, items))
+            words.append(f"({{32{{rs_{lr}}}}} & rv_{lr})")
+    if body:
+        o.append(
+            "".join(f"  reg [31:0] rv_{lr};\n" for lr, _ in body)
+            + "  always @(*) begin\n"
+            + "".join(
+                f"    rv_{lr} = 32'd0;\n" + "".join(f"    {i}\n" for i in items)
+                for lr, items in body
             )
-    o.append("      default: rd_d = 32'd0;\n    endcase\n  end\n")
+            + "  end\n"
+        )
+    o.append("  wire [31:0] rd_d =\n      " + (" |\n      ".join(words) or "32'd0") + ";\n")
     # Setup flops.
     o.append(
-        "\n  // Setup phase: the answer (error, register data, or a window's word "
-        "next clock) and which\n"
-        "  // register an error-free write will change: the access phase's write "
-        "enables are one gate\n"
-        "  // from these flops, so the address decode stays off the data registers' enables.\n"
-        "  wire ok_wr = pwrite_i & (paddr_i[1:0] == 2'b00) & (pstrb_i == 4'hF);\n"
-        "  wire ok_reg_wr = ok_wr & in_regs;\n"
+        "\n  // Setup phase: the answer and which register an error-free write will change,\n"
+        "  // each a flop set only by a setup phase and clear in every other clock. Under the\n"
+        "  // APB4 protocol the access phase is the clock after the setup phase, so these flops\n"
+        "  // are the access phase's PRDATA (0 unless an error-free read), PSLVERR and write\n"
+        "  // enables as they are: no gate after them, the address decode off the data\n"
+        "  // registers' enables.\n"
+        "  wire ok = setup & ~err_d;\n"
+        "  wire ok_wr = ok & pwrite_i;\n"
+        "  wire ok_rd = ok & ~pwrite_i" + (" & in_regs" if wins else "") + ";\n"
     )
     flops = (
         ["err_q"]
@@ -1109,44 +1168,47 @@ def gen_regblock(blk):
         "".join(f"  reg {', '.join(flops[i : i + 6])};\n" for i in range(0, len(flops), 6))
         + "  reg [31:0] rdata_q;\n"
     )
-    o.append("  always @(posedge clk_i) begin\n    if (setup) begin\n      err_q <= err_d;\n")
-    for w in wins:
-        o.append(f"      win_{w.name.lower()}_q <= in_{w.name.lower()};\n")
-    o.append("      rdata_q <= rd_d;\n")
-    for r in wregs:
-        cond = f"ok_reg_wr & (ridx == R_{r.name})"
-        if r.name in reg_lock:
-            cond += f" & ~({reg_lock[r.name]})"
-        if r.name in range_terms:
-            cond += " & ~range_err"
-        o.append(f"      w_{r.name.lower()}_q <= {cond};\n")
+    o.append(
+        "  always @(posedge clk_i) begin\n"
+        "    if (rst_i) begin\n      err_q <= 1'b0;\n      rdata_q <= 32'd0;\n"
+    )
+    for fl in flops[1:]:
+        o.append(f"      {fl} <= 1'b0;\n")
+    o.append(
+        "    end else begin\n      err_q <= setup & err_d;\n"
+        "      rdata_q <= ok_rd ? rd_d : 32'd0;\n"
+    )
     for w in wins:
         lw = w.name.lower()
-        o.append(f"      w_{lw}_q <= ok_wr & in_{lw}{f' & ~{lw}_lock_i' if w.lock else ''};\n")
+        o.append(f"      win_{lw}_q <= ok & ~pwrite_i & in_{lw};\n")
+    for r in wregs:
+        o.append(f"      w_{r.name.lower()}_q <= ok_wr & in_regs & ws_{r.name.lower()};\n")
+    for w in wins:
+        lw = w.name.lower()
+        o.append(f"      w_{lw}_q <= ok_wr & in_{lw};\n")
     o.append("    end\n  end\n")
     # Access phase.
-    o.append("\n  // ---- the access phase ----\n  wire rd_access = access & ~pwrite_i & ~err_q;\n")
+    o.append("\n  // ---- the access phase ----\n")
     rd = "rdata_q"
-    for w in reversed(wins):
+    for w in wins:
         fw = w.fields[0].vwidth()
         lw = w.name.lower()
         pad = f"{{{{(32-{fw}){{1'b0}}}}, {lw}_rdata_i}}" if fw != "32" else f"{lw}_rdata_i"
-        rd = f"win_{lw}_q ? {pad} : {rd}"
-    o.append(
-        f"  assign prdata_o = ~rd_access ? 32'd0 : {rd};\n  assign pslverr_o = access & err_q;\n"
-    )
+        rd += f" | ({{32{{win_{lw}_q}}}} & {pad})"
+    o.append(f"  assign prdata_o = {rd};\n  assign pslverr_o = err_q;\n")
     for w in wins:
         lw, fw = w.name.lower(), w.fields[0].vwidth()
         o.append(
             f"  // {w.name}: every setup phase reads the word (used only for a read "
             "of the window): the\n"
-            f"  // address decode stays off the memory's read enable.\n"
+            "  // address decode stays off the memory's read enable; its write enable is gated\n"
+            "  // by the access phase (the memory is the owner's).\n"
             f"  assign {lw}_re_o = setup;\n  assign {lw}_addr_o = {lw}_idx[{w.name}_ADDR_W-1:0];\n"
             f"  assign {lw}_we_o = access & w_{lw}_q;\n"
             f"  assign {lw}_wdata_o = pwdata_i[{fw}-1:0];\n"
         )
     for r in wregs:
-        o.append(f"  wire wr_{r.name.lower()} = access & w_{r.name.lower()}_q;\n")
+        o.append(f"  wire wr_{r.name.lower()} = w_{r.name.lower()}_q;\n")
     clears = {}
     for r in wregs:
         for f in r.fields:

@@ -180,12 +180,12 @@ MUTANTS = {
         "reset/count: an output from before the reset",
         8,
     ),
-    # Shell: a shadow word written in the setup phase (with the last transfer's decode).
+    # Shell: a shadow word written in the setup phase (with the setup phase's own decode).
     "apb_write_in_setup": (
         "apb",
         "acore_apb_regblock.v",
         r"assign coef_we_o = access & w_coef_q;",
-        "assign coef_we_o = psel_i & w_coef_q;",
+        "assign coef_we_o = (access & w_coef_q) | (setup & pwrite_i & in_coef);",
         "apb: a side effect outside an access phase",
         8,
     ),

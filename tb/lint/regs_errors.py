@@ -72,6 +72,13 @@ CASES = [
         "expected 'range LO HI [word]'",
     ),
     (
+        BOARD,
+        r"^field  15:0   SPACING",
+        "+range  TRK_BW_MIN TRK_BW_MAX",
+        "field SPACING: a range set by parameters needs a field of at most 8 bits",
+        r"^field  15:0   SPACING",
+    ),
+    (
         SHELL,
         r"^field  13:8   IRQ_EN",
         "field  12:8   IRQ_EN  RW  0  x",

@@ -101,8 +101,10 @@ void ShellDriver::tick() {
   m.eval();
   // Observe this clock.
   const bool access = m.phase == Impl::kAccess;
-  if (!access && p.pslverr()) ++m.stats.stray_slverr;
-  if (!(access && !t->write) && p.prdata() != 0) ++m.stats.stray_prdata;
+  // (Outside reset: PRDATA and PSLVERR are flops with a synchronous reset, their power-up state
+  // shows until the reset's first edge.)
+  if (!m.rst && !access && p.pslverr()) ++m.stats.stray_slverr;
+  if (!m.rst && !(access && !t->write) && p.prdata() != 0) ++m.stats.stray_prdata;
   if (access && !p.pready()) ++m.stats.wait_states;
   bool completed = false;
   if (access && p.pready()) {
