@@ -407,7 +407,7 @@ function integer acore_track_word_prod_bits(input integer f_cycles, input intege
   end
 endfunction
 // The time-shared observer with coarse shifts (SERIAL = 3: one adder, the error shifted by
-// SHIFT_BITS or by one bit a clock, loss of tracking compared on the whole error): shifting by n
+// SHIFT_BITS or by one bit a clock, loss of tracking from one sum on the adder): shifting by n
 // bits takes n / SHIFT_BITS + n % SHIFT_BITS clocks.
 function integer acore_track_shift_steps(input integer f_n, input integer f_b);
   acore_track_shift_steps = f_n / f_b + f_n % f_b;
@@ -425,13 +425,14 @@ function integer acore_track_shift_loop(input integer f_frac_w, input integer f_
   end
 endfunction
 // Its clocks from a sample taken to its result, which are also its clocks per sample. Its fixed
-// schedule (rtl/acore_track.v, g_shf): 3 clocks to the prediction and the error; the loop; 2 to
-// the rounded angle; v * D over D's DE_W nonzero bits with phi and half added in two more steps;
-// the compensated angle with the output's valid; the output register.
+// schedule (rtl/acore_track.v, g_shf): 3 clocks to the prediction and the error; one to the loss
+// of tracking; the loop; 2 to the rounded angle; v * D over D's DE_W nonzero bits with phi and
+// half added in two more steps; the compensated angle with the output's valid; the output
+// register.
 function integer acore_track_shift_cycles(input integer f_frac_w, input integer f_comp_latency,
                                           input integer f_lead_w, input integer f_lead_f,
                                           input integer f_b);
-  acore_track_shift_cycles = 3 + acore_track_shift_loop(f_frac_w, f_b) + 2 +
+  acore_track_shift_cycles = 4 + acore_track_shift_loop(f_frac_w, f_b) + 2 +
                              (acore_track_word_d_w(f_comp_latency, f_lead_w, f_lead_f) + 2) + 1 + 1;
 endfunction
 // The fewest bits a coarse shift takes (SHIFT_BITS, 2..8) with which SERIAL = 3 takes a sample

@@ -221,17 +221,17 @@ module acore_board_formal #(
   endgenerate
 
   // ---- the coarse-shift observer's schedule tied to the delay line (TRK_SERIAL = 3) ----
-  // Its schedule (rtl/acore_track.v, g_shf) after the clock that takes a sample (age 0): C1..C3 at
-  // ages 1..3; the loop (PL, its first clock L0) from age 4, s = 0..LOOP_END a clock, its updates
-  // (at_x, at_v) within it; R2, R3; the product (PH, s = 0..PROD_END); FIN at age LATENCY - 1.
+  // Its schedule (rtl/acore_track.v, g_shf) after the clock that takes a sample (age 0): C1..C4 at
+  // ages 1..4; the loop (PL) from age 5, s = 0..LOOP_END a clock, its updates (at_x, at_v) within
+  // it; R2, R3; the product (PH, s = 0..PROD_END); FIN at age LATENCY - 1.
   // The loop's shift counts decide no timing (the loop lasts LOOP_END + 1 clocks whatever k).
   generate
     if (TRK_SERIAL == 3) begin : g_shf_inv
-      localparam integer A_PL1 = TRK_LOOP_END + 4;     // the loop's last clock
-      localparam integer A_PH0 = TRK_LOOP_END + 7;
+      localparam integer A_PL1 = TRK_LOOP_END + 5;     // the loop's last clock
+      localparam integer A_PH0 = TRK_LOOP_END + 8;
       localparam integer A_PH1 = A_PH0 + TRK_PROD_END;
       localparam integer AGE_W = 8;
-      wire       tap_c1, tap_c2, tap_c3, tap_l0, tap_pl, tap_r2, tap_r3, tap_ph, tap_fin;
+      wire       tap_c1, tap_c2, tap_c3, tap_c4, tap_pl, tap_r2, tap_r3, tap_ph, tap_fin;
       wire       tap_busy, tap_at_x, tap_at_v, tap_eq_lend, tap_eq_pend;
       wire [TRK_S_W-1:0] tap_s;
       reg [AGE_W-1:0] age;  // clocks since the sample in the schedule was taken; 0: none
@@ -248,13 +248,13 @@ module acore_board_formal #(
           assert (tap_busy == (age != 0));
           if (tap_at_x || tap_at_v) assert (tap_pl);
           assert (tap_c1 == (age == 1) && tap_c2 == (age == 2) && tap_c3 == (age == 3));
-          assert (tap_l0 == (age == 4));
-          assert (tap_pl == (age >= 4 && age <= A_PL1));
+          assert (tap_c4 == (age == 4));
+          assert (tap_pl == (age >= 5 && age <= A_PL1));
           assert (tap_r2 == (age == A_PL1 + 1) && tap_r3 == (age == A_PL1 + 2));
           assert (tap_ph == (age >= A_PH0 && age <= A_PH1));
           assert (tap_fin == (age == A_PH1 + 1));
           assert (tap_eq_lend == (s == TRK_LOOP_END) && tap_eq_pend == (s == TRK_PROD_END));
-          if (tap_pl) assert (s == age - 8'd4);
+          if (tap_pl) assert (s == age - 8'd5);
           if (tap_ph) assert (s == age - A_PH0[7:0]);
         end
       end

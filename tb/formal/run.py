@@ -477,8 +477,9 @@ def board_setup(line):
         # The time-shared observer's schedule, tied to the harness's delay line (its invariants).
         for k in ("LOOP_END", "PROD_END", "K_MIN", "K_MAX", "S_W"):
             h["TRK_" + k] = t[k]
-        # (Yosys names the block of the generate's else-if chain genblk1)
-        g = "dut.u_track.genblk1.g_ser."
+        # (Yosys names each block of the generate's else-if chain genblk1: g_ser is the third
+        # else, as g_shf)
+        g = "dut.u_track.genblk1.genblk1.g_ser."
         taps += [
             (f"g_ser_inv.tap_{w}", g + n)
             for w, n in [
@@ -503,7 +504,7 @@ def board_setup(line):
         taps += [
             (f"g_shf_inv.tap_{w}", g + n)
             for w, n in [
-                *[(p, p) for p in ("c1", "c2", "c3", "l0", "pl", "r2", "r3", "ph", "fin")],
+                *[(p, p) for p in ("c1", "c2", "c3", "c4", "pl", "r2", "r3", "ph", "fin")],
                 ("busy", "busy_q"),
                 ("at_x", "at_x"),
                 ("at_v", "at_v"),
