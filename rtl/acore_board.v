@@ -151,17 +151,21 @@ module acore_board #(
   // the loop over two clocks when the estimator delivers a sample every CYCLES >= 2 clocks (a
   // shorter clock period, nothing lost), time-shared on one adder when it delivers one every
   // acore_track_serial_cycles() clocks or fewer often (the serial core: a quarter of the area),
-  // else word-serial when one every acore_track_word_cycles() clocks with at most 4 bits of D a
-  // clock (the fewest that fit: FOLD 16 or 32, about half the area of the loop a clock), and the
-  // estimator's LATENCY in whole samples compensated.
+  // else time-shared with coarse shifts when one every acore_track_shift_cycles() clocks with the
+  // error shifted at most 8 bits a clock (the fewest that fit: FOLD 32, about the time-shared
+  // form's area), else word-serial when one every acore_track_word_cycles() clocks with at most 4
+  // bits of D a clock (the fewest that fit: FOLD 16, about half the area of the loop a clock), and
+  // the estimator's LATENCY in whole samples compensated.
   localparam integer TRK_TURN_W = TRK_POSITION_TURNS_W;
   localparam integer TRK_LOOP_CLOCKS = (CYCLES >= 2) ? 2 : 1;
   localparam integer COMP_LATENCY = acore_comp_latency(LATENCY, CYCLES);
   localparam integer TRK_PROD_BITS =
       acore_track_word_prod_bits(CYCLES, COMP_LATENCY, TRK_LEAD_LEAD_W, TRK_LEAD_LEAD_F);
+  localparam integer TRK_SHIFT_BITS =
+      acore_track_shift_bits(CYCLES, TRK_FRAC_W, COMP_LATENCY, TRK_LEAD_LEAD_W, TRK_LEAD_LEAD_F);
   localparam integer TRK_SERIAL =
       (CYCLES >= acore_track_serial_cycles(ANGLE_W, TRK_FRAC_W, TRK_LEAD_LEAD_W)) ? 1 :
-      (TRK_PROD_BITS != 0) ? 2 : 0;
+      (TRK_SHIFT_BITS != 0) ? 3 : (TRK_PROD_BITS != 0) ? 2 : 0;
   localparam integer TRK_P_W = ANGLE_W + TRK_FRAC_W;
   // MAG and AGC (the header): the magnitude's width, the SPI fields' widths and AGC's constants
   // (the middle code, codes per factor of two, and 20/32 = the CORDIC gain's mantissa 0.6468).
@@ -326,7 +330,8 @@ module acore_board #(
   acore_track #(
     .ANGLE_W(ANGLE_W), .FRAC_W(TRK_FRAC_W), .TURN_W(TRK_TURN_W), .COMP_LATENCY(COMP_LATENCY),
     .LEAD_W(TRK_LEAD_LEAD_W), .LEAD_F(TRK_LEAD_LEAD_F), .LOOP_CLOCKS(TRK_LOOP_CLOCKS),
-    .SERIAL(TRK_SERIAL), .PROD_BITS((TRK_PROD_BITS != 0) ? TRK_PROD_BITS : 1)
+    .SERIAL(TRK_SERIAL), .PROD_BITS((TRK_PROD_BITS != 0) ? TRK_PROD_BITS : 1),
+    .SHIFT_BITS((TRK_SHIFT_BITS != 0) ? TRK_SHIFT_BITS : 2)
   ) u_track (
     .clk_i(clk_i), .rst_i(rst_i), .in_valid_i(est_valid), .in_ready_o(trk_ready),
     .in_angle_i(est_angle), .bw_i(rg_trk_bw_bw), .lead_i(rg_trk_lead_lead),

@@ -406,6 +406,48 @@ function integer acore_track_word_prod_bits(input integer f_cycles, input intege
         acore_track_word_prod_bits = r;
   end
 endfunction
+// The time-shared observer with coarse shifts (SERIAL = 3: one adder, the error shifted by
+// SHIFT_BITS or by one bit a clock, loss of tracking from one sum on the adder): shifting by n
+// bits takes n / SHIFT_BITS + n % SHIFT_BITS clocks.
+function integer acore_track_shift_steps(input integer f_n, input integer f_b);
+  acore_track_shift_steps = f_n / f_b + f_n % f_b;
+endfunction
+// Its loop's clocks: the error shifted by k, phi's update, by k + 1 more, v's update, for the
+// slowest bandwidth code (the first sample after reset shifts by 0 and k + 1: never more).
+function integer acore_track_shift_loop(input integer f_frac_w, input integer f_b);
+  integer k, n;
+  begin
+    acore_track_shift_loop = 0;
+    for (k = acore_track_k_min(); k <= acore_track_k_max(f_frac_w); k = k + 1) begin
+      n = acore_track_shift_steps(k, f_b) + acore_track_shift_steps(k + 1, f_b) + 2;
+      if (n > acore_track_shift_loop) acore_track_shift_loop = n;
+    end
+  end
+endfunction
+// Its clocks from a sample taken to its result, which are also its clocks per sample. Its fixed
+// schedule (rtl/acore_track.v, g_shf): 3 clocks to the prediction and the error; one to the loss
+// of tracking; the loop; 2 to the rounded angle; v * D over D's DE_W nonzero bits with phi and
+// half added in two more steps; the compensated angle with the output's valid; the output
+// register.
+function integer acore_track_shift_cycles(input integer f_frac_w, input integer f_comp_latency,
+                                          input integer f_lead_w, input integer f_lead_f,
+                                          input integer f_b);
+  acore_track_shift_cycles = 4 + acore_track_shift_loop(f_frac_w, f_b) + 2 +
+                             (acore_track_word_d_w(f_comp_latency, f_lead_w, f_lead_f) + 2) + 1 + 1;
+endfunction
+// The fewest bits a coarse shift takes (SHIFT_BITS, 2..8) with which SERIAL = 3 takes a sample
+// every f_cycles clocks; 0 when none does.
+function integer acore_track_shift_bits(input integer f_cycles, input integer f_frac_w,
+                                        input integer f_comp_latency, input integer f_lead_w,
+                                        input integer f_lead_f);
+  integer b;
+  begin
+    acore_track_shift_bits = 0;
+    for (b = 8; b >= 2; b = b - 1)
+      if (acore_track_shift_cycles(f_frac_w, f_comp_latency, f_lead_w, f_lead_f, b) <= f_cycles)
+        acore_track_shift_bits = b;
+  end
+endfunction
 // The latency the observer compensates (COMP_LATENCY), in whole samples: a top's LATENCY in clocks
 // over its clocks per sample at full rate, rounded down (the rest of a sample, and the observer's
 // own clocks, are the LEAD register's: LEAD is unsigned, so the whole part must not overshoot).

@@ -45,6 +45,9 @@
 // widths and PROD_BITS = 1): whole words a clock, one shifter, v * D PROD_BITS bits of D a clock;
 // its outputs other than out_angle_comp_o take the sample's values during the schedule, while
 // out_valid_o is low (all hold while out_valid_o is high and until the next sample is taken).
+// SERIAL = 3 (time-shared with coarse shifts, below) likewise with acore_track_shift_cycles()
+// clocks (30 at the board's widths, FOLD 32's COMP_LATENCY and SHIFT_BITS = 3): g_ser's one adder,
+// the error shifted SHIFT_BITS or one bit a clock; its outputs as the word-serial form's.
 // In every form out_angle_comp_o changes only in the clock out_valid_o rises.
 // rst_i is synchronous, active high.
 `resetall
@@ -70,10 +73,15 @@ module acore_track #(
   // clock; acore_track_serial_cycles() of rtl/acore_derived.vh clocks a sample, LOOP_CLOCKS unused):
   // for an estimator that delivers a sample every that many clocks or fewer often. 2: word-serial
   // (whole words a clock on an adder for phi, one for v, one shifter and a PROD_BITS-term product
-  // step; acore_track_word_cycles() clocks a sample): for the folded estimators at FOLD 16 or 32.
+  // step; acore_track_word_cycles() clocks a sample): for the folded estimator at FOLD 16. 3: as
+  // 1 with the error shifted SHIFT_BITS bits a clock (acore_track_shift_cycles() clocks a
+  // sample): for the folded estimator at FOLD 32.
   parameter integer SERIAL = 0,
   // SERIAL = 2: bits of D the product takes a clock (1..4; each one more adder, fewer clocks).
-  parameter integer PROD_BITS = 1
+  parameter integer PROD_BITS = 1,
+  // SERIAL = 3: bits the error shifts in a clock while that many or more remain (2..8; the board
+  // takes acore_track_shift_bits(), the fewest that fit its clocks a sample).
+  parameter integer SHIFT_BITS = 3
 ) (
   input  wire                      clk_i,
   input  wire                      rst_i,
@@ -101,6 +109,7 @@ module acore_track #(
   // its result on the output (no stall), CYCLES clocks a sample at full rate.
   localparam integer LATENCY = (SERIAL == 1) ? acore_track_serial_cycles(ANGLE_W, FRAC_W, LEAD_W) :
       (SERIAL == 2) ? acore_track_word_cycles(COMP_LATENCY, LEAD_W, LEAD_F, PROD_BITS) :
+      (SERIAL == 3) ? acore_track_shift_cycles(FRAC_W, COMP_LATENCY, LEAD_W, LEAD_F, SHIFT_BITS) :
       acore_track_latency(LOOP_CLOCKS);
   localparam integer CYCLES = (SERIAL != 0) ? LATENCY : LOOP_CLOCKS;
   localparam integer P_W = ANGLE_W + FRAC_W;
@@ -129,12 +138,15 @@ module acore_track #(
   acore_check #(.OK(LOOP_CLOCKS == 1 || LOOP_CLOCKS == 2), .VALUE(LOOP_CLOCKS),
     .MSG("illegal parameter: LOOP_CLOCKS must be 1 or 2"))
     LOOP_CLOCKS_must_be_1_or_2 ();
-  acore_check #(.OK(SERIAL >= 0 && SERIAL <= 2), .VALUE(SERIAL),
-    .MSG("illegal parameter: SERIAL must be 0, 1 or 2"))
-    SERIAL_must_be_0_to_2 ();
+  acore_check #(.OK(SERIAL >= 0 && SERIAL <= 3), .VALUE(SERIAL),
+    .MSG("illegal parameter: SERIAL must be 0..3"))
+    SERIAL_must_be_0_to_3 ();
   acore_check #(.OK(PROD_BITS >= 1 && PROD_BITS <= 4), .VALUE(PROD_BITS),
     .MSG("illegal parameter: PROD_BITS must be 1..4"))
     PROD_BITS_must_be_1_to_4 ();
+  acore_check #(.OK(SHIFT_BITS >= 2 && SHIFT_BITS <= 8), .VALUE(SHIFT_BITS),
+    .MSG("illegal parameter: SHIFT_BITS must be 2..8"))
+    SHIFT_BITS_must_be_2_to_8 ();
   acore_check #(.OK(COMP_LATENCY >= 0 && COMP_LATENCY <= 255), .VALUE(COMP_LATENCY),
     .MSG("illegal parameter: COMP_LATENCY must be 0..255"))
     COMP_LATENCY_must_be_0_to_255 ();
@@ -429,6 +441,204 @@ module acore_track #(
       j_q <= c5 ? J_LAST : j_q - 1'b1;
       if (take) m_q <= {M_W{1'b0}};
       else if (pp) m_q <= m_n;
+    end
+
+    end else if (SERIAL == 3) begin : g_shf
+    // ---- time-shared, coarse shifts: one adder, acore_track_shift_cycles() clocks a sample ----
+    // The time-shared form's adder and registers (below, g_ser: sum = t + B with B one of phi
+    // (x_q), v, ~theta, half or 0; one register t for every sum; the turn count moved by the two
+    // bits of sum above phi), with the error shifted SHIFT_BITS bits a clock while SHIFT_BITS or
+    // more remain, else one bit (a two-way choice on t's input, not a barrel shifter), the loss of
+    // tracking from one more sum on the adder, and the product over D's DE_W nonzero bits only:
+    // 30 clocks a sample at the board's widths and FOLD 32's COMP_LATENCY with SHIFT_BITS = 3.
+    // Per sample, after the clock taking it (t is 0 then: cleared after each sample and by reset):
+    //   C1..C3  t = phi, t = phi + v (the prediction, written to phi and the turn count),
+    //           t = ~(t + ~theta) = theta - pred: the error e
+    //   C4      sum = e +- thr * 2^FRAC_W: the loss of tracking to its output (t stays)
+    //   loop    LOOP_L clocks: rem = k (0 for the first sample) shifts of e, then a pause
+    //           phi = t + phi; rem = k + 1 more shifts, then a pause v = t + v (not the first
+    //           sample); idle to the loop's end, whose last clock clears t
+    //   R2, R3  t = phi, sum = phi + half: the rounded angle and turn count to the outputs; t = 0
+    //   product v * D + (phi + half) * 2^LEAD_F least significant bit of D first, as g_ser's
+    //   fin     the compensated angle and the output's valid; t = 0
+    // v is the velocity output register itself and the outputs other than out_angle_comp_o take
+    // the sample's values during the schedule (as the word-serial form's): a sample is taken only
+    // once the output before it has been read.
+    localparam integer SB = SHIFT_BITS;
+    localparam integer DE_W = acore_track_word_d_w(COMP_LATENCY, LEAD_W, LEAD_F);
+    localparam integer LOOP_L = acore_track_shift_loop(FRAC_W, SB);
+    localparam integer TW = (M_W > P_W + 2) ? M_W : P_W + 2;
+    localparam integer S_MAX = (LOOP_L > DE_W + 2) ? LOOP_L : DE_W + 2;
+    localparam integer S_W = $clog2(S_MAX + 1);
+    localparam integer LOOP_END = LOOP_L - 1;          // the loop's last clock
+    localparam integer PROD_END = DE_W + 1;            // the product's last step
+    localparam [S_W-1:0] S_LOOP_END = LOOP_END[S_W-1:0], S_PEND = PROD_END[S_W-1:0];
+    localparam [S_W-1:0] S_LF = LEAD_F[S_W-1:0], S_LH = S_LF + 1'b1;
+    localparam integer R_W = 5;                        // shifts left: 0 .. K_MAX + 1 <= 16
+    localparam [R_W-1:0] R_SB = SB[R_W-1:0];
+    // D's bits in the order the product takes them, two zeros where phi and half are added.
+    localparam integer LO_M = (1 << LEAD_F) - 1;
+    localparam integer HI_M = ((1 << (DE_W + 2)) - 1) & ~((1 << (LEAD_F + 2)) - 1);
+    // (D's bits from DE_W up are zero)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [D_W-1:0] d_s = d;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [DE_W-1:0] de = d_s[DE_W-1:0];
+    wire [DE_W+1:0] w = ({2'b00, de} & LO_M[DE_W+1:0]) | ({de, 2'b00} & HI_M[DE_W+1:0]);
+    wire [(1 << S_W)-1:0] w_pad = {{((1 << S_W) - DE_W - 2){1'b0}}, w};
+
+    reg             busy_q;
+    reg             c1, c2, c3, c4, pl, r2, r3, ph, fin;  // the schedule's phases (one hot)
+    reg [S_W-1:0]   s_q;       // the loop's clocks; the product's steps
+    reg [R_W-1:0]   rem_q;     // shifts left before the next update
+    reg             xd_q, vd_q;  // the loop's phi and v updates done
+    reg [3:0]       k_q;       // the code, latched with the sample
+    reg             started_q;
+    reg [ANGLE_W-1:0] th_q;
+    reg [TW-1:0]    t_q;
+    reg [DE_W-1:0]  tf_q;      // the product's bits below t
+    reg [P_W-1:0]   x_q;       // phi
+    reg [TURN_W-1:0] turns_q;
+    wire [P_W-1:0]  v_q = out_velocity_o;
+
+    assign in_ready_o = !rst_i && !busy_q && (!out_valid_o || out_ready_i);
+    wire take = in_valid_i && in_ready_o;
+
+    // Each clock's operations registered from the phases' and counters' next values (the adder's
+    // operand select and t's input select one LUT level from flops): at_x phi = pred + e >>> k,
+    // at_v v = v + e >>> (2k + 1), shb / sh1 the loop's shifts by SB / 1 bit, ins_x / ins_h the
+    // product's additions of phi and half, p_sh its other steps.
+    reg eq_lend, eq_pend;
+    reg at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l;
+    // t's next value, registered likewise: written (t_we) or cleared (t_clr), with tm the choice
+    // of sum, ~sum (the error), sum shifted one bit, t shifted SB bits.
+    reg t_we, t_clr;
+    reg [1:0] tm;
+
+    // ---- the adder: t + B ----
+    wire sx = op_v & v_q[P_W-1];  // B's sign above phi
+    // Loss of tracking, e > thr * 2^FRAC_W or e < -thr * 2^FRAC_W, on the adder in C4 (t = e, not
+    // written): with sg e's sign, e + ~(thr * 2^FRAC_W) >= 0 (sg = 0) or e + thr * 2^FRAC_W < 0
+    // (sg = 1); neither sum leaves P_W signed bits (0 <= thr * 2^FRAC_W < 2^(P_W-1)), so it is
+    // the sum's bit P_W-1 against sg.
+    wire sg = t_q[P_W-1];
+    wire [P_W-1:0] thr_x = {1'b0, lot_thr_i, {FRAC_W{1'b0}}} ^ {P_W{~sg}};
+    wire [TW-1:0] b = {{(TW - P_W){sx}},
+                       ({P_W{op_x}} & x_q) | ({P_W{op_v}} & v_q) |
+                       ({P_W{op_t}} & {~th_q, {FRAC_W{1'b1}}}) | ({P_W{op_h}} & half) |
+                       ({P_W{op_l}} & thr_x)};
+    wire [TW-1:0] sum = t_q + b;
+    // The turn count moved by the carry above phi (two bits: -1, 0 or +1).
+    wire [1:0] dlt = sum[P_W+1:P_W];
+    wire [TURN_W-1:0] turns_sum = turns_q + {{(TURN_W - 1){dlt[1]}}, dlt[0]};
+    // sum shifted right one bit: in the loop e's sign (bit P_W-1) fills the bits above it; t
+    // shifted right SB bits (B is 0 in the loop's shifts), e's sign filling.
+    wire [TW-1:0] sum_sh = {pl ? {(TW - P_W + 1){sum[P_W-1]}} : {sum[TW-1], sum[TW-1:P_W]},
+                            sum[P_W-1:1]};
+    wire [TW-1:0] t_shb = {{(TW - P_W + SB){t_q[P_W-1]}}, t_q[P_W-1:SB]};
+    wire [TW-1:0] t_n = tm[1] ? (tm[0] ? t_shb : sum_sh) : (tm[0] ? ~sum : sum);
+
+    wire lot_cmp = ~(sum[P_W-1] ^ sg);
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [TW+DE_W-1:0] t_all = {t_q, tf_q};  // the compensated angle is its middle
+    wire [DE_W:0] tf_in = {sum[0], tf_q};
+    /* verilator lint_on UNUSEDSIGNAL */
+
+    always @(posedge clk_i) begin
+      if (rst_i) begin
+        busy_q <= 1'b0;
+        {c1, c2, c3, c4, pl, r2, r3, ph, fin} <= 9'd0;
+        started_q <= 1'b0;
+        t_q <= {TW{1'b0}};
+        x_q <= {P_W{1'b0}};
+        turns_q <= {TURN_W{1'b0}};
+        out_valid_o <= 1'b0;
+        out_angle_o <= {ANGLE_W{1'b0}};
+        out_angle_comp_o <= {ANGLE_W{1'b0}};
+        out_velocity_o <= {P_W{1'b0}};
+        out_turns_o <= {TURN_W{1'b0}};
+        out_lot_o <= 1'b0;
+      end else begin
+        if (out_valid_o && out_ready_i) out_valid_o <= 1'b0;
+        if (take) busy_q <= 1'b1;
+        if (fin) busy_q <= 1'b0;
+        c1 <= take;
+        c2 <= c1;
+        c3 <= c2;
+        c4 <= c3;
+        pl <= c4 || (pl && !eq_lend);
+        r2 <= pl && eq_lend;
+        r3 <= r2;
+        ph <= r3 || (ph && !eq_pend);
+        fin <= ph && eq_pend;
+        if (take) begin
+          k_q <= k;
+          th_q <= in_angle_i;
+        end
+        if (c2 || at_x) x_q <= sum[P_W-1:0];
+        if (c2 || (at_x && started_q)) turns_q <= turns_sum;
+        if (at_v && started_q) out_velocity_o <= sum[P_W-1:0];
+        if (c4) out_lot_o <= started_q && lot_cmp;
+        if (r3) begin
+          out_angle_o <= sum[P_W-1:FRAC_W];
+          out_turns_o <= turns_sum;
+        end
+        if (t_clr) t_q <= {TW{1'b0}};
+        else if (t_we) t_q <= t_n;
+        if (fin) begin
+          started_q <= 1'b1;
+          out_valid_o <= 1'b1;
+          out_angle_comp_o <= t_all[LEAD_F+P_W-1:LEAD_F+FRAC_W];
+        end
+      end
+    end
+    // The schedule's counters and next operations (no reset: each sample sets them first).
+    wire [S_W-1:0] s_n = (c4 || r3) ? {S_W{1'b0}} : (pl || ph) ? s_q + 1'b1 : s_q;
+    wire [R_W-1:0] kx = started_q ? {1'b0, k_q} : {R_W{1'b0}};
+    wire [R_W-1:0] rem_n = c4 ? kx : at_x ? {1'b0, k_q} + 1'b1 :
+                           shb ? rem_q - R_SB : sh1 ? rem_q - 1'b1 : rem_q;
+    wire pl_n = c4 || (pl && !eq_lend);
+    wire ph_n = r3 || (ph && !eq_pend);
+    wire xd_n = !c4 && (xd_q || at_x);
+    wire vd_n = !c4 && (vd_q || at_v);
+    wire z_n = rem_n == {R_W{1'b0}};
+    wire big_n = rem_n >= R_SB;
+    wire at_x_n = pl_n && !xd_n && z_n;
+    wire at_v_n = pl_n && xd_n && !vd_n && z_n;
+    wire shb_n = pl_n && !vd_n && big_n;
+    wire sh1_n = pl_n && !vd_n && !z_n && !big_n;
+    wire ins_x_n = ph_n && s_n == S_LF;
+    wire ins_h_n = ph_n && s_n == S_LH;
+    wire p_sh_n = ph_n && !ins_x_n && !ins_h_n;
+    always @(posedge clk_i) begin
+      if (rst_i) begin
+        {at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l} <= 10'd0;
+        {t_we, t_clr, tm} <= 4'd0;
+      end else begin
+        t_clr <= (ph && eq_pend) || r2 || (pl_n && s_n == S_LOOP_END);
+        t_we <= take || c1 || c2 || (pl && eq_lend) || shb_n || sh1_n || p_sh_n || ins_x_n ||
+                ins_h_n;
+        tm <= {shb_n || sh1_n || p_sh_n, c2 || shb_n};
+        at_x <= at_x_n;
+        at_v <= at_v_n;
+        shb <= shb_n;
+        sh1 <= sh1_n;
+        p_sh <= p_sh_n;
+        op_x <= take || at_x_n || ins_x_n || (pl && eq_lend);
+        op_v <= c1 || at_v_n || (p_sh_n && w_pad[s_n]);
+        op_t <= c2;
+        op_h <= ins_h_n || r2;
+        op_l <= c3;
+      end
+    end
+    always @(posedge clk_i) begin
+      s_q <= s_n;
+      rem_q <= rem_n;
+      eq_lend <= s_n == S_LOOP_END;
+      eq_pend <= s_n == S_PEND;
+      xd_q <= xd_n;
+      vd_q <= vd_n;
+      if (p_sh) tf_q <= tf_in[DE_W:1];
     end
 
     end else begin : g_ser

@@ -2,7 +2,8 @@
 // The tracking observer (rtl/acore_track.v) against the model (model/ip/stages/tracker.cpp) bit for
 // bit, in the registry's parameter sets Verilated by tb/CMakeLists.txt (lines track, track_a20,
 // track_l2: the loop over two clocks; track_s: time-shared, one adder, at the 20-bit widths with
-// LEAD_F = 0; track_w, track_w3: word-serial, one and three bits of D a clock; the same outputs):
+// LEAD_F = 0; track_w, track_w3: word-serial, one and three bits of D a clock; track_c, track_c4:
+// time-shared with coarse shifts, three and four bits a clock; the same outputs):
 // every output word (angle, compensated angle, velocity, turns, LOT) of every sample, with random
 // input gaps and output stalls, on an angle stream that accelerates, reverses, carries noise and
 // jumps (LOT raised and cleared), at several bandwidth codes, LEAD and threshold values, with
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <verilated.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -23,6 +25,13 @@
 #include "Vtrack_s.h"
 #include "Vtrack_w.h"
 #include "Vtrack_w3.h"
+// The coarse-shift lines are long-sim: Verilated, and their tests built (test_track_long), only
+// with -DACORE_RTL_LONG=ON.
+#if __has_include("Vtrack_c.h") && __has_include("Vtrack_c4.h")
+#define ACORE_TRACK_SHIFT 1
+#include "Vtrack_c.h"
+#include "Vtrack_c4.h"
+#endif
 #include "core/fixed_point.hpp"
 #include "stages/tracker.hpp"
 
@@ -133,18 +142,41 @@ void run(const TrackConfig& c, uint64_t seed) {
               c.angle_w, c.frac_w, checked, bad, lots);
 }
 
-// The word-serial form's rate: with the input always offered and the output always read, one
-// sample every 7 + ceil(DE_W / PROD_BITS) clocks (five loop clocks, the product over D's nonzero
-// bits DE_W = bits of COMP_LATENCY * 2^LEAD_F + 2^LEAD_W - 1, the compensated angle, the output
-// register), the figure the board's choice of PROD_BITS rests on.
-template <class V>
-void word_rate(const TrackConfig& c, int prod_bits) {
-  auto ctx = std::make_unique<VerilatedContext>();
-  auto top = std::make_unique<V>(ctx.get());
+// The bits of D = COMP_LATENCY + LEAD / 2^LEAD_F that can be nonzero (DE_W).
+int d_bits(const TrackConfig& c) {
   const uint64_t dmax = (static_cast<uint64_t>(c.comp_latency) << c.lead_f) + mask(c.lead_w);
   int de_w = 0;
   while ((dmax >> de_w) != 0) ++de_w;
-  const int expect = 7 + (de_w + prod_bits - 1) / prod_bits;
+  return de_w;
+}
+
+// The word-serial form's rate: one sample every 7 + ceil(DE_W / PROD_BITS) clocks (five loop
+// clocks, the product over D's nonzero bits, the compensated angle, the output register), the
+// figure the board's choice of PROD_BITS rests on.
+int word_clocks(const TrackConfig& c, int prod_bits) {
+  return 7 + (d_bits(c) + prod_bits - 1) / prod_bits;
+}
+
+#ifdef ACORE_TRACK_SHIFT
+// The coarse-shift form's rate: 3 clocks to the error, one to the loss of tracking; the loop, as
+// long as the slowest code
+// needs (the error shifted by k and by k + 1 more, SHIFT_BITS bits a clock while that many remain,
+// else one; a clock for each update); 2 to the rounded angle; DE_W + 2 product steps; the
+// compensated angle; the output register. The figure the board's choice of SHIFT_BITS rests on.
+int shift_clocks(const TrackConfig& c, int shift_bits) {
+  const auto steps = [shift_bits](int n) { return n / shift_bits + n % shift_bits; };
+  int loop = 0;
+  for (int k = TrackConfig::kMin; k <= c.k_max(); ++k)
+    loop = std::max(loop, steps(k) + steps(k + 1) + 2);
+  return 4 + loop + 2 + d_bits(c) + 2 + 2;
+}
+#endif
+
+// With the input always offered and the output always read, one sample every `expect` clocks.
+template <class V>
+void rate(const TrackConfig& c, int expect) {
+  auto ctx = std::make_unique<VerilatedContext>();
+  auto top = std::make_unique<V>(ctx.get());
   top->bw_i = 4;
   top->lead_i = 0;
   top->lot_thr_i = 0;
@@ -175,9 +207,23 @@ TEST(Track, RtlEqualsModelSerial) { run<Vtrack_s>(ACORE_TRACK_CONFIG(TRACK_S), 4
 TEST(Track, RtlEqualsModelWordSerial) { run<Vtrack_w>(ACORE_TRACK_CONFIG(TRACK_W), 5); }
 TEST(Track, RtlEqualsModelWordSerial3) { run<Vtrack_w3>(ACORE_TRACK_CONFIG(TRACK_W3), 6); }
 TEST(Track, WordSerialRate) {
-  word_rate<Vtrack_w>(ACORE_TRACK_CONFIG(TRACK_W), ACORE_TRACK_W_PROD_BITS);
-  word_rate<Vtrack_w3>(ACORE_TRACK_CONFIG(TRACK_W3), ACORE_TRACK_W3_PROD_BITS);
+  rate<Vtrack_w>(ACORE_TRACK_CONFIG(TRACK_W),
+                 word_clocks(ACORE_TRACK_CONFIG(TRACK_W), ACORE_TRACK_W_PROD_BITS));
+  rate<Vtrack_w3>(ACORE_TRACK_CONFIG(TRACK_W3),
+                  word_clocks(ACORE_TRACK_CONFIG(TRACK_W3), ACORE_TRACK_W3_PROD_BITS));
 }
+#ifdef ACORE_TRACK_SHIFT
+TEST(Track, RtlEqualsModelShift) { run<Vtrack_c>(ACORE_TRACK_CONFIG(TRACK_C), 7); }
+TEST(Track, RtlEqualsModelShift4) { run<Vtrack_c4>(ACORE_TRACK_CONFIG(TRACK_C4), 8); }
+// (30 clocks at track_c: the board's widths and FOLD 32's COMP_LATENCY, within its 32)
+TEST(Track, ShiftRate) {
+  rate<Vtrack_c>(ACORE_TRACK_CONFIG(TRACK_C),
+                 shift_clocks(ACORE_TRACK_CONFIG(TRACK_C), ACORE_TRACK_C_SHIFT_BITS));
+  rate<Vtrack_c4>(ACORE_TRACK_CONFIG(TRACK_C4),
+                  shift_clocks(ACORE_TRACK_CONFIG(TRACK_C4), ACORE_TRACK_C4_SHIFT_BITS));
+}
+
+#endif
 
 }  // namespace
 }  // namespace acore

@@ -27,8 +27,9 @@
 //   hold      the observer's compensated angle, which ABZ, UVW and the SPI port read between
 //             samples, changes only in a clock that gives a sample; its other outputs (tracked
 //             angle, velocity, turns, loss of tracking: the APB's) likewise, except in the
-//             word-serial form (TRK_SERIAL = 2), whose schedule writes them while its sample is in
-//             flight (rtl/acore_track.v): there they hold while no sample is in flight.
+//             word-serial and coarse-shift forms (TRK_SERIAL = 2, 3), whose schedules write them
+//             while their sample is in flight (rtl/acore_track.v): there they hold while no sample
+//             is in flight.
 // The reference's valid bits are also the induction's invariant: in flight = the ones of the
 // delay line.
 `default_nettype none
@@ -42,11 +43,11 @@ module acore_board_formal #(
   // sample taken to its result, and clocks a sample.
   parameter integer TRK_LAT = 4,
   parameter integer TRK_CYC = 2,
-  // The observer's form (acore_track's SERIAL: 2 word-serial, whose outputs other than the
-  // compensated angle move during its schedule).
+  // The observer's form (acore_track's SERIAL: 2 word-serial and 3 coarse shifts, whose outputs
+  // other than the compensated angle move during their schedules).
   parameter integer TRK_SERIAL = 0,
-  // The time-shared observer's schedule (TRK_SERIAL = 1; its elaborated LOOP_END, PROD_END, K_MIN,
-  // K_MAX and its counter's width S_W): the invariants below.
+  // The time-shared observer's schedule (TRK_SERIAL = 1 and 3; its elaborated LOOP_END, PROD_END,
+  // K_MIN, K_MAX and its counter's width S_W): the invariants below.
   parameter integer TRK_LOOP_END = 0,
   parameter integer TRK_PROD_END = 0,
   parameter integer TRK_K_MIN = 0,
@@ -161,7 +162,7 @@ module acore_board_formal #(
   end
   // (the word-serial observer's tracked angle, velocity, turns and LOT may move while one of its
   // samples is in flight; every form's hold with none in flight)
-  wire out_may_move = trk_valid_o || (TRK_SERIAL == 2 && inflight != 0);
+  wire out_may_move = trk_valid_o || ((TRK_SERIAL == 2 || TRK_SERIAL == 3) && inflight != 0);
 
   // ---- the time-shared observer's schedule tied to the delay line (TRK_SERIAL = 1) ----
   // Its schedule (rtl/acore_track.v, g_ser) after the clock that takes a sample (age 0): P1..P4 at
@@ -214,6 +215,47 @@ module acore_board_formal #(
             assert (tap_at_v == (tap_xd && !tap_vd && s == k2));
           end
           if (tap_ph) assert (s == ph_clock);
+        end
+      end
+    end
+  endgenerate
+
+  // ---- the coarse-shift observer's schedule tied to the delay line (TRK_SERIAL = 3) ----
+  // Its schedule (rtl/acore_track.v, g_shf) after the clock that takes a sample (age 0): C1..C4 at
+  // ages 1..4; the loop (PL) from age 5, s = 0..LOOP_END a clock, its updates (at_x, at_v) within
+  // it; R2, R3; the product (PH, s = 0..PROD_END); FIN at age LATENCY - 1.
+  // The loop's shift counts decide no timing (the loop lasts LOOP_END + 1 clocks whatever k).
+  generate
+    if (TRK_SERIAL == 3) begin : g_shf_inv
+      localparam integer A_PL1 = TRK_LOOP_END + 5;     // the loop's last clock
+      localparam integer A_PH0 = TRK_LOOP_END + 8;
+      localparam integer A_PH1 = A_PH0 + TRK_PROD_END;
+      localparam integer AGE_W = 8;
+      wire       tap_c1, tap_c2, tap_c3, tap_c4, tap_pl, tap_r2, tap_r3, tap_ph, tap_fin;
+      wire       tap_busy, tap_at_x, tap_at_v, tap_eq_lend, tap_eq_pend;
+      wire [TRK_S_W-1:0] tap_s;
+      reg [AGE_W-1:0] age;  // clocks since the sample in the schedule was taken; 0: none
+      integer a;
+      always @(*) begin
+        age = 0;
+        for (a = 0; a < TRK_LAT - 1; a = a + 1) if (ref_q[a]) age = a + 1;
+      end
+      wire [7:0] s = {{(8 - TRK_S_W){1'b0}}, tap_s};
+      always @(posedge clk_i) begin
+        if (!init_q && !rst_i) begin
+          assert (A_PH1 + 1 == TRK_LAT - 1);  // (the schedule read as the RTL elaborates it)
+          assert (ones - ref_q[TRK_LAT-1] <= 1);  // one sample in the schedule at a time
+          assert (tap_busy == (age != 0));
+          if (tap_at_x || tap_at_v) assert (tap_pl);
+          assert (tap_c1 == (age == 1) && tap_c2 == (age == 2) && tap_c3 == (age == 3));
+          assert (tap_c4 == (age == 4));
+          assert (tap_pl == (age >= 5 && age <= A_PL1));
+          assert (tap_r2 == (age == A_PL1 + 1) && tap_r3 == (age == A_PL1 + 2));
+          assert (tap_ph == (age >= A_PH0 && age <= A_PH1));
+          assert (tap_fin == (age == A_PH1 + 1));
+          assert (tap_eq_lend == (s == TRK_LOOP_END) && tap_eq_pend == (s == TRK_PROD_END));
+          if (tap_pl) assert (s == age - 8'd5);
+          if (tap_ph) assert (s == age - A_PH0[7:0]);
         end
       end
     end

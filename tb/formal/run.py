@@ -242,12 +242,22 @@ MUTANTS = {
     # Board, word-serial observer: the product ends a digit early (the schedule one clock short of
     # its LATENCY): the result, without D's last digit, comes out a clock before the delay line's.
     "board_word_product_short": (
-        "board_fold32",
+        "board_fold16",
         "acore_track.v",
         r"fin <= pp && j_q == \{J_W\{1'b0\}\};",
         "fin <= pp && j_q == {{(J_W - 1){1'b0}}, 1'b1};",
         "delay: a result a clock before the observer's LATENCY",
         20,
+    ),
+    # Board, coarse-shift observer (FOLD 32): the compensated angle written with the rounded angle
+    # in the schedule, not once with the result: it moves while no sample is given.
+    "board_shift_comp_early": (
+        "board_fold32",
+        "acore_track.v",
+        r"(\n\s*)if \(r3\) begin(\n\s*)out_angle_o <= sum",
+        r"\1if (r3) begin\2out_angle_comp_o <= sum[P_W-1:FRAC_W];\2out_angle_o <= sum",
+        "hold: the compensated angle moves while no sample is given",
+        24,
     ),
     # Board, time-shared observer: its input freed in its schedule's second-last clock: it takes a
     # sample before its CYCLES are over (found at the schedule's end: the harness's BMC depth).
@@ -291,6 +301,9 @@ PROOFS = {
     # must span a whole schedule: LATENCY + 4 clocks (LATENCY + 3 stays undecided). pdr also
     # closes, in about 2 CPU minutes.
     "acore_board_word": ("ind", lambda h: h["TRK_LAT"] + 4),
+    # The coarse-shift observer (FOLD 32): its phases and counter tied to the delay line, as the
+    # time-shared form's (its loop's shift counts decide no timing).
+    "acore_board_shift": ("ind", 4),
 }
 
 
@@ -464,8 +477,9 @@ def board_setup(line):
         # The time-shared observer's schedule, tied to the harness's delay line (its invariants).
         for k in ("LOOP_END", "PROD_END", "K_MIN", "K_MAX", "S_W"):
             h["TRK_" + k] = t[k]
-        # (Yosys names the block of the generate's else-if chain genblk1)
-        g = "dut.u_track.genblk1.g_ser."
+        # (Yosys names each block of the generate's else-if chain genblk1: g_ser is the third
+        # else, as g_shf)
+        g = "dut.u_track.genblk1.genblk1.g_ser."
         taps += [
             (f"g_ser_inv.tap_{w}", g + n)
             for w, n in [
@@ -480,6 +494,23 @@ def board_setup(line):
                 ("eq_pend", "eq_pend"),
                 ("s", "s_q"),
                 ("k", "k_q"),
+            ]
+        ]
+    if t["SERIAL"] == 3:
+        # The coarse-shift observer's schedule, tied to the harness's delay line (its invariants).
+        for k in ("LOOP_END", "PROD_END", "S_W"):
+            h["TRK_" + k] = t[k]
+        g = "dut.u_track.genblk1.genblk1.g_shf."
+        taps += [
+            (f"g_shf_inv.tap_{w}", g + n)
+            for w, n in [
+                *[(p, p) for p in ("c1", "c2", "c3", "c4", "pl", "r2", "r3", "ph", "fin")],
+                ("busy", "busy_q"),
+                ("at_x", "at_x"),
+                ("at_v", "at_v"),
+                ("eq_lend", "eq_lend"),
+                ("eq_pend", "eq_pend"),
+                ("s", "s_q"),
             ]
         ]
     ops = ["$add", "$sub", "$neg", "$shl", "$shr", "$sshl", "$sshr", "$shift"]
@@ -498,7 +529,9 @@ def board_setup(line):
         "mems": [],
         "taps": taps,
         "bmc_depth": t["LATENCY"] + 4,
-        "proof": ["acore_board", "acore_board_serial", "acore_board_word"][t["SERIAL"]],
+        "proof": ["acore_board", "acore_board_serial", "acore_board_word", "acore_board_shift"][
+            t["SERIAL"]
+        ],
     }
 
 
