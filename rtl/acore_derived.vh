@@ -277,11 +277,13 @@ function integer acore_fold_fifo_depth();
   acore_fold_fifo_depth = 256;
 endfunction
 
-// acore_sparse_delay: its buffer words, ceil((DEPTH - 1) / GAP) rounded up to a power of two >= 2.
+// acore_sparse_delay: its buffer words, ceil((DEPTH - 1) / GAP), at least 2 (its pointers wrap
+// at that count: a power of two costs no compare, any other count one per pointer, against a
+// word of flops per bit a power of two could waste).
 function integer acore_sparse_slots(input integer f_depth, input integer f_gap);
   begin
-    acore_sparse_slots = 2;
-    while (acore_sparse_slots * f_gap < f_depth - 1) acore_sparse_slots = acore_sparse_slots * 2;
+    acore_sparse_slots = (f_depth - 1 + f_gap - 1) / f_gap;
+    if (acore_sparse_slots < 2) acore_sparse_slots = 2;
   end
 endfunction
 

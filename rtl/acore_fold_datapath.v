@@ -446,9 +446,16 @@ module acore_fold_datapath #(
       acore_delay #(.W(RG_W), .DEPTH(C + CL - R)) u_d_region (
         .clk_i(clk_i), .en_i(1'b1), .d_i(region), .q_o(region_o));
     end
+    // The sample's overflow, from the CORDIC's start to the output (sparse: the region's pop).
+    if (SPARSE != 0) begin : g_ovf_sparse
+      acore_sparse_delay #(.W(1), .DEPTH(CL), .GAP(FOLD)) u_d_ovf (
+        .clk_i(clk_i), .rst_i(rst_i), .push_i(v_q[C]), .d_i(pc_ovf), .pop_i(v_q[C + CL - 1]),
+        .q_o(ovf_o));
+    end else begin : g_ovf_flop
+      acore_delay #(.W(1), .DEPTH(CL)) u_d_ovf (
+        .clk_i(clk_i), .en_i(1'b1), .d_i(pc_ovf), .q_o(ovf_o));
+    end
   endgenerate
-  acore_delay #(.W(1), .DEPTH(CL)) u_d_ovf (
-    .clk_i(clk_i), .en_i(1'b1), .d_i(pc_ovf), .q_o(ovf_o));
 
 endmodule
 

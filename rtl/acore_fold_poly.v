@@ -191,13 +191,34 @@ module acore_fold_poly #(
       // The item beside the multiplier to the next step: start, and argument with base address.
       // The start bits are reset (as the chain's first two), so a sparse line's pushes and pops
       // pair up from reset on; st_p: the start one clock early, the sparse line's pop.
-      reg [STEP-1:0] st_d_q;
-      always @(posedge clk_i) begin
-        if (rst_i) st_d_q <= {STEP{1'b0}};
-        else st_d_q <= {st_d_q[STEP-2:0], st[m]};
+      // st_o: the start STEP - 2 clocks later (the overflow line's pop). With sparse lines and
+      // F >= 16 a pulse delay (a counter, the starts come F clocks apart) and two flops; else a
+      // flop a clock.
+      wire st_o, st_p;
+      if (RAM_DELAY == 2 && F >= 16 && STEP >= 3) begin : g_stpulse
+        acore_pulse_delay #(.DEPTH(STEP - 2), .GAP(F)) u_dst (
+          .clk_i(clk_i), .rst_i(rst_i), .d_i(st[m]), .q_o(st_o));
+        reg [1:0] st_t_q;
+        always @(posedge clk_i) begin
+          if (rst_i) st_t_q <= 2'b00;
+          else st_t_q <= {st_t_q[0], st_o};
+        end
+        assign st_p = st_t_q[0];
+        assign st[m+1] = st_t_q[1];
+      end else begin : g_stchain
+        reg [STEP-1:0] st_d_q;
+        always @(posedge clk_i) begin
+          if (rst_i) st_d_q <= {STEP{1'b0}};
+          else st_d_q <= {st_d_q[STEP-2:0], st[m]};
+        end
+        if (STEP >= 3) begin : g_sto
+          assign st_o = st_d_q[STEP-3];
+        end else begin : g_sto0
+          assign st_o = 1'b0;
+        end
+        assign st_p = st_d_q[STEP-2];
+        assign st[m+1] = st_d_q[STEP-1];
       end
-      wire st_p = st_d_q[STEP-2];
-      assign st[m+1] = st_d_q[STEP-1];
       if (m == DEGREE - 1) begin : g_ulast
         assign {bs[m+1], us[m+1]} = {(ADDR_W+S_W){1'b0}};  // no step after the last
         wire unused_stp = st_p;
@@ -214,9 +235,18 @@ module acore_fold_poly #(
         acore_delay #(.W(ADDR_W + S_W), .DEPTH(STEP)) u_du (
           .clk_i(clk_i), .en_i(1'b1), .d_i({bs[m], us[m]}), .q_o({bs[m+1], us[m+1]}));
       end
+      // The overflow so far, to the clock the step saturates (STEP - 1 clocks): with sparse lines a
+      // two-word buffer popped by the start chain's tap STEP - 2 clocks after the push.
       wire ov_e;
-      acore_delay #(.W(1), .DEPTH(STEP - 1)) u_dov (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(ov[m]), .q_o(ov_e));
+      if (RAM_DELAY == 2 && STEP >= 3) begin : g_ovsparse
+        acore_sparse_delay #(.W(1), .DEPTH(STEP - 1), .GAP(F)) u_dov (
+          .clk_i(clk_i), .rst_i(rst_i), .push_i(st[m]), .d_i(ov[m]), .pop_i(st_o),
+          .q_o(ov_e));
+      end else begin : g_ovflop
+        wire unused_sto = st_o;
+        acore_delay #(.W(1), .DEPTH(STEP - 1)) u_dov (
+          .clk_i(clk_i), .en_i(1'b1), .d_i(ov[m]), .q_o(ov_e));
+      end
       // Clock ML: saturate to ACC_W.
       wire [ACC_W-1:0] sum_sat;
       wire sum_ovf;

@@ -3,8 +3,8 @@
 // then (push_i, at least GAP clocks apart), in a small circular buffer of flops: the word pushed
 // at clock t is on q_o at clock t + DEPTH (and held until the next word's turn). At a large fold a
 // delay line of the folded datapath carries one item every FOLD/2 clocks at most, so it holds a
-// few words however long it is: SLOTS = ceil((DEPTH - 1) / GAP) flops per bit (rounded up to a
-// power of two) and an SLOTS:1 read choice, instead of DEPTH flops per bit or a block RAM
+// few words however long it is: SLOTS = ceil((DEPTH - 1) / GAP) flops per bit (at least 2; the
+// pointers wrap at SLOTS, free when it is a power of two) and an SLOTS:1 read choice, instead of DEPTH flops per bit or a block RAM
 // (acore_delay, acore_ram_delay). The caller gives pop_i = push_i delayed DEPTH - 1 clocks (the
 // folded datapath has it in its valid bits: no chain of its own). Words leave in the order they
 // came; push k + SLOTS comes SLOTS GAP >= DEPTH - 1 clocks after push k, not before push k's word
@@ -53,6 +53,19 @@ module acore_sparse_delay #(
   (* ram_style = "logic" *)
   reg [W-1:0]  mem_q [0:SLOTS-1];
   reg [PW-1:0] wp_q, rp_q;
+  // The pointers' next values: + 1, wrapping at SLOTS (by themselves at a power of two).
+  wire [PW-1:0] wp_inc, rp_inc;
+  generate
+    if ((1 << PW) == SLOTS) begin : g_wrap2
+      assign wp_inc = wp_q + 1'b1;
+      assign rp_inc = rp_q + 1'b1;
+    end else begin : g_wrapn
+      localparam integer LAST_I = SLOTS - 1;
+      localparam [PW-1:0] LAST = LAST_I[PW-1:0];
+      assign wp_inc = (wp_q == LAST) ? {PW{1'b0}} : wp_q + 1'b1;
+      assign rp_inc = (rp_q == LAST) ? {PW{1'b0}} : rp_q + 1'b1;
+    end
+  endgenerate
   always @(posedge clk_i) begin
     if (push_i) mem_q[wp_q] <= d_i;
     if (pop_i) q_o <= mem_q[rp_q];
@@ -60,8 +73,8 @@ module acore_sparse_delay #(
       wp_q <= {PW{1'b0}};
       rp_q <= {PW{1'b0}};
     end else begin
-      if (push_i) wp_q <= wp_q + 1'b1;
-      if (pop_i) rp_q <= rp_q + 1'b1;
+      if (push_i) wp_q <= wp_inc;
+      if (pop_i) rp_q <= rp_inc;
     end
   end
 

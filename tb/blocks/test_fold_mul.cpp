@@ -2,8 +2,9 @@
 // The folded shift-add multiplier (rtl/acore_fold_mul.v) alone, against the contract's
 // fx::shift_add_mul (model/ip/core/fixed_point.hpp, every partial product floored on its own) plus
 // the addend, in the four parameter sets Verilated by tb/CMakeLists.txt: the Horner step folded
-// over 2 and over 4 clocks (signed b), the scaler's product over 4 clocks (unsigned b), and a
-// product whose right shift exceeds b's width (operand register loaded with a floored copy of a).
+// over 2 and over 4 clocks (signed b, the group scheme), the scaler's product over 16 clocks
+// (unsigned b, two bits a clock accumulated in place, as at FOLD 32), and a product over 8 clocks
+// whose right shift exceeds b's width (operand register loaded with a floored copy of a; in place).
 // Products start every F clocks or with random gaps, with random, extreme and zero operands; each
 // result must appear exactly LATENCY clocks after its start (the module's formula), from a random
 // initial state.
@@ -17,8 +18,8 @@
 
 #include "Vfold_mul_h2.h"
 #include "Vfold_mul_h4.h"
-#include "Vfold_mul_r2.h"
-#include "Vfold_mul_s4.h"
+#include "Vfold_mul_r8.h"
+#include "Vfold_mul_s16.h"
 #include "core/fixed_point.hpp"
 
 namespace acore {
@@ -46,8 +47,8 @@ struct MulParams {
   }
 MulParams params_h2() { return ACORE_FOLD_MUL_PARAMS(H2); }
 MulParams params_h4() { return ACORE_FOLD_MUL_PARAMS(H4); }
-MulParams params_s4() { return ACORE_FOLD_MUL_PARAMS(S4); }
-MulParams params_r2() { return ACORE_FOLD_MUL_PARAMS(R2); }
+MulParams params_s16() { return ACORE_FOLD_MUL_PARAMS(S16); }
+MulParams params_r8() { return ACORE_FOLD_MUL_PARAMS(R8); }
 
 int64_t random_value(std::mt19937_64& rng, int w, bool is_signed) {
   const uint64_t r = rng();
@@ -129,14 +130,14 @@ TEST(FoldMul, HornerStepOverFourClocks) {
   run<Vfold_mul_h4>(params_h4(), 4, true);
 }
 
-TEST(FoldMul, ScalerProductOverFourClocks) {
-  run<Vfold_mul_s4>(params_s4(), 5, false);
-  run<Vfold_mul_s4>(params_s4(), 6, true);
+TEST(FoldMul, ScalerProductOverSixteenClocks) {
+  run<Vfold_mul_s16>(params_s16(), 5, false);
+  run<Vfold_mul_s16>(params_s16(), 6, true);
 }
 
-TEST(FoldMul, ShiftBeyondTheMultiplierWidth) {
-  run<Vfold_mul_r2>(params_r2(), 7, false);
-  run<Vfold_mul_r2>(params_r2(), 8, true);
+TEST(FoldMul, ShiftBeyondTheMultiplierWidthOverEightClocks) {
+  run<Vfold_mul_r8>(params_r8(), 7, false);
+  run<Vfold_mul_r8>(params_r8(), 8, true);
 }
 
 }  // namespace
