@@ -423,14 +423,14 @@ module acore_stream_formal #(
       // by the driver to the bank (rtl/acore_coef_bank.v): its state, busy flop and registered
       // request; the CHECK pass's flags (the last word fed to the CRC engine, its CRC taken into
       // CRC_SHADOW, the comparison ready), words left and CRC load; STREAM's pending word; SETTLE's
-      // counter; the comparator (CRC ^ reference, its reduction, the reference it used); the CRC
+      // counter; the comparator (CRC != reference, registered, and the reference it used); the CRC
       // engine's value and idle flag.
       localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3,
                        C_SETTLE = 3'd4;
       // (keep: with INVARIANTS = 0 nothing reads them, and the driver still connects them)
       (* keep *) wire [2:0] tap_state;
       (* keep *) wire [3:0] tap_settle;
-      (* keep *) wire [31:0] tap_diff, tap_crc;
+      (* keep *) wire [31:0] tap_crc;
       (* keep *) wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel;
       (* keep *) wire tap_more, tap_ld, tap_pend, tap_crc_idle;
       wire streaming = tap_state == C_STREAM || tap_state == C_SETTLE;
@@ -448,14 +448,14 @@ module acore_stream_formal #(
           if (tap_top_we) assert (streaming);
           if (tap_top_we && tap_state == C_SETTLE) assert (tap_settle != 0);
           // CHECK: once the last word is fed, no more loads; once its CRC is taken, the engine is
-          // idle (its CRC still), CRC_SHADOW holds it and the comparator's first stage holds
-          // CRC ^ CRC_EXPECTED (locked while busy); once the comparison is ready, its reduction.
+          // idle (its CRC still), CRC_SHADOW holds it and the comparator holds CRC != CRC_EXPECTED
+          // (locked while busy), also once the comparison is ready.
           if (tap_state == C_CHECK && tap_fed) assert (!tap_more);
           if (checked) begin
             assert (tap_fed && !tap_more && !tap_ld && tap_crc_idle && tap_sel);
-            assert (tap_crc == tap_crc_shadow && tap_diff == (tap_crc ^ tap_crc_expected));
+            assert (tap_crc == tap_crc_shadow && tap_neq == (tap_crc != tap_crc_expected));
           end
-          if (tap_state == C_CHECK && tap_cmp) assert (tap_crc_done && tap_neq == (tap_diff != 0));
+          if (tap_state == C_CHECK && tap_cmp) assert (tap_crc_done);
         end
       end
     end
