@@ -167,11 +167,12 @@ module acore_coef_bank #(
     .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .pass_o(s_pass));
 
   // ---- samples in the top: accepted - emitted ----
+  // One adder: + 1, - 1 (all ones) or + 0.
   reg [CNT_W-1:0] inflight_q;
+  wire cnt_dn = emit_i & ~accept_i;
   always @(posedge clk_i) begin
     if (rst_i) inflight_q <= {CNT_W{1'b0}};
-    else if (accept_i && !emit_i) inflight_q <= inflight_q + 1'b1;
-    else if (emit_i && !accept_i) inflight_q <= inflight_q - 1'b1;
+    else inflight_q <= inflight_q + {{(CNT_W-1){cnt_dn}}, accept_i ^ emit_i};
   end
   wire drained = (inflight_q == {CNT_W{1'b0}});
 
