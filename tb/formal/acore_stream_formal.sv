@@ -340,7 +340,8 @@ module acore_stream_formal #(
   //             no sample in flight, none taken in that clock or the next (the write lands the
   //             clock after it is registered): every output is computed with one image; the
   //             shadow is not written while a commit is busy (the image checked is the one
-  //             streamed).
+  //             streamed), nor read and written in one clock (its block RAM leaves that
+  //             undefined: rtl/acore_sync_ram.v).
   //   crc       with CRC_CHECK set when the commit decides, a commit whose shadow CRC (the
   //             engine's, CRC_SHADOW) differs from CRC_EXPECTED writes nothing and keeps the bank.
   //   scrub     the scrubber never writes the top's words: every write is a commit's.
@@ -371,7 +372,7 @@ module acore_stream_formal #(
       end
       wire access = psel_i && penable_i;
       // (taps, connected by the driver to the shell's wires)
-      wire tap_top_we, tap_busy, tap_coef_we, tap_commit, tap_decide, tap_check;
+      wire tap_top_we, tap_busy, tap_coef_we, tap_sh_re, tap_commit, tap_decide, tap_check;
       wire [31:0] tap_crc_shadow, tap_crc_expected;
       wire [CNT_W-1:0] tap_inflight;
       wire tap_bank;
@@ -409,7 +410,7 @@ module acore_stream_formal #(
           // atomic, scrub
           if (tap_top_we) assert (tap_busy && inflight == 0 && !accept);
           if (past_top_we_q) assert (!accept);
-          if (tap_coef_we) assert (!tap_busy);
+          if (tap_coef_we) assert (!tap_busy && !tap_sh_re);
           // crc: a write follows a decision that allowed it; the bank flips only after writes
           if (tap_top_we) assert (ok_q);
           if (!past_shell_rst_q && tap_bank != past_bank_q) assert (ok_q);

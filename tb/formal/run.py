@@ -371,6 +371,7 @@ def stream_setup(line, words=None):
             (r + "tap_busy", p + "busy"),
             (r + "tap_bank", p + "bank"),
             (r + "tap_coef_we", p + "rg_coef_we"),
+            (r + "tap_sh_re", p + "u_bank.u_shadow.re_i"),
             (r + "tap_commit", p + "rg_ctrl_commit"),
             (r + "tap_decide", p + "u_bank.decide"),
             (r + "tap_check", p + "u_regs.ctrl_crc_check_q"),
