@@ -78,12 +78,17 @@ module acore_crc32 #(
   // folded, chunk idx_q in this clock.
   reg [31:0] n_q;
   reg run_q;
-  reg [STEP_W-1:0] idx_q;
+  // (read by the narrow form only: the wide one shifts its registered word)
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [STEP_W-1:0] idx;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire take = load_i & ready_o;
   wire step = take | run_q;
   assign ready_o = ~run_q;
   generate
     if (STEPS > 1) begin : g_count
+      reg [STEP_W-1:0] idx_q;
+      assign idx = idx_q;
       always @(posedge clk_i) begin
         if (rst_i || init_i) run_q <= 1'b0;
         else if (take) run_q <= 1'b1;
@@ -91,27 +96,25 @@ module acore_crc32 #(
         idx_q <= take ? SECOND : idx_q + 1'b1;
       end
     end else begin : g_one
-      always @(posedge clk_i) begin
-        run_q <= 1'b0;
-        idx_q <= 1'b0;
-      end
+      always @(posedge clk_i) run_q <= 1'b0;
+      assign idx = 1'b0;
     end
   endgenerate
-  // The chunk of this clock (the word zero-extended: chunks above DATA_W are constants).
-  wire [STEP_W-1:0] k = run_q ? idx_q : {STEP_W{1'b0}};
   wire busy;
   generate
     if (CRC_W >= 16) begin : g_split
       // Wide chunks, on the fast tops' clock: the word is registered at the take (w_q, the
-      // source's read data off the path), its chunk's part of the fold registered next (d_q; the
-      // fold is linear, fold(c, d) = fold(c, 0) ^ fold(0, d)), so each clock's logic is half of a
-      // wide XOR network; the word's chunks reach the CRC register two clocks after the direct
-      // form's.
+      // source's read data off the path) and shifted a chunk a clock, its chunk's part of the fold
+      // registered next (d_q; the fold is linear, fold(c, d) = fold(c, 0) ^ fold(0, d)), so each
+      // clock's logic is half of a wide XOR network with no multiplexer before it; the word's
+      // chunks reach the CRC register two clocks after the direct form's.
       reg [DATA_W-1:0] w_q;
-      reg [STEP_W-1:0] k_q;
       reg [31:0] d_q;
       reg sv_q, dv_q;
+      // (its chunk: the low CRC_W bits, all 32 only at CRC_W = 32)
+      /* verilator lint_off UNUSEDSIGNAL */
       wire [31:0] w_wide = {{(32-DATA_W){1'b0}}, w_q};
+      /* verilator lint_on UNUSEDSIGNAL */
       always @(posedge clk_i) begin
         if (rst_i || init_i) begin
           sv_q <= 1'b0;
@@ -121,8 +124,8 @@ module acore_crc32 #(
           dv_q <= sv_q;
         end
         if (take) w_q <= word_i;
-        k_q <= k;
-        d_q <= fold(32'd0, w_wide[k_q*CRC_W +: CRC_W]);
+        else if (sv_q) w_q <= w_q >> CRC_W;
+        d_q <= fold(32'd0, w_wide[CRC_W-1:0]);
       end
       always @(posedge clk_i) begin
         if (init_i) n_q <= 32'd0;
@@ -130,7 +133,9 @@ module acore_crc32 #(
       end
       assign busy = sv_q | dv_q;
     end else begin : g_direct
-      // Narrow chunks: one fold a clock is shallow enough, straight from the source's word.
+      // Narrow chunks: one fold a clock is shallow enough, straight from the source's word (the
+      // word zero-extended: chunks above DATA_W are constants).
+      wire [STEP_W-1:0] k = run_q ? idx : {STEP_W{1'b0}};
       wire [31:0] wide = {{(32-DATA_W){1'b0}}, word_i};
       wire [CRC_W-1:0] chunk = wide[k*CRC_W +: CRC_W];
       always @(posedge clk_i) begin
