@@ -152,8 +152,9 @@ module acore_coef_bank #(
   wire s_init, s_load, s_pass;
   wire [REG_W-1:0] s_word;
   wire [ADDR_W-1:0] s_addr;
-  // The engine reads the word while it folds it: the shadow's output register holds it (the next
-  // read comes STEPS clocks later), the scrubber's word register too.
+  // Below CRC_W = 16 the engine reads the word while it folds it: the shadow's output register
+  // holds it (the next read comes STEPS clocks later), the scrubber its copy or (RD_HOLD) the top's
+  // read-back, whose address it keeps.
   acore_crc32 #(.CRC_W(CRC_W), .DATA_W(REG_W)) u_crc (
     .clk_i(clk_i), .rst_i(rst_i),
     .init_i(busy_q ? (state_q == C_INIT) : s_init),
