@@ -12,7 +12,8 @@
 //           and counts accepted - emitted (accept_i, emit_i), so the tops need no new port. Both done:
 //           check_i and CRC != crc_expected_i -> refused: the active words stay, refused_o, done_o;
 //           otherwise:
-//   STREAM  the shadow's words into the top's register file through its host write port, one a clock;
+//   STREAM  the shadow's words into the top's register file through its host write port, one a clock
+//           (the shadow's output register drives the port's data);
 //   SETTLE  SETTLE clocks for the last write to land (acore_top registers its port), then the tag
 //           (bank_o) flips, the image's CRC becomes the scrubber's reference, done_o, busy_o falls.
 //
@@ -24,9 +25,10 @@
 //
 // No sample is in flight while the words change, so every output was computed with exactly one
 // image, the one its tag (bank_o when it leaves) names. Busy time from the clock of commit_i:
-// max(7 + P + WORDS 32/CRC_W, drain) + WORDS + 2 + SETTLE clocks (P = 1 when CRC_W >= 16 splits
-// the CRC's fold over two clocks, else 0; drain = clocks until the one after the last accepted
-// sample has left the top; tb/shell/test_apb_shell.cpp checks this form).
+// max(6 + P + WORDS 32/CRC_W, drain) + WORDS + 2 + SETTLE clocks (P = 2 when CRC_W >= 16: the
+// engine registers the word and splits the CRC's fold over two clocks; else 0; drain = clocks
+// until the one after the last accepted sample has left the top; tb/shell/test_apb_shell.cpp
+// checks this form).
 //
 // The top's host port belongs to the commit while it streams and to the scrubber otherwise; the
 // host never drives it (the shell's register map has no window on the active words). The shadow's
@@ -40,6 +42,9 @@ module acore_coef_bank #(
   parameter integer WORDS = 52,
   // Clocks from the top's host address to its reg_rdata_o.
   parameter integer RD_LAT = 2,
+  // 1: the top's read-back stays while its address does (acore_top); 0: valid only in the clock
+  // it is served (the serial core). The scrubber copies the word only with 0.
+  parameter integer RD_HOLD = 0,
   // CRC bits per clock (rtl/acore_crc32.v).
   parameter integer CRC_W = 8,
   // Width of the in-flight sample counter: must hold the most samples the top holds at once.
@@ -83,10 +88,10 @@ module acore_coef_bank #(
   output wire              done_o,
   output wire              refused_o,
   output wire              scrub_err_o,
-  // The top's raw host port.
+  // The top's raw host port (the write data is the shadow RAM's output register).
   output reg  [ADDR_W-1:0] top_addr_o,
-  output reg  [REG_W-1:0]  top_wdata_o,
-  output reg               top_we_o,
+  output wire [REG_W-1:0]  top_wdata_o,
+  output wire              top_we_o,
   input  wire [REG_W-1:0]  top_rdata_i,
   // The top serves a host read given in this clock (acore_top: 1; serial core: in_ready_o).
   input  wire              top_rd_ok_i
@@ -145,46 +150,46 @@ module acore_coef_bank #(
   wire crc_ready, crc_idle;
   wire [31:0] crc;
   wire s_init, s_load, s_pass;
-  wire [31:0] s_word;
+  wire [REG_W-1:0] s_word;
   wire [ADDR_W-1:0] s_addr;
-  acore_crc32 #(.CRC_W(CRC_W)) u_crc (
+  // Below CRC_W = 16 the engine reads the word while it folds it: the shadow's output register
+  // holds it (the next read comes STEPS clocks later), the scrubber its copy or (RD_HOLD) the top's
+  // read-back, whose address it keeps.
+  acore_crc32 #(.CRC_W(CRC_W), .DATA_W(REG_W)) u_crc (
     .clk_i(clk_i), .rst_i(rst_i),
     .init_i(busy_q ? (state_q == C_INIT) : s_init),
     .load_i(busy_q ? ld_q : s_load),
-    .word_i(busy_q ? {{(32-REG_W){1'b0}}, q} : s_word),
+    .word_i(busy_q ? q : s_word),
     .ready_o(crc_ready), .idle_o(crc_idle), .crc_o(crc));
 
-  acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT)) u_scrub (
+  acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT), .HOLD(RD_HOLD)) u_scrub (
     .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
     .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
     .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .pass_o(s_pass));
 
   // ---- samples in the top: accepted - emitted ----
+  // One adder: + 1, - 1 (all ones) or + 0.
   reg [CNT_W-1:0] inflight_q;
+  wire cnt_dn = emit_i & ~accept_i;
   always @(posedge clk_i) begin
     if (rst_i) inflight_q <= {CNT_W{1'b0}};
-    else if (accept_i && !emit_i) inflight_q <= inflight_q + 1'b1;
-    else if (emit_i && !accept_i) inflight_q <= inflight_q - 1'b1;
+    else inflight_q <= inflight_q + {{(CNT_W-1){cnt_dn}}, accept_i ^ emit_i};
   end
   wire drained = (inflight_q == {CNT_W{1'b0}});
 
   // ---- the commit ----
-  // One 32-bit comparator, over two clocks (diff_q, neq_q), for both users: the commit compares the
-  // CRC with crc_expected_i, the scrubber with crc_ref_o; the CRC stays still for the two clocks.
-  // cmp_sel_q records which reference neq_q was computed with (1: the commit's).
-  reg [31:0] diff_q;
-  reg neq_q, sel_q, cmp_sel_q;
+  // One 32-bit comparator, registered (neq_q), for both users: the commit compares the CRC with
+  // crc_expected_i, the scrubber with crc_ref_o; sel_q records which reference neq_q was computed
+  // with (1: the commit's). The CRC stays still for the clocks its users read neq_q.
+  reg neq_q, sel_q;
   always @(posedge clk_i) begin
-    diff_q <= crc ^ (busy_q ? crc_expected_i : crc_ref_o);
+    neq_q <= (crc != (busy_q ? crc_expected_i : crc_ref_o));
     sel_q <= busy_q;
-    neq_q <= |diff_q;
-    cmp_sel_q <= sel_q;
   end
 
   // fed_q: the last shadow word went into the CRC engine; crc_done_q: its CRC is in crc_shadow_o;
   // cmp_q: neq_q holds its comparison with crc_expected_i.
   reg fed_q, crc_done_q, cmp_q, bank_q, ref_valid_q;
-  reg [ADDR_W-1:0] pend_addr_q;
   reg [3:0] settle_q;
   wire crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle;
   wire decide = (state_q == C_CHECK) & cmp_q & drained;
@@ -196,11 +201,9 @@ module acore_coef_bank #(
       busy_q <= 1'b0;
       bank_q <= 1'b0;
       ref_valid_q <= 1'b0;
-      top_we_o <= 1'b0;
       pend_q <= 1'b0;
       ld_q <= 1'b0;
     end else begin
-      top_we_o <= (state_q == C_STREAM) & pend_q;
       pend_q <= (state_q == C_STREAM) & c_re;
       ld_q <= (state_q == C_CHECK) & c_re;
       if (c_re) begin
@@ -264,16 +267,15 @@ module acore_coef_bank #(
       if (apply) crc_ref_o <= crc_shadow_o;
     end
   end
-  always @(posedge clk_i) begin
-    pend_addr_q <= ra_q;
-    // The top's port: the streamed word, or the scrubber's address.
-    top_addr_o <= ((state_q == C_STREAM) & pend_q) ? pend_addr_q : s_addr;
-    top_wdata_o <= q;
-  end
+  // The top's port: in STREAM the word read last clock (its address registered with the read, its
+  // data the shadow's output register), else the scrubber's address.
+  always @(posedge clk_i) top_addr_o <= ((state_q == C_STREAM) & c_re) ? ra_q : s_addr;
+  assign top_we_o = pend_q;
+  assign top_wdata_o = q;
 
   // ---- scrubber passes ----
-  // The comparison comes two clocks after the pass (the flag three); a commit starting meanwhile
-  // takes the comparator, and that pass goes unjudged.
+  // The comparison of the clock after the pass is read two clocks after it (the flag three); a
+  // commit starting meanwhile takes the comparator, and that pass goes unjudged.
   reg pass1_q, pass2_q, judged_q, scrub_bad;
   always @(posedge clk_i) begin
     if (rst_i) begin
@@ -284,8 +286,8 @@ module acore_coef_bank #(
     end else begin
       pass1_q <= s_pass;
       pass2_q <= pass1_q;
-      judged_q <= pass2_q & ~cmp_sel_q;
-      scrub_bad <= pass2_q & ~cmp_sel_q & ref_valid_q & neq_q;
+      judged_q <= pass2_q & ~sel_q;
+      scrub_bad <= pass2_q & ~sel_q & ref_valid_q & neq_q;
     end
   end
   // CRC_SCRUB takes the pass's CRC when it ends; the pass counter moves in the clock the verdict

@@ -15,10 +15,16 @@
 //   top address   ==X A =========================X
 //   rd_ok_i (k-RD_LAT)              ‾‾‾‾‾            served?
 //   state        START/LOAD| READ  READ  READ |LOAD| READ ...
-//   crc_load_o   __________________________/‾‾‾‾\____   the word, when the engine is ready
+//   crc_load_o   __________________________/‾‾‾‾\____   HOLD = 0: the copy, when the engine is ready
 //
-// A pass takes WORDS (RD_LAT + 3) clocks at the least (5 x 52 = 260 for the default pipelined
-// top); on the streaming serial core, one word per sample (the core idles one clock a sample).
+// The engine keeps no copy of a narrow word (it reads the word while it folds it): with HOLD = 0
+// (the serial core, whose read-back is valid only in the clock it is served) the scrubber copies
+// the word into word_q when the engine is ready and hands it over in LOAD; with HOLD = 1 (acore_top,
+// whose read-back stays while its address does) the engine takes the read-back in the clock it is
+// served, and LOAD keeps the address until the engine is ready again. A pass takes at the least
+// WORDS max(RD_LAT + 3, 32/CRC_W + 1) clocks with HOLD = 0, WORDS (RD_LAT + 2 + 32/CRC_W) with
+// HOLD = 1 (6 x 52 = 312 for the pipelined top at CRC_W = 16); on the streaming serial core, one
+// word per sample (the core idles one clock a sample).
 // run_i low (the bank commits, or the host disabled scrubbing) abandons the pass; it starts again
 // from word 0 when run_i returns.
 `resetall
@@ -30,6 +36,9 @@ module acore_coef_scrub #(
   parameter integer WORDS = 52,
   // Clocks from the top's host address to its reg_rdata_o.
   parameter integer RD_LAT = 2,
+  // 1: the top's read-back keeps the word while the address stays (acore_top): the engine reads
+  // it there; 0: it is valid only in the clock it is served (the serial core): a copy (word_q).
+  parameter integer HOLD = 0,
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(WORDS)
 ) (
@@ -45,7 +54,8 @@ module acore_coef_scrub #(
   // The shared CRC engine (acore_crc32).
   output wire              crc_init_o,
   output wire              crc_load_o,
-  output wire [31:0]       crc_word_o,
+  output wire [REG_W-1:0]  crc_word_o,
+  // The engine folds no word (a word taken into word_q now would change the one it folds).
   input  wire              crc_ready_i,
   input  wire              crc_idle_i,
   // A pass over all WORDS words ends in this clock: the engine's crc_o is its CRC.
@@ -74,7 +84,6 @@ module acore_coef_scrub #(
   // Clocks since addr_o changed (saturating at DUE), and rd_ok_i of the last RD_LAT clocks.
   reg [WAIT_W-1:0] wait_q;
   reg [RD_LAT-1:0] ok_q;
-  reg [REG_W-1:0] word_q;
   // addr_o is the last word (a flop, so the state's next value is a few gates from flops).
   reg last_q;
 
@@ -102,17 +111,18 @@ module acore_coef_scrub #(
           state_q <= ST_READ;
         end
         ST_READ: begin
-          if (served) begin
-            word_q <= rdata_i;
-            state_q <= ST_LOAD;
+          if (served && crc_ready_i) begin
+            // HOLD: the engine takes the read-back itself in this clock.
+            state_q <= (HOLD != 0 && last_q) ? ST_END : ST_LOAD;
           end else if (wait_q != DUE) begin
             wait_q <= wait_q + 1'b1;
           end
         end
         ST_LOAD: begin
+          // HOLD: the address stays until the engine has folded the word (it reads the read-back).
           if (crc_ready_i) begin
             wait_q <= {WAIT_W{1'b0}};
-            if (last_q) begin
+            if (HOLD == 0 && last_q) begin
               state_q <= ST_END;
             end else begin
               addr_o <= addr_o + 1'b1;
@@ -128,9 +138,18 @@ module acore_coef_scrub #(
     end
   end
 
+  generate
+    if (HOLD != 0) begin : g_hold
+      assign crc_word_o = rdata_i;
+    end else begin : g_copy
+      // The serial core's read-back is valid only in the clock it is served: a copy.
+      reg [REG_W-1:0] word_q;
+      always @(posedge clk_i) if (state_q == ST_READ && served && crc_ready_i) word_q <= rdata_i;
+      assign crc_word_o = word_q;
+        end
+  endgenerate
   assign crc_init_o = (state_q == ST_START);
-  assign crc_load_o = (state_q == ST_LOAD);
-  assign crc_word_o = {{(32-REG_W){1'b0}}, word_q};
+  assign crc_load_o = (HOLD != 0) ? (state_q == ST_READ) && served : (state_q == ST_LOAD);
   assign pass_o = (state_q == ST_END) && crc_idle_i;
 
 endmodule

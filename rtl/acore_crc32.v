@@ -6,51 +6,63 @@
 // which is the reflected CRC's bit order), so a host computes the same value with any zlib over the
 // words written as 32-bit little-endian integers:
 //   crc = zlib.crc32(b"".join(w.to_bytes(4, "little") for w in words))
-// The coefficient image (REG_W-bit words) is fed zero-extended to 32 bits, in address order.
+// The coefficient image (DATA_W-bit words) is fed zero-extended to 32 bits, in address order.
 //
-//   init_i  ‾\_______________________________   crc_o = CRC of the words taken since init_i,
+//   init_i  ‾\_______________________________   crc_o = CRC of the words taken before this clock,
 //   load_i  __/‾\_______/‾\__________________   valid while idle_o is high
-//   ready_o ‾‾‾‾‾\_____/‾‾‾\_____/‾‾‾‾‾‾‾‾‾‾‾   a word is taken when load_i && ready_o
-//   idle_o  ‾‾‾‾‾\_____________________/‾‾‾‾‾‾   (CRC_W = 8: four clocks a word)
+//   ready_o ‾‾‾‾‾\___/‾‾‾‾‾\___/‾‾‾‾‾‾‾‾‾‾‾‾‾   a word is taken when load_i && ready_o
+//   idle_o  ‾‾‾‾‾\___/‾‾‾‾‾\___/‾‾‾‾‾‾‾‾‾‾‾‾‾   (CRC_W = 8: four clocks a word)
 //
-// A word taken is registered first and folded in over the next 32/CRC_W clocks, so the fold sees
-// only flops. At CRC_W >= 16 the chunk's part of the fold is computed one clock ahead of the CRC
-// register's (the fold is linear), so each clock's logic is half of the wide XOR network (the
-// shell around acore_top then keeps the top's clock rate). A new word is taken in the clock of
-// the last chunk: one word a clock at CRC_W = 32, one per four clocks at CRC_W = 8. The CRC
-// register is a data flop set by init_i; only the chunk counters are reset.
+// Below CRC_W = 16 the engine keeps no copy of the word: the source holds word_i for the
+// STEPS = 32/CRC_W clocks from the take (the sources do anyway: the shadow RAM's output register,
+// the top's read-back while the scrubber keeps its address, the scrubber's copy of the serial
+// core's), and the engine folds its chunk k in the k-th of them, the first in the clock of the take. At CRC_W >= 16 (the fast tops' shells) the word is registered at the take
+// and its chunk's part of the fold is registered next, so the CRC register takes each chunk two
+// clocks later than the narrow form, and each clock's logic is half of the wide XOR network. A new
+// word is taken once the last chunk of the word before is under way: one word a clock at CRC_W = 32,
+// one per four clocks at CRC_W = 8. The CRC register is a data flop cleared by init_i (it holds
+// the CRC's complement); only the run flags are reset.
 `resetall
 `default_nettype none
 
 module acore_crc32 #(
   // Data bits folded into the CRC per clock: 1, 2, 4, 8, 16 or 32.
   parameter integer CRC_W = 8,
+  // Bits of word_i (1..32); the word's upper 32 - DATA_W bits are zero.
+  parameter integer DATA_W = 32,
   // Derived, do not override: clocks per word, and the width of their counter.
   parameter integer STEPS = 32 / CRC_W,
   parameter integer STEP_W = (STEPS > 1) ? $clog2(STEPS) : 1
 ) (
-  input  wire        clk_i,
-  input  wire        rst_i,
+  input  wire              clk_i,
+  input  wire              rst_i,
   // Restart: the CRC of the empty stream (a word loaded in the same clock is dropped).
-  input  wire        init_i,
-  // A word to fold in, taken when load_i && ready_o.
-  input  wire        load_i,
-  input  wire [31:0] word_i,
-  output wire        ready_o,
-  // Every word taken is folded in: crc_o is their CRC-32.
-  output wire        idle_o,
-  output wire [31:0] crc_o
+  input  wire              init_i,
+  // A word to fold in, taken when load_i && ready_o; below CRC_W = 16 the source holds it for
+  // STEPS clocks (the take's and the STEPS - 1 after it).
+  input  wire              load_i,
+  input  wire [DATA_W-1:0] word_i,
+  output wire              ready_o,
+  // Every word taken before this clock is folded in: crc_o is their CRC-32.
+  output wire              idle_o,
+  output wire [31:0]       crc_o
 );
 
   // Parameter rules (rtl/acore_check.v: they stop Verilator, Icarus and Yosys).
   acore_check #(.OK(CRC_W == 1 || CRC_W == 2 || CRC_W == 4 || CRC_W == 8 || CRC_W == 16 || CRC_W == 32), .VALUE(CRC_W),
     .MSG("illegal parameter: CRC_W must be 1, 2, 4, 8, 16 or 32"))
     CRC_W_must_divide_32 ();
+  acore_check #(.OK(DATA_W >= 1 && DATA_W <= 32), .VALUE(DATA_W),
+    .MSG("illegal parameter: DATA_W must be 1..32"))
+    DATA_W_must_be_1_to_32 ();
   acore_check #(.OK(STEPS == 32 / CRC_W), .VALUE(STEPS),
     .MSG("illegal parameter: STEPS is derived (32/CRC_W), do not override"))
     STEPS_is_derived ();
 
   localparam [31:0] POLY = 32'hEDB88320;
+  localparam integer LAST_I = STEPS - 1;
+  localparam [STEP_W-1:0] LAST = LAST_I[STEP_W-1:0];
+  localparam [STEP_W-1:0] SECOND = 1;
 
   // CRC_W bits, least significant first, through the reflected shift register.
   function [31:0] fold(input [31:0] c, input [CRC_W-1:0] d);
@@ -61,50 +73,80 @@ module acore_crc32 #(
     end
   endfunction
 
-  // The word in work and how many of its chunks are still to fold (0: none).
-  reg [31:0] c_q, sh_q;
-  reg [STEP_W:0] left_q;
-  localparam [STEP_W:0] ALL = STEPS[STEP_W:0];
+  // n_q: the CRC register, kept inverted (the final inversion is then no logic of its own; the
+  // fold's inversions merge into its XORs). run_q: chunks 1..STEPS-1 of the word taken are being
+  // folded, chunk idx_q in this clock.
+  reg [31:0] n_q;
+  reg run_q;
+  // (read by the narrow form only: the wide one shifts its registered word)
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [STEP_W-1:0] idx;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire take = load_i & ready_o;
-  wire folding = (left_q != {(STEP_W+1){1'b0}});
-  assign ready_o = (left_q <= {{STEP_W{1'b0}}, 1'b1});
-  always @(posedge clk_i) begin
-    if (rst_i || init_i) left_q <= {(STEP_W+1){1'b0}};
-    else if (take) left_q <= ALL;
-    else if (folding) left_q <= left_q - 1'b1;
-  end
-  always @(posedge clk_i) begin
-    if (take) sh_q <= word_i;
-    else if (folding) sh_q <= sh_q >> CRC_W;
-  end
-  wire dv;
+  wire step = take | run_q;
+  assign ready_o = ~run_q;
   generate
-    if (CRC_W >= 16) begin : g_split
-      // The fold is linear, fold(c, d) = fold(c, 0) ^ fold(0, d): the chunk's part is computed one
-      // clock ahead (d_q, valid dv_q), so each clock's logic is half of a wide XOR network.
-      reg [31:0] d_q;
-      reg dv_q;
+    if (STEPS > 1) begin : g_count
+      reg [STEP_W-1:0] idx_q;
+      assign idx = idx_q;
       always @(posedge clk_i) begin
-        if (rst_i || init_i) dv_q <= 1'b0;
-        else dv_q <= folding;
-        d_q <= fold(32'd0, sh_q[CRC_W-1:0]);
+        if (rst_i || init_i) run_q <= 1'b0;
+        else if (take) run_q <= 1'b1;
+        else if (idx_q == LAST) run_q <= 1'b0;
+        idx_q <= take ? SECOND : idx_q + 1'b1;
       end
-      always @(posedge clk_i) begin
-        if (init_i) c_q <= 32'hFFFFFFFF;
-        else if (dv_q) c_q <= fold(c_q, {CRC_W{1'b0}}) ^ d_q;
-      end
-      assign dv = dv_q;
-    end else begin : g_direct
-      // Narrow chunks: one fold a clock is shallow enough.
-      always @(posedge clk_i) begin
-        if (init_i) c_q <= 32'hFFFFFFFF;
-        else if (folding) c_q <= fold(c_q, sh_q[CRC_W-1:0]);
-      end
-      assign dv = 1'b0;
+    end else begin : g_one
+      always @(posedge clk_i) run_q <= 1'b0;
+      assign idx = 1'b0;
     end
   endgenerate
-  assign idle_o = ~folding & ~dv;
-  assign crc_o = ~c_q;
+  wire busy;
+  generate
+    if (CRC_W >= 16) begin : g_split
+      // Wide chunks, on the fast tops' clock: the word is registered at the take (w_q, the
+      // source's read data off the path) and shifted a chunk a clock, its chunk's part of the fold
+      // registered next (d_q; the fold is linear, fold(c, d) = fold(c, 0) ^ fold(0, d)), so each
+      // clock's logic is half of a wide XOR network with no multiplexer before it; the word's
+      // chunks reach the CRC register two clocks after the direct form's.
+      reg [DATA_W-1:0] w_q;
+      reg [31:0] d_q;
+      reg sv_q, dv_q;
+      // (its chunk: the low CRC_W bits, all 32 only at CRC_W = 32)
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [31:0] w_wide = {{(32-DATA_W){1'b0}}, w_q};
+      /* verilator lint_on UNUSEDSIGNAL */
+      always @(posedge clk_i) begin
+        if (rst_i || init_i) begin
+          sv_q <= 1'b0;
+          dv_q <= 1'b0;
+        end else begin
+          sv_q <= step;
+          dv_q <= sv_q;
+        end
+        if (take) w_q <= word_i;
+        else if (sv_q) w_q <= w_q >> CRC_W;
+        d_q <= fold(32'd0, w_wide[CRC_W-1:0]);
+      end
+      always @(posedge clk_i) begin
+        if (init_i) n_q <= 32'd0;
+        else if (dv_q) n_q <= ~(fold(~n_q, {CRC_W{1'b0}}) ^ d_q);
+      end
+      assign busy = sv_q | dv_q;
+    end else begin : g_direct
+      // Narrow chunks: one fold a clock is shallow enough, straight from the source's word (the
+      // word zero-extended: chunks above DATA_W are constants).
+      wire [STEP_W-1:0] k = run_q ? idx : {STEP_W{1'b0}};
+      wire [31:0] wide = {{(32-DATA_W){1'b0}}, word_i};
+      wire [CRC_W-1:0] chunk = wide[k*CRC_W +: CRC_W];
+      always @(posedge clk_i) begin
+        if (init_i) n_q <= 32'd0;
+        else if (step) n_q <= ~fold(~n_q, chunk);
+      end
+      assign busy = 1'b0;
+    end
+  endgenerate
+  assign idle_o = ~run_q & ~busy;
+  assign crc_o = n_q;
 
 endmodule
 

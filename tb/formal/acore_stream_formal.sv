@@ -340,7 +340,8 @@ module acore_stream_formal #(
   //             no sample in flight, none taken in that clock or the next (the write lands the
   //             clock after it is registered): every output is computed with one image; the
   //             shadow is not written while a commit is busy (the image checked is the one
-  //             streamed).
+  //             streamed), nor read and written in one clock (its block RAM leaves that
+  //             undefined: rtl/acore_sync_ram.v).
   //   crc       with CRC_CHECK set when the commit decides, a commit whose shadow CRC (the
   //             engine's, CRC_SHADOW) differs from CRC_EXPECTED writes nothing and keeps the bank.
   //   scrub     the scrubber never writes the top's words: every write is a commit's.
@@ -371,7 +372,7 @@ module acore_stream_formal #(
       end
       wire access = psel_i && penable_i;
       // (taps, connected by the driver to the shell's wires)
-      wire tap_top_we, tap_busy, tap_coef_we, tap_commit, tap_decide, tap_check;
+      wire tap_top_we, tap_busy, tap_coef_we, tap_sh_re, tap_commit, tap_decide, tap_check;
       wire [31:0] tap_crc_shadow, tap_crc_expected;
       wire [CNT_W-1:0] tap_inflight;
       wire tap_bank;
@@ -409,7 +410,7 @@ module acore_stream_formal #(
           // atomic, scrub
           if (tap_top_we) assert (tap_busy && inflight == 0 && !accept);
           if (past_top_we_q) assert (!accept);
-          if (tap_coef_we) assert (!tap_busy);
+          if (tap_coef_we) assert (!tap_busy && !tap_sh_re);
           // crc: a write follows a decision that allowed it; the bank flips only after writes
           if (tap_top_we) assert (ok_q);
           if (!past_shell_rst_q && tap_bank != past_bank_q) assert (ok_q);
@@ -423,14 +424,14 @@ module acore_stream_formal #(
       // by the driver to the bank (rtl/acore_coef_bank.v): its state, busy flop and registered
       // request; the CHECK pass's flags (the last word fed to the CRC engine, its CRC taken into
       // CRC_SHADOW, the comparison ready), words left and CRC load; STREAM's pending word; SETTLE's
-      // counter; the comparator (CRC ^ reference, its reduction, the reference it used); the CRC
+      // counter; the comparator (CRC != reference, registered, and the reference it used); the CRC
       // engine's value and idle flag.
       localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3,
                        C_SETTLE = 3'd4;
       // (keep: with INVARIANTS = 0 nothing reads them, and the driver still connects them)
       (* keep *) wire [2:0] tap_state;
       (* keep *) wire [3:0] tap_settle;
-      (* keep *) wire [31:0] tap_diff, tap_crc;
+      (* keep *) wire [31:0] tap_crc;
       (* keep *) wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel;
       (* keep *) wire tap_more, tap_ld, tap_pend, tap_crc_idle;
       wire streaming = tap_state == C_STREAM || tap_state == C_SETTLE;
@@ -448,14 +449,14 @@ module acore_stream_formal #(
           if (tap_top_we) assert (streaming);
           if (tap_top_we && tap_state == C_SETTLE) assert (tap_settle != 0);
           // CHECK: once the last word is fed, no more loads; once its CRC is taken, the engine is
-          // idle (its CRC still), CRC_SHADOW holds it and the comparator's first stage holds
-          // CRC ^ CRC_EXPECTED (locked while busy); once the comparison is ready, its reduction.
+          // idle (its CRC still), CRC_SHADOW holds it and the comparator holds CRC != CRC_EXPECTED
+          // (locked while busy), also once the comparison is ready.
           if (tap_state == C_CHECK && tap_fed) assert (!tap_more);
           if (checked) begin
             assert (tap_fed && !tap_more && !tap_ld && tap_crc_idle && tap_sel);
-            assert (tap_crc == tap_crc_shadow && tap_diff == (tap_crc ^ tap_crc_expected));
+            assert (tap_crc == tap_crc_shadow && tap_neq == (tap_crc != tap_crc_expected));
           end
-          if (tap_state == C_CHECK && tap_cmp) assert (tap_crc_done && tap_neq == (tap_diff != 0));
+          if (tap_state == C_CHECK && tap_cmp) assert (tap_crc_done);
         end
       end
     end

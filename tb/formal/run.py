@@ -193,13 +193,13 @@ MUTANTS = {
     "apb_scrub_writes": (
         "apb_serial",
         "acore_coef_bank.v",
-        r"top_we_o <= \(state_q == C_STREAM\) & pend_q;",
-        "top_we_o <= ((state_q == C_STREAM) & pend_q) | s_load;",
+        r"assign top_we_o = pend_q;",
+        "assign top_we_o = pend_q | s_load;",
         "scrub: a write to the top outside a commit",
         16,
     ),
     # Shell: the commit streams without waiting for the samples in flight (a mixed image). At the
-    # small image its first write is in clock 20 (14 + 2 WORDS: CHECK reads a word every 2 clocks).
+    # small image its first write is in clock 19 (13 + 2 WORDS: CHECK reads a word every 2 clocks).
     "apb_commit_not_drained": (
         "apb",
         "acore_coef_bank.v",
@@ -209,7 +209,7 @@ MUTANTS = {
         24,
         SMALL_WORDS,
     ),
-    # Shell: the commit's verdict inverted: a wrong CRC is applied (clock 20 at the small image).
+    # Shell: the commit's verdict inverted: a wrong CRC is applied (clock 19 at the small image).
     "apb_wrong_crc_applied": (
         "apb",
         "acore_coef_bank.v",
@@ -384,6 +384,7 @@ def stream_setup(line, words=None):
             (r + "tap_busy", p + "busy"),
             (r + "tap_bank", p + "bank"),
             (r + "tap_coef_we", p + "rg_coef_we"),
+            (r + "tap_sh_re", p + "u_bank.u_shadow.re_i"),
             (r + "tap_commit", p + "rg_ctrl_commit"),
             (r + "tap_decide", p + "u_bank.decide"),
             (r + "tap_check", p + "u_regs.ctrl_crc_check_q"),
@@ -407,7 +408,6 @@ def stream_setup(line, words=None):
             for w, n in [
                 ("state", "state_q"),
                 ("settle", "settle_q"),
-                ("diff", "diff_q"),
                 ("crc", "crc"),
                 ("busy_q", "busy_q"),
                 ("req", "req_q"),

@@ -59,8 +59,8 @@ class Shell : public ::testing::TestWithParam<const RtlBuild*> {
   RegImage random_image(std::mt19937_64& rng) const {
     return cosim::random_image(cosim::identity_image(cfg()), rng, false);
   }
-  // CRC bits per clock of the build (the shell's default for each top).
-  int crc_w() const { return serial() ? 8 : 16; }
+  // CRC bits per clock of the build (the shell's default for each top: 4 around a folded one).
+  int crc_w() const { return serial() ? 8 : cfg().fold > 1 ? 4 : 16; }
 };
 
 // Reads STATUS until the scrubber has completed `passes` more passes than `from`.
@@ -250,13 +250,14 @@ TEST_P(Shell, ReloadEvery1000SamplesAtFullRateWithBackpressure) {
 }
 
 TEST_P(Shell, CommitBusyTimeIsItsClosedForm) {
-  // busy = max(7 + P + WORDS 32/CRC_W, drain) + WORDS + 4 clocks from the clock of the CTRL write:
-  // request 1, INIT 1, CHECK until both the CRC pass and its check (5 + P + WORDS 32/CRC_W clocks;
-  // P = 1 when CRC_W >= 16 splits the fold over two clocks) and the drain are done, the drain
-  // ending one clock after the last sample in flight has left; STREAM WORDS + 2, SETTLE 2.
+  // busy = max(6 + P + WORDS 32/CRC_W, drain) + WORDS + 4 clocks from the clock of the CTRL write:
+  // request 1, INIT 1, CHECK until both the CRC pass and its check (4 + P + WORDS 32/CRC_W clocks;
+  // P = 2 when CRC_W >= 16 registers the word and splits the fold over two clocks) and the drain
+  // are done, the drain ending one clock after the last sample in flight has left; STREAM
+  // WORDS + 2, SETTLE 2.
   // Measured as the clocks with in_ready low (out_ready high throughout).
   const uint32_t words = cfg().words(), steps = 32 / crc_w(),
-                 pass = 7 + (crc_w() >= 16) + words * steps;
+                 pass = 6 + 2 * (crc_w() >= 16) + words * steps;
   ShellDriver d(*GetParam());
   d.reset();
   d.set_window(StatusWindow::defaults(cfg()));
