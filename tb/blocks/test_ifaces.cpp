@@ -400,6 +400,7 @@ TEST(AbzNChange, ReHomesAtOnceWithAandBHeldThenSingleSteps) {
 
 // ---- UVW ----------------------------------------------------------------------------------------
 constexpr int kUvwAngleW = ACORE_STAGE_UVW_ANGLE_W;
+constexpr int kUvwLatency = ACORE_STAGE_UVW_PP_W + 3;  // acore_uvw.v's LATENCY
 
 TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
   const int64_t turn = int64_t{1} << kUvwAngleW;
@@ -419,25 +420,31 @@ TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
     const bool all = pp == 1 || pp == 3 || pp == 7 || pp == 16;
     const int64_t start = all ? 0 : static_cast<int64_t>(rng() % turn);
     const int64_t count = all ? turn : turn / 8;
-    std::vector<int64_t> sent;
     int64_t wrong = 0, checked = 0;
-    for (int64_t k = 0; k < count + 3; ++k) {
-      const bool send = k < count;
+    // One angle at a time: each converted within LATENCY = PP_W + 3 clocks (acore_uvw.v).
+    for (int64_t k = 0; k < count; ++k) {
       const int64_t a = (start + k) % turn;
-      top->angle_valid_i = send;
+      top->angle_valid_i = 1;
       top->angle_i = static_cast<uint32_t>(a);
       tick(*top);
-      if (send) sent.push_back(a);
-      if (top->valid_o) {
-        const int64_t x = ((((sent[checked] - offset) % turn + turn) % turn) * pp) % turn;
-        const int64_t six = 6 * x;  // the electrical angle in sixths of a turn
-        const int sector = static_cast<int>(six / turn);
-        const bool u = six < 3 * turn;
-        const bool v = ((six - 2 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
-        const bool w = ((six - 4 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
-        wrong += top->sector_o != sector || top->u_o != u || top->v_o != v || top->w_o != w;
-        ++checked;
+      top->angle_valid_i = 0;
+      int late = 1;
+      while (!top->valid_o && late < kUvwLatency + 2) {
+        tick(*top);
+        ++late;
       }
+      if (!top->valid_o || late != kUvwLatency) {
+        ++wrong;
+        continue;
+      }
+      const int64_t x = ((((a - offset) % turn + turn) % turn) * pp) % turn;
+      const int64_t six = 6 * x;  // the electrical angle in sixths of a turn
+      const int sector = static_cast<int>(six / turn);
+      const bool u = six < 3 * turn;
+      const bool v = ((six - 2 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
+      const bool w = ((six - 4 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
+      wrong += top->sector_o != sector || top->u_o != u || top->v_o != v || top->w_o != w;
+      ++checked;
     }
     EXPECT_EQ(checked, count) << "pp " << pp;
     EXPECT_EQ(wrong, 0) << "pp " << pp;
@@ -451,10 +458,23 @@ TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
     top->angle_i = static_cast<uint32_t>(a);
     tick(*top);
     top->angle_valid_i = 0;
-    tick(*top);
-    tick(*top);
+    for (int j = 1; j < kUvwLatency; ++j) tick(*top);
+    EXPECT_TRUE(top->valid_o) << pp_in;
     EXPECT_EQ(top->sector_o, (6 * ((a * pp_eff) % turn)) / turn) << pp_in;
   }
+  // A burst faster than a conversion: the first angle converts, the ones arriving meanwhile wait
+  // and only the latest of them converts next (latest wins), nothing else is output.
+  top->pp_i = 1;
+  const int64_t burst[] = {turn / 12, turn / 12 + turn / 6, turn / 12 + 2 * (turn / 6),
+                           turn / 12 + 3 * (turn / 6)};
+  std::vector<int> sectors;
+  for (int c = 0; c < 4 * kUvwLatency; ++c) {
+    top->angle_valid_i = c < 4;
+    top->angle_i = static_cast<uint32_t>(burst[c < 4 ? c : 3]);
+    tick(*top);
+    if (top->valid_o) sectors.push_back(top->sector_o);
+  }
+  EXPECT_EQ(sectors, (std::vector<int>{0, 3}));
 }
 
 // ---- SPI (AS5047P frame) ----------------------------------------------------------------------
@@ -965,11 +985,10 @@ TEST(UvwCosim, MatchesTheModel) {
     top->pp_i = pp;
     tick(*top);
     top->angle_valid_i = 0;
-    tick(*top);
-    tick(*top);
+    for (int j = 1; j < kUvwLatency; ++j) tick(*top);
     const UvwState s = uvw_state(a, off, kUvwAngleW, pp);
-    mismatches +=
-        top->sector_o != s.sector || top->u_o != s.u || top->v_o != s.v || top->w_o != s.w;
+    mismatches += !top->valid_o || top->sector_o != s.sector || top->u_o != s.u ||
+                  top->v_o != s.v || top->w_o != s.w;
   }
   EXPECT_EQ(mismatches, 0);
 }
