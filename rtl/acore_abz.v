@@ -4,7 +4,7 @@
 // pulses per turn (4N counts a turn), not only powers of two.
 //
 //   angle (latest sample) --> target = floor(angle 4N / 2^ANGLE_W) --> count steps toward it,
-//                             (shift-add, N_W clocks)                   one step per edge, at most
+//                             (shift-add, 3 x (N_W + 1) clocks)         one step per edge, at most
 //                                                                       one edge per SPACING clocks
 //   count mod 4 --> A, B (Gray: 00 10 11 01 forward);  count == INDEX --> Z (once per turn)
 //
@@ -15,10 +15,14 @@
 // exactly half a turn goes forward), so a decoder's count equals floor(angle 4N / 2^ANGLE_W) once
 // it has caught up, and no edge is ever lost or doubled: one step changes A or B, never both.
 //
-// The product angle N is computed one bit of N a clock (shift-add, no multiplier): an angle that
-// arrives while one is computed waits, and a newer one replaces it (latest wins), so the target
-// follows the stream N_W + 3 clocks late at any sample rate.
-//
+// The products angle N are computed one bit of N a clock (shift-add, no multiplier), the three a
+// conversion needs (the angle and the hysteresis window's two ends, below) one after the other on
+// one adder: an angle that arrives while one is converted waits, and a newer one replaces it
+// (latest wins), so the target follows the stream LATENCY = 3 N_W + 5 clocks late at any sample
+// rate (a conversion every 3 N_W + 4 clocks; the board's observer delivers one every 16 or more).
+// One adder instead of three: the board is area-bound, and a drive's counter needs the count's
+// edges, not the target within the sample.
+
 // Hysteresis (HYS angle LSBs, the hys_i input, as the AS5047P's HYS): the count holds while the
 // angle lies within HYS LSBs of the count's own interval, that is while the target t is one of
 // the counts the window angle - HYS .. angle + HYS touches (lo(angle - HYS) <= t <= lo(angle + HYS)
@@ -78,7 +82,7 @@ module acore_abz #(
   localparam integer M_W = N_W + 2;          // 4N itself (and a signed difference of counts)
   localparam integer P_W = ANGLE_W + N_W;    // angle N
   localparam integer NMAX = 1 << (N_W - 1);
-  localparam integer LATENCY = N_W + 3;      // clocks from an accepted angle to its target
+  localparam integer LATENCY = 3 * N_W + 5;  // clocks from an accepted angle to its target
 
   acore_check #(.OK(ANGLE_W >= 2 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 2..32")) ANGLE_W_must_be_2_to_32 ();
@@ -103,97 +107,72 @@ module acore_abz #(
   reg have_q;                    // an angle has arrived since reset
   wire n_change = (n_clamped != n_cur_q);
 
-  // ---- the target: three products, one bit of N a clock, LSB first ----
+  // ---- the target: three products on one adder, one bit of N a clock, LSB first ----
   // lo = floor(angle 4N / 2^ANGLE_W) and the hysteresis window's ends lm, lp: the same with the
   // angle taken as (angle - HYS) and (angle + HYS) modulo a turn. A window end that passes a turn
   // then lies exactly 4N counts lower or higher, so each product lands on its count modulo 4N with
   // no wrap to undo, and each takes an adder as wide as the angle: the partial sum keeps the
   // product's upper ANGLE_W bits and shifts the settled low bit out (kept below it only as far
   // as a count reaches, when N_W > ANGLE_W - 2), instead of an adder as wide as the product.
-  reg pend_q, run_q, res_q;
-  reg [ANGLE_W-1:0] ang_q;
-  reg [N_W-1:0] n_run_q, nsh_q;
+  // The passes: 0 the operand angle - HYS (lm), 1 that + 2 HYS = angle + HYS (lp), 2 that - HYS =
+  // angle (lo): each operand from the last on one more adder, so the angle being converted needs
+  // no register of its own (ang_q takes the next while this one converts). A pass is N_W clocks of
+  // steps and one that takes its count and loads the next operand.
+  reg pend_q, run_q;
+  reg [1:0] pass_q;
+  reg [ANGLE_W-1:0] ang_q, op_q, acc_q;
+  reg [N_W-1:0] low_q, n_run_q, nsh_q;
   reg [$clog2(N_W + 1)-1:0] k_q;
-  wire load = ~run_q & (pend_q | angle_valid_i);
-  wire [ANGLE_W-1:0] a_new = angle_valid_i ? angle_i : ang_q;
+  wire load = ~run_q & pend_q;
+  wire turn = run_q & (k_q == {$clog2(N_W + 1){1'b0}});  // a pass's steps done
+  wire res = turn & (pass_q == 2'd2);                      // lo is in acc_q, low_q
   wire [ANGLE_W-1:0] hys_a = {{(ANGLE_W-HYS_W){1'b0}}, hys_i};
+  // The next operand: ang - HYS at a load, then + 2 HYS, then - HYS.
+  wire [ANGLE_W-1:0] op_base = load ? ang_q : op_q;
+  wire [ANGLE_W-1:0] op_next = (~load & (pass_q == 2'd0)) ? op_base + {hys_a[ANGLE_W-2:0], 1'b0} :
+                                                            op_base - hys_a;
+  wire [ANGLE_W:0] psum = {1'b0, acc_q} + (nsh_q[0] ? {1'b0, op_q} : {(ANGLE_W+1){1'b0}});
   // A new N converts the latest angle again (the count re-homes on that result).
   wire redo = n_change & have_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       pend_q <= 1'b0;
       run_q <= 1'b0;
-      res_q <= 1'b0;
       have_q <= 1'b0;
     end else begin
-      res_q <= 1'b0;
       if (angle_valid_i) have_q <= 1'b1;
       if (angle_valid_i || redo) pend_q <= 1'b1;
-      else if (!run_q) pend_q <= 1'b0;
-      if (load) begin
-        run_q <= 1'b1;
-        k_q <= N_W[$clog2(N_W + 1)-1:0];
-        pend_q <= redo;
-      end else if (run_q) begin
-        k_q <= k_q - 1'b1;
-        if (k_q == 1) begin
-          run_q <= 1'b0;
-          res_q <= 1'b1;
-        end
-      end
-    end
-    if (load) begin
-      n_run_q <= n_clamped;
-      nsh_q <= n_clamped;
-    end else if (run_q) begin
-      nsh_q <= nsh_q >> 1;
+      else if (load) pend_q <= 1'b0;
+      if (load) run_q <= 1'b1;
+      else if (res) run_q <= 1'b0;
     end
     if (angle_valid_i) ang_q <= angle_i;
-  end
-  // The three products (0: angle, 1: angle - HYS, 2: angle + HYS, modulo a turn), each the upper
-  // ANGLE_W bits of its partial sum and the settled low bits below them (the last at the top);
-  // their counts are the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them). The datapath
-  // needs no reset: run_q and res_q say when it holds a product.
-  wire [3*C_W-1:0] cnt_of;
-  genvar g;
-  generate
-    for (g = 0; g < 3; g = g + 1) begin : g_prod
-      reg [ANGLE_W-1:0] op_q, acc_q;
-      reg [N_W-1:0] low_q;
-      wire [ANGLE_W-1:0] op_d = (g == 0) ? a_new : (g == 1) ? a_new - hys_a : a_new + hys_a;
-      wire [ANGLE_W:0] psum = {1'b0, acc_q} + (nsh_q[0] ? {1'b0, op_q} : {(ANGLE_W+1){1'b0}});
-      always @(posedge clk_i) begin
-        if (load) begin
-          op_q <= op_d;
-          acc_q <= {ANGLE_W{1'b0}};
-          low_q <= {N_W{1'b0}};
-        end else if (run_q) begin
-          {acc_q, low_q} <= {psum, low_q[N_W-1:1]};
-        end
-      end
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [P_W-1:0] prod = {acc_q, low_q};
-      /* verilator lint_on UNUSEDSIGNAL */
-      assign cnt_of[g*C_W +: C_W] = prod[ANGLE_W-2 +: C_W];
+    // The datapath needs no reset: run_q says when it holds a product.
+    if (load || (turn && !res)) begin
+      op_q <= op_next;
+      acc_q <= {ANGLE_W{1'b0}};
+      low_q <= {N_W{1'b0}};
+      nsh_q <= load ? n_clamped : n_run_q;
+      k_q <= N_W[$clog2(N_W + 1)-1:0];
+      pass_q <= load ? 2'd0 : pass_q + 2'd1;
+    end else if (run_q && !turn) begin
+      {acc_q, low_q} <= {psum, low_q[N_W-1:1]};
+      nsh_q <= nsh_q >> 1;
+      k_q <= k_q - 1'b1;
     end
-  endgenerate
-  wire [C_W-1:0] lo = cnt_of[0 +: C_W];
-  wire [C_W-1:0] lm_w = cnt_of[C_W +: C_W];
-  wire [C_W-1:0] lp_w = cnt_of[2*C_W +: C_W];
-  // Registered once (the products' carry chains stay off the count's path).
-  reg res2_q;
-  reg [C_W-1:0] lo_q, lm_q, lp_q;
-  reg [N_W-1:0] n_res_q;
+    if (load) n_run_q <= n_clamped;
+  end
+  // The product's count: the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them).
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [P_W-1:0] prod = {acc_q, low_q};
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [C_W-1:0] cnt_of = prod[ANGLE_W-2 +: C_W];
+  reg [C_W-1:0] lm_q, lp_q;
   always @(posedge clk_i) begin
-    if (rst_i) res2_q <= 1'b0;
-    else res2_q <= res_q;
-    if (res_q) begin
-      lo_q <= lo;
-      lm_q <= lm_w;
-      lp_q <= lp_w;
-      n_res_q <= n_run_q;
-    end
+    if (turn && pass_q == 2'd0) lm_q <= cnt_of;
+    if (turn && pass_q == 2'd1) lp_q <= cnt_of;
   end
+  wire [C_W-1:0] lo_q = cnt_of;
 
   // ---- the count ----
   reg [C_W-1:0] cnt_q, tgt_q;
@@ -215,7 +194,7 @@ module acore_abz #(
   wire in_win = (lm_q <= lp_q) ? (tgt_q >= lm_q && tgt_q <= lp_q) : (tgt_q >= lm_q || tgt_q <= lp_q);
   wire [C_W-1:0] new_tgt = in_win ? tgt_q : lo_q;
   // A result with the N in use (one converted before a change is dropped).
-  wire res_ok = res2_q & (n_res_q == n_cur_q) & ~n_change;
+  wire res_ok = res & (n_run_q == n_cur_q) & ~n_change;
   // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
   // target lo: lo + d with d = (count - lo) mod 4 in 0 .. 2, or lo - 1 for d = 3, round the turn.
   wire [1:0] dlow = cnt_q[1:0] - lo_q[1:0];
@@ -271,7 +250,7 @@ module acore_abz #(
     end
   end
   assign count_o = cnt_q;
-  assign settled_o = ~moving & ~rehome_q & ~n_change & ~pend_q & ~run_q & ~res_q & ~res2_q & ~angle_valid_i;
+  assign settled_o = ~moving & ~rehome_q & ~n_change & ~pend_q & ~run_q & ~angle_valid_i;
 
 endmodule
 

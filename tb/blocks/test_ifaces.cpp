@@ -52,6 +52,10 @@ void tick(V& top) {
 // ---- ABZ ----------------------------------------------------------------------------------------
 constexpr int kAbzAngleW = ACORE_STAGE_ABZ_ANGLE_W;
 constexpr int kAbzNW = ACORE_STAGE_ABZ_N_W;
+// acore_abz.v's LATENCY (an accepted angle to its target) and its conversion period (three
+// products of N_W steps and a clock each on one adder).
+constexpr int kAbzLatency = 3 * kAbzNW + 5;
+constexpr int kAbzConvert = 3 * kAbzNW + 4;
 constexpr int64_t kTurn = int64_t{1} << kAbzAngleW;
 
 // An x4 quadrature decoder as a drive's timer counts: the Gray position of (A, B) is 0 (00),
@@ -179,13 +183,13 @@ TEST_P(Abz, DecoderCountEqualsFloorAfterEveryCatchUpWithoutLostCounts) {
       const uint64_t took = b.settle(100 + 4 * n * spacing + 64);
       ASSERT_EQ(b.wrapped(), next) << "N " << n << " angle " << a << " step " << k;
       ASSERT_EQ(b.top->count_o, next);
-      // At the full rate: one edge per `spacing` clocks after the N_W + 2 clocks of the product.
+      // At the full rate: one edge per `spacing` clocks after the LATENCY clocks of the products.
       max_late = std::max<int64_t>(max_late, static_cast<int64_t>(took) - dist * spacing);
       expected = next;
     }
     EXPECT_EQ(b.dec.lost, 0);
     EXPECT_GE(b.dec.min_gap, static_cast<uint64_t>(spacing));
-    EXPECT_LE(max_late, kAbzNW + 6);
+    EXPECT_LE(max_late, kAbzLatency + 3);
     EXPECT_EQ(b.z_bad, 0);
   }
 }
@@ -198,12 +202,12 @@ TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
   // The angle advances faster than one count a clock (the count runs at the maximum rate behind it)
   // for about three turns, forward, then back two turns.
   const int64_t per_clock_counts_x16 = 24;  // 1.5 counts a clock
-  // (The target is converted once per N_W + 1 clocks, latest sample wins: the angle may move at
-  // most a quarter turn per conversion, or the shorter way would be the wrong way; for small N that
-  // bound is below 1.5 counts a clock.)
-  const int64_t step = std::max<int64_t>(
-      1,
-      std::min<int64_t>(per_clock_counts_x16 * kTurn / (16 * 4 * n), kTurn / (4 * (kAbzNW + 2))));
+  // (The target is converted once per kAbzConvert clocks, latest sample wins: the angle may move
+  // at most a quarter turn per conversion, or the shorter way would be the wrong way; for small N
+  // that bound is below 1.5 counts a clock.)
+  const int64_t step =
+      std::max<int64_t>(1, std::min<int64_t>(per_clock_counts_x16 * kTurn / (16 * 4 * n),
+                                             kTurn / (4 * (kAbzConvert + 1))));
   int64_t unwrapped = 0;
   auto run = [&](int64_t turns, int dir) {
     const int64_t clocks = turns * kTurn / step;
@@ -302,7 +306,7 @@ TEST_P(Abz, MinimumSpacingHoldsAfterAJump) {
   EXPECT_EQ(b.wrapped(), target);
   EXPECT_EQ(b.dec.edges, dist);
   if (dist > 1) EXPECT_EQ(b.dec.min_gap, static_cast<uint64_t>(spacing));
-  EXPECT_LE(static_cast<int64_t>(took), dist * spacing + kAbzNW + 6);
+  EXPECT_LE(static_cast<int64_t>(took), dist * spacing + kAbzLatency + 3);
   EXPECT_EQ(b.dec.lost, 0);
 }
 
@@ -373,12 +377,12 @@ TEST(AbzNChange, ReHomesAtOnceWithAandBHeldThenSingleSteps) {
       b.top->n_i = static_cast<uint32_t>(n2);
       const int64_t lo = count_lo(a, n2);
       const int64_t d = ((c_old - lo) % 4 + 4) % 4;
-      // A and B hold while the new product is computed (N_W + 3 clocks at least).
-      for (int j = 0; j < kAbzNW + 3; ++j) {
+      // A and B hold while the new products are computed (LATENCY clocks at least).
+      for (int j = 0; j < kAbzLatency; ++j) {
         b.step();
         held_bad += b.top->a_o * 2 + b.top->b_o != ab;
       }
-      const uint64_t took = b.settle(64) + kAbzNW + 3;
+      const uint64_t took = b.settle(64) + kAbzLatency;
       // d = 2 is half the turn at N = 1: the shorter way's tie goes forward.
       const int64_t walk = d == 3 ? 1 : (d == 2 && n2 == 1) ? 2 : -d;
       walk_bad += b.dec.pos - pos0 != walk;
