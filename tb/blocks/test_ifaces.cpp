@@ -814,6 +814,32 @@ TEST(SpiAs5047, WritesFollowTheDatasheetSequenceAndTables) {
   EXPECT_EQ(m.top->errfl_o, 0) << "no write above was refused";
 }
 
+// ABIRES read back for every N a register may hold (ABZ_N is written over APB too, not only from
+// the tables): the first entry of ABIBIN's table not above N, the table's last code below it.
+TEST(SpiAs5047, AbiresReadsTheFirstEntryNotAboveN) {
+  SpiMaster m(35);
+  const std::vector<int64_t> decimal = {1000, 500, 400, 300, 200, 100, 50, 25},
+                             binary = {1024, 512, 256};
+  int64_t wrong = 0;
+  for (const bool bin : {false, true}) {
+    const std::vector<int64_t>& table = bin ? binary : decimal;
+    m.frame(with_parity(0x0018));
+    m.frame(with_parity(bin ? 0x20 : 0x00));
+    for (int64_t n = 1; n <= int64_t{1} << (ACORE_STAGE_SPI_N_W - 1); ++n) {
+      m.regs.n = n;
+      m.drive_regs();
+      m.frame(with_parity(0x4000 | 0x0019));
+      const unsigned code = (m.frame(0x0000) >> 5) & 0x7u;
+      unsigned want = static_cast<unsigned>(table.size() - 1);
+      for (size_t c = table.size(); c-- > 0;)
+        if (n >= table[c]) want = static_cast<unsigned>(c);
+      wrong += code != want;
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(m.top->errfl_o, 0);
+}
+
 // ---- PWM (AS5047P frame) --------------------------------------------------------------------
 TEST(Pwm, InputCaptureDecoderRecoversTheAngle) {
   std::mt19937_64 rng(41);
