@@ -121,16 +121,22 @@ module acore_abz #(
   reg pend_q, run_q;
   reg [1:0] pass_q;
   reg [ANGLE_W-1:0] ang_q, op_q, acc_q;
-  reg [N_W-1:0] low_q, n_run_q, nsh_q;
+  reg [N_W-1:0] low_q, nsh_q;
+  // N changed during this conversion: its result is dropped (the change converts again).
+  reg stale_q;
   reg [$clog2(N_W + 1)-1:0] k_q;
   wire load = ~run_q & pend_q;
   wire turn = run_q & (k_q == {$clog2(N_W + 1){1'b0}});  // a pass's steps done
   wire res = turn & (pass_q == 2'd2);                      // lo is in acc_q, low_q
   wire [ANGLE_W-1:0] hys_a = {{(ANGLE_W-HYS_W){1'b0}}, hys_i};
-  // The next operand: ang - HYS at a load, then + 2 HYS, then - HYS.
+  // The next operand on one adder: ang - HYS at a load, then + 2 HYS, then - HYS (- HYS as
+  // ~HYS + 1). The window passes the turn's end exactly when the + 2 HYS carries out: with a
+  // borrow of ang - HYS it always does, and otherwise it does when ang + HYS reaches a turn.
+  wire add2 = ~load & (pass_q == 2'd0);
   wire [ANGLE_W-1:0] op_base = load ? ang_q : op_q;
-  wire [ANGLE_W-1:0] op_next = (~load & (pass_q == 2'd0)) ? op_base + {hys_a[ANGLE_W-2:0], 1'b0} :
-                                                            op_base - hys_a;
+  wire [ANGLE_W-1:0] op_addend = add2 ? {hys_a[ANGLE_W-2:0], 1'b0} : ~hys_a;
+  wire [ANGLE_W:0] op_sum = {1'b0, op_base} + {1'b0, op_addend} + {{ANGLE_W{1'b0}}, ~add2};
+  wire [ANGLE_W-1:0] op_next = op_sum[ANGLE_W-1:0];
   wire [ANGLE_W:0] psum = {1'b0, acc_q} + (nsh_q[0] ? {1'b0, op_q} : {(ANGLE_W+1){1'b0}});
   // A new N converts the latest angle again (the count re-homes on that result).
   wire redo = n_change & have_q;
@@ -148,11 +154,14 @@ module acore_abz #(
     end
     if (angle_valid_i) ang_q <= angle_i;
     // The datapath needs no reset: run_q says when it holds a product.
+    if (load) stale_q <= 1'b0;
+    else if (n_change) stale_q <= 1'b1;
     if (load || (turn && !res)) begin
       op_q <= op_next;
       acc_q <= {ANGLE_W{1'b0}};
       low_q <= {N_W{1'b0}};
-      nsh_q <= load ? n_clamped : n_run_q;
+      // (A later pass takes the N in use: should it have changed, the result is stale anyway.)
+      nsh_q <= load ? n_clamped : n_cur_q;
       k_q <= N_W[$clog2(N_W + 1)-1:0];
       pass_q <= load ? 2'd0 : pass_q + 2'd1;
     end else if (run_q && !turn) begin
@@ -160,22 +169,32 @@ module acore_abz #(
       nsh_q <= nsh_q >> 1;
       k_q <= k_q - 1'b1;
     end
-    if (load) n_run_q <= n_clamped;
   end
   // The product's count: the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them).
   /* verilator lint_off UNUSEDSIGNAL */
   wire [P_W-1:0] prod = {acc_q, low_q};
   /* verilator lint_on UNUSEDSIGNAL */
   wire [C_W-1:0] cnt_of = prod[ANGLE_W-2 +: C_W];
-  reg [C_W-1:0] lm_q, lp_q;
-  always @(posedge clk_i) begin
-    if (turn && pass_q == 2'd0) lm_q <= cnt_of;
-    if (turn && pass_q == 2'd1) lp_q <= cnt_of;
-  end
   wire [C_W-1:0] lo_q = cnt_of;
+  // The window's ends are compared with the target as each pass ends (the target changes only
+  // with a result, so it is the one the result is checked against), on one comparator:
+  // target >= lm after pass 0, target >= lp + 1 (the carry in) after pass 1; lm > lp exactly
+  // when the window passes the turn's end (it covers less than half a turn).
+  reg ge_lm_q, le_lp_q, wrap_q;
+  reg [C_W-1:0] tgt_q;
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [C_W:0] cmp = {1'b0, tgt_q} + {1'b0, ~cnt_of} + {{C_W{1'b0}}, pass_q == 2'd0};
+  /* verilator lint_on UNUSEDSIGNAL */
+  always @(posedge clk_i) begin
+    if (turn && pass_q == 2'd0) begin
+      ge_lm_q <= cmp[C_W];
+      wrap_q <= op_sum[ANGLE_W];
+    end
+    if (turn && pass_q == 2'd1) le_lp_q <= ~cmp[C_W];
+  end
 
   // ---- the count ----
-  reg [C_W-1:0] cnt_q, tgt_q;
+  reg [C_W-1:0] cnt_q;
   reg [SP_W-1:0] sp_q;
   reg rehome_q;                  // N changed: hold A/B until the first target with the new N
   wire [M_W-1:0] m4_cur = {n_cur_q, 2'b00};
@@ -191,19 +210,20 @@ module acore_abz #(
   // load needs no subtractor.
   wire sp_ready = ((sp_q >> 1) == {SP_W{1'b0}});
   // The window lm .. lp round the turn holds the target.
-  wire in_win = (lm_q <= lp_q) ? (tgt_q >= lm_q && tgt_q <= lp_q) : (tgt_q >= lm_q || tgt_q <= lp_q);
+  wire in_win = wrap_q ? (ge_lm_q | le_lp_q) : (ge_lm_q & le_lp_q);
   wire [C_W-1:0] new_tgt = in_win ? tgt_q : lo_q;
   // A result with the N in use (one converted before a change is dropped).
-  wire res_ok = res & (n_run_q == n_cur_q) & ~n_change;
+  wire res_ok = res & ~stale_q & ~n_change;
   // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
   // target lo: lo + d with d = (count - lo) mod 4 in 0 .. 2, or lo - 1 for d = 3, round the turn.
+  // (d = 3 as -1: one adder, lo + d sign-extended.)
   wire [1:0] dlow = cnt_q[1:0] - lo_q[1:0];
-  wire [M_W-1:0] lo_w = {1'b0, lo_q};
-  wire [M_W-1:0] home_up = lo_w + {{(M_W-2){1'b0}}, dlow};
-  // Past the turn, lo + d - 4N is 0 or 1 (lo < 4N, d <= 2): its two low bits are lo + d's (4N's
-  // are zero), the rest zero. A result is used only with the N in use: its 4N is m4_cur.
+  wire [M_W-1:0] home_up = {1'b0, lo_q} + {{(M_W-2){dlow == 2'd3}}, dlow};
+  // Below zero (lo = 0, d = 3): 4N - 1. Past the turn, lo + d - 4N is 0 or 1 (lo < 4N, d <= 2):
+  // its two low bits are lo + d's (4N's are zero), the rest zero. A result is used only with the
+  // N in use: its 4N is m4_cur.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [M_W-1:0] home_w = (dlow == 2'd3) ? ((lo_q == {C_W{1'b0}}) ? {1'b0, top_cnt} : lo_w - 1'b1) :
+  wire [M_W-1:0] home_w = home_up[M_W-1] ? {1'b0, top_cnt} :
                           (home_up >= m4_cur) ? {{(M_W-2){1'b0}}, home_up[1:0]} : home_up;  // < 4N
   /* verilator lint_on UNUSEDSIGNAL */
   // One step of the count, up or down by one on one adder, round the turn.
