@@ -202,9 +202,11 @@ module acore_abz #(
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
   wire [M_W-1:0] diff0 = {1'b0, tgt_q} - cnt_w;          // modulo 2^M_W
   wire [M_W-1:0] diff = diff0[M_W-1] ? diff0 + m4_cur : diff0;  // modulo 4N
-  wire moving = (tgt_q != cnt_q) & ~rehome_q;
+  reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
+  wire moving = (tgt_q != cnt_q) & ~rehome_q & ~adj_q;
   wire up = (diff <= m2_cur);
-  wire [C_W-1:0] top_cnt = m4_cur[C_W-1:0] - 1'b1;
+  // The top count 4N - 1 is {N - 1, 2'b11}: its upper part.
+  wire [C_W-3:0] top_hi = n_cur_q[C_W-3:0] - 1'b1;
   // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
   // come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next clock), so the
   // load needs no subtractor.
@@ -216,20 +218,24 @@ module acore_abz #(
   wire res_ok = res & ~stale_q & ~n_change;
   // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
   // target lo: lo + d with d = (count - lo) mod 4 in 0 .. 2, or lo - 1 for d = 3, round the turn.
-  // (d = 3 as -1: one adder, lo + d sign-extended.)
+  // In two clocks on the step's adder: the upper part of lo with the count's low bits, then that
+  // +-4 counts where lo + d carries past lo's low bits (or lo - 1 borrows), round the turn (Z
+  // holds for that clock: the count between is no count of the output).
   wire [1:0] dlow = cnt_q[1:0] - lo_q[1:0];
-  wire [M_W-1:0] home_up = {1'b0, lo_q} + {{(M_W-2){dlow == 2'd3}}, dlow};
-  // Below zero (lo = 0, d = 3): 4N - 1. Past the turn, lo + d - 4N is 0 or 1 (lo < 4N, d <= 2):
-  // its two low bits are lo + d's (4N's are zero), the rest zero. A result is used only with the
-  // N in use: its 4N is m4_cur.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [M_W-1:0] home_w = home_up[M_W-1] ? {1'b0, top_cnt} :
-                          (home_up >= m4_cur) ? {{(M_W-2){1'b0}}, home_up[1:0]} : home_up;  // < 4N
+  wire [2:0] lo_d = {1'b0, lo_q[1:0]} + {1'b0, dlow};
   /* verilator lint_on UNUSEDSIGNAL */
-  // One step of the count, up or down by one on one adder, round the turn.
-  wire [C_W-1:0] step = cnt_q + (up ? {{(C_W-1){1'b0}}, 1'b1} : {C_W{1'b1}});
-  wire wrap_up = up & (cnt_q == top_cnt);
-  wire wrap_dn = ~up & (cnt_q == {C_W{1'b0}});
+  wire home_up = (dlow != 2'd3) & lo_d[2];
+  wire home_dn = (dlow == 2'd3) & (lo_q[1:0] == 2'd0);
+  // One step of the count on one adder, round the turn: +-1, or +-4 when re-homing (low bits kept).
+  wire dir = adj_q ? adj_up_q : up;
+  wire [C_W-1:0] addend = adj_q ? (adj_up_q ? {{(C_W-3){1'b0}}, 3'b100} : {{(C_W-2){1'b1}}, 2'b00}) :
+                                  (up ? {{(C_W-1){1'b0}}, 1'b1} : {C_W{1'b1}});
+  wire [C_W-1:0] step = cnt_q + addend;
+  wire hi_top = (cnt_q[C_W-1:2] == top_hi), hi_zero = (cnt_q[C_W-1:2] == {(C_W-2){1'b0}});
+  wire wrap_up = dir & hi_top & (adj_q | (cnt_q[1:0] == 2'b11));
+  wire wrap_dn = ~dir & hi_zero & (adj_q | (cnt_q[1:0] == 2'b00));
+  wire [C_W-1:0] cnt_next = wrap_up ? {{(C_W-2){1'b0}}, step[1:0]} : wrap_dn ? {top_hi, step[1:0]} : step;
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
@@ -237,21 +243,27 @@ module acore_abz #(
       sp_q <= {SP_W{1'b0}};
       n_cur_q <= n_clamped;
       rehome_q <= 1'b0;
+      adj_q <= 1'b0;
     end else begin
       if (sp_q != {SP_W{1'b0}}) sp_q <= sp_q - 1'b1;
+      adj_q <= 1'b0;
       if (n_change) begin
         // A new N: A and B hold; without an angle yet the count is 0 and stays.
         n_cur_q <= n_clamped;
         rehome_q <= have_q;
       end else if (res_ok && rehome_q) begin
         rehome_q <= 1'b0;
-        cnt_q <= home_w[C_W-1:0];
+        cnt_q <= {lo_q[C_W-1:2], cnt_q[1:0]};
         tgt_q <= lo_q;
+        adj_q <= home_up | home_dn;
+        adj_up_q <= home_up;
+      end else if (adj_q) begin
+        cnt_q <= cnt_next;
       end else begin
         if (res_ok) tgt_q <= new_tgt;
         if (moving && sp_ready) begin
           sp_q <= spacing_i;
-          cnt_q <= wrap_up ? {C_W{1'b0}} : wrap_dn ? top_cnt : step;
+          cnt_q <= cnt_next;
         end
       end
     end
@@ -266,11 +278,11 @@ module acore_abz #(
     end else begin
       a_o <= cnt_q[1] ^ cnt_q[0];
       b_o <= cnt_q[1];
-      z_o <= (cnt_q == index_i);
+      if (!adj_q) z_o <= (cnt_q == index_i);
     end
   end
   assign count_o = cnt_q;
-  assign settled_o = ~moving & ~rehome_q & ~n_change & ~pend_q & ~run_q & ~angle_valid_i;
+  assign settled_o = ~moving & ~rehome_q & ~adj_q & ~n_change & ~pend_q & ~run_q & ~angle_valid_i;
 
 endmodule
 
