@@ -197,14 +197,16 @@ module acore_abz #(
   reg [C_W-1:0] cnt_q;
   reg [SP_W-1:0] sp_q;
   reg rehome_q;                  // N changed: hold A/B until the first target with the new N
-  wire [M_W-1:0] m4_cur = {n_cur_q, 2'b00};
   wire [M_W-1:0] m2_cur = {1'b0, n_cur_q, 1'b0};
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
   wire [M_W-1:0] diff0 = {1'b0, tgt_q} - cnt_w;          // modulo 2^M_W
-  wire [M_W-1:0] diff = diff0[M_W-1] ? diff0 + m4_cur : diff0;  // modulo 4N
+  // (tgt - cnt) mod 4N <= 2N: diff0 <= 2N when diff0 >= 0, diff0 + 4N <= 2N (diff0 <= -2N) when
+  // not; so diff0 -+ 2N <= 0, on one adder (-2N as ~2N + 1); it lies in -2N .. 2N - 1.
+  wire neg = diff0[M_W-1];
+  wire [M_W-1:0] e_dir = diff0 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
   reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
   wire moving = (tgt_q != cnt_q) & ~rehome_q & ~adj_q;
-  wire up = (diff <= m2_cur);
+  wire up = e_dir[M_W-1] | (e_dir == {M_W{1'b0}});
   // The top count 4N - 1 is {N - 1, 2'b11}: its upper part.
   wire [C_W-3:0] top_hi = n_cur_q[C_W-3:0] - 1'b1;
   // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
