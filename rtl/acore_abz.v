@@ -231,8 +231,8 @@ module acore_abz #(
   wire home_dn = (dlow == 2'd3) & (lo_q[1:0] == 2'd0);
   // One step of the count on one adder, round the turn: +-1, or +-4 when re-homing (low bits kept).
   wire dir = adj_q ? adj_up_q : up;
-  wire [C_W-1:0] addend = adj_q ? (adj_up_q ? {{(C_W-3){1'b0}}, 3'b100} : {{(C_W-2){1'b1}}, 2'b00}) :
-                                  (up ? {{(C_W-1){1'b0}}, 1'b1} : {C_W{1'b1}});
+  localparam [C_W-1:0] ONE_C = {{(C_W-1){1'b0}}, 1'b1}, ALL_C = {C_W{1'b1}};
+  wire [C_W-1:0] addend = adj_q ? (adj_up_q ? ONE_C << 2 : ALL_C << 2) : (up ? ONE_C : ALL_C);
   wire [C_W-1:0] step = cnt_q + addend;
   wire hi_top = (cnt_q[C_W-1:2] == top_hi), hi_zero = (cnt_q[C_W-1:2] == {(C_W-2){1'b0}});
   wire wrap_up = dir & hi_top & (adj_q | (cnt_q[1:0] == 2'b11));
