@@ -19,9 +19,10 @@
 // conversion needs (the angle and the hysteresis window's two ends, below) one after the other on
 // one adder: an angle that arrives while one is converted waits, and a newer one replaces it
 // (latest wins), so the target follows the stream LATENCY = 3 N_W + 5 clocks late at any sample
-// rate (a conversion every 3 N_W + 4 clocks; the board's observer delivers one every 16 or more).
-// One adder instead of three: the board is area-bound, and a drive's counter needs the count's
-// edges, not the target within the sample.
+// rate (a conversion every 3 N_W + 4 clocks, 43 at the board's N_W = 13: a stream of a sample
+// every 32 clocks, the board's at FOLD 32, has about three samples in four converted, always the
+// latest). One adder instead of three: the board is area-bound, and a drive's counter needs the
+// count's edges, which follow the angle within three samples, not every sample's target.
 
 // Hysteresis (HYS angle LSBs, the hys_i input, as the AS5047P's HYS): the count holds while the
 // angle lies within HYS LSBs of the count's own interval, that is while the target t is one of

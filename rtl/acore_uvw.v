@@ -15,10 +15,11 @@
 // Timing: the latest angle wins. An accepted angle is held, its conversion starts in the next
 // clock the adder is free and takes PP_W + 2 clocks (the offset, PP_W Horner steps, then 3e and
 // the signals): valid_o pulses LATENCY = PP_W + 3 clocks after angle_valid_i when the adder is
-// idle; an angle arriving during a conversion waits, and a newer one replaces it. A drive's
-// angle stream (one sample every 16 or more clocks on the board) is converted sample by sample;
-// a faster one is converted at one sample every PP_W + 2 clocks, always the latest. One adder
-// instead of a product over PP's bits and five threshold comparators: the board is area-bound.
+// idle; an angle arriving during a conversion waits, and a newer one replaces it. A stream of a
+// sample every PP_W + 2 clocks or more (7 at the board's PP_W = 5: the board's at FOLD 8 and
+// above) is converted sample by sample; a faster one at one sample every PP_W + 2 clocks, always
+// the latest. One adder instead of a product over PP's bits and five threshold comparators: the
+// board is area-bound.
 `resetall
 `default_nettype none
 
