@@ -4,7 +4,7 @@
 // pulses per turn (4N counts a turn), not only powers of two.
 //
 //   angle (latest sample) --> target = floor(angle 4N / 2^ANGLE_W) --> count steps toward it,
-//                             (shift-add, 3 x (N_W + 1) clocks)         one step per edge, at most
+//                             (shift-add, 3 x (NH + 1) clocks)          one step per edge, at most
 //                                                                       one edge per SPACING clocks
 //   count mod 4 --> A, B (Gray: 00 10 11 01 forward);  count == INDEX --> Z (once per turn)
 //
@@ -15,14 +15,14 @@
 // exactly half a turn goes forward), so a decoder's count equals floor(angle 4N / 2^ANGLE_W) once
 // it has caught up, and no edge is ever lost or doubled: one step changes A or B, never both.
 //
-// The products angle N are computed one bit of N a clock (shift-add, no multiplier), the three a
-// conversion needs (the angle and the hysteresis window's two ends, below) one after the other on
-// one adder: an angle that arrives while one is converted waits, and a newer one replaces it
-// (latest wins), so the target follows the stream LATENCY = 3 N_W + 5 clocks late at any sample
-// rate (a conversion every 3 N_W + 4 clocks, 43 at the board's N_W = 13: a stream of a sample
-// every 32 clocks, the board's at FOLD 32, has about three samples in four converted, always the
-// latest). One adder instead of three: the board is area-bound, and a drive's counter needs the
-// count's edges, which follow the angle within three samples, not every sample's target.
+// The products angle N are computed two bits of N a clock (shift-add, no multiplier: NH =
+// ceil(N_W / 2) steps), the three a conversion needs (the angle and the hysteresis window's two
+// ends, below) one after the other on one datapath: an angle that arrives while one is converted
+// waits, and a newer one replaces it (latest wins), so the target follows the stream LATENCY =
+// 3 NH + 5 clocks late at any sample rate (a conversion every 3 NH + 4 clocks: 26 and 25 at the
+// board's N_W = 13, so every sample of the board's stream at FOLD 32, one every 32 clocks, is
+// converted; a faster stream has the latest converted). One datapath instead of three: the board
+// is area-bound.
 
 // Hysteresis (HYS angle LSBs, the hys_i input, as the AS5047P's HYS): the count holds while the
 // angle lies within HYS LSBs of the count's own interval, that is while the target t is one of
@@ -81,9 +81,12 @@ module acore_abz #(
 
   localparam integer C_W = N_W + 1;          // a count, 0 .. 4 NMAX - 1
   localparam integer M_W = N_W + 2;          // 4N itself (and a signed difference of counts)
-  localparam integer P_W = ANGLE_W + N_W;    // angle N
+  localparam integer NH = (N_W + 1) / 2;     // steps of a product: two bits of N each
+  localparam integer L_W = 2 * NH;           // N's bits, padded to a whole number of steps
+  localparam integer P_W = ANGLE_W + L_W;    // angle N
   localparam integer NMAX = 1 << (N_W - 1);
-  localparam integer LATENCY = 3 * N_W + 5;  // clocks from an accepted angle to its target
+  localparam integer LATENCY = 3 * NH + 5;   // clocks from an accepted angle to its target
+  localparam integer K_W = $clog2(NH + 1);
 
   acore_check #(.OK(ANGLE_W >= 2 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 2..32")) ANGLE_W_must_be_2_to_32 ();
@@ -117,17 +120,17 @@ module acore_abz #(
   // as a count reaches, when N_W > ANGLE_W - 2), instead of an adder as wide as the product.
   // The passes: 0 the operand angle - HYS (lm), 1 that + 2 HYS = angle + HYS (lp), 2 that - HYS =
   // angle (lo): each operand from the last on one more adder, so the angle being converted needs
-  // no register of its own (ang_q takes the next while this one converts). A pass is N_W clocks of
+  // no register of its own (ang_q takes the next while this one converts). A pass is NH clocks of
   // steps and one that takes its count and loads the next operand.
   reg pend_q, run_q;
   reg [1:0] pass_q;
   reg [ANGLE_W-1:0] ang_q, op_q, acc_q;
-  reg [N_W-1:0] low_q, nsh_q;
+  reg [L_W-1:0] low_q, nsh_q;
   // N changed during this conversion: its result is dropped (the change converts again).
   reg stale_q;
-  reg [$clog2(N_W + 1)-1:0] k_q;
+  reg [K_W-1:0] k_q;
   wire load = ~run_q & pend_q;
-  wire turn = run_q & (k_q == {$clog2(N_W + 1){1'b0}});  // a pass's steps done
+  wire turn = run_q & (k_q == {K_W{1'b0}});  // a pass's steps done
   wire res = turn & (pass_q == 2'd2);                      // lo is in acc_q, low_q
   wire [ANGLE_W-1:0] hys_a = {{(ANGLE_W-HYS_W){1'b0}}, hys_i};
   // The next operand on one adder: ang - HYS at a load, then + 2 HYS, then - HYS (- HYS as
@@ -138,7 +141,13 @@ module acore_abz #(
   wire [ANGLE_W-1:0] op_addend = add2 ? {hys_a[ANGLE_W-2:0], 1'b0} : ~hys_a;
   wire [ANGLE_W:0] op_sum = {1'b0, op_base} + {1'b0, op_addend} + {{ANGLE_W{1'b0}}, ~add2};
   wire [ANGLE_W-1:0] op_next = op_sum[ANGLE_W-1:0];
-  wire [ANGLE_W:0] psum = {1'b0, acc_q} + (nsh_q[0] ? {1'b0, op_q} : {(ANGLE_W+1){1'b0}});
+  // A step: acc + op (two low bits of N): below 4 2^ANGLE_W, ANGLE_W + 2 bits; two settle.
+  wire [ANGLE_W+1:0] psum = {2'b00, acc_q} + (nsh_q[0] ? {2'b00, op_q} : {(ANGLE_W+2){1'b0}}) +
+                            (nsh_q[1] ? {1'b0, op_q, 1'b0} : {(ANGLE_W+2){1'b0}});
+  // (Its two low bits go below the partial sum, whose upper bits are the product's.)
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [P_W+1:0] step_nxt = {psum, low_q} >> 2;  // the top two bits are 0
+  /* verilator lint_on UNUSEDSIGNAL */
   // A new N converts the latest angle again (the count re-homes on that result).
   wire redo = n_change & have_q;
   always @(posedge clk_i) begin
@@ -160,14 +169,14 @@ module acore_abz #(
     if (load || (turn && !res)) begin
       op_q <= op_next;
       acc_q <= {ANGLE_W{1'b0}};
-      low_q <= {N_W{1'b0}};
+      low_q <= {L_W{1'b0}};
       // (A later pass takes the N in use: should it have changed, the result is stale anyway.)
-      nsh_q <= load ? n_clamped : n_cur_q;
-      k_q <= N_W[$clog2(N_W + 1)-1:0];
+      nsh_q <= {{(L_W-N_W){1'b0}}, load ? n_clamped : n_cur_q};
+      k_q <= NH[K_W-1:0];
       pass_q <= load ? 2'd0 : pass_q + 2'd1;
     end else if (run_q && !turn) begin
-      {acc_q, low_q} <= {psum, low_q[N_W-1:1]};
-      nsh_q <= nsh_q >> 1;
+      {acc_q, low_q} <= step_nxt[P_W-1:0];
+      nsh_q <= nsh_q >> 2;
       k_q <= k_q - 1'b1;
     end
   end

@@ -53,9 +53,9 @@ void tick(V& top) {
 constexpr int kAbzAngleW = ACORE_STAGE_ABZ_ANGLE_W;
 constexpr int kAbzNW = ACORE_STAGE_ABZ_N_W;
 // acore_abz.v's LATENCY (an accepted angle to its target) and its conversion period (three
-// products of N_W steps and a clock each on one adder).
-constexpr int kAbzLatency = 3 * kAbzNW + 5;
-constexpr int kAbzConvert = 3 * kAbzNW + 4;
+// products of ceil(N_W / 2) steps and a clock each on one datapath).
+constexpr int kAbzLatency = 3 * ((kAbzNW + 1) / 2) + 5;
+constexpr int kAbzConvert = 3 * ((kAbzNW + 1) / 2) + 4;
 constexpr int64_t kTurn = int64_t{1} << kAbzAngleW;
 
 // An x4 quadrature decoder as a drive's timer counts: the Gray position of (A, B) is 0 (00),
