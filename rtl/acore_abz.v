@@ -4,7 +4,7 @@
 // pulses per turn (4N counts a turn), not only powers of two.
 //
 //   angle (latest sample) --> target = floor(angle 4N / 2^ANGLE_W) --> count steps toward it,
-//                             (shift-add, N_W clocks)                   one step per edge, at most
+//                             (shift-add, 3 x (NH + 1) clocks)          one step per edge, at most
 //                                                                       one edge per SPACING clocks
 //   count mod 4 --> A, B (Gray: 00 10 11 01 forward);  count == INDEX --> Z (once per turn)
 //
@@ -15,10 +15,15 @@
 // exactly half a turn goes forward), so a decoder's count equals floor(angle 4N / 2^ANGLE_W) once
 // it has caught up, and no edge is ever lost or doubled: one step changes A or B, never both.
 //
-// The product angle N is computed one bit of N a clock (shift-add, no multiplier): an angle that
-// arrives while one is computed waits, and a newer one replaces it (latest wins), so the target
-// follows the stream N_W + 3 clocks late at any sample rate.
-//
+// The products angle N are computed two bits of N a clock (shift-add, no multiplier: NH =
+// ceil(N_W / 2) steps), the three a conversion needs (the angle and the hysteresis window's two
+// ends, below) one after the other on one datapath: an angle that arrives while one is converted
+// waits, and a newer one replaces it (latest wins), so the target follows the stream LATENCY =
+// 3 NH + 5 clocks late at any sample rate (a conversion every 3 NH + 4 clocks: 26 and 25 at the
+// board's N_W = 13, so every sample of the board's stream at FOLD 32, one every 32 clocks, is
+// converted; a faster stream has the latest converted). One datapath instead of three: the board
+// is area-bound.
+
 // Hysteresis (HYS angle LSBs, the hys_i input, as the AS5047P's HYS): the count holds while the
 // angle lies within HYS LSBs of the count's own interval, that is while the target t is one of
 // the counts the window angle - HYS .. angle + HYS touches (lo(angle - HYS) <= t <= lo(angle + HYS)
@@ -76,9 +81,12 @@ module acore_abz #(
 
   localparam integer C_W = N_W + 1;          // a count, 0 .. 4 NMAX - 1
   localparam integer M_W = N_W + 2;          // 4N itself (and a signed difference of counts)
-  localparam integer P_W = ANGLE_W + N_W;    // angle N
+  localparam integer NH = (N_W + 1) / 2;     // steps of a product: two bits of N each
+  localparam integer L_W = 2 * NH;           // N's bits, padded to a whole number of steps
+  localparam integer P_W = ANGLE_W + L_W;    // angle N
   localparam integer NMAX = 1 << (N_W - 1);
-  localparam integer LATENCY = N_W + 3;      // clocks from an accepted angle to its target
+  localparam integer LATENCY = 3 * NH + 5;   // clocks from an accepted angle to its target
+  localparam integer K_W = $clog2(NH + 1);
 
   acore_check #(.OK(ANGLE_W >= 2 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 2..32")) ANGLE_W_must_be_2_to_32 ();
@@ -103,134 +111,143 @@ module acore_abz #(
   reg have_q;                    // an angle has arrived since reset
   wire n_change = (n_clamped != n_cur_q);
 
-  // ---- the target: three products, one bit of N a clock, LSB first ----
+  // ---- the target: three products on one adder, one bit of N a clock, LSB first ----
   // lo = floor(angle 4N / 2^ANGLE_W) and the hysteresis window's ends lm, lp: the same with the
   // angle taken as (angle - HYS) and (angle + HYS) modulo a turn. A window end that passes a turn
   // then lies exactly 4N counts lower or higher, so each product lands on its count modulo 4N with
   // no wrap to undo, and each takes an adder as wide as the angle: the partial sum keeps the
   // product's upper ANGLE_W bits and shifts the settled low bit out (kept below it only as far
   // as a count reaches, when N_W > ANGLE_W - 2), instead of an adder as wide as the product.
-  reg pend_q, run_q, res_q;
-  reg [ANGLE_W-1:0] ang_q;
-  reg [N_W-1:0] n_run_q, nsh_q;
-  reg [$clog2(N_W + 1)-1:0] k_q;
-  wire load = ~run_q & (pend_q | angle_valid_i);
-  wire [ANGLE_W-1:0] a_new = angle_valid_i ? angle_i : ang_q;
+  // The passes: 0 the operand angle - HYS (lm), 1 that + 2 HYS = angle + HYS (lp), 2 that - HYS =
+  // angle (lo): each operand from the last on one more adder, so the angle being converted needs
+  // no register of its own (ang_q takes the next while this one converts). A pass is NH clocks of
+  // steps and one that takes its count and loads the next operand.
+  reg pend_q, run_q;
+  reg [1:0] pass_q;
+  reg [ANGLE_W-1:0] ang_q, op_q, acc_q;
+  reg [L_W-1:0] low_q, nsh_q;
+  // N changed during this conversion: its result is dropped (the change converts again).
+  reg stale_q;
+  reg [K_W-1:0] k_q;
+  wire load = ~run_q & pend_q;
+  wire turn = run_q & (k_q == {K_W{1'b0}});  // a pass's steps done
+  wire res = turn & (pass_q == 2'd2);                      // lo is in acc_q, low_q
   wire [ANGLE_W-1:0] hys_a = {{(ANGLE_W-HYS_W){1'b0}}, hys_i};
+  // The next operand on one adder: ang - HYS at a load, then + 2 HYS, then - HYS (- HYS as
+  // ~HYS + 1). The window passes the turn's end exactly when the + 2 HYS carries out: with a
+  // borrow of ang - HYS it always does, and otherwise it does when ang + HYS reaches a turn.
+  wire add2 = ~load & (pass_q == 2'd0);
+  wire [ANGLE_W-1:0] op_base = load ? ang_q : op_q;
+  wire [ANGLE_W-1:0] op_addend = add2 ? {hys_a[ANGLE_W-2:0], 1'b0} : ~hys_a;
+  wire [ANGLE_W:0] op_sum = {1'b0, op_base} + {1'b0, op_addend} + {{ANGLE_W{1'b0}}, ~add2};
+  wire [ANGLE_W-1:0] op_next = op_sum[ANGLE_W-1:0];
+  // A step: acc + op (two low bits of N): below 4 2^ANGLE_W, ANGLE_W + 2 bits; two settle.
+  wire [ANGLE_W+1:0] psum = {2'b00, acc_q} + (nsh_q[0] ? {2'b00, op_q} : {(ANGLE_W+2){1'b0}}) +
+                            (nsh_q[1] ? {1'b0, op_q, 1'b0} : {(ANGLE_W+2){1'b0}});
+  // (Its two low bits go below the partial sum, whose upper bits are the product's.)
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [P_W+1:0] step_nxt = {psum, low_q} >> 2;  // the top two bits are 0
+  /* verilator lint_on UNUSEDSIGNAL */
   // A new N converts the latest angle again (the count re-homes on that result).
   wire redo = n_change & have_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       pend_q <= 1'b0;
       run_q <= 1'b0;
-      res_q <= 1'b0;
       have_q <= 1'b0;
     end else begin
-      res_q <= 1'b0;
       if (angle_valid_i) have_q <= 1'b1;
       if (angle_valid_i || redo) pend_q <= 1'b1;
-      else if (!run_q) pend_q <= 1'b0;
-      if (load) begin
-        run_q <= 1'b1;
-        k_q <= N_W[$clog2(N_W + 1)-1:0];
-        pend_q <= redo;
-      end else if (run_q) begin
-        k_q <= k_q - 1'b1;
-        if (k_q == 1) begin
-          run_q <= 1'b0;
-          res_q <= 1'b1;
-        end
-      end
-    end
-    if (load) begin
-      n_run_q <= n_clamped;
-      nsh_q <= n_clamped;
-    end else if (run_q) begin
-      nsh_q <= nsh_q >> 1;
+      else if (load) pend_q <= 1'b0;
+      if (load) run_q <= 1'b1;
+      else if (res) run_q <= 1'b0;
     end
     if (angle_valid_i) ang_q <= angle_i;
+    // The datapath needs no reset: run_q says when it holds a product.
+    if (load) stale_q <= 1'b0;
+    else if (n_change) stale_q <= 1'b1;
+    if (load || (turn && !res)) begin
+      op_q <= op_next;
+      acc_q <= {ANGLE_W{1'b0}};
+      low_q <= {L_W{1'b0}};
+      // (A later pass takes the N in use: should it have changed, the result is stale anyway.)
+      nsh_q <= {{(L_W-N_W){1'b0}}, load ? n_clamped : n_cur_q};
+      k_q <= NH[K_W-1:0];
+      pass_q <= load ? 2'd0 : pass_q + 2'd1;
+    end else if (run_q && !turn) begin
+      {acc_q, low_q} <= step_nxt[P_W-1:0];
+      nsh_q <= nsh_q >> 2;
+      k_q <= k_q - 1'b1;
+    end
   end
-  // The three products (0: angle, 1: angle - HYS, 2: angle + HYS, modulo a turn), each the upper
-  // ANGLE_W bits of its partial sum and the settled low bits below them (the last at the top);
-  // their counts are the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them). The datapath
-  // needs no reset: run_q and res_q say when it holds a product.
-  wire [3*C_W-1:0] cnt_of;
-  genvar g;
-  generate
-    for (g = 0; g < 3; g = g + 1) begin : g_prod
-      reg [ANGLE_W-1:0] op_q, acc_q;
-      reg [N_W-1:0] low_q;
-      wire [ANGLE_W-1:0] op_d = (g == 0) ? a_new : (g == 1) ? a_new - hys_a : a_new + hys_a;
-      wire [ANGLE_W:0] psum = {1'b0, acc_q} + (nsh_q[0] ? {1'b0, op_q} : {(ANGLE_W+1){1'b0}});
-      always @(posedge clk_i) begin
-        if (load) begin
-          op_q <= op_d;
-          acc_q <= {ANGLE_W{1'b0}};
-          low_q <= {N_W{1'b0}};
-        end else if (run_q) begin
-          {acc_q, low_q} <= {psum, low_q[N_W-1:1]};
-        end
-      end
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [P_W-1:0] prod = {acc_q, low_q};
-      /* verilator lint_on UNUSEDSIGNAL */
-      assign cnt_of[g*C_W +: C_W] = prod[ANGLE_W-2 +: C_W];
-    end
-  endgenerate
-  wire [C_W-1:0] lo = cnt_of[0 +: C_W];
-  wire [C_W-1:0] lm_w = cnt_of[C_W +: C_W];
-  wire [C_W-1:0] lp_w = cnt_of[2*C_W +: C_W];
-  // Registered once (the products' carry chains stay off the count's path).
-  reg res2_q;
-  reg [C_W-1:0] lo_q, lm_q, lp_q;
-  reg [N_W-1:0] n_res_q;
+  // The product's count: the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them).
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [P_W-1:0] prod = {acc_q, low_q};
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [C_W-1:0] cnt_of = prod[ANGLE_W-2 +: C_W];
+  wire [C_W-1:0] lo_q = cnt_of;
+  // The window's ends are compared with the target as each pass ends (the target changes only
+  // with a result, so it is the one the result is checked against), on one comparator:
+  // target >= lm after pass 0, target >= lp + 1 (the carry in) after pass 1; lm > lp exactly
+  // when the window passes the turn's end (it covers less than half a turn).
+  reg ge_lm_q, le_lp_q, wrap_q;
+  reg [C_W-1:0] tgt_q;
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [C_W:0] cmp = {1'b0, tgt_q} + {1'b0, ~cnt_of} + {{C_W{1'b0}}, pass_q == 2'd0};
+  /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk_i) begin
-    if (rst_i) res2_q <= 1'b0;
-    else res2_q <= res_q;
-    if (res_q) begin
-      lo_q <= lo;
-      lm_q <= lm_w;
-      lp_q <= lp_w;
-      n_res_q <= n_run_q;
+    if (turn && pass_q == 2'd0) begin
+      ge_lm_q <= cmp[C_W];
+      wrap_q <= op_sum[ANGLE_W];
     end
+    if (turn && pass_q == 2'd1) le_lp_q <= ~cmp[C_W];
   end
 
   // ---- the count ----
-  reg [C_W-1:0] cnt_q, tgt_q;
+  reg [C_W-1:0] cnt_q;
   reg [SP_W-1:0] sp_q;
   reg rehome_q;                  // N changed: hold A/B until the first target with the new N
-  wire [M_W-1:0] m4_cur = {n_cur_q, 2'b00};
   wire [M_W-1:0] m2_cur = {1'b0, n_cur_q, 1'b0};
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
   wire [M_W-1:0] diff0 = {1'b0, tgt_q} - cnt_w;          // modulo 2^M_W
-  wire [M_W-1:0] diff = diff0[M_W-1] ? diff0 + m4_cur : diff0;  // modulo 4N
-  wire moving = (tgt_q != cnt_q) & ~rehome_q;
-  wire up = (diff <= m2_cur);
-  wire [C_W-1:0] top_cnt = m4_cur[C_W-1:0] - 1'b1;
+  // (tgt - cnt) mod 4N <= 2N: diff0 <= 2N when diff0 >= 0, diff0 + 4N <= 2N (diff0 <= -2N) when
+  // not; so diff0 -+ 2N <= 0, on one adder (-2N as ~2N + 1); it lies in -2N .. 2N - 1.
+  wire neg = diff0[M_W-1];
+  wire [M_W-1:0] e_dir = diff0 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
+  reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
+  wire moving = (tgt_q != cnt_q) & ~rehome_q & ~adj_q;
+  wire up = e_dir[M_W-1] | (e_dir == {M_W{1'b0}});
+  // The top count 4N - 1 is {N - 1, 2'b11}: its upper part.
+  wire [C_W-3:0] top_hi = n_cur_q[C_W-3:0] - 1'b1;
   // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
   // come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next clock), so the
   // load needs no subtractor.
   wire sp_ready = ((sp_q >> 1) == {SP_W{1'b0}});
   // The window lm .. lp round the turn holds the target.
-  wire in_win = (lm_q <= lp_q) ? (tgt_q >= lm_q && tgt_q <= lp_q) : (tgt_q >= lm_q || tgt_q <= lp_q);
+  wire in_win = wrap_q ? (ge_lm_q | le_lp_q) : (ge_lm_q & le_lp_q);
   wire [C_W-1:0] new_tgt = in_win ? tgt_q : lo_q;
   // A result with the N in use (one converted before a change is dropped).
-  wire res_ok = res2_q & (n_res_q == n_cur_q) & ~n_change;
+  wire res_ok = res & ~stale_q & ~n_change;
   // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
   // target lo: lo + d with d = (count - lo) mod 4 in 0 .. 2, or lo - 1 for d = 3, round the turn.
+  // In two clocks on the step's adder: the upper part of lo with the count's low bits, then that
+  // +-4 counts where lo + d carries past lo's low bits (or lo - 1 borrows), round the turn (Z
+  // holds for that clock: the count between is no count of the output).
   wire [1:0] dlow = cnt_q[1:0] - lo_q[1:0];
-  wire [M_W-1:0] lo_w = {1'b0, lo_q};
-  wire [M_W-1:0] home_up = lo_w + {{(M_W-2){1'b0}}, dlow};
-  // Past the turn, lo + d - 4N is 0 or 1 (lo < 4N, d <= 2): its two low bits are lo + d's (4N's
-  // are zero), the rest zero. A result is used only with the N in use: its 4N is m4_cur.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [M_W-1:0] home_w = (dlow == 2'd3) ? ((lo_q == {C_W{1'b0}}) ? {1'b0, top_cnt} : lo_w - 1'b1) :
-                          (home_up >= m4_cur) ? {{(M_W-2){1'b0}}, home_up[1:0]} : home_up;  // < 4N
+  wire [2:0] lo_d = {1'b0, lo_q[1:0]} + {1'b0, dlow};
   /* verilator lint_on UNUSEDSIGNAL */
-  // One step of the count, up or down by one on one adder, round the turn.
-  wire [C_W-1:0] step = cnt_q + (up ? {{(C_W-1){1'b0}}, 1'b1} : {C_W{1'b1}});
-  wire wrap_up = up & (cnt_q == top_cnt);
-  wire wrap_dn = ~up & (cnt_q == {C_W{1'b0}});
+  wire home_up = (dlow != 2'd3) & lo_d[2];
+  wire home_dn = (dlow == 2'd3) & (lo_q[1:0] == 2'd0);
+  // One step of the count on one adder, round the turn: +-1, or +-4 when re-homing (low bits kept).
+  wire dir = adj_q ? adj_up_q : up;
+  localparam [C_W-1:0] ONE_C = {{(C_W-1){1'b0}}, 1'b1}, ALL_C = {C_W{1'b1}};
+  wire [C_W-1:0] addend = adj_q ? (adj_up_q ? ONE_C << 2 : ALL_C << 2) : (up ? ONE_C : ALL_C);
+  wire [C_W-1:0] step = cnt_q + addend;
+  wire hi_top = (cnt_q[C_W-1:2] == top_hi), hi_zero = (cnt_q[C_W-1:2] == {(C_W-2){1'b0}});
+  wire wrap_up = dir & hi_top & (adj_q | (cnt_q[1:0] == 2'b11));
+  wire wrap_dn = ~dir & hi_zero & (adj_q | (cnt_q[1:0] == 2'b00));
+  wire [C_W-1:0] cnt_next = wrap_up ? {{(C_W-2){1'b0}}, step[1:0]} : wrap_dn ? {top_hi, step[1:0]} : step;
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
@@ -238,21 +255,27 @@ module acore_abz #(
       sp_q <= {SP_W{1'b0}};
       n_cur_q <= n_clamped;
       rehome_q <= 1'b0;
+      adj_q <= 1'b0;
     end else begin
       if (sp_q != {SP_W{1'b0}}) sp_q <= sp_q - 1'b1;
+      adj_q <= 1'b0;
       if (n_change) begin
         // A new N: A and B hold; without an angle yet the count is 0 and stays.
         n_cur_q <= n_clamped;
         rehome_q <= have_q;
       end else if (res_ok && rehome_q) begin
         rehome_q <= 1'b0;
-        cnt_q <= home_w[C_W-1:0];
+        cnt_q <= {lo_q[C_W-1:2], cnt_q[1:0]};
         tgt_q <= lo_q;
+        adj_q <= home_up | home_dn;
+        adj_up_q <= home_up;
+      end else if (adj_q) begin
+        cnt_q <= cnt_next;
       end else begin
         if (res_ok) tgt_q <= new_tgt;
         if (moving && sp_ready) begin
           sp_q <= spacing_i;
-          cnt_q <= wrap_up ? {C_W{1'b0}} : wrap_dn ? top_cnt : step;
+          cnt_q <= cnt_next;
         end
       end
     end
@@ -267,11 +290,11 @@ module acore_abz #(
     end else begin
       a_o <= cnt_q[1] ^ cnt_q[0];
       b_o <= cnt_q[1];
-      z_o <= (cnt_q == index_i);
+      if (!adj_q) z_o <= (cnt_q == index_i);
     end
   end
   assign count_o = cnt_q;
-  assign settled_o = ~moving & ~rehome_q & ~n_change & ~pend_q & ~run_q & ~res_q & ~res2_q & ~angle_valid_i;
+  assign settled_o = ~moving & ~rehome_q & ~adj_q & ~n_change & ~pend_q & ~run_q & ~angle_valid_i;
 
 endmodule
 

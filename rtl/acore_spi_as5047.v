@@ -194,15 +194,31 @@ module acore_spi_as5047 #(
   endfunction
   localparam [2:0] ABI_BIN_LAST = AS5047_ABIRES_BIN_LAST[2:0],
                    ABI_DEC_LAST = AS5047_ABIRES_DEC_LAST[2:0];
-  function [2:0] abi_code(input bin, input [N_W-1:0] n);
+  // n >= k for a constant k, as gates from the MSB down (k's 1 bits need n's, a 0 bit of k under
+  // a 1 of n decides): a few LUTs, where a comparator would take a carry chain as wide as n.
+  function ge_const(input [N_W-1:0] n, input integer k);
+    integer b;
+    reg r;
+    begin
+      r = 1'b1;  // the bits below: equal so far
+      for (b = 0; b < N_W; b = b + 1)
+        r = ((k >> b) & 1) != 0 ? (n[b] & r) : (n[b] | r);
+      ge_const = r;
+    end
+  endfunction
+  // The code read for an N in one table: the first code (largest N first) whose N is not above n;
+  // the last otherwise. Each table's comparisons are with constants; ABIBIN picks the table.
+  function [2:0] abi_code_tab(input bin, input [N_W-1:0] n);
     integer c;
     begin
-      // The first code of the table (largest N first) whose N is not above n; the last otherwise.
-      abi_code = bin ? ABI_BIN_LAST : ABI_DEC_LAST;
+      abi_code_tab = bin ? ABI_BIN_LAST : ABI_DEC_LAST;
       for (c = 7; c >= 0; c = c - 1)
         if (c <= (bin ? AS5047_ABIRES_BIN_LAST : AS5047_ABIRES_DEC_LAST) &&
-            {{(32-N_W){1'b0}}, n} >= abi_n_int(bin, c[2:0])) abi_code = c[2:0];
+            ge_const(n, abi_n_int(bin, c[2:0]))) abi_code_tab = c[2:0];
     end
+  endfunction
+  function [2:0] abi_code(input bin, input [N_W-1:0] n);
+    abi_code = bin ? abi_code_tab(1'b1, n) : abi_code_tab(1'b0, n);
   endfunction
   // HYS read back: AS5047_HYS_MAX - ceil(width / 2^HYS_SHIFT), at least 0.
   localparam [HYS_W:0] HYS_ROUND = (1 << HYS_SHIFT) - 1;

@@ -3,13 +3,23 @@
 // with PP = 1 .. 2^(PP_W-1) pole pairs and a programmable offset (the rotor's electrical zero on
 // the angle scale), as a drive's block commutation or Hall input expects them.
 //
-//   e = ((angle - OFFSET) PP) mod 2^ANGLE_W        the electrical angle (shift-add over PP's bits)
-//   sector = floor(6 e / 2^ANGLE_W)                five constant thresholds
+//   e = ((angle - OFFSET) PP) mod 2^ANGLE_W        the electrical angle (Horner over PP's bits,
+//                                                   one bit a clock, on one adder)
+//   sector = floor(6 e / 2^ANGLE_W) = 3e >> (ANGLE_W - 1)   (3e on the same adder, one clock more)
 //   U = sector in {0,1,2}, V = sector in {2,3,4}, W = sector in {4,5,0}
 //
 // Each signal is high for half an electrical turn, V lags U and W lags V by a third of one, so a
 // forward turn gives UVW = 101 100 110 010 011 001 (one signal changes per sector boundary, as
-// three Hall sensors 120 degrees apart). Three clocks of latency, one sample a clock.
+// three Hall sensors 120 degrees apart).
+//
+// Timing: the latest angle wins. An accepted angle is held, its conversion starts in the next
+// clock the adder is free and takes PP_W + 2 clocks (the offset, PP_W Horner steps, then 3e and
+// the signals): valid_o pulses LATENCY = PP_W + 3 clocks after angle_valid_i when the adder is
+// idle; an angle arriving during a conversion waits, and a newer one replaces it. A stream of a
+// sample every PP_W + 2 clocks or more (7 at the board's PP_W = 5: the board's at FOLD 8 and
+// above) is converted sample by sample; a faster one at one sample every PP_W + 2 clocks, always
+// the latest. One adder instead of a product over PP's bits and five threshold comparators: the
+// board is area-bound.
 `resetall
 `default_nettype none
 
@@ -37,8 +47,9 @@ module acore_uvw #(
   output reg                valid_o
 );
 
-  localparam integer LATENCY = 3;
+  localparam integer LATENCY = PP_W + 3;
   localparam integer PPMAX = 1 << (PP_W - 1);
+  localparam integer K_W = $clog2(PP_W + 2);
 
   acore_check #(.OK(ANGLE_W >= 3 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 3..32")) ANGLE_W_must_be_3_to_32 ();
@@ -47,60 +58,57 @@ module acore_uvw #(
   acore_check #(.OK(PP_W >= 1 && PP_W <= 8), .VALUE(PP_W),
     .MSG("illegal parameter: PP_W must be 1..8 (up to 2^(PP_W-1) pole pairs)")) PP_W_must_be_1_to_8 ();
 
-  // The sector thresholds ceil(k 2^ANGLE_W / 6), k = 1..5: e >= T_k iff 6 e >= k 2^ANGLE_W.
-  // (Constants, evaluated at elaboration; 40 bits hold 5 2^32.)
-  function [39:0] thr(input integer k);
-    thr = ((40'd1 << ANGLE_W) * k + 40'd5) / 40'd6;
-  endfunction
-  localparam [39:0] T1 = thr(1), T2 = thr(2), T3 = thr(3), T4 = thr(4), T5 = thr(5);
-
   localparam [PP_W-1:0] PPMAX_V = PPMAX[PP_W-1:0];
   localparam [PP_W-1:0] ONE_PP = {{(PP_W-1){1'b0}}, 1'b1};
   wire [PP_W-1:0] pp = (PP_IN_RANGE != 0) ? pp_i :
                        (pp_i == {PP_W{1'b0}}) ? ONE_PP : (pp_i > PPMAX_V) ? PPMAX_V : pp_i;
 
-  // Stage 1: the offset; stage 2: the electrical angle; stage 3: the sector and the signals.
-  reg [ANGLE_W-1:0] d_q, e_q;
-  reg [PP_W-1:0] pp_q;
-  reg v1_q, v2_q;
-  reg [ANGLE_W-1:0] e_d;
-  integer i;
-  // PP's top bit is set only for PP = 2^(PP_W-1) alone (PP is clamped to at most that): a shift,
-  // one adder fewer than a product over all of PP's bits.
-  always @(*) begin
-    e_d = {ANGLE_W{1'b0}};
-    for (i = 0; i < PP_W - 1; i = i + 1)
-      if (pp_q[i]) e_d = e_d + (d_q << i);
-    if (pp_q[PP_W-1]) e_d = d_q << (PP_W - 1);
-  end
-  wire [39:0] e40 = {{(40-ANGLE_W){1'b0}}, e_q};
-  wire [2:0] sector = (e40 >= T5) ? 3'd5 : (e40 >= T4) ? 3'd4 : (e40 >= T3) ? 3'd3 :
-                      (e40 >= T2) ? 3'd2 : (e40 >= T1) ? 3'd1 : 3'd0;
+  // The latest angle (held until its conversion starts) and whether one waits.
+  reg [ANGLE_W-1:0] ang_q;
+  reg pend_q, run_q;
+  reg [K_W-1:0] k_q;           // Horner steps left; 0: the 3e step
+  reg [PP_W-1:0] ppsh_q;       // PP, MSB first
+  reg [ANGLE_W-1:0] d_q, acc_q;
+  // One adder: Horner's acc 2 + (d or 0) modulo a turn, then acc 2 + acc = 3e (ANGLE_W + 2 bits).
+  wire last = (k_q == {K_W{1'b0}});
+  wire [ANGLE_W-1:0] addend = last ? acc_q : (ppsh_q[PP_W-1] ? d_q : {ANGLE_W{1'b0}});
+  wire [ANGLE_W+1:0] sum = {1'b0, acc_q, 1'b0} + {2'b00, addend};
+  wire [2:0] sector = sum[ANGLE_W+1:ANGLE_W-1];
+  wire start = pend_q & (~run_q | last);
   always @(posedge clk_i) begin
     if (rst_i) begin
-      v1_q <= 1'b0;
-      v2_q <= 1'b0;
+      pend_q <= 1'b0;
+      run_q <= 1'b0;
       valid_o <= 1'b0;
       u_o <= 1'b0;
       v_o <= 1'b0;
       w_o <= 1'b0;
       sector_o <= 3'd0;
     end else begin
-      v1_q <= angle_valid_i;
-      v2_q <= v1_q;
-      valid_o <= v2_q;
-      if (v2_q) begin
+      valid_o <= run_q & last;
+      if (run_q && last) begin
         sector_o <= sector;
         u_o <= (sector <= 3'd2);
         v_o <= (sector >= 3'd2) && (sector <= 3'd4);
         w_o <= (sector >= 3'd4) || (sector == 3'd0);
       end
+      if (start) run_q <= 1'b1;
+      else if (last) run_q <= 1'b0;
+      if (angle_valid_i) pend_q <= 1'b1;
+      else if (start) pend_q <= 1'b0;
     end
-    if (angle_valid_i) begin
-      d_q <= angle_i - offset_i;
-      pp_q <= pp;
+    if (angle_valid_i) ang_q <= angle_i;
+    // The datapath needs no reset: run_q says when it holds a conversion.
+    if (start) begin
+      d_q <= ang_q - offset_i;
+      ppsh_q <= pp;
+      acc_q <= {ANGLE_W{1'b0}};
+      k_q <= PP_W[K_W-1:0];
+    end else if (run_q && !last) begin
+      acc_q <= sum[ANGLE_W-1:0];
+      ppsh_q <= ppsh_q << 1;
+      k_q <= k_q - 1'b1;
     end
-    if (v1_q) e_q <= e_d;
   end
 
 endmodule

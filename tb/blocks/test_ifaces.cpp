@@ -52,6 +52,10 @@ void tick(V& top) {
 // ---- ABZ ----------------------------------------------------------------------------------------
 constexpr int kAbzAngleW = ACORE_STAGE_ABZ_ANGLE_W;
 constexpr int kAbzNW = ACORE_STAGE_ABZ_N_W;
+// acore_abz.v's LATENCY (an accepted angle to its target) and its conversion period (three
+// products of ceil(N_W / 2) steps and a clock each on one datapath).
+constexpr int kAbzLatency = 3 * ((kAbzNW + 1) / 2) + 5;
+constexpr int kAbzConvert = 3 * ((kAbzNW + 1) / 2) + 4;
 constexpr int64_t kTurn = int64_t{1} << kAbzAngleW;
 
 // An x4 quadrature decoder as a drive's timer counts: the Gray position of (A, B) is 0 (00),
@@ -179,13 +183,13 @@ TEST_P(Abz, DecoderCountEqualsFloorAfterEveryCatchUpWithoutLostCounts) {
       const uint64_t took = b.settle(100 + 4 * n * spacing + 64);
       ASSERT_EQ(b.wrapped(), next) << "N " << n << " angle " << a << " step " << k;
       ASSERT_EQ(b.top->count_o, next);
-      // At the full rate: one edge per `spacing` clocks after the N_W + 2 clocks of the product.
+      // At the full rate: one edge per `spacing` clocks after the LATENCY clocks of the products.
       max_late = std::max<int64_t>(max_late, static_cast<int64_t>(took) - dist * spacing);
       expected = next;
     }
     EXPECT_EQ(b.dec.lost, 0);
     EXPECT_GE(b.dec.min_gap, static_cast<uint64_t>(spacing));
-    EXPECT_LE(max_late, kAbzNW + 6);
+    EXPECT_LE(max_late, kAbzLatency + 3);
     EXPECT_EQ(b.z_bad, 0);
   }
 }
@@ -198,12 +202,12 @@ TEST_P(Abz, FullRateRampLosesNoCountAndIndexOncePerTurn) {
   // The angle advances faster than one count a clock (the count runs at the maximum rate behind it)
   // for about three turns, forward, then back two turns.
   const int64_t per_clock_counts_x16 = 24;  // 1.5 counts a clock
-  // (The target is converted once per N_W + 1 clocks, latest sample wins: the angle may move at
-  // most a quarter turn per conversion, or the shorter way would be the wrong way; for small N that
-  // bound is below 1.5 counts a clock.)
-  const int64_t step = std::max<int64_t>(
-      1,
-      std::min<int64_t>(per_clock_counts_x16 * kTurn / (16 * 4 * n), kTurn / (4 * (kAbzNW + 2))));
+  // (The target is converted once per kAbzConvert clocks, latest sample wins: the angle may move
+  // at most a quarter turn per conversion, or the shorter way would be the wrong way; for small N
+  // that bound is below 1.5 counts a clock.)
+  const int64_t step =
+      std::max<int64_t>(1, std::min<int64_t>(per_clock_counts_x16 * kTurn / (16 * 4 * n),
+                                             kTurn / (4 * (kAbzConvert + 1))));
   int64_t unwrapped = 0;
   auto run = [&](int64_t turns, int dir) {
     const int64_t clocks = turns * kTurn / step;
@@ -302,7 +306,7 @@ TEST_P(Abz, MinimumSpacingHoldsAfterAJump) {
   EXPECT_EQ(b.wrapped(), target);
   EXPECT_EQ(b.dec.edges, dist);
   if (dist > 1) EXPECT_EQ(b.dec.min_gap, static_cast<uint64_t>(spacing));
-  EXPECT_LE(static_cast<int64_t>(took), dist * spacing + kAbzNW + 6);
+  EXPECT_LE(static_cast<int64_t>(took), dist * spacing + kAbzLatency + 3);
   EXPECT_EQ(b.dec.lost, 0);
 }
 
@@ -373,12 +377,12 @@ TEST(AbzNChange, ReHomesAtOnceWithAandBHeldThenSingleSteps) {
       b.top->n_i = static_cast<uint32_t>(n2);
       const int64_t lo = count_lo(a, n2);
       const int64_t d = ((c_old - lo) % 4 + 4) % 4;
-      // A and B hold while the new product is computed (N_W + 3 clocks at least).
-      for (int j = 0; j < kAbzNW + 3; ++j) {
+      // A and B hold while the new products are computed (LATENCY clocks at least).
+      for (int j = 0; j < kAbzLatency; ++j) {
         b.step();
         held_bad += b.top->a_o * 2 + b.top->b_o != ab;
       }
-      const uint64_t took = b.settle(64) + kAbzNW + 3;
+      const uint64_t took = b.settle(64) + kAbzLatency;
       // d = 2 is half the turn at N = 1: the shorter way's tie goes forward.
       const int64_t walk = d == 3 ? 1 : (d == 2 && n2 == 1) ? 2 : -d;
       walk_bad += b.dec.pos - pos0 != walk;
@@ -400,6 +404,7 @@ TEST(AbzNChange, ReHomesAtOnceWithAandBHeldThenSingleSteps) {
 
 // ---- UVW ----------------------------------------------------------------------------------------
 constexpr int kUvwAngleW = ACORE_STAGE_UVW_ANGLE_W;
+constexpr int kUvwLatency = ACORE_STAGE_UVW_PP_W + 3;  // acore_uvw.v's LATENCY
 
 TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
   const int64_t turn = int64_t{1} << kUvwAngleW;
@@ -419,25 +424,31 @@ TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
     const bool all = pp == 1 || pp == 3 || pp == 7 || pp == 16;
     const int64_t start = all ? 0 : static_cast<int64_t>(rng() % turn);
     const int64_t count = all ? turn : turn / 8;
-    std::vector<int64_t> sent;
     int64_t wrong = 0, checked = 0;
-    for (int64_t k = 0; k < count + 3; ++k) {
-      const bool send = k < count;
+    // One angle at a time: each converted within LATENCY = PP_W + 3 clocks (acore_uvw.v).
+    for (int64_t k = 0; k < count; ++k) {
       const int64_t a = (start + k) % turn;
-      top->angle_valid_i = send;
+      top->angle_valid_i = 1;
       top->angle_i = static_cast<uint32_t>(a);
       tick(*top);
-      if (send) sent.push_back(a);
-      if (top->valid_o) {
-        const int64_t x = ((((sent[checked] - offset) % turn + turn) % turn) * pp) % turn;
-        const int64_t six = 6 * x;  // the electrical angle in sixths of a turn
-        const int sector = static_cast<int>(six / turn);
-        const bool u = six < 3 * turn;
-        const bool v = ((six - 2 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
-        const bool w = ((six - 4 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
-        wrong += top->sector_o != sector || top->u_o != u || top->v_o != v || top->w_o != w;
-        ++checked;
+      top->angle_valid_i = 0;
+      int late = 1;
+      while (!top->valid_o && late < kUvwLatency + 2) {
+        tick(*top);
+        ++late;
       }
+      if (!top->valid_o || late != kUvwLatency) {
+        ++wrong;
+        continue;
+      }
+      const int64_t x = ((((a - offset) % turn + turn) % turn) * pp) % turn;
+      const int64_t six = 6 * x;  // the electrical angle in sixths of a turn
+      const int sector = static_cast<int>(six / turn);
+      const bool u = six < 3 * turn;
+      const bool v = ((six - 2 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
+      const bool w = ((six - 4 * turn) % (6 * turn) + 6 * turn) % (6 * turn) < 3 * turn;
+      wrong += top->sector_o != sector || top->u_o != u || top->v_o != v || top->w_o != w;
+      ++checked;
     }
     EXPECT_EQ(checked, count) << "pp " << pp;
     EXPECT_EQ(wrong, 0) << "pp " << pp;
@@ -451,10 +462,23 @@ TEST(Uvw, EveryAngleMatchesTheSixStepClosedForm) {
     top->angle_i = static_cast<uint32_t>(a);
     tick(*top);
     top->angle_valid_i = 0;
-    tick(*top);
-    tick(*top);
+    for (int j = 1; j < kUvwLatency; ++j) tick(*top);
+    EXPECT_TRUE(top->valid_o) << pp_in;
     EXPECT_EQ(top->sector_o, (6 * ((a * pp_eff) % turn)) / turn) << pp_in;
   }
+  // A burst faster than a conversion: the first angle converts, the ones arriving meanwhile wait
+  // and only the latest of them converts next (latest wins), nothing else is output.
+  top->pp_i = 1;
+  const int64_t burst[] = {turn / 12, turn / 12 + turn / 6, turn / 12 + 2 * (turn / 6),
+                           turn / 12 + 3 * (turn / 6)};
+  std::vector<int> sectors;
+  for (int c = 0; c < 4 * kUvwLatency; ++c) {
+    top->angle_valid_i = c < 4;
+    top->angle_i = static_cast<uint32_t>(burst[c < 4 ? c : 3]);
+    tick(*top);
+    if (top->valid_o) sectors.push_back(top->sector_o);
+  }
+  EXPECT_EQ(sectors, (std::vector<int>{0, 3}));
 }
 
 // ---- SPI (AS5047P frame) ----------------------------------------------------------------------
@@ -790,6 +814,32 @@ TEST(SpiAs5047, WritesFollowTheDatasheetSequenceAndTables) {
   EXPECT_EQ(m.top->errfl_o, 0) << "no write above was refused";
 }
 
+// ABIRES read back for every N a register may hold (ABZ_N is written over APB too, not only from
+// the tables): the first entry of ABIBIN's table not above N, the table's last code below it.
+TEST(SpiAs5047, AbiresReadsTheFirstEntryNotAboveN) {
+  SpiMaster m(35);
+  const std::vector<int64_t> decimal = {1000, 500, 400, 300, 200, 100, 50, 25},
+                             binary = {1024, 512, 256};
+  int64_t wrong = 0;
+  for (const bool bin : {false, true}) {
+    const std::vector<int64_t>& table = bin ? binary : decimal;
+    m.frame(with_parity(0x0018));
+    m.frame(with_parity(bin ? 0x20 : 0x00));
+    for (int64_t n = 1; n <= int64_t{1} << (ACORE_STAGE_SPI_N_W - 1); ++n) {
+      m.regs.n = n;
+      m.drive_regs();
+      m.frame(with_parity(0x4000 | 0x0019));
+      const unsigned code = (m.frame(0x0000) >> 5) & 0x7u;
+      unsigned want = static_cast<unsigned>(table.size() - 1);
+      for (size_t c = table.size(); c-- > 0;)
+        if (n >= table[c]) want = static_cast<unsigned>(c);
+      wrong += code != want;
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(m.top->errfl_o, 0);
+}
+
 // ---- PWM (AS5047P frame) --------------------------------------------------------------------
 TEST(Pwm, InputCaptureDecoderRecoversTheAngle) {
   std::mt19937_64 rng(41);
@@ -965,11 +1015,10 @@ TEST(UvwCosim, MatchesTheModel) {
     top->pp_i = pp;
     tick(*top);
     top->angle_valid_i = 0;
-    tick(*top);
-    tick(*top);
+    for (int j = 1; j < kUvwLatency; ++j) tick(*top);
     const UvwState s = uvw_state(a, off, kUvwAngleW, pp);
-    mismatches +=
-        top->sector_o != s.sector || top->u_o != s.u || top->v_o != s.v || top->w_o != s.w;
+    mismatches += !top->valid_o || top->sector_o != s.sector || top->u_o != s.u ||
+                  top->v_o != s.v || top->w_o != s.w;
   }
   EXPECT_EQ(mismatches, 0);
 }
