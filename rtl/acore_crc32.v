@@ -137,7 +137,13 @@ module acore_crc32 #(
       // word zero-extended: chunks above DATA_W are constants).
       wire [STEP_W-1:0] k = run_q ? idx : {STEP_W{1'b0}};
       wire [31:0] wide = {{(32-DATA_W){1'b0}}, word_i};
-      wire [CRC_W-1:0] chunk = wide[k*CRC_W +: CRC_W];
+      // (the chunk chosen from constant offsets: no index arithmetic, no multiplier for synthesis)
+      reg [CRC_W-1:0] chunk;
+      always @* begin : p_chunk
+        integer j;
+        chunk = wide[CRC_W-1:0];
+        for (j = 1; j < STEPS; j = j + 1) if (k == j[STEP_W-1:0]) chunk = wide[j*CRC_W +: CRC_W];
+      end
       always @(posedge clk_i) begin
         if (init_i) n_q <= 32'd0;
         else if (step) n_q <= ~fold(~n_q, chunk);
