@@ -378,7 +378,8 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
   // reached before the next observer output) holds while a sample's counts fit in the clocks left
   // of a sample. The serial core's clocks leave room for the speeds asked; a folded board's 32 do
   // not, so the run scales its speeds down to fit, and the loss-of-tracking threshold with them
-  // (the loop's error scales with the speed step: the step still raises it).
+  // (the loop's error scales with the speed step: the step still raises it), and streams as many
+  // more samples (the angle turns as far).
   const int abz_latency = 3 * ((13 + 1) / 2) + 5;
   const double counts = 4 * 1024 * std::max(std::fabs(w0), std::fabs(w1));
   const double scale = std::min(1.0, (cycles - abz_latency - 2) / counts);
@@ -387,6 +388,7 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
     w0 *= scale;
     w1 *= scale;
     lot_thr = static_cast<uint32_t>(std::lround(lot_thr * scale));
+    n = static_cast<int>(std::lround(n / scale));
   }
   if (write_regs) {
     EXPECT_FALSE(b.apb(true, bd::kTrkBw, static_cast<uint32_t>(bw)));
@@ -532,13 +534,13 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
 // (the step raises LOT and it clears), and at the registers' reset values.
 TEST(Board, ObserverOnTheEstimatorEqualsTheModels) {
   const RunResult a = run_stream(4, 0x25, 600, true, 3000, 0.003, 0.0105);
-  EXPECT_EQ(a.samples, 3000u);
+  EXPECT_GE(a.samples, 3000u);
   EXPECT_EQ(a.est_mismatches, 0u);
   EXPECT_EQ(a.trk_mismatches, 0u);
   EXPECT_GT(a.lot_samples, 0u) << "the speed step raised loss of tracking";
   EXPECT_GE(a.abz_checks, 3000u);
   const RunResult r = run_stream(0, 0, 0, false, 2000, -0.004, 0.002);
-  EXPECT_EQ(r.samples, 2000u);
+  EXPECT_GE(r.samples, 2000u);
   EXPECT_EQ(r.est_mismatches, 0u);
   EXPECT_EQ(r.trk_mismatches, 0u);
 }
