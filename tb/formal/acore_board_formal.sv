@@ -144,11 +144,17 @@ module acore_board_formal #(
   integer i;
   reg [CW-1:0] ones;
   reg          busy;  // a sample taken in the last CYCLES - 1 clocks
+  // clocks since the sample in a time-shared schedule was taken; 0: none (the schedule invariants
+  // below read it)
+  localparam integer AGE_W = 8;
+  reg [AGE_W-1:0] age;
   always @(*) begin
     ones = 0;
     for (i = 0; i < TRK_LAT; i = i + 1) ones = ones + ref_q[i];
     busy = 1'b0;
     for (i = 0; i < TRK_CYC - 1; i = i + 1) busy = busy | ref_q[i];
+    age = 0;
+    for (i = 0; i < TRK_LAT - 1; i = i + 1) if (ref_q[i]) age = i + 1;
   end
 
   // ---- hold: the observer's outputs of the clock before ----
@@ -176,17 +182,10 @@ module acore_board_formal #(
       localparam integer A_PC = TRK_LOOP_END + 8;
       localparam integer A_PH0 = TRK_LOOP_END + 9;
       localparam integer A_PH1 = A_PH0 + TRK_PROD_END;
-      localparam integer AGE_W = 8;
       wire       tap_p1, tap_p2, tap_p3, tap_p4, tap_pl, tap_pc, tap_ph, tap_r1, tap_r2, tap_r3;
       wire       tap_busy, tap_xd, tap_vd, tap_at_x, tap_at_v, tap_started, tap_eq_lend, tap_eq_pend;
       wire [TRK_S_W-1:0] tap_s;
       wire [3:0] tap_k;
-      reg [AGE_W-1:0] age;  // clocks since the sample in the schedule was taken; 0: none
-      integer a;
-      always @(*) begin
-        age = 0;
-        for (a = 0; a < TRK_LAT - 1; a = a + 1) if (ref_q[a]) age = a + 1;
-      end
       wire [7:0] s = {{(8 - TRK_S_W){1'b0}}, tap_s};
       wire [7:0] kx = tap_started ? {4'b0000, tap_k} : 8'd0;
       wire [7:0] k2 = {3'b000, tap_k, 1'b1};
@@ -230,16 +229,9 @@ module acore_board_formal #(
       localparam integer A_PL1 = TRK_LOOP_END + 5;     // the loop's last clock
       localparam integer A_PH0 = TRK_LOOP_END + 8;
       localparam integer A_PH1 = A_PH0 + TRK_PROD_END;
-      localparam integer AGE_W = 8;
       wire       tap_c1, tap_c2, tap_c3, tap_c4, tap_pl, tap_r2, tap_r3, tap_ph, tap_fin;
       wire       tap_busy, tap_at_x, tap_at_v, tap_eq_lend, tap_eq_pend;
       wire [TRK_S_W-1:0] tap_s;
-      reg [AGE_W-1:0] age;  // clocks since the sample in the schedule was taken; 0: none
-      integer a;
-      always @(*) begin
-        age = 0;
-        for (a = 0; a < TRK_LAT - 1; a = a + 1) if (ref_q[a]) age = a + 1;
-      end
       wire [7:0] s = {{(8 - TRK_S_W){1'b0}}, tap_s};
       always @(posedge clk_i) begin
         if (!init_q && !rst_i) begin
