@@ -94,6 +94,22 @@ module acore_fold_mul #(
 
   wire [P_W-1:0] init_ext = {{(P_W-INIT_W){init_i[INIT_W-1]}}, init_i};
 
+  // The folded forms' first operand: O_0 = floor(a 2^SH0) for the top bit B_W-1 of b (read by
+  // g_seq and g_fold only).
+  localparam integer SH0 = B_W - 1 - RSHIFT;
+  localparam integer O_W = A_W + ((SH0 > 0) ? SH0 : 0);
+  wire [O_W-1:0] o0;
+  generate
+    if (SH0 > 0) begin : g_shl
+      assign o0 = {a_i, {SH0{1'b0}}};
+    end else if (SH0 == 0) begin : g_same
+      assign o0 = a_i;
+    end else begin : g_shr
+      wire signed [A_W-1:0] a_s = a_i;
+      assign o0 = a_s >>> (-SH0);
+    end
+  endgenerate
+
   generate
     if (F == 1) begin : g_tree
       // The whole tree (or the hardware product), then the addend.
@@ -106,7 +122,7 @@ module acore_fold_mul #(
       always @(posedge clk_i) p_q <= prod + init_ext;
       assign p_o = p_q;
       // start_i is not needed: the tree takes an operand every clock.
-      wire unused_start = start_i;
+      wire unused_start = ^{start_i, o0};  // (o0: the folded forms')
     end else if (MULT != 0) begin : g_hw
       // The product of the operands of start_i, floored, INIT_AT clocks later (the multiplier runs
       // every clock; only the start clock's product is used), then the addend, then F - 1 clocks.
@@ -119,21 +135,10 @@ module acore_fold_mul #(
       always @(posedge clk_i) sum_q <= prod + init_ext;
       acore_delay #(.W(P_W), .DEPTH(F - 1)) u_dsum (
         .clk_i(clk_i), .en_i(1'b1), .d_i(sum_q), .q_o(p_o));
-      wire unused_start = start_i;
+      wire unused_start = ^{start_i, o0};  // (o0: the folded forms')
     end else if (SEQ != 0) begin : g_seq
-      // O_0 = floor(a 2^SH0) for the top bit B_W-1 of b (as g_fold); X: b padded to NG groups.
-      localparam integer SH0 = B_W - 1 - RSHIFT;
-      localparam integer O_W = A_W + ((SH0 > 0) ? SH0 : 0);
+      // X: b padded to NG groups.
       localparam integer X_W = 2 * NG;
-      wire [O_W-1:0] o0;
-      if (SH0 > 0) begin : g_shl
-        assign o0 = {a_i, {SH0{1'b0}}};
-      end else if (SH0 == 0) begin : g_same
-        assign o0 = a_i;
-      end else begin : g_shr
-        wire signed [A_W-1:0] a_s = a_i;
-        assign o0 = a_s >>> (-SH0);
-      end
       wire [X_W-1:0] b_pad;
       if (X_W > B_W) begin : g_pad
         assign b_pad = {b_i, 1'b0};
@@ -182,21 +187,9 @@ module acore_fold_mul #(
         if (!hold) acc_q <= (first ? init_ext : acc_q) + s0[P_W:1];
       assign p_o = acc_q;
     end else begin : g_fold
-      // O_0 = floor(a 2^SH0) for the top bit B_W-1 of b.
-      localparam integer SH0 = B_W - 1 - RSHIFT;
-      localparam integer O_W = A_W + ((SH0 > 0) ? SH0 : 0);
       localparam integer X_W = F * B;
       localparam integer PAD = X_W - B_W;
       localparam integer NT = (B + 1) >> 1;  // terms after the first tree level
-      wire [O_W-1:0] o0;
-      if (SH0 > 0) begin : g_shl
-        assign o0 = {a_i, {SH0{1'b0}}};
-      end else if (SH0 == 0) begin : g_same
-        assign o0 = a_i;
-      end else begin : g_shr
-        wire signed [A_W-1:0] a_s = a_i;
-        assign o0 = a_s >>> (-SH0);
-      end
       wire [X_W-1:0] b_pad;
       if (PAD > 0) begin : g_pad
         assign b_pad = {b_i, {PAD{1'b0}}};
