@@ -373,15 +373,16 @@ RunResult run_stream(int bw, uint32_t lead, uint32_t lot_thr, bool write_regs, i
       static_cast<int>((cfg2 & sh::kConfig2LatencyMask) >> sh::kConfig2LatencyShift);
   const int cycles = static_cast<int>((cfg2 & sh::kConfig2CyclesMask) >> sh::kConfig2CyclesShift);
   EXPECT_GT(cycles, 1);
-  // ABZ converts an angle to its target in 3 ceil(N_W / 2) + 5 clocks (rtl/acore_abz.v, N_W = 13
-  // on the board) and then emits one count a clock at most: the check below (the previous target
-  // reached before the next observer output) holds while a sample's counts fit in the clocks left
-  // of a sample. The serial core's clocks leave room for the speeds asked; a folded board's 32 do
-  // not, so the run scales its speeds down to fit, and the loss-of-tracking threshold with them
-  // (the loop's error scales with the speed step: the step still raises it), and streams as many
-  // more samples (the angle turns as far).
-  const int abz_latency = 3 * ((13 + 1) / 2) + 5;
-  const double counts = 4 * 1024 * std::max(std::fabs(w0), std::fabs(w1));
+  // ABZ converts an angle to its target in 3 ceil(N_W / 2) + 5 clocks (rtl/acore_abz.v; the board
+  // makes N_W the ABZ_N field's width) and then emits one count a clock at most: the check below
+  // (the previous target reached before the next observer output) holds while a sample's counts fit
+  // in the clocks left of a sample. The serial core's clocks leave room for the speeds asked; a
+  // folded board's 32 do not, so the run scales its speeds down to fit, and the loss-of-tracking
+  // threshold with them (the loop's error scales with the speed step: the step still raises it),
+  // and streams as many more samples (the angle turns as far).
+  const int abz_latency = 3 * ((bd::kAbzNNBits + 1) / 2) + 5;
+  const double counts =
+      4.0 * bd::kAbzNReset * std::max(std::fabs(w0), std::fabs(w1));  // N at reset
   const double scale = std::min(1.0, (cycles - abz_latency - 2) / counts);
   EXPECT_GT(scale, 0.0) << "the board's " << cycles << " clocks a sample leave ABZ no count";
   if (scale < 1) {
