@@ -170,8 +170,8 @@ module acore_abz #(
       op_q <= op_next;
       acc_q <= {ANGLE_W{1'b0}};
       low_q <= {L_W{1'b0}};
-      // (A later pass takes the N in use: should it have changed, the result is stale anyway.)
-      nsh_q <= {{(L_W-N_W){1'b0}}, load ? n_clamped : n_cur_q};
+      // (Every pass takes N as it is: should it change during a conversion, the result is stale.)
+      nsh_q <= {{(L_W-N_W){1'b0}}, n_clamped};
       k_q <= NH[K_W-1:0];
       pass_q <= load ? 2'd0 : pass_q + 2'd1;
     end else if (run_q && !turn) begin
