@@ -209,14 +209,18 @@ module acore_abz #(
   reg rehome_q;                  // N changed: hold A/B until the first target with the new N
   wire [M_W-1:0] m2_cur = {1'b0, n_cur_q, 1'b0};
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
-  wire [M_W-1:0] diff0 = {1'b0, tgt_q} - cnt_w;          // modulo 2^M_W
-  // (tgt - cnt) mod 4N <= 2N: diff0 <= 2N when diff0 >= 0, diff0 + 4N <= 2N (diff0 <= -2N) when
-  // not; so diff0 -+ 2N <= 0, on one adder (-2N as ~2N + 1); it lies in -2N .. 2N - 1.
-  wire neg = diff0[M_W-1];
-  wire [M_W-1:0] e_dir = diff0 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
+  // (tgt - cnt) mod 4N <= 2N, the shorter way forward, from d = tgt - cnt - 1 = tgt + ~cnt (no
+  // carry in): d >= 0 (tgt > cnt) goes up when d - 2N < 0, d < 0 (tgt <= cnt) when d + 2N < 0
+  // (that is tgt - cnt <= -2N; tgt = cnt is no step), on one adder (-2N as ~2N + 1): a sign each,
+  // no test for 0. Both lie in -2N .. 2N - 1.
+  wire [M_W-1:0] diff1 = {1'b0, tgt_q} + ~cnt_w;          // modulo 2^M_W
+  wire neg = diff1[M_W-1];
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [M_W-1:0] e_dir = diff1 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
+  /* verilator lint_on UNUSEDSIGNAL */
   reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
-  wire moving = (tgt_q != cnt_q) & ~rehome_q & ~adj_q;
-  wire up = e_dir[M_W-1] | (e_dir == {M_W{1'b0}});
+  wire moving = (diff1 != {M_W{1'b1}}) & ~rehome_q & ~adj_q;  // tgt != cnt
+  wire up = e_dir[M_W-1];
   // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
   // come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next clock), so the
   // load needs no subtractor.
