@@ -221,9 +221,9 @@ module acore_abz #(
   reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
   wire moving = (diff1 != {M_W{1'b1}}) & ~rehome_q & ~adj_q;  // tgt != cnt
   wire up = e_dir[M_W-1];
-  // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
-  // come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next clock), so the
-  // load needs no subtractor.
+  // The spacing counter is loaded with SPACING at an edge and counts down to 1 (a 0 loaded stays);
+  // the next edge may come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next
+  // clock), so the load needs no subtractor and the count stops on the same test.
   wire sp_ready = ((sp_q >> 1) == {SP_W{1'b0}});
   // The window lm .. lp round the turn holds the target.
   wire in_win = wrap_q ? (ge_lm_q | le_lp_q) : (ge_lm_q & le_lp_q);
@@ -264,7 +264,7 @@ module acore_abz #(
       rehome_q <= 1'b0;
       adj_q <= 1'b0;
     end else begin
-      if (sp_q != {SP_W{1'b0}}) sp_q <= sp_q - 1'b1;
+      if (!sp_ready) sp_q <= sp_q - 1'b1;  // down to 1 (or the 0 loaded): ready
       adj_q <= 1'b0;
       if (n_change) begin
         // A new N: A and B hold; without an angle yet the count is 0 and stays.
