@@ -51,7 +51,8 @@
 // not writable (its data frame is consumed), sets INVCOMM. NOP, address 0, is no command whether
 // R/W is set or not (0x0000 is the frame drivers send to collect an answer). EF, bit 14 of every
 // answer, is high while ERRFL holds an error, so the answer after a refused frame carries it (its
-// data is then NOP's 0), until ERRFL is read.
+// data is then NOP's 0), until ERRFL is read. A frame longer than 16 bits (a daisy chain's) is a
+// framing error whose MISO, after the answer's 16 bits, passes on what came in on MOSI.
 //
 // One clock domain: SCLK, CSn and MOSI are oversampled through SYNC flops each. MOSI is taken at
 // the synchronized falling edge, the same stage as SCLK's, so it is the value the master held
