@@ -221,6 +221,9 @@ module acore_abz #(
   reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
   wire moving = (diff1 != {M_W{1'b1}}) & ~rehome_q & ~adj_q;  // tgt != cnt
   wire up = e_dir[M_W-1];
+  // The top count 4N - 1 is {N - 1, 2'b11}: its upper part (from the register N, beside the step,
+  // not after it: the path through the direction and the step's adder is the board's longest).
+  wire [C_W-3:0] top_hi = n_cur_q[C_W-3:0] - 1'b1;
   // The spacing counter is loaded with SPACING at an edge and counts down to 1 (a 0 loaded stays);
   // the next edge may come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next
   // clock), so the load needs no subtractor and the count stops on the same test.
@@ -242,19 +245,14 @@ module acore_abz #(
   wire home_up = (dlow != 2'd3) & lo_d[2];
   wire home_dn = (dlow == 2'd3) & (lo_q[1:0] == 2'd0);
   // One step of the count on one adder, round the turn: +-1, or +-4 when re-homing (low bits kept).
-  // Down from the upper part 0 the adder starts from N instead ({N, low bits} - 1 or - 4 is the
-  // top of the turn, {N - 1, ...}: no subtractor for N - 1); up, a sum whose upper part reaches N
-  // has passed the turn's end and keeps only its low bits (at N = 2^(N_W-1) the upper part wraps
-  // to 0 by itself, and a sum with upper part 0 that did not pass the end is left as it is).
   wire dir = adj_q ? adj_up_q : up;
   localparam [C_W-1:0] ONE_C = {{(C_W-1){1'b0}}, 1'b1}, ALL_C = {C_W{1'b1}};
   wire [C_W-1:0] addend = adj_q ? (adj_up_q ? ONE_C << 2 : ALL_C << 2) : (up ? ONE_C : ALL_C);
-  wire hi_zero = (cnt_q[C_W-1:2] == {(C_W-2){1'b0}});
+  wire [C_W-1:0] step = cnt_q + addend;
+  wire hi_top = (cnt_q[C_W-1:2] == top_hi), hi_zero = (cnt_q[C_W-1:2] == {(C_W-2){1'b0}});
+  wire wrap_up = dir & hi_top & (adj_q | (cnt_q[1:0] == 2'b11));
   wire wrap_dn = ~dir & hi_zero & (adj_q | (cnt_q[1:0] == 2'b00));
-  wire [C_W-1:0] step_base = wrap_dn ? {n_cur_q[C_W-3:0], cnt_q[1:0]} : cnt_q;
-  wire [C_W-1:0] step = step_base + addend;
-  wire wrap_up = dir & (step[C_W-1:2] == n_cur_q[C_W-3:0]);
-  wire [C_W-1:0] cnt_next = wrap_up ? {{(C_W-2){1'b0}}, step[1:0]} : step;
+  wire [C_W-1:0] cnt_next = wrap_up ? {{(C_W-2){1'b0}}, step[1:0]} : wrap_dn ? {top_hi, step[1:0]} : step;
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
