@@ -170,8 +170,8 @@ module acore_abz #(
       op_q <= op_next;
       acc_q <= {ANGLE_W{1'b0}};
       low_q <= {L_W{1'b0}};
-      // (A later pass takes the N in use: should it have changed, the result is stale anyway.)
-      nsh_q <= {{(L_W-N_W){1'b0}}, load ? n_clamped : n_cur_q};
+      // (Every pass takes N as it is: should it change during a conversion, the result is stale.)
+      nsh_q <= {{(L_W-N_W){1'b0}}, n_clamped};
       k_q <= NH[K_W-1:0];
       pass_q <= load ? 2'd0 : pass_q + 2'd1;
     end else if (run_q && !turn) begin
@@ -209,19 +209,24 @@ module acore_abz #(
   reg rehome_q;                  // N changed: hold A/B until the first target with the new N
   wire [M_W-1:0] m2_cur = {1'b0, n_cur_q, 1'b0};
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
-  wire [M_W-1:0] diff0 = {1'b0, tgt_q} - cnt_w;          // modulo 2^M_W
-  // (tgt - cnt) mod 4N <= 2N: diff0 <= 2N when diff0 >= 0, diff0 + 4N <= 2N (diff0 <= -2N) when
-  // not; so diff0 -+ 2N <= 0, on one adder (-2N as ~2N + 1); it lies in -2N .. 2N - 1.
-  wire neg = diff0[M_W-1];
-  wire [M_W-1:0] e_dir = diff0 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
+  // (tgt - cnt) mod 4N <= 2N, the shorter way forward, from d = tgt - cnt - 1 = tgt + ~cnt (no
+  // carry in): d >= 0 (tgt > cnt) goes up when d - 2N < 0, d < 0 (tgt <= cnt) when d + 2N < 0
+  // (that is tgt - cnt <= -2N; tgt = cnt is no step), on one adder (-2N as ~2N + 1): a sign each,
+  // no test for 0. Both lie in -2N .. 2N - 1.
+  wire [M_W-1:0] diff1 = {1'b0, tgt_q} + ~cnt_w;          // modulo 2^M_W
+  wire neg = diff1[M_W-1];
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [M_W-1:0] e_dir = diff1 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
+  /* verilator lint_on UNUSEDSIGNAL */
   reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
-  wire moving = (tgt_q != cnt_q) & ~rehome_q & ~adj_q;
-  wire up = e_dir[M_W-1] | (e_dir == {M_W{1'b0}});
-  // The top count 4N - 1 is {N - 1, 2'b11}: its upper part.
+  wire moving = (diff1 != {M_W{1'b1}}) & ~rehome_q & ~adj_q;  // tgt != cnt
+  wire up = e_dir[M_W-1];
+  // The top count 4N - 1 is {N - 1, 2'b11}: its upper part (from the register N, beside the step,
+  // not after it: the path through the direction and the step's adder is the board's longest).
   wire [C_W-3:0] top_hi = n_cur_q[C_W-3:0] - 1'b1;
-  // The spacing counter is loaded with SPACING at an edge and counts down to 0; the next edge may
-  // come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next clock), so the
-  // load needs no subtractor.
+  // The spacing counter is loaded with SPACING at an edge and counts down to 1 (a 0 loaded stays);
+  // the next edge may come once it is at 1 or 0 (SPACING clocks after the last; 0 and 1: the next
+  // clock), so the load needs no subtractor and the count stops on the same test.
   wire sp_ready = ((sp_q >> 1) == {SP_W{1'b0}});
   // The window lm .. lp round the turn holds the target.
   wire in_win = wrap_q ? (ge_lm_q | le_lp_q) : (ge_lm_q & le_lp_q);
@@ -257,7 +262,7 @@ module acore_abz #(
       rehome_q <= 1'b0;
       adj_q <= 1'b0;
     end else begin
-      if (sp_q != {SP_W{1'b0}}) sp_q <= sp_q - 1'b1;
+      if (!sp_ready) sp_q <= sp_q - 1'b1;  // down to 1 (or the 0 loaded): ready
       adj_q <= 1'b0;
       if (n_change) begin
         // A new N: A and B hold; without an angle yet the count is 0 and stays.

@@ -51,7 +51,8 @@
 // not writable (its data frame is consumed), sets INVCOMM. NOP, address 0, is no command whether
 // R/W is set or not (0x0000 is the frame drivers send to collect an answer). EF, bit 14 of every
 // answer, is high while ERRFL holds an error, so the answer after a refused frame carries it (its
-// data is then NOP's 0), until ERRFL is read.
+// data is then NOP's 0), until ERRFL is read. A frame longer than 16 bits (a daisy chain's) is a
+// framing error whose MISO, after the answer's 16 bits, passes on what came in on MOSI.
 //
 // One clock domain: SCLK, CSn and MOSI are oversampled through SYNC flops each. MOSI is taken at
 // the synchronized falling edge, the same stage as SCLK's, so it is the value the master held
@@ -296,14 +297,18 @@ module acore_spi_as5047 #(
   wire [15:0] answer = {^{ef, data}, ef, data};
 
   // ---- the frame ----
-  reg [15:0] rx_q, tx_q;
+  // One shift register both ways (a frame shifts its command in at the bottom while the answer
+  // leaves at the top, on the same falling edges): it holds the command received when CSn rises,
+  // is decoded in that clock and is loaded with the next answer in the same clock. After a
+  // frame's 16th bit MISO passes on what came in on MOSI, as a daisy chain does.
+  reg [15:0] sr_q;
   reg [4:0] bits_q;    // saturates at 17: too long
   reg wr_data_q;       // the next frame is a write's data frame
   reg [AS5047_S_W-1:0] wr_reg_q;  // the register it writes (AS5047_S_NOP: none, the data frame is consumed)
   reg short_q;         // this frame followed a CSn gap of one clock: a framing error
-  wire parity_ok = ~^rx_q;
-  wire read = rx_q[14];
-  wire [13:0] addr = rx_q[13:0];
+  wire parity_ok = ~^sr_q;
+  wire read = sr_q[14];
+  wire [13:0] addr = sr_q[13:0];
   wire [AS5047_S_W-1:0] sel_reg = as5047_sel(addr);
   // NOP (address 0) is no command either way: the frame drivers send to collect an answer is 0x0000.
   wire nop = (addr == AS5047_A_NOP);
@@ -317,7 +322,7 @@ module acore_spi_as5047 #(
   wire cmd_ok = frame_ok & ~wr_data_q;
   // The data frame of a write: the register written in the clock CSn rises.
   wire wr_do = frame_ok & wr_data_q;
-  wire [AS5047_DATA_W-1:0] wd = rx_q[AS5047_DATA_W-1:0];  // the settings' data bits
+  wire [AS5047_DATA_W-1:0] wd = sr_q[AS5047_DATA_W-1:0];  // the settings' data bits
   wire wr_set1 = (wr_reg_q == AS5047_S_SETTINGS1);
   wire wr_set2 = (wr_reg_q == AS5047_S_SETTINGS2);
   wire wd_abibin = wd[AS5047_SETTINGS1_ABIBIN_LSB];
@@ -331,10 +336,12 @@ module acore_spi_as5047 #(
   assign cfg_dir_o = wd[AS5047_SETTINGS1_DIR_LSB];
   assign cfg_daec_we_o = wr_do & wr_set1;
   assign cfg_daec_o = ~wd[AS5047_SETTINGS1_DAECDIS_LSB];
-  // N: from ABIRES (SETTINGS2), or re-read through the other table when SETTINGS1 changes ABIBIN.
+  // N: from ABIRES (SETTINGS2), or re-read through the other table when SETTINGS1 changes ABIBIN;
+  // one table look-up of the table and code each write picks (a few gates of four inputs a bit).
   assign cfg_n_we_o = wr_do & (wr_set2 | (wr_set1 & (wd_abibin != abibin_q)));
-  assign cfg_n_o = wr_set2 ? abi_n(abibin_q, wd[AS5047_SETTINGS2_ABIRES_MSB:AS5047_SETTINGS2_ABIRES_LSB]) :
-                   abi_n(wd_abibin, abires_code);
+  wire n_bin = wr_set2 ? abibin_q : wd_abibin;
+  wire [2:0] n_code = wr_set2 ? wd[AS5047_SETTINGS2_ABIRES_MSB:AS5047_SETTINGS2_ABIRES_LSB] : abires_code;
+  assign cfg_n_o = abi_n(n_bin, n_code);
   assign cfg_pp_we_o = wr_do & wr_set2;
   // UVWPP + AS5047_UVWPP_OFFSET, at most AS5047_UVWPP_MAX_PP.
   wire [PP_W-1:0] pp_new = {{(PP_W-AS5047_SETTINGS2_UVWPP_W){1'b0}}, wd_uvwpp} + PP_OFFSET;
@@ -354,7 +361,7 @@ module acore_spi_as5047 #(
       wr_reg_q <= AS5047_S_NOP;
       short_q <= 1'b0;
       frame_o <= 1'b0;
-      tx_q <= 16'd0;
+      sr_q <= 16'd0;
       progen_q <= AS5047_PROG_PROGEN_RESET;
       progver_q <= AS5047_PROG_PROGVER_RESET;
       abibin_q <= AS5047_SETTINGS1_ABIBIN_RESET;
@@ -364,9 +371,9 @@ module acore_spi_as5047 #(
       erren_q <= AS5047_ZPOSL_ERR_EN_RESET;
     end else begin
       frame_o <= cs_rise;
-      if (!sel) tx_q <= answer;
-      else if (cs_short) tx_q <= 16'hC000;  // EF with even parity, data 0
-      else if (fall) tx_q <= {tx_q[14:0], 1'b0};
+      if (!sel) sr_q <= answer;
+      else if (cs_short) sr_q <= 16'hC000;  // EF with even parity, data 0
+      else if (fall) sr_q <= {sr_q[14:0], mosi};
       if (cs_fall) short_q <= cs_short;
       if (cs_fall) bits_q <= 5'd0;
       else if (fall && bits_q != 5'd17) bits_q <= bits_q + 5'd1;
@@ -404,9 +411,8 @@ module acore_spi_as5047 #(
         end
       end
     end
-    if (fall) rx_q <= {rx_q[14:0], mosi};
   end
-  assign miso_o = tx_q[15];
+  assign miso_o = sr_q[15];
   assign miso_oe_o = ~csn_s[SYNC-1];
   assign errfl_o = errfl_q;
 

@@ -49,7 +49,6 @@ module acore_uvw #(
 
   localparam integer LATENCY = PP_W + 3;
   localparam integer PPMAX = 1 << (PP_W - 1);
-  localparam integer K_W = $clog2(PP_W + 2);
 
   acore_check #(.OK(ANGLE_W >= 3 && ANGLE_W <= 32), .VALUE(ANGLE_W),
     .MSG("illegal parameter: ANGLE_W must be 3..32")) ANGLE_W_must_be_3_to_32 ();
@@ -66,12 +65,13 @@ module acore_uvw #(
   // The latest angle (held until its conversion starts) and whether one waits.
   reg [ANGLE_W-1:0] ang_q;
   reg pend_q, run_q;
-  reg [K_W-1:0] k_q;           // Horner steps left; 0: the 3e step
-  reg [PP_W-1:0] ppsh_q;       // PP, MSB first
+  // PP, MSB first, above a marker 1 that reaches the top after the PP_W Horner steps (the bits
+  // below it 0: the 3e step), in place of a step counter.
+  reg [PP_W:0] ppsh_q;
   reg [ANGLE_W-1:0] d_q, acc_q;
   // One adder: Horner's acc 2 + (d or 0) modulo a turn, then acc 2 + acc = 3e (ANGLE_W + 2 bits).
-  wire last = (k_q == {K_W{1'b0}});
-  wire [ANGLE_W-1:0] addend = last ? acc_q : (ppsh_q[PP_W-1] ? d_q : {ANGLE_W{1'b0}});
+  wire last = (ppsh_q[PP_W-1:0] == {PP_W{1'b0}});
+  wire [ANGLE_W-1:0] addend = last ? acc_q : (ppsh_q[PP_W] ? d_q : {ANGLE_W{1'b0}});
   wire [ANGLE_W+1:0] sum = {1'b0, acc_q, 1'b0} + {2'b00, addend};
   wire [2:0] sector = sum[ANGLE_W+1:ANGLE_W-1];
   wire start = pend_q & (~run_q | last);
@@ -101,13 +101,11 @@ module acore_uvw #(
     // The datapath needs no reset: run_q says when it holds a conversion.
     if (start) begin
       d_q <= ang_q - offset_i;
-      ppsh_q <= pp;
+      ppsh_q <= {pp, 1'b1};
       acc_q <= {ANGLE_W{1'b0}};
-      k_q <= PP_W[K_W-1:0];
     end else if (run_q && !last) begin
       acc_q <= sum[ANGLE_W-1:0];
       ppsh_q <= ppsh_q << 1;
-      k_q <= k_q - 1'b1;
     end
   end
 

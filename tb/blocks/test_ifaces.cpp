@@ -750,6 +750,35 @@ TEST(SpiAs5047, ShortCsnGapIsAFramingErrorNotAWrongAnswer) {
   EXPECT_EQ(m.top->errfl_o, 0);
 }
 
+// A frame longer than 16 bits (a daisy chain's): the first 16 MISO bits are the answer, the next
+// 16 the 16 bits the master sent first, as received (the port shifts the command in where the
+// answer leaves); the frame itself is a framing error, its command ignored.
+TEST(SpiAs5047, MisoPassesMosiOnAfterSixteenBits) {
+  SpiMaster m(33);
+  m.angle(0x1111, 0xBEEF);
+  m.frame(as5047::with_even_parity(0x7FFF));  // read ANGLECOM
+  const uint16_t sent = as5047::with_even_parity(0x4001), next = 0xA5C3;
+  const uint32_t mosi = (uint32_t{sent} << 16) | next;
+  auto& top = *m.top;
+  top.csn_i = 0;
+  m.clocks(m.lead);
+  uint32_t miso = 0;
+  for (int i = 0; i < 32; ++i) {
+    top.sclk_i = 1;
+    top.mosi_i = (mosi >> (31 - i)) & 1;
+    m.clocks(m.half);
+    miso = (miso << 1) | (top.miso_o & 1);
+    top.sclk_i = 0;
+    m.clocks(m.half);
+  }
+  top.csn_i = 1;
+  m.clocks(m.gap);
+  EXPECT_EQ(miso >> 16, as5047::with_even_parity(static_cast<uint16_t>(top14(0xBEEF))));
+  EXPECT_EQ(miso & 0xFFFF, sent);
+  EXPECT_EQ(m.frame(as5047::with_even_parity(0x4001)), 0xC000) << "the long frame read nothing";
+  EXPECT_EQ(m.frame(0x0000) & 0x3FFF, static_cast<uint32_t>(as5047::kErrflFrerr));
+}
+
 // The datasheet's write sequence on the settings: a write command, then the data frame (answered
 // with the register's old content), then any frame (answered with the new content); the values the
 // board's registers take, from the datasheet's tables: ZPOS in ZPOSM/ZPOSL, DIR and DAECDIS in
