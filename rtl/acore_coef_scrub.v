@@ -58,6 +58,9 @@ module acore_coef_scrub #(
   // The engine folds no word (a word taken into word_q now would change the one it folds).
   input  wire              crc_ready_i,
   input  wire              crc_idle_i,
+  // The pass may not end in this clock (the bank's memory, where CRC_SCRUB goes, is busy): END
+  // waits (the engine holds the CRC).
+  input  wire              hold_i,
   // A pass over all WORDS words ends in this clock: the engine's crc_o is its CRC.
   output wire              pass_o
 );
@@ -131,8 +134,8 @@ module acore_coef_scrub #(
             end
           end
         end
-        default: begin  // ST_END: until the last word is folded in
-          if (crc_idle_i) state_q <= ST_START;
+        default: begin  // ST_END: until the last word is folded in (and no hold)
+          if (crc_idle_i && !hold_i) state_q <= ST_START;
         end
       endcase
     end
@@ -150,7 +153,7 @@ module acore_coef_scrub #(
   endgenerate
   assign crc_init_o = (state_q == ST_START);
   assign crc_load_o = (HOLD != 0) ? (state_q == ST_READ) && served : (state_q == ST_LOAD);
-  assign pass_o = (state_q == ST_END) && crc_idle_i;
+  assign pass_o = (state_q == ST_END) && crc_idle_i && !hold_i;
 
 endmodule
 
