@@ -35,15 +35,18 @@
 // read port belongs to the commit while busy_o, to the register block otherwise, and to the
 // register block's reads of CRC_SHADOW and CRC_SCRUB always.
 //
-// CRC_SHADOW and CRC_SCRUB live in the shadow's block RAM, in the two words after the image
-// (WORDS, WORDS + 1; the RAM is 32 bits wide, which costs no block RAM where two 16-bit ones hold
-// an 18-bit word): no flops, no read multiplexer of their own. The register block reads them in
-// the setup phase like a COEF word (crc_*_re_i), also while busy: the commit's shadow read of
-// that clock waits one clock (the CRC engine keeps the word it folds, so only the read itself
-// moves), and a CRC word is never read and written in one clock: CRC_SHADOW is written when the
-// CHECK pass's CRC is ready and no CRC read is under way (the engine holds its CRC), CRC_SCRUB
-// when a pass ends, which waits while the APB writes the shadow or reads a CRC word. Until its
-// first write after reset a CRC word reads 0 (crc_*_zero_o).
+// CRC_SHADOW, CRC_SCRUB and CRC_REF live in the shadow's block RAM, in the three words after the
+// image (WORDS, WORDS + 1, WORDS + 2; the RAM is 32 bits wide, which costs no block RAM where two
+// 16-bit ones hold an 18-bit word): no flops, no read multiplexer of their own. The register block
+// reads them in the setup phase like a COEF word (crc_*_re_i), also while busy: the commit's
+// shadow read of that clock waits one clock (the CRC engine keeps the word it folds, so only the
+// read itself moves), and a CRC word is never read and written in one clock: CRC_SHADOW is
+// written when the CHECK pass's CRC is ready and no CRC read is under way (the engine holds its
+// CRC), CRC_REF when a commit is applied (a clock later after a CRC read: the engine still holds
+// the CRC then), CRC_SCRUB when a scrubber pass ends; the pass's end waits for a clock without an
+// APB setup phase or shadow write, because it also reads CRC_REF's word for the scrubber's
+// comparison (the RAM's output register holds it the clock after). Until its first write after
+// reset a CRC word reads 0 (crc_*_zero_o; CRC_REF's: no commit applied yet).
 `resetall
 `default_nettype none
 
@@ -78,9 +81,11 @@ module acore_coef_bank #(
   input  wire [ADDR_W-1:0] sh_raddr_i,
   input  wire              crc_shadow_re_i,
   input  wire              crc_scrub_re_i,
+  input  wire              crc_ref_re_i,
   output wire [31:0]       sh_rdata_o,
   output wire              crc_shadow_zero_o,
   output wire              crc_scrub_zero_o,
+  output wire              crc_ref_zero_o,
   // Control: commit request (one clock), CRC check and scrubbing enables, the expected CRC.
   input  wire              commit_i,
   input  wire              check_i,
@@ -93,9 +98,7 @@ module acore_coef_bank #(
   output wire              busy_o,
   output wire              bank_o,
   output wire              ref_valid_o,
-  // CRC of the active image (the last applied commit's); judged passes (wrapping; moves with the
-  // pass's verdict).
-  output reg  [31:0]       crc_ref_o,
+  // Judged scrubber passes (wrapping; moves with the pass's verdict).
   output reg  [15:0]       scrub_passes_o,
   // Events, one clock each: a commit ended (applied or refused); it was refused (CRC); a scrub
   // pass found the active words changed.
@@ -151,18 +154,19 @@ module acore_coef_bank #(
   // read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK: for the
   // CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads a CRC
   // word in this clock (it has the read port: the commit's read waits).
-  localparam integer RAM_AW = $clog2(WORDS + 2);
-  localparam integer A_SHADOW_I = WORDS, A_SCRUB_I = WORDS + 1;
+  localparam integer RAM_AW = $clog2(WORDS + 3);
+  localparam integer A_SHADOW_I = WORDS, A_SCRUB_I = WORDS + 1, A_REF_I = WORDS + 2;
   localparam [RAM_AW-1:0] A_SHADOW = A_SHADOW_I[RAM_AW-1:0], A_SCRUB = A_SCRUB_I[RAM_AW-1:0];
+  localparam [RAM_AW-1:0] A_REF = A_REF_I[RAM_AW-1:0];
   reg [ADDR_W-1:0] ra_q;
   reg more_q, ld_q, pend_q;
   reg [SC_W-1:0] sc_q;
   wire [31:0] q;
-  wire x_rd = crc_shadow_re_i | crc_scrub_re_i;
+  wire x_rd = crc_shadow_re_i | crc_scrub_re_i | crc_ref_re_i;
   wire c_re = more_q & ~x_rd &
       ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
-  wire crc_end, s_pass;
-  wire crc_we = crc_end | s_pass;
+  wire crc_end, s_pass, ref_we;
+  wire crc_we = crc_end | s_pass | ref_we;
   wire [31:0] crc;
   wire [31:0] ram_wdata;
   assign ram_wdata[REG_W-1:0] = crc_we ? crc[REG_W-1:0] : sh_wdata_i;
@@ -179,11 +183,13 @@ module acore_coef_bank #(
     sh_raddr = {RAM_AW{1'b0}};
     sh_raddr[ADDR_W-1:0] = busy_q ? ra_q : sh_raddr_i;
   end
-  acore_sync_ram #(.W(32), .DEPTH(WORDS + 2), .INIT_WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
+  // (a pass's end reads CRC_REF's word: s_pass)
+  acore_sync_ram #(.W(32), .DEPTH(WORDS + 3), .INIT_WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
     .clk_i(clk_i), .we_i(sh_we_i | crc_we),
-    .waddr_i(crc_we ? (crc_end ? A_SHADOW : A_SCRUB) : sh_waddr), .wdata_i(ram_wdata),
-    .re_i(x_rd | (busy_q ? c_re : sh_re_i)),
-    .raddr_i(crc_shadow_re_i ? A_SHADOW : crc_scrub_re_i ? A_SCRUB : sh_raddr), .q_o(q));
+    .waddr_i(crc_we ? (crc_end ? A_SHADOW : s_pass ? A_SCRUB : A_REF) : sh_waddr),
+    .wdata_i(ram_wdata), .re_i(x_rd | s_pass | (busy_q ? c_re : sh_re_i)),
+    .raddr_i(crc_shadow_re_i ? A_SHADOW : crc_scrub_re_i ? A_SCRUB :
+             (crc_ref_re_i | s_pass) ? A_REF : sh_raddr), .q_o(q));
   assign sh_rdata_o = q;
 
   // ---- CRC engine, the commit's while busy, the scrubber's otherwise ----
@@ -203,7 +209,7 @@ module acore_coef_bank #(
   acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT), .HOLD(RD_HOLD)) u_scrub (
     .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
     .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
-    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | x_rd), .pass_o(s_pass));
+    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | sh_re_i), .pass_o(s_pass));
 
   // ---- samples in the top: accepted - emitted ----
   // One adder: + 1, - 1 (all ones) or + 0.
@@ -217,11 +223,12 @@ module acore_coef_bank #(
 
   // ---- the commit ----
   // One 32-bit comparator, registered (neq_q), for both users: the commit compares the CRC with
-  // crc_expected_i, the scrubber with crc_ref_o; sel_q records which reference neq_q was computed
-  // with (1: the commit's). The CRC stays still for the clocks its users read neq_q.
+  // crc_expected_i, the scrubber with CRC_REF's word (the RAM's output the clock after a pass's
+  // end); sel_q records which reference neq_q was computed with (1: the commit's). The CRC stays
+  // still for the clocks its users read neq_q.
   reg neq_q, sel_q;
   always @(posedge clk_i) begin
-    neq_q <= (crc != (busy_q ? crc_expected_i : crc_ref_o));
+    neq_q <= (crc != (busy_q ? crc_expected_i : q));
     sel_q <= busy_q;
   end
 
@@ -298,20 +305,24 @@ module acore_coef_bank #(
   end
   // The CRC registers read 0 until the first commit (and pass). An applied commit's CRC is the
   // engine's still (it folds nothing from the CHECK pass's end to the commit's).
-  reg sh_ok_q, sc_ok_q;
+  // ref_pend_q: CRC_REF's word waits a clock (its apply met a CRC read); the APB's next setup
+  // phase is a clock later still.
+  reg sh_ok_q, sc_ok_q, ref_pend_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
-      crc_ref_o <= 32'd0;
       sh_ok_q <= 1'b0;
       sc_ok_q <= 1'b0;
+      ref_pend_q <= 1'b0;
     end else begin
-      if (apply) crc_ref_o <= crc;
       if (crc_end) sh_ok_q <= 1'b1;
       if (s_pass) sc_ok_q <= 1'b1;
+      ref_pend_q <= apply & x_rd;
     end
   end
+  assign ref_we = (apply & ~x_rd) | ref_pend_q;
   assign crc_shadow_zero_o = ~sh_ok_q;
   assign crc_scrub_zero_o = ~sc_ok_q;
+  assign crc_ref_zero_o = ~ref_valid_q;
   // The top's port: in STREAM the word read last clock (its address registered with the read, its
   // data the shadow's output register), else the scrubber's address.
   always @(posedge clk_i) top_addr_o <= ((state_q == C_STREAM) & c_re) ? ra_q : s_addr;
