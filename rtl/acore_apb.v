@@ -18,8 +18,8 @@
 //
 // APB timing: zero wait states (PREADY is always high). The shell decodes the address and reads
 // in the setup phase (PSEL && !PENABLE), so the access phase returns registered data, also from
-// the shadow RAM, which holds CRC_SHADOW, CRC_REF and CRC_SCRUB too (rtl/acore_coef_bank.v). PSLVERR (with PRDATA = 0 and no effect) answers: an unmapped or unaligned
-// address; a write with PSTRB != 4'b1111 (32-bit writes only); a write to a read-only register;
+// the shadow RAM, which holds CRC_SHADOW, CRC_REF and CRC_SCRUB too (rtl/acore_coef_bank.v).
+// PSLVERR (with PRDATA = 0 and no effect) answers: an unmapped or unaligned address; a write with PSTRB != 4'b1111 (32-bit writes only); a write to a read-only register;
 // a shadow-window access, a commit request or a CRC_EXPECTED write while a commit is busy
 // (decided in the setup phase). Busy refusals are errors rather than wait states because a commit
 // waits for the samples in flight, and those wait for the output's out_ready_i: a wait state could

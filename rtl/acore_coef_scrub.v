@@ -17,11 +17,12 @@
 //   state        START/LOAD| READ  READ  READ |LOAD| READ ...
 //   crc_load_o   __________________________/‾‾‾‾\____   HOLD = 0: the copy, when the engine is ready
 //
-// The engine keeps no copy of a narrow word (it reads the word while it folds it): with HOLD = 0
-// (the serial core, whose read-back is valid only in the clock it is served) the scrubber copies
-// the word into word_q when the engine is ready and hands it over in LOAD; with HOLD = 1 (acore_top,
-// whose read-back stays while its address does) the engine takes the read-back in the clock it is
-// served, and LOAD keeps the address until the engine is ready again. A pass takes at the least
+// The engine takes a word in the clock of its load: with HOLD = 0 (the serial core, whose
+// read-back is valid only in the clock it is served) the scrubber copies the word into word_q when
+// the engine is ready and hands it over in LOAD; with HOLD = 1 (acore_top, whose read-back stays
+// while its address does) the engine takes the read-back in the clock it is served, and LOAD keeps
+// the address until the engine is ready again. A pass's end waits while hold_i is high (the bank's
+// block RAM, where the pass's CRC goes, is the APB's in that clock). A pass takes at the least
 // WORDS max(RD_LAT + 3, 32/CRC_W + 1) clocks with HOLD = 0, WORDS (RD_LAT + 2 + 32/CRC_W) with
 // HOLD = 1 (6 x 52 = 312 for the pipelined top at CRC_W = 16); on the streaming serial core, one
 // word per sample (the core idles one clock a sample).
