@@ -1263,9 +1263,7 @@ def gen_regblock(blk):
         lw = w.name.lower()
         if blk.mems(w):
             # (the window's words: their field's low bits; a kept register's: all 32)
-            rd += (
-                f" | ({{32{{win_{lw}_q}}}} & ~({{32{{~mem_{lw}_q}}}} << {fw}) & {lw}_rdata_i)"
-            )
+            rd += f" | ({{32{{win_{lw}_q}}}} & ~({{32{{~mem_{lw}_q}}}} << {fw}) & {lw}_rdata_i)"
             continue
         pad = f"{{{{(32-{fw}){{1'b0}}}}, {lw}_rdata_i}}" if fw != "32" else f"{lw}_rdata_i"
         rd += f" | ({{32{{win_{lw}_q}}}} & {pad})"
