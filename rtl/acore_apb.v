@@ -18,8 +18,8 @@
 //
 // APB timing: zero wait states (PREADY is always high). The shell decodes the address and reads
 // in the setup phase (PSEL && !PENABLE), so the access phase returns registered data, also from
-// the shadow RAM. PSLVERR (with PRDATA = 0 and no effect) answers: an unmapped or unaligned
-// address; a write with PSTRB != 4'b1111 (32-bit writes only); a write to a read-only register;
+// the shadow RAM, which holds CRC_SHADOW, CRC_REF and CRC_SCRUB too (rtl/acore_coef_bank.v).
+// PSLVERR (with PRDATA = 0 and no effect) answers: an unmapped or unaligned address; a write with PSTRB != 4'b1111 (32-bit writes only); a write to a read-only register;
 // a shadow-window access, a commit request or a CRC_EXPECTED write while a commit is busy
 // (decided in the setup phase). Busy refusals are errors rather than wait states because a commit
 // waits for the samples in flight, and those wait for the output's out_ready_i: a wait state could
@@ -252,11 +252,13 @@ module acore_apb #(
     .clk_i(clk_i), .rst_i(rst_i),
     // The shadow is the COEF window's memory (the block reads it in every setup phase).
     .sh_we_i(rg_coef_we), .sh_waddr_i(rg_coef_addr), .sh_wdata_i(rg_coef_wdata),
-    .sh_re_i(rg_coef_re), .sh_raddr_i(rg_coef_addr), .sh_rdata_o(rg_coef_rdata),
+    .sh_re_i(rg_coef_re), .sh_raddr_i(rg_coef_addr), .crc_shadow_re_i(rg_crc_shadow_re),
+    .crc_scrub_re_i(rg_crc_scrub_re), .crc_ref_re_i(rg_crc_ref_re), .sh_rdata_o(rg_coef_rdata),
+    .crc_shadow_zero_o(rg_crc_shadow_zero), .crc_scrub_zero_o(rg_crc_scrub_zero),
+    .crc_ref_zero_o(rg_crc_ref_zero),
     .commit_i(rg_ctrl_commit), .check_i(rg_ctrl_crc_check), .scrub_i(rg_ctrl_scrub),
     .crc_expected_i(rg_crc_expected), .accept_i(accept), .emit_i(emit),
     .busy_o(busy), .bank_o(bank), .ref_valid_o(ref_valid),
-    .crc_shadow_o(rg_crc_shadow), .crc_ref_o(rg_crc_ref), .crc_scrub_o(rg_crc_scrub),
     .scrub_passes_o(rg_scrub_passes_passes),
     .done_o(done), .refused_o(refused), .scrub_err_o(scrub_err),
     .top_addr_o(top_addr), .top_wdata_o(top_wdata), .top_we_o(top_we), .top_rdata_i(top_rdata),

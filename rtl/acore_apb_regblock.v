@@ -109,12 +109,18 @@ module acore_apb_regblock #(
   output wire crc_expected_we_o,
   // CRC_EXPECTED.CRC_EXPECTED: refused while STATUS.BUSY
   input  wire crc_expected_lock_i,
-  // CRC_SHADOW.CRC_SHADOW: the hardware's value
-  input  wire [31:0] crc_shadow_i,
-  // CRC_REF.CRC_REF: the hardware's value
-  input  wire [31:0] crc_ref_i,
-  // CRC_SCRUB.CRC_SCRUB: the hardware's value
-  input  wire [31:0] crc_scrub_i,
+  // CRC_SHADOW.CRC_SHADOW: read its word of COEF's memory now (a setup phase)
+  output wire crc_shadow_re_o,
+  // CRC_SHADOW.CRC_SHADOW: no value yet, reads 0
+  input  wire crc_shadow_zero_i,
+  // CRC_REF.CRC_REF: read its word of COEF's memory now (a setup phase)
+  output wire crc_ref_re_o,
+  // CRC_REF.CRC_REF: no value yet, reads 0
+  input  wire crc_ref_zero_i,
+  // CRC_SCRUB.CRC_SCRUB: read its word of COEF's memory now (a setup phase)
+  output wire crc_scrub_re_o,
+  // CRC_SCRUB.CRC_SCRUB: no value yet, reads 0
+  input  wire crc_scrub_zero_i,
   // SCRUB_PASSES.PASSES: the hardware's value
   input  wire [15:0] scrub_passes_passes_i,
   // COEF: read the word at the address
@@ -125,8 +131,8 @@ module acore_apb_regblock #(
   output wire coef_we_o,
   // COEF: the word written
   output wire [REG_W-1:0] coef_wdata_o,
-  // COEF: the word read, the clock after coef_re_o
-  input  wire [REG_W-1:0] coef_rdata_i,
+  // COEF: the word read, the clock after coef_re_o (its REG_W low bits; all 32 for CRC_SHADOW, CRC_REF, CRC_SCRUB)
+  input  wire [31:0] coef_rdata_i,
   // COEF: any access refused while STATUS.BUSY
   input  wire coef_lock_i
 );
@@ -167,9 +173,6 @@ module acore_apb_regblock #(
   localparam integer MAG_LO_MAG_LO = 0;
   localparam integer MAG_HI_MAG_HI = 0;
   localparam integer CRC_EXPECTED_CRC_EXPECTED = 0;
-  localparam integer CRC_SHADOW_CRC_SHADOW = 0;
-  localparam integer CRC_REF_CRC_REF = 0;
-  localparam integer CRC_SCRUB_CRC_SCRUB = 0;
   localparam integer SCRUB_PASSES_PASSES = 0;
   localparam integer COEF_ADDR_W = (COEF_SIZE > 1) ? $clog2(COEF_SIZE) : 1;
   localparam [31:0] ID_VALUE = 32'h41430100;
@@ -261,9 +264,6 @@ module acore_apb_regblock #(
   reg [31:0] rv_mag_lo;
   reg [31:0] rv_mag_hi;
   reg [31:0] rv_crc_expected;
-  reg [31:0] rv_crc_shadow;
-  reg [31:0] rv_crc_ref;
-  reg [31:0] rv_crc_scrub;
   reg [31:0] rv_scrub_passes;
   always @(*) begin
     rv_ctrl = 32'd0;
@@ -288,12 +288,6 @@ module acore_apb_regblock #(
     rv_mag_hi[MAG_HI_MAG_HI +: MAG_W] = mag_hi_q;
     rv_crc_expected = 32'd0;
     rv_crc_expected[CRC_EXPECTED_CRC_EXPECTED +: 32] = crc_expected_q;
-    rv_crc_shadow = 32'd0;
-    rv_crc_shadow[CRC_SHADOW_CRC_SHADOW +: 32] = crc_shadow_i;
-    rv_crc_ref = 32'd0;
-    rv_crc_ref[CRC_REF_CRC_REF +: 32] = crc_ref_i;
-    rv_crc_scrub = 32'd0;
-    rv_crc_scrub[CRC_SCRUB_CRC_SCRUB +: 32] = crc_scrub_i;
     rv_scrub_passes = 32'd0;
     rv_scrub_passes[SCRUB_PASSES_PASSES +: 16] = scrub_passes_passes_i;
   end
@@ -309,10 +303,10 @@ module acore_apb_regblock #(
       ({32{rs_mag_lo}} & rv_mag_lo) |
       ({32{rs_mag_hi}} & rv_mag_hi) |
       ({32{rs_crc_expected}} & rv_crc_expected) |
-      ({32{rs_crc_shadow}} & rv_crc_shadow) |
-      ({32{rs_crc_ref}} & rv_crc_ref) |
-      ({32{rs_crc_scrub}} & rv_crc_scrub) |
       ({32{rs_scrub_passes}} & rv_scrub_passes);
+  // Registers kept in COEF's memory: read through its port (their words the
+  // owner's), 0 while the owner has no value for them.
+  wire mem_coef_sel = in_regs & ((rs_crc_shadow & ~crc_shadow_zero_i) | (rs_crc_ref & ~crc_ref_zero_i) | (rs_crc_scrub & ~crc_scrub_zero_i));
 
   // Setup phase: the answer and which register an error-free write will change,
   // each a flop set only by a setup phase and clear in every other clock. Under the
@@ -323,14 +317,15 @@ module acore_apb_regblock #(
   wire ok = setup & ~err_d;
   wire ok_wr = ok & pwrite_i;
   wire ok_rd = ok & ~pwrite_i & in_regs;
-  reg err_q, win_coef_q, w_ctrl_q, w_status_q, w_mag_lo_q, w_mag_hi_q;
-  reg w_crc_expected_q, w_coef_q;
+  reg err_q, win_coef_q, mem_coef_q, w_ctrl_q, w_status_q, w_mag_lo_q;
+  reg w_mag_hi_q, w_crc_expected_q, w_coef_q;
   reg [31:0] rdata_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
       err_q <= 1'b0;
       rdata_q <= 32'd0;
       win_coef_q <= 1'b0;
+      mem_coef_q <= 1'b0;
       w_ctrl_q <= 1'b0;
       w_status_q <= 1'b0;
       w_mag_lo_q <= 1'b0;
@@ -340,7 +335,8 @@ module acore_apb_regblock #(
     end else begin
       err_q <= setup & err_d;
       rdata_q <= ok_rd ? rd_d : 32'd0;
-      win_coef_q <= ok & ~pwrite_i & in_coef;
+      win_coef_q <= ok & ~pwrite_i & (in_coef | mem_coef_sel);
+      mem_coef_q <= ok_rd & mem_coef_sel;
       w_ctrl_q <= ok_wr & in_regs & ws_ctrl;
       w_status_q <= ok_wr & in_regs & ws_status;
       w_mag_lo_q <= ok_wr & in_regs & ws_mag_lo;
@@ -351,7 +347,7 @@ module acore_apb_regblock #(
   end
 
   // ---- the access phase ----
-  assign prdata_o = rdata_q | ({32{win_coef_q}} & {{(32-REG_W){1'b0}}, coef_rdata_i});
+  assign prdata_o = rdata_q | ({32{win_coef_q}} & ~({32{~mem_coef_q}} << REG_W) & coef_rdata_i);
   assign pslverr_o = err_q;
   // COEF: every setup phase reads the word (used only for a read of the window): the
   // address decode stays off the memory's read enable; its write enable is gated
@@ -360,6 +356,9 @@ module acore_apb_regblock #(
   assign coef_addr_o = coef_idx[COEF_ADDR_W-1:0];
   assign coef_we_o = access & w_coef_q;
   assign coef_wdata_o = pwdata_i[REG_W-1:0];
+  assign crc_shadow_re_o = setup & ~pwrite_i & in_regs & rs_crc_shadow;
+  assign crc_ref_re_o = setup & ~pwrite_i & in_regs & rs_crc_ref;
+  assign crc_scrub_re_o = setup & ~pwrite_i & in_regs & rs_crc_scrub;
   wire wr_ctrl = w_ctrl_q;
   wire wr_status = w_status_q;
   wire wr_mag_lo = w_mag_lo_q;

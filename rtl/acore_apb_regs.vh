@@ -142,15 +142,18 @@ wire rg_mag_hi_we;  // MAG_HI.MAG_HI: written in this clock
 wire [31:0] rg_crc_expected;  // CRC_EXPECTED.CRC_EXPECTED: the value
 wire rg_crc_expected_we;  // CRC_EXPECTED.CRC_EXPECTED: written in this clock
 wire rg_crc_expected_lock;  // in: CRC_EXPECTED.CRC_EXPECTED: refused while STATUS.BUSY
-wire [31:0] rg_crc_shadow;  // in: CRC_SHADOW.CRC_SHADOW: the hardware's value
-wire [31:0] rg_crc_ref;  // in: CRC_REF.CRC_REF: the hardware's value
-wire [31:0] rg_crc_scrub;  // in: CRC_SCRUB.CRC_SCRUB: the hardware's value
+wire rg_crc_shadow_re;  // CRC_SHADOW.CRC_SHADOW: read its word of COEF's memory now (a setup phase)
+wire rg_crc_shadow_zero;  // in: CRC_SHADOW.CRC_SHADOW: no value yet, reads 0
+wire rg_crc_ref_re;  // CRC_REF.CRC_REF: read its word of COEF's memory now (a setup phase)
+wire rg_crc_ref_zero;  // in: CRC_REF.CRC_REF: no value yet, reads 0
+wire rg_crc_scrub_re;  // CRC_SCRUB.CRC_SCRUB: read its word of COEF's memory now (a setup phase)
+wire rg_crc_scrub_zero;  // in: CRC_SCRUB.CRC_SCRUB: no value yet, reads 0
 wire [15:0] rg_scrub_passes_passes;  // in: SCRUB_PASSES.PASSES: the hardware's value
 wire rg_coef_re;  // COEF: read the word at the address
 wire [COEF_ADDR_W-1:0] rg_coef_addr;  // COEF: the word index
 wire rg_coef_we;  // COEF: write the word
 wire [REG_W-1:0] rg_coef_wdata;  // COEF: the word written
-wire [REG_W-1:0] rg_coef_rdata;  // in: COEF: the word read, the clock after coef_re_o
+wire [31:0] rg_coef_rdata;  // in: COEF: the word read, the clock after coef_re_o (its REG_W low bits; all 32 for CRC_SHADOW, CRC_REF, CRC_SCRUB)
 wire rg_coef_lock;  // in: COEF: any access refused while STATUS.BUSY
 acore_apb_regblock #(
   .APB_AW(APB_AW),
@@ -205,9 +208,12 @@ acore_apb_regblock #(
   .crc_expected_o(rg_crc_expected),
   .crc_expected_we_o(rg_crc_expected_we),
   .crc_expected_lock_i(rg_crc_expected_lock),
-  .crc_shadow_i(rg_crc_shadow),
-  .crc_ref_i(rg_crc_ref),
-  .crc_scrub_i(rg_crc_scrub),
+  .crc_shadow_re_o(rg_crc_shadow_re),
+  .crc_shadow_zero_i(rg_crc_shadow_zero),
+  .crc_ref_re_o(rg_crc_ref_re),
+  .crc_ref_zero_i(rg_crc_ref_zero),
+  .crc_scrub_re_o(rg_crc_scrub_re),
+  .crc_scrub_zero_i(rg_crc_scrub_zero),
   .scrub_passes_passes_i(rg_scrub_passes_passes),
   .coef_re_o(rg_coef_re),
   .coef_addr_o(rg_coef_addr),

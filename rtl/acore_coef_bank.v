@@ -32,7 +32,21 @@
 //
 // The top's host port belongs to the commit while it streams and to the scrubber otherwise; the
 // host never drives it (the shell's register map has no window on the active words). The shadow's
-// read port belongs to the commit while busy_o, to the register block otherwise.
+// read port belongs to the commit while busy_o, to the register block otherwise, and to the
+// register block's reads of CRC_SHADOW and CRC_SCRUB always.
+//
+// CRC_SHADOW, CRC_SCRUB and CRC_REF live in the shadow's block RAM, in the three words after the
+// image (WORDS, WORDS + 1, WORDS + 2; the RAM is 32 bits wide, which costs no block RAM where two
+// 16-bit ones hold an 18-bit word): no flops, no read multiplexer of their own. The register block
+// reads them in the setup phase like a COEF word (crc_*_re_i), also while busy: the commit's
+// shadow read of that clock waits one clock (the CRC engine keeps the word it folds, so only the
+// read itself moves), and a CRC word is never read and written in one clock: CRC_SHADOW is
+// written when the CHECK pass's CRC is ready and no CRC read is under way (the engine holds its
+// CRC), CRC_REF when a commit is applied (a clock later after a CRC read: the engine still holds
+// the CRC then), CRC_SCRUB when a scrubber pass ends; the pass's end waits for a clock without an
+// APB setup phase or shadow write, because it also reads CRC_REF's word for the scrubber's
+// comparison (the RAM's output register holds it the clock after). Until its first write after
+// reset a CRC word reads 0 (crc_*_zero_o; CRC_REF's: no commit applied yet).
 `resetall
 `default_nettype none
 
@@ -58,13 +72,20 @@ module acore_coef_bank #(
 ) (
   input  wire              clk_i,
   input  wire              rst_i,
-  // Shadow bank, register block side: write, and read (q one clock after sh_re_i) while !busy_o.
+  // Shadow bank, register block side: write, and read (q one clock after sh_re_i) while !busy_o;
+  // the CRC registers' words read (q one clock later, any time), and whether they hold a value.
   input  wire              sh_we_i,
   input  wire [ADDR_W-1:0] sh_waddr_i,
   input  wire [REG_W-1:0]  sh_wdata_i,
   input  wire              sh_re_i,
   input  wire [ADDR_W-1:0] sh_raddr_i,
-  output wire [REG_W-1:0]  sh_rdata_o,
+  input  wire              crc_shadow_re_i,
+  input  wire              crc_scrub_re_i,
+  input  wire              crc_ref_re_i,
+  output wire [31:0]       sh_rdata_o,
+  output wire              crc_shadow_zero_o,
+  output wire              crc_scrub_zero_o,
+  output wire              crc_ref_zero_o,
   // Control: commit request (one clock), CRC check and scrubbing enables, the expected CRC.
   input  wire              commit_i,
   input  wire              check_i,
@@ -77,11 +98,7 @@ module acore_coef_bank #(
   output wire              busy_o,
   output wire              bank_o,
   output wire              ref_valid_o,
-  // CRC of the shadow at the last commit, of the active image (the last applied commit's), and of
-  // the scrubber's last pass; judged passes (wrapping; moves with the pass's verdict).
-  output reg  [31:0]       crc_shadow_o,
-  output reg  [31:0]       crc_ref_o,
-  output reg  [31:0]       crc_scrub_o,
+  // Judged scrubber passes (wrapping; moves with the pass's verdict).
   output reg  [15:0]       scrub_passes_o,
   // Events, one clock each: a commit ended (applied or refused); it was refused (CRC); a scrub
   // pass found the active words changed.
@@ -135,37 +152,64 @@ module acore_coef_bank #(
   // ---- shadow bank ----
   // ra_q: the next word the commit reads; more_q: words left to read; sc_q: clocks to the next
   // read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK: for the
-  // CRC engine); pend_q: the same in STREAM (for the top).
+  // CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads a CRC
+  // word in this clock (it has the read port: the commit's read waits).
+  localparam integer RAM_AW = $clog2(WORDS + 3);
+  localparam integer A_SHADOW_I = WORDS, A_SCRUB_I = WORDS + 1, A_REF_I = WORDS + 2;
+  localparam [RAM_AW-1:0] A_SHADOW = A_SHADOW_I[RAM_AW-1:0], A_SCRUB = A_SCRUB_I[RAM_AW-1:0];
+  localparam [RAM_AW-1:0] A_REF = A_REF_I[RAM_AW-1:0];
   reg [ADDR_W-1:0] ra_q;
   reg more_q, ld_q, pend_q;
   reg [SC_W-1:0] sc_q;
-  wire [REG_W-1:0] q;
-  wire c_re = more_q & ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
-  acore_sync_ram #(.W(REG_W), .DEPTH(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
-    .clk_i(clk_i), .we_i(sh_we_i), .waddr_i(sh_waddr_i), .wdata_i(sh_wdata_i),
-    .re_i(busy_q ? c_re : sh_re_i), .raddr_i(busy_q ? ra_q : sh_raddr_i), .q_o(q));
+  wire [31:0] q;
+  wire x_rd = crc_shadow_re_i | crc_scrub_re_i | crc_ref_re_i;
+  wire c_re = more_q & ~x_rd &
+      ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
+  wire crc_end, s_pass, ref_we;
+  wire crc_we = crc_end | s_pass | ref_we;
+  wire [31:0] crc;
+  wire [31:0] ram_wdata;
+  assign ram_wdata[REG_W-1:0] = crc_we ? crc[REG_W-1:0] : sh_wdata_i;
+  generate
+    if (REG_W < 32) begin : g_hi
+      // (a coefficient word's bits above REG_W are never read: they take the CRC's, no gate)
+      assign ram_wdata[31:REG_W] = crc[31:REG_W];
+    end
+  endgenerate
+  reg [RAM_AW-1:0] sh_waddr, sh_raddr;
+  always @(*) begin
+    sh_waddr = {RAM_AW{1'b0}};
+    sh_waddr[ADDR_W-1:0] = sh_waddr_i;
+    sh_raddr = {RAM_AW{1'b0}};
+    sh_raddr[ADDR_W-1:0] = busy_q ? ra_q : sh_raddr_i;
+  end
+  // (a pass's end reads CRC_REF's word: s_pass)
+  acore_sync_ram #(.W(32), .DEPTH(WORDS + 3), .INIT_WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
+    .clk_i(clk_i), .we_i(sh_we_i | crc_we),
+    .waddr_i(crc_we ? (crc_end ? A_SHADOW : s_pass ? A_SCRUB : A_REF) : sh_waddr),
+    .wdata_i(ram_wdata), .re_i(x_rd | s_pass | (busy_q ? c_re : sh_re_i)),
+    .raddr_i(crc_shadow_re_i ? A_SHADOW : crc_scrub_re_i ? A_SCRUB :
+             (crc_ref_re_i | s_pass) ? A_REF : sh_raddr), .q_o(q));
   assign sh_rdata_o = q;
 
   // ---- CRC engine, the commit's while busy, the scrubber's otherwise ----
   wire crc_ready, crc_idle;
-  wire [31:0] crc;
-  wire s_init, s_load, s_pass;
+  wire s_init, s_load;
   wire [REG_W-1:0] s_word;
   wire [ADDR_W-1:0] s_addr;
-  // Below CRC_W = 16 the engine reads the word while it folds it: the shadow's output register
-  // holds it (the next read comes STEPS clocks later), the scrubber its copy or (RD_HOLD) the top's
-  // read-back, whose address it keeps.
+  // The engine takes the word in the clock of the load (the shadow's output register, the
+  // scrubber's copy or (RD_HOLD) the top's read-back) and keeps what it still folds.
   acore_crc32 #(.CRC_W(CRC_W), .DATA_W(REG_W)) u_crc (
     .clk_i(clk_i), .rst_i(rst_i),
     .init_i(busy_q ? (state_q == C_INIT) : s_init),
     .load_i(busy_q ? ld_q : s_load),
-    .word_i(busy_q ? q : s_word),
+    .word_i(busy_q ? q[REG_W-1:0] : s_word),
     .ready_o(crc_ready), .idle_o(crc_idle), .crc_o(crc));
 
   acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT), .HOLD(RD_HOLD)) u_scrub (
     .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
     .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
-    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .pass_o(s_pass));
+    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | sh_re_i), .pass_o(s_pass));
 
   // ---- samples in the top: accepted - emitted ----
   // One adder: + 1, - 1 (all ones) or + 0.
@@ -179,19 +223,21 @@ module acore_coef_bank #(
 
   // ---- the commit ----
   // One 32-bit comparator, registered (neq_q), for both users: the commit compares the CRC with
-  // crc_expected_i, the scrubber with crc_ref_o; sel_q records which reference neq_q was computed
-  // with (1: the commit's). The CRC stays still for the clocks its users read neq_q.
+  // crc_expected_i, the scrubber with CRC_REF's word (the RAM's output the clock after a pass's
+  // end); sel_q records which reference neq_q was computed with (1: the commit's). The CRC stays
+  // still for the clocks its users read neq_q.
   reg neq_q, sel_q;
   always @(posedge clk_i) begin
-    neq_q <= (crc != (busy_q ? crc_expected_i : crc_ref_o));
+    neq_q <= (crc != (busy_q ? crc_expected_i : q));
     sel_q <= busy_q;
   end
 
-  // fed_q: the last shadow word went into the CRC engine; crc_done_q: its CRC is in crc_shadow_o;
+  // fed_q: the last shadow word went into the CRC engine; crc_done_q: its CRC is in CRC_SHADOW's
+  // word (written in a clock without a CRC read; the engine keeps it until the commit ends);
   // cmp_q: neq_q holds its comparison with crc_expected_i.
   reg fed_q, crc_done_q, cmp_q, bank_q, ref_valid_q;
   reg [3:0] settle_q;
-  wire crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle;
+  assign crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle & ~x_rd;
   wire decide = (state_q == C_CHECK) & cmp_q & drained;
   wire refuse = decide & check_i & neq_q;
   wire apply = (state_q == C_SETTLE) & (settle_q == 4'd0);
@@ -257,21 +303,31 @@ module acore_coef_bank #(
       endcase
     end
   end
-  // The CRC registers read 0 until the first commit (and pass).
+  // The CRC registers read 0 until the first commit (and pass). An applied commit's CRC is the
+  // engine's still (it folds nothing from the CHECK pass's end to the commit's).
+  // ref_pend_q: CRC_REF's word waits a clock (its apply met a CRC read); the APB's next setup
+  // phase is a clock later still.
+  reg sh_ok_q, sc_ok_q, ref_pend_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
-      crc_shadow_o <= 32'd0;
-      crc_ref_o <= 32'd0;
+      sh_ok_q <= 1'b0;
+      sc_ok_q <= 1'b0;
+      ref_pend_q <= 1'b0;
     end else begin
-      if (crc_end) crc_shadow_o <= crc;
-      if (apply) crc_ref_o <= crc_shadow_o;
+      if (crc_end) sh_ok_q <= 1'b1;
+      if (s_pass) sc_ok_q <= 1'b1;
+      ref_pend_q <= apply & x_rd;
     end
   end
+  assign ref_we = (apply & ~x_rd) | ref_pend_q;
+  assign crc_shadow_zero_o = ~sh_ok_q;
+  assign crc_scrub_zero_o = ~sc_ok_q;
+  assign crc_ref_zero_o = ~ref_valid_q;
   // The top's port: in STREAM the word read last clock (its address registered with the read, its
   // data the shadow's output register), else the scrubber's address.
   always @(posedge clk_i) top_addr_o <= ((state_q == C_STREAM) & c_re) ? ra_q : s_addr;
   assign top_we_o = pend_q;
-  assign top_wdata_o = q;
+  assign top_wdata_o = q[REG_W-1:0];
 
   // ---- scrubber passes ----
   // The comparison of the clock after the pass is read two clocks after it (the flag three); a
@@ -290,16 +346,12 @@ module acore_coef_bank #(
       scrub_bad <= pass2_q & ~sel_q & ref_valid_q & neq_q;
     end
   end
-  // CRC_SCRUB takes the pass's CRC when it ends; the pass counter moves in the clock the verdict
-  // reaches STATUS (scrub_err_o is registered there), so a host that sees it move sees the verdict.
+  // CRC_SCRUB's word takes the pass's CRC when it ends (above); the pass counter moves in the clock
+  // the verdict reaches STATUS (scrub_err_o is registered there), so a host that sees it move sees
+  // the verdict.
   always @(posedge clk_i) begin
-    if (rst_i) begin
-      scrub_passes_o <= 16'd0;
-      crc_scrub_o <= 32'd0;
-    end else begin
-      if (s_pass) crc_scrub_o <= crc;
-      if (judged_q) scrub_passes_o <= scrub_passes_o + 16'd1;
-    end
+    if (rst_i) scrub_passes_o <= 16'd0;
+    else if (judged_q) scrub_passes_o <= scrub_passes_o + 16'd1;
   end
 
   assign bank_o = bank_q;

@@ -17,11 +17,12 @@
 //   state        START/LOAD| READ  READ  READ |LOAD| READ ...
 //   crc_load_o   __________________________/‾‾‾‾\____   HOLD = 0: the copy, when the engine is ready
 //
-// The engine keeps no copy of a narrow word (it reads the word while it folds it): with HOLD = 0
-// (the serial core, whose read-back is valid only in the clock it is served) the scrubber copies
-// the word into word_q when the engine is ready and hands it over in LOAD; with HOLD = 1 (acore_top,
-// whose read-back stays while its address does) the engine takes the read-back in the clock it is
-// served, and LOAD keeps the address until the engine is ready again. A pass takes at the least
+// The engine takes a word in the clock of its load: with HOLD = 0 (the serial core, whose
+// read-back is valid only in the clock it is served) the scrubber copies the word into word_q when
+// the engine is ready and hands it over in LOAD; with HOLD = 1 (acore_top, whose read-back stays
+// while its address does) the engine takes the read-back in the clock it is served, and LOAD keeps
+// the address until the engine is ready again. A pass's end waits while hold_i is high (the bank's
+// block RAM, where the pass's CRC goes, is the APB's in that clock). A pass takes at the least
 // WORDS max(RD_LAT + 3, 32/CRC_W + 1) clocks with HOLD = 0, WORDS (RD_LAT + 2 + 32/CRC_W) with
 // HOLD = 1 (6 x 52 = 312 for the pipelined top at CRC_W = 16); on the streaming serial core, one
 // word per sample (the core idles one clock a sample).
@@ -58,6 +59,9 @@ module acore_coef_scrub #(
   // The engine folds no word (a word taken into word_q now would change the one it folds).
   input  wire              crc_ready_i,
   input  wire              crc_idle_i,
+  // The pass may not end in this clock (the bank's memory, where CRC_SCRUB goes, is busy): END
+  // waits (the engine holds the CRC).
+  input  wire              hold_i,
   // A pass over all WORDS words ends in this clock: the engine's crc_o is its CRC.
   output wire              pass_o
 );
@@ -131,8 +135,8 @@ module acore_coef_scrub #(
             end
           end
         end
-        default: begin  // ST_END: until the last word is folded in
-          if (crc_idle_i) state_q <= ST_START;
+        default: begin  // ST_END: until the last word is folded in (and no hold)
+          if (crc_idle_i && !hold_i) state_q <= ST_START;
         end
       endcase
     end
@@ -150,7 +154,7 @@ module acore_coef_scrub #(
   endgenerate
   assign crc_init_o = (state_q == ST_START);
   assign crc_load_o = (HOLD != 0) ? (state_q == ST_READ) && served : (state_q == ST_LOAD);
-  assign pass_o = (state_q == ST_END) && crc_idle_i;
+  assign pass_o = (state_q == ST_END) && crc_idle_i && !hold_i;
 
 endmodule
 

@@ -13,10 +13,10 @@
 //   ready_o ‾‾‾‾‾\___/‾‾‾‾‾\___/‾‾‾‾‾‾‾‾‾‾‾‾‾   a word is taken when load_i && ready_o
 //   idle_o  ‾‾‾‾‾\___/‾‾‾‾‾\___/‾‾‾‾‾‾‾‾‾‾‾‾‾   (CRC_W = 8: four clocks a word)
 //
-// Below CRC_W = 16 the engine keeps no copy of the word: the source holds word_i for the
-// STEPS = 32/CRC_W clocks from the take (the sources do anyway: the shadow RAM's output register,
-// the top's read-back while the scrubber keeps its address, the scrubber's copy of the serial
-// core's), and the engine folds its chunk k in the k-th of them, the first in the clock of the take. At CRC_W >= 16 (the fast tops' shells) the word is registered at the take
+// Below CRC_W = 16 the engine folds chunk 0 of word_i in the clock of the take and keeps the
+// word's other chunks in a shift register, one chunk a clock after it (word_i need not stay: the
+// shadow RAM's read port is free for the register block's reads of the CRC registers the clock
+// after the take). At CRC_W >= 16 (the fast tops' shells) the word is registered at the take
 // and its chunk's part of the fold is registered next, so the CRC register takes each chunk two
 // clocks later than the narrow form, and each clock's logic is half of the wide XOR network. A new
 // word is taken once the last chunk of the word before is under way: one word a clock at CRC_W = 32,
@@ -133,17 +133,18 @@ module acore_crc32 #(
       end
       assign busy = sv_q | dv_q;
     end else begin : g_direct
-      // Narrow chunks: one fold a clock is shallow enough, straight from the source's word (the
-      // word zero-extended: chunks above DATA_W are constants).
-      wire [STEP_W-1:0] k = run_q ? idx : {STEP_W{1'b0}};
+      // Narrow chunks: one fold a clock is shallow enough, chunk 0 straight from the source's
+      // word, the others from the shift register (the word zero-extended: the bits above DATA_W
+      // shift in as zeros).
+      localparam integer R_W = (DATA_W > CRC_W) ? DATA_W - CRC_W : 1;
       wire [31:0] wide = {{(32-DATA_W){1'b0}}, word_i};
-      // (the chunk chosen from constant offsets: no index arithmetic, no multiplier for synthesis)
-      reg [CRC_W-1:0] chunk;
-      always @* begin : p_chunk
-        integer j;
-        chunk = wide[CRC_W-1:0];
-        for (j = 1; j < STEPS; j = j + 1) if (k == j[STEP_W-1:0]) chunk = wide[j*CRC_W +: CRC_W];
-      end
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [31:0] wide_rest = wide >> CRC_W;
+      reg [R_W-1:0] rest_q;
+      wire [R_W+31:0] rest_x = {32'd0, rest_q};
+      /* verilator lint_on UNUSEDSIGNAL */
+      always @(posedge clk_i) rest_q <= run_q ? rest_x[CRC_W +: R_W] : wide_rest[R_W-1:0];
+      wire [CRC_W-1:0] chunk = run_q ? rest_x[CRC_W-1:0] : wide[CRC_W-1:0];
       always @(posedge clk_i) begin
         if (init_i) n_q <= 32'd0;
         else if (step) n_q <= ~fold(~n_q, chunk);

@@ -9,7 +9,8 @@
 //                           users never read and write in one clock: the register block reads in
 //                           the APB setup phase and writes in the access phase, the commit reads
 //                           while writes are refused)
-// INIT_FILE ($readmemh image) sets the power-up contents; the words are not reset.
+// INIT_FILE ($readmemh image) sets the power-up contents of words 0..INIT_WORDS-1 (the image's
+// length: the shadow's words beyond it hold the shell's CRC registers); the words are not reset.
 `resetall
 `default_nettype none
 
@@ -17,6 +18,8 @@ module acore_sync_ram #(
   parameter integer W = 18,
   parameter integer DEPTH = 52,
   parameter INIT_FILE = "",
+  // Words the image holds (1..DEPTH).
+  parameter integer INIT_WORDS = DEPTH,
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(DEPTH)
 ) (
@@ -36,6 +39,9 @@ module acore_sync_ram #(
   acore_check #(.OK(ADDR_W == $clog2(DEPTH)), .VALUE(ADDR_W),
     .MSG("illegal parameter: ADDR_W is derived (clog2(DEPTH)), do not override"))
     ADDR_W_is_derived ();
+  acore_check #(.OK(INIT_WORDS >= 1 && INIT_WORDS <= DEPTH), .VALUE(INIT_WORDS),
+    .MSG("illegal parameter: INIT_WORDS must be 1..DEPTH"))
+    INIT_WORDS_must_be_1_to_DEPTH ();
 
   // no_rw_check: Yosys need not keep the old word on a read and write of one address in one
   // clock (the block RAM leaves it undefined): without it the emulation costs a register of the
@@ -44,7 +50,7 @@ module acore_sync_ram #(
   reg [W-1:0] mem_q [0:DEPTH-1];
 
   initial begin
-    if (INIT_FILE != "") $readmemh(INIT_FILE, mem_q, 0, DEPTH - 1);
+    if (INIT_FILE != "") $readmemh(INIT_FILE, mem_q, 0, INIT_WORDS - 1);
   end
 
   always @(posedge clk_i) begin

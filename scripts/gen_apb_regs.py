@@ -106,6 +106,17 @@ KINDS = {
             "register in the same clock wins); TEXT says who"
         ),
     ),
+    "mem": (
+        "mem WINDOW",
+        (
+            "the owner keeps the RO field above (bits 31:0, its register's only field) in a word "
+            "of WINDOW's memory beyond the window's own: the block reads it through the window's "
+            "read port (output rg_<reg>_<field>_re, high in a setup phase at its address: the "
+            "owner reads that word instead; the window's read data is then 32 bits wide) and "
+            "the access phase returns it, zero wait states; input rg_<reg>_<field>_zero: the "
+            "word holds no value yet, the register reads 0"
+        ),
+    ),
     "clears": (
         "clears REG",
         "the W1 field above clears every W1C field of REG (no port of its own)",
@@ -147,6 +158,7 @@ class Field:
         self.range = None  # (lo, hi, word): lo/hi an int or a parameter name
         self.lock = None  # when the owner refuses it (text)
         self.hw = None  # who else writes it (text): the hardware write port
+        self.mem = None  # the window whose memory keeps it (a name)
         self.clears = None  # the register whose W1C fields a W1 field clears
         self.frac = None
         self.reg = None
@@ -223,6 +235,10 @@ class Block:
 
     def windows(self):
         return [r for r in self.regs if r.kind == "window"]
+
+    def mems(self, w):
+        """The RO fields window w's memory keeps."""
+        return [f for r in self.regs for f in r.fields if f.mem == w.name]
 
     def fields(self):
         return [f for r in self.regs for f in r.fields]
@@ -456,6 +472,14 @@ def parse(root, rel):
         elif kind == "hw":
             need(1, "text")
             attr_field(("RW",), "only an RW field has a hardware write port").hw = rest
+        elif kind == "mem":
+            need(1)
+            f = attr_field(("RO",), "only an RO field is kept in a window's memory")
+            if f.reg.kind != "reg" or f.reg.fields != [f] or (f.msb, f.lsb) != (31, 0):
+                raise DescError(
+                    f"{where}: mem of field {f.name}: a register's only field, bits 31:0"
+                )
+            f.mem = args[0]
         elif kind == "clears":
             need(1)
             attr_field(("W1",), "only a W1 field clears").clears = args[0]
@@ -514,6 +538,10 @@ def validate(blk):
         if r.kind == "window" and r.size is None:
             raise DescError(f"{r.where}: window {r.name} has no 'size' line ({KINDS['size'][0]})")
         for f in r.fields:
+            if f.mem is not None and not any(
+                x.kind == "window" and x.name == f.mem for x in blk.regs
+            ):
+                raise DescError(f"{f.where}: field {f.name}: mem {f.mem} is not a window")
             if f.clears is not None:
                 target = next((x for x in blk.regs if x.name == f.clears), None)
                 if target is None or not any(x.access == "W1C" for x in target.fields):
@@ -586,6 +614,7 @@ def owner_ports(blk):
         if r.kind == "window":
             w = r.name.lower()
             fw = r.fields[0].vwidth()
+            kept = blk.mems(r)
             aw = f"{r.name}_ADDR_W"
             out += [
                 (
@@ -614,8 +643,15 @@ def owner_ports(blk):
                     f"{w}_rdata_i",
                     f"rg_{w}_rdata",
                     "input",
-                    f"[{fw}-1:0]",
-                    f"{r.name}: the word read, the clock after {w}_re_o",
+                    "[31:0]" if kept else f"[{fw}-1:0]",
+                    f"{r.name}: the word read, the clock after {w}_re_o"
+                    + (
+                        f" (its {fw} low bits; all 32 for "
+                        + ", ".join(f"{f.reg.name}" for f in kept)
+                        + ")"
+                        if kept
+                        else ""
+                    ),
                 ),
             ]
             if r.lock:
@@ -659,6 +695,19 @@ def owner_ports(blk):
                 )
             elif f.access == "W1" and f.clears is None:
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: a write of 1, this clock"))
+            elif f.mem:
+                out.append(
+                    (
+                        f"{s}_re_o",
+                        f"rg_{s}_re",
+                        "output",
+                        "",
+                        f"{desc}: read its word of {f.mem}'s memory now (a setup phase)",
+                    )
+                )
+                out.append(
+                    (f"{s}_zero_i", f"rg_{s}_zero", "input", "", f"{desc}: no value yet, reads 0")
+                )
             elif f.live():
                 out.append((f"{s}_i", f"rg_{s}", "input", d, f"{desc}: the hardware's value"))
             if f.lock:
@@ -915,7 +964,7 @@ def gen_regblock(blk):
         f"  localparam [63:0] REGS_WR = 64'h{wr:016X};\n"
     )
     for f in blk.fields():
-        if f.reg.kind == "reg":
+        if f.reg.kind == "reg" and not f.mem:
             o.append(f"  localparam integer {f.lp()} = {f.lsb};\n")
     for w in wins:
         o.append(
@@ -1125,7 +1174,7 @@ def gen_regblock(blk):
             continue
         items = []
         for f in r.fields:
-            if f.access == "W1":
+            if f.access == "W1" or f.mem:
                 continue
             src = f"{f.port()}_i" if f.live() else f"{f.port()}_q"
             if f.width() == 1:
@@ -1146,6 +1195,18 @@ def gen_regblock(blk):
             + "  end\n"
         )
     o.append("  wire [31:0] rd_d =\n      " + (" |\n      ".join(words) or "32'd0") + ";\n")
+    for w in wins:
+        kept = blk.mems(w)
+        if not kept:
+            continue
+        lw = w.name.lower()
+        o.append(
+            f"  // Registers kept in {w.name}'s memory: read through its port (their words the\n"
+            "  // owner's), 0 while the owner has no value for them.\n"
+            f"  wire mem_{lw}_sel = in_regs & ("
+            + " | ".join(f"(rs_{f.reg.name.lower()} & ~{f.port()}_zero_i)" for f in kept)
+            + ");\n"
+        )
     # Setup flops.
     o.append(
         "\n  // Setup phase: the answer and which register an error-free write will change,\n"
@@ -1161,6 +1222,7 @@ def gen_regblock(blk):
     flops = (
         ["err_q"]
         + [f"win_{w.name.lower()}_q" for w in wins]
+        + [f"mem_{w.name.lower()}_q" for w in wins if blk.mems(w)]
         + [f"w_{r.name.lower()}_q" for r in wregs]
         + [f"w_{w.name.lower()}_q" for w in wins]
     )
@@ -1180,7 +1242,13 @@ def gen_regblock(blk):
     )
     for w in wins:
         lw = w.name.lower()
-        o.append(f"      win_{lw}_q <= ok & ~pwrite_i & in_{lw};\n")
+        if blk.mems(w):
+            o.append(
+                f"      win_{lw}_q <= ok & ~pwrite_i & (in_{lw} | mem_{lw}_sel);\n"
+                f"      mem_{lw}_q <= ok_rd & mem_{lw}_sel;\n"
+            )
+        else:
+            o.append(f"      win_{lw}_q <= ok & ~pwrite_i & in_{lw};\n")
     for r in wregs:
         o.append(f"      w_{r.name.lower()}_q <= ok_wr & in_regs & ws_{r.name.lower()};\n")
     for w in wins:
@@ -1193,6 +1261,10 @@ def gen_regblock(blk):
     for w in wins:
         fw = w.fields[0].vwidth()
         lw = w.name.lower()
+        if blk.mems(w):
+            # (the window's words: their field's low bits; a kept register's: all 32)
+            rd += f" | ({{32{{win_{lw}_q}}}} & ~({{32{{~mem_{lw}_q}}}} << {fw}) & {lw}_rdata_i)"
+            continue
         pad = f"{{{{(32-{fw}){{1'b0}}}}, {lw}_rdata_i}}" if fw != "32" else f"{lw}_rdata_i"
         rd += f" | ({{32{{win_{lw}_q}}}} & {pad})"
     o.append(f"  assign prdata_o = {rd};\n  assign pslverr_o = err_q;\n")
@@ -1207,6 +1279,12 @@ def gen_regblock(blk):
             f"  assign {lw}_we_o = access & w_{lw}_q;\n"
             f"  assign {lw}_wdata_o = pwdata_i[{fw}-1:0];\n"
         )
+    for f in blk.fields():
+        if f.mem:
+            o.append(
+                f"  assign {f.port()}_re_o = setup & ~pwrite_i & in_regs & "
+                f"rs_{f.reg.name.lower()};\n"
+            )
     for r in wregs:
         o.append(f"  wire wr_{r.name.lower()} = w_{r.name.lower()}_q;\n")
     clears = {}
@@ -1390,6 +1468,8 @@ def field_meaning(f):
         )
     if f.hw:
         text += f" Also written by {f.hw} (an APB write in the same clock wins)."
+    if f.mem:
+        text += f" Kept in a word of the {f.mem} window's memory (read with zero wait states)."
     return text
 
 

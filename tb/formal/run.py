@@ -388,7 +388,6 @@ def stream_setup(line, words=None):
             (r + "tap_commit", p + "rg_ctrl_commit"),
             (r + "tap_decide", p + "u_bank.decide"),
             (r + "tap_check", p + "u_regs.ctrl_crc_check_q"),
-            (r + "tap_crc_shadow", p + "u_bank.crc_shadow_o"),
             (r + "tap_crc_expected", p + "u_regs.crc_expected_q"),
             (r + "tap_inflight", p + "u_bank.inflight_q"),
             (r + "tap_scrub", p + "u_regs.ctrl_scrub_q"),
