@@ -21,6 +21,7 @@ module acore_delay #(
   generate
     if (DEPTH == 0) begin : g_wire
       assign q_o = d_i;
+      wire unused_wire = ^{clk_i, en_i};  // no stage to clock
     end else begin : g_regs
       // One register per stage, generated (a for loop inside one always block would hit the
       // simulator's loop-unroll limit for the deep sideband delays of high-degree corrections).

@@ -202,13 +202,26 @@ function integer acore_fold_lean(input integer f_fold);
   acore_fold_lean = (f_fold >= 16) ? 1 : 0;
 endfunction
 
-// acore_fold_mul: bits of b a clock (B_W over F clocks), and the latency from start_i to p_o.
+// acore_fold_mul: bits of b a clock (B_W over F clocks), the form, the latency from start_i to p_o
+// and the clock init_i is read.
 function integer acore_fold_mul_b(input integer f_b_w, input integer f_f);
   acore_fold_mul_b = (f_b_w + f_f - 1) / f_f;
 endfunction
+// 1: two bits of b a clock accumulated in place (the addend one clock before the first group),
+// done in time for the next product: the accumulator is cleared at start_i, takes the addend on
+// clock 1 and the ceil(B_W / 2) groups on clocks 2 on, and holds the result until the next start.
+function integer acore_fold_mul_seq(input integer f_b_w, input integer f_f);
+  acore_fold_mul_seq = (f_f > 1 && acore_fold_mul_b(f_b_w, f_f) == 2 &&
+                        (f_b_w + 1) / 2 + 2 <= f_f) ? 1 : 0;
+endfunction
 function integer acore_fold_mul_latency(input integer f_b_w, input integer f_f);
   acore_fold_mul_latency = (f_f == 1) ? acore_shift_add_mul_latency(f_b_w) + 1 :
+                           (acore_fold_mul_seq(f_b_w, f_f) != 0) ? f_f :
                                         $clog2(acore_fold_mul_b(f_b_w, f_f)) + 1 + f_f;
+endfunction
+function integer acore_fold_mul_init_at(input integer f_b_w, input integer f_f);
+  acore_fold_mul_init_at = (acore_fold_mul_seq(f_b_w, f_f) != 0) ? 1 :
+                           acore_fold_mul_latency(f_b_w, f_f) - f_f;
 endfunction
 
 // acore_fold_scaler: t = d - O, the folded multiplier (rounding constant as its addend), saturate.
@@ -219,11 +232,11 @@ function integer acore_fold_scaler_latency(input integer f_reg_w, input integer 
 endfunction
 
 // acore_fold_poly: 1 when a_n and the first Horner step's word share one read port. An item reads
-// a_n at its start and the first step's word INIT_AT + 1 clocks later (INIT_AT = the multiplier's
-// latency - F: when it adds the word), and items come F clocks apart at least, so no two of these
-// reads ever fall on one clock when INIT_AT + 1 < F (from F = 8 on at S_W = 18).
+// a_n at its start and the first step's word INIT_AT + 1 clocks later (INIT_AT: when the
+// multiplier adds the word), and items come F clocks apart at least, so no two of these reads ever
+// fall on one clock when INIT_AT + 1 < F (from F = 8 on at S_W = 18).
 function integer acore_fold_poly_share(input integer f_s_w, input integer f_f);
-  acore_fold_poly_share = (acore_fold_mul_latency(f_s_w, f_f) - f_f + 1 < f_f) ? 1 : 0;
+  acore_fold_poly_share = (acore_fold_mul_init_at(f_s_w, f_f) + 1 < f_f) ? 1 : 0;
 endfunction
 // acore_fold_poly: its coefficient read ports (a_n, then one per Horner step; a_n and the first
 // step's on one with acore_fold_poly_share).

@@ -20,14 +20,14 @@
 //   LATENCY = L + 1 (F = 1) or L + 1 + F (F > 1) clocks from start_i to p_o (valid one clock);
 //   init_i is read INIT_AT = LATENCY - F clocks after start_i.
 //
-// F > 1 with B = 2 and its NG = ceil(B_W / 2) groups done L + NG <= F clocks after start_i (the
-// drive's folds: F = 16, 18 bits of b): no partial-product or tree registers. O and X are loaded
-// at start_i and wait L clocks; then each clock adds both gated partial products of the top group
-// straight into the accumulator (acc = (first ? init : acc) + (O or -O) + O >>> 1), O shifts by 2
-// and X by 2 (zeros in). Once X is empty the accumulator adds nothing and holds the result until
-// LATENCY; the next start comes F clocks later, after the last group (L + NG <= F), so one O, one
-// X and one accumulator serve every product. Same schedule (LATENCY, INIT_AT) and same sum as the
-// group scheme, about a third of its flops.
+// F > 1 with B = 2 and its NG = ceil(B_W / 2) groups done NG + 2 <= F clocks after start_i (the
+// drive's folds: F = 16, 18 bits of b; acore_fold_mul_seq): no partial-product or tree registers.
+// Clock 0 (start_i) loads O and X and clears the accumulator (a synchronous clear: no multiplexer
+// in front of the adder); clock 1 adds init_i in the second partial product's place while O and X
+// wait (INIT_AT = 1); clocks 2 .. NG + 1 each add both gated partial products of the top group
+// straight into the accumulator (acc = acc + (O or -O) + O >>> 1), O shifts by 2 and X by 2
+// (zeros in). Once X is empty the accumulator adds nothing and holds the result until the next
+// start_i, F clocks later: LATENCY = F. One O, one X and one accumulator serve every product.
 // A new product may start every F clocks. Sums are modulo 2^P_W (harmless while the exact result
 // fits P_W bits, which the elaboration check enforces). No reset: data only; start_i must be low
 // (or its product ignored) until the first real operand.
@@ -72,7 +72,7 @@ module acore_fold_mul #(
   // Derived, do not override: bits per clock, latency, the clock init_i is read.
   localparam integer B = acore_fold_mul_b(B_W, F);
   localparam integer LATENCY = acore_fold_mul_latency(B_W, F);
-  localparam integer INIT_AT = LATENCY - F;
+  localparam integer INIT_AT = acore_fold_mul_init_at(B_W, F);
   // Bits the exact product can need (as acore_shift_add_mul), plus one for init.
   localparam integer NEED_W = A_W + ((B_W > RSHIFT) ? (B_W - RSHIFT) : 0) + 1;
 
@@ -81,9 +81,8 @@ module acore_fold_mul #(
     .MSG("illegal parameter: acore_fold_mul: F must be >= 1"))
     F_must_be_at_least_1 ();
   // The accumulate-in-place form (see the header): two bits a clock, all groups done in time.
-  localparam integer L = (B > 1) ? $clog2(B) : 0;
   localparam integer NG = (B_W + 1) / 2;
-  localparam integer SEQ = (F > 1 && MULT == 0 && B == 2 && L + NG <= F) ? 1 : 0;
+  localparam integer SEQ = (MULT == 0) ? acore_fold_mul_seq(B_W, F) : 0;
 
   acore_check #(.OK(F == 1 || B >= 2), .VALUE(B_W),
     .MSG("illegal parameter: acore_fold_mul: B_W over F clocks must leave at least 2 bits a clock"))
@@ -125,7 +124,7 @@ module acore_fold_mul #(
       wire unused_start = ^{start_i, o0};  // (o0: the folded forms')
     end else if (MULT != 0) begin : g_hw
       // The product of the operands of start_i, floored, INIT_AT clocks later (the multiplier runs
-      // every clock; only the start clock's product is used), then the addend, then F - 1 clocks.
+      // every clock; only the start clock's product is used), then the addend, then to LATENCY.
       wire [P_W-1:0] prod;
       acore_hw_mul #(
         .A_W(A_W), .B_W(B_W), .B_SIGNED(B_SIGNED), .RSHIFT(RSHIFT), .P_W(P_W), .DEPTH(INIT_AT)
@@ -133,7 +132,7 @@ module acore_fold_mul #(
         .clk_i(clk_i), .en_i(1'b1), .a_i(a_i), .b_i(b_i), .p_o(prod));
       reg [P_W-1:0] sum_q;
       always @(posedge clk_i) sum_q <= prod + init_ext;
-      acore_delay #(.W(P_W), .DEPTH(F - 1)) u_dsum (
+      acore_delay #(.W(P_W), .DEPTH(LATENCY - INIT_AT - 1)) u_dsum (
         .clk_i(clk_i), .en_i(1'b1), .d_i(sum_q), .q_o(p_o));
       wire unused_start = ^{start_i, o0};  // (o0: the folded forms')
     end else if (SEQ != 0) begin : g_seq
@@ -145,22 +144,11 @@ module acore_fold_mul #(
       end else begin : g_nopad
         assign b_pad = b_i;
       end
-      // start_i delayed 1..L + 1 clocks: O and X wait while any of the first L is set (the
-      // previous product's result stays in the accumulator until then); the last one marks the
-      // first group, which starts from the addend.
-      reg [L:0] sd_q;
-      if (L > 0) begin : g_sd
-        always @(posedge clk_i) sd_q <= {sd_q[L-1:0], start_i};
-      end else begin : g_sd0
-        always @(posedge clk_i) sd_q <= start_i;
-      end
-      wire first = sd_q[L];
-      wire hold;
-      if (L > 0) begin : g_hold
-        assign hold = |sd_q[L-1:0];
-      end else begin : g_nohold
-        assign hold = 1'b0;
-      end
+      // start_i delayed 1 and 2 clocks: the addend's clock (O and X wait), the first group's.
+      reg [1:0] sd_q;
+      always @(posedge clk_i) sd_q <= {sd_q[0], start_i};
+      wire add_init = sd_q[0];
+      wire first = sd_q[1];
       reg [O_W-1:0] o_q;
       reg [X_W-1:0] x_q;
       wire signed [O_W-1:0] o_s = o_q;
@@ -170,22 +158,33 @@ module acore_fold_mul #(
         if (start_i) begin
           o_q <= o0;
           x_q <= b_pad;
-        end else if (!hold) begin
+        end else if (!add_init) begin
           o_q <= o_next;
           x_q <= {x_q[X_W-3:0], 2'b00};
         end
       end
-      // The first group's top bit of a signed b weighs -2^(B_W-1): ~O plus a carry-in.
+      // The two terms of a clock, each as wide as its operands plus a sign bit for their sum: the
+      // first group's top bit of a signed b weighs -2^(B_W-1) (~O plus a carry-in); the addend
+      // takes the second term's place on its clock (the first term is 0 then).
+      localparam integer T_W = ((O_W > INIT_W) ? O_W : INIT_W) + 1;
       wire neg = (B_SIGNED != 0) & first & x_q[X_W-1];
-      wire [O_W-1:0] pp0_o = x_q[X_W-1] ? (neg ? ~o_q : o_q) : {O_W{1'b0}};
-      wire [O_W-1:0] pp1_o = x_q[X_W-2] ? o_h : {O_W{1'b0}};
-      wire [P_W-1:0] pp0 = {{(P_W-O_W){pp0_o[O_W-1]}}, pp0_o};
-      wire [P_W-1:0] pp1 = {{(P_W-O_W){pp1_o[O_W-1]}}, pp1_o};
-      wire [P_W:0] s0 = {pp0, 1'b1} + {pp1, neg};
-      reg [P_W-1:0] acc_q;
+      wire take0 = x_q[X_W-1] & ~add_init;
+      wire [O_W-1:0] pp0_o = take0 ? (neg ? ~o_q : o_q) : {O_W{1'b0}};
+      wire [T_W-1:0] pp0 = {{(T_W-O_W){pp0_o[O_W-1]}}, pp0_o};
+      wire [T_W-1:0] pp1_o = {{(T_W-O_W){o_h[O_W-1]}}, o_h};
+      wire [T_W-1:0] init_t = {{(T_W-INIT_W){init_i[INIT_W-1]}}, init_i};
+      wire [T_W-1:0] pp1 = add_init ? init_t : (x_q[X_W-2] ? pp1_o : {T_W{1'b0}});
+      wire [T_W:0] s0 = {pp0, 1'b1} + {pp1, neg};
+      // The accumulator as wide as init + product can be (sums modulo 2^ACC_W, exact at the end),
+      // sign-extended to P_W.
+      localparam integer ACC_W = (NEED_W > T_W) ? NEED_W : T_W;
+      wire [ACC_W-1:0] s0_ext = {{(ACC_W-T_W){s0[T_W]}}, s0[T_W:1]};
+      reg [ACC_W-1:0] acc_q;
       always @(posedge clk_i)
-        if (!hold) acc_q <= (first ? init_ext : acc_q) + s0[P_W:1];
-      assign p_o = acc_q;
+        if (start_i) acc_q <= {ACC_W{1'b0}};
+        else acc_q <= acc_q + s0_ext;
+      assign p_o = {{(P_W-ACC_W){acc_q[ACC_W-1]}}, acc_q};
+      wire unused_init_ext = ^init_ext;  // (the other forms')
     end else begin : g_fold
       localparam integer X_W = F * B;
       localparam integer PAD = X_W - B_W;

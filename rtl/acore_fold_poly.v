@@ -78,7 +78,7 @@ module acore_fold_poly #(
   localparam integer U_SH = S_F - XCENTER;
   localparam integer P_W = ACC_W + ((S_W > U_SH) ? (S_W - U_SH) : 0) + 2;  // product + addend
   localparam integer ML = acore_fold_mul_latency(S_W, F);
-  localparam integer INIT_AT = ML - F;
+  localparam integer INIT_AT = acore_fold_mul_init_at(S_W, F);
   localparam integer STEP = ML + 1;
   localparam integer LATENCY = acore_fold_poly_latency(DEGREE, S_W, F);
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator

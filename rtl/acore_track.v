@@ -474,7 +474,11 @@ module acore_track #(
     localparam integer PROD_END = DE_W + 1;            // the product's last step
     localparam [S_W-1:0] S_LOOP_END = LOOP_END[S_W-1:0], S_PEND = PROD_END[S_W-1:0];
     localparam [S_W-1:0] S_LF = LEAD_F[S_W-1:0], S_LH = S_LF + 1'b1;
-    localparam integer R_W = 5;                        // shifts left: 0 .. K_MAX + 1 <= 16
+    // Shifts left: 0 .. K_MAX + 1, and SB itself (4 bits at the board's widths, where the code is
+    // at most 12).
+    localparam integer R_K = $clog2(K_MAX + 2);
+    localparam integer R_S = $clog2(SB + 1);
+    localparam integer R_W = (R_K > R_S) ? R_K : R_S;
     localparam [R_W-1:0] R_SB = SB[R_W-1:0];
     // D's bits in the order the product takes them, two zeros where phi and half are added.
     localparam integer LO_M = (1 << LEAD_F) - 1;
@@ -594,8 +598,13 @@ module acore_track #(
     end
     // The schedule's counters and next operations (no reset: each sample sets them first).
     wire [S_W-1:0] s_n = (c4 || r3) ? {S_W{1'b0}} : (pl || ph) ? s_q + 1'b1 : s_q;
-    wire [R_W-1:0] kx = started_q ? {1'b0, k_q} : {R_W{1'b0}};
-    wire [R_W-1:0] rem_n = c4 ? kx : at_x ? {1'b0, k_q} + 1'b1 :
+    // The code in R_W bits (k_q <= K_MAX < 2^R_W: the bits dropped are zero).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [8:0] k9 = {5'b00000, k_q};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [R_W-1:0] k_r = k9[R_W-1:0];
+    wire [R_W-1:0] kx = started_q ? k_r : {R_W{1'b0}};
+    wire [R_W-1:0] rem_n = c4 ? kx : at_x ? k_r + 1'b1 :
                            shb ? rem_q - R_SB : sh1 ? rem_q - 1'b1 : rem_q;
     wire pl_n = c4 || (pl && !eq_lend);
     wire ph_n = r3 || (ph && !eq_pend);

@@ -28,14 +28,19 @@ namespace {
 struct MulParams {
   int a_w, b_w, b_signed, rshift, init_w, p_w, f;
   int b() const { return (b_w + f - 1) / f; }
-  // acore_fold_mul: L = clog2(B) tree levels; LATENCY = L + 1 + F; the addend is read F clocks
-  // before the result.
+  // acore_fold_mul: two bits of b a clock accumulated in place when its ceil(B_W / 2) groups, the
+  // clock that clears the accumulator and the addend's clock fit in F: the result held from then
+  // to the next start (LATENCY = F), the addend read one clock after the start. Otherwise the group
+  // scheme: L = clog2(B) tree levels, LATENCY = L + 1 + F, the addend read F clocks before the
+  // result.
+  bool in_place() const { return b() == 2 && (b_w + 1) / 2 + 2 <= f; }
   int latency() const {
+    if (in_place()) return f;
     int l = 0;
     while ((1 << l) < b()) ++l;
     return l + 1 + f;
   }
-  int init_at() const { return latency() - f; }
+  int init_at() const { return in_place() ? 1 : latency() - f; }
 };
 
 // The registry's parameter sets (rtl/configs.txt lines fold_mul_*, ACORE_FOLD_MUL_<SET>_<PARAM>).
