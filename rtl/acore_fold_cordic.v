@@ -137,8 +137,13 @@ module acore_fold_cordic #(
   wire [XY_W-1:0] x0 = {{2{x_i[IN_W-1]}}, x_i, {G{1'b0}}};
   wire [XY_W-1:0] y0 = {{2{y_i[IN_W-1]}}, y_i, {G{1'b0}}};
   wire neg0 = x_i[IN_W-1];
-  wire [XY_W-1:0] x0_abs = neg0 ? ({XY_W{1'b0}} - x0) : x0;
-  wire [XY_W-1:0] y_pre_d = neg0 ? ({XY_W{1'b0}} - y0) : y0;
+  // -v = ~(v - 1): one carry chain (v plus neg0 in every bit, i.e. v - neg0) and an exclusive or
+  // that merges into the LUT reading it (a register's choice), where neg0 ? 0 - v : v costs a
+  // subtractor and a choice.
+  wire [XY_W-1:0] x0_dec = x0 + {XY_W{neg0}};
+  wire [XY_W-1:0] y0_dec = y0 + {XY_W{neg0}};
+  wire [XY_W-1:0] x0_abs = x0_dec ^ {XY_W{neg0}};
+  wire [XY_W-1:0] y_pre_d = y0_dec ^ {XY_W{neg0}};
   reg [XY_W-2:0] x_pre_q;
   reg [XY_W-1:0] y_pre_q;
   reg [Z_W-1:0]  z_pre_q;
