@@ -161,10 +161,18 @@ endfunction
 // Stage 4 by CORRECTION: acore_correction_latency (rtl/acore_modes.vh), each mode's function above.
 
 // acore_cordic: normalization and pre-rotation (5 clocks with NORM, else 1), K stages (two clocks
-// each with SPLIT), the output rounding. acore_fold_cordic has the same latency (NORM = SPLIT = 0).
+// each with SPLIT), the output rounding. acore_fold_cordic: acore_fold_cordic_latency.
 function integer acore_cordic_latency(input integer f_k, input integer f_norm,
                                       input integer f_split);
   acore_cordic_latency = ((f_norm != 0) ? 5 : 1) + f_k * ((f_split != 0) ? 2 : 1) + 1;
+endfunction
+// acore_fold_cordic: the split form (two clocks an iteration, one barrel shifter) where a vector's
+// N clocks hold 2K, and its latency (acore_cordic's, with SPLIT in that form).
+function integer acore_fold_cordic_split(input integer f_k, input integer f_n);
+  acore_fold_cordic_split = (f_n >= 2 * f_k) ? 1 : 0;
+endfunction
+function integer acore_fold_cordic_latency(input integer f_k, input integer f_n);
+  acore_fold_cordic_latency = acore_cordic_latency(f_k, 0, acore_fold_cordic_split(f_k, f_n));
 endfunction
 
 // acore_cordic_rotate: one clock a stage.
@@ -270,7 +278,7 @@ function integer acore_fold_datapath_latency(input integer f_reg_w, input intege
                                              input integer f_correction, input integer f_degree,
                                              input integer f_k, input integer f_fold);
   acore_fold_datapath_latency = acore_fold_c(f_reg_w, f_s_w, f_correction, f_degree, f_fold) +
-                                acore_cordic_latency(f_k, 0, 0);
+                                acore_fold_cordic_latency(f_k, f_fold);
 endfunction
 
 // acore_fold_cordic: stage units (N iterations each), and the width of an iteration index.

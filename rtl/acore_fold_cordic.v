@@ -7,7 +7,17 @@
 //   iteration i, s = (Y < 0):  X += (Y >>> i) ^ {s} + s,  Y += (X >>> i) ^ {~s} + ~s,
 //                              Z += atan_i ^ {s} + s                   (1 clock each)
 //   angle = round_shr(Z, Z_W - ANGLE_W);  mag = X_K >>> G               (1 clock)
-//   LATENCY = K + 2, as acore_cordic.
+//   LATENCY = acore_fold_cordic_latency(K, N): K + 2 as acore_cordic, 2K + 2 in the split form.
+//
+// The rounding's half LSB is added to Z's start value (sums modulo 2^Z_W: the same bits), so the
+// output takes Z's top bits with no adder.
+//
+// Split form (acore_fold_cordic_split: N >= 2K, one unit with clocks to spare): an iteration takes
+// two clocks and the unit one barrel shifter instead of two. Phase A (clock 2i after the
+// pre-rotation) shifts Y into a register T, already conditionally inverted:
+// T = (Y >>> i) ^ {s}; phase B shifts X through the same barrel and updates X += T + s,
+// Y += (X >>> i) ^ {~s} + ~s, Z += atan_i ^ {s} + s. One inversion flag (s in phase A, ~s in B),
+// registered, shares the barrel's last LUT, which then feeds both T and the Y adder.
 //
 // Unit u at phase p (p = 0 the clock a vector arrives from unit u-1 or the pre-rotation) adds the
 // operand shifted by uN + p and atan word uN + p: at p = 0 it reads the previous unit's registers,
@@ -68,24 +78,32 @@ module acore_fold_cordic #(
   // Derived, do not override.
   localparam integer PW = $clog2(N);                 // phase counter width
   localparam integer U = acore_fold_cordic_units(K, N);
-  localparam integer LATENCY = acore_cordic_latency(K, 0, 0);
+  localparam integer LATENCY = acore_fold_cordic_latency(K, N);
+  localparam integer SPLIT = acore_fold_cordic_split(K, N);
   localparam integer DROP = Z_W - ANGLE_W;
+  // Half an output LSB (the rounding), in Z's start value.
+  localparam [Z_W-1:0] Z_RND = (DROP > 0) ? ({{(Z_W-1){1'b0}}, 1'b1} << (DROP - 1)) : {Z_W{1'b0}};
   localparam integer AT_IDX_W = acore_fold_cordic_idx_w(K, N);
   localparam integer WORD_BUS_W = U * AT_W;
 
+  // The barrel's stage order: from N = 8 on the widest shift first (fewer LUT4s after mapping: 25
+  // fewer at N = 8 and 16, 8 at N = 32), below it the narrowest (5 fewer at N = 4).
+  localparam integer SH_DESC = (N >= 8) ? 1 : 0;
   // v shifted right by sh (arithmetic if sgn): log2(N) stages of 2:1, stage k shifting by 2^k.
   function automatic [XY_W-1:0] barrel(input [XY_W-1:0] v, input [PW-1:0] sh, input sgn);
-    integer k;
+    integer k, j;
     reg [XY_W-1:0] r;
     begin
       r = v;
       // Separate assignments: in one conditional expression the unsigned branch would make the
       // arithmetic shift a logical one.
-      for (k = 0; k < PW; k = k + 1)
-        if (sh[k]) begin
-          if (sgn) r = $signed(r) >>> (1 << k);
-          else r = r >> (1 << k);
+      for (k = 0; k < PW; k = k + 1) begin
+        j = (SH_DESC != 0) ? PW - 1 - k : k;
+        if (sh[j]) begin
+          if (sgn) r = $signed(r) >>> (1 << j);
+          else r = r >> (1 << j);
         end
+      end
       barrel = r;
     end
   endfunction
@@ -124,15 +142,23 @@ module acore_fold_cordic #(
   wire [XY_W-1:0] x0 = {{2{x_i[IN_W-1]}}, x_i, {G{1'b0}}};
   wire [XY_W-1:0] y0 = {{2{y_i[IN_W-1]}}, y_i, {G{1'b0}}};
   wire neg0 = x_i[IN_W-1];
-  wire [XY_W-1:0] x0_abs = neg0 ? ({XY_W{1'b0}} - x0) : x0;
-  wire [XY_W-1:0] y_pre_d = neg0 ? ({XY_W{1'b0}} - y0) : y0;
+  // -v = ~(v - 1): one carry chain (v plus neg0 in every bit, i.e. v - neg0) and an exclusive or
+  // that merges into the LUT reading it (a register's choice), where neg0 ? 0 - v : v costs a
+  // subtractor and a choice.
+  wire [XY_W-1:0] x0_dec = x0 + {XY_W{neg0}};
+  wire [XY_W-1:0] y0_dec = y0 + {XY_W{neg0}};
+  wire [XY_W-1:0] x0_abs = x0_dec ^ {XY_W{neg0}};
+  wire [XY_W-1:0] y_pre_d = y0_dec ^ {XY_W{neg0}};
   reg [XY_W-2:0] x_pre_q;
   reg [XY_W-1:0] y_pre_q;
   reg [Z_W-1:0]  z_pre_q;
+  // Held until the next start: the split form reads them on two clocks.
   always @(posedge clk_i) begin
-    x_pre_q <= x0_abs[XY_W-2:0];
-    y_pre_q <= y_pre_d;
-    z_pre_q <= {neg0, {(Z_W-1){1'b0}}};
+    if (start_i) begin
+      x_pre_q <= x0_abs[XY_W-2:0];
+      y_pre_q <= y_pre_d;
+      z_pre_q <= {neg0, {(Z_W-1){1'b0}}} | Z_RND;
+    end
   end
   assign ysign_d[0] = y_pre_d[XY_W-1];
   assign xr[0] = x_pre_q;
@@ -165,6 +191,100 @@ module acore_fold_cordic #(
       wire unused_bus = ^atan_i[AT_RAM_UNITS*N*AT_W-1:0];
     end
 
+    if (SPLIT != 0) begin : g_split
+      // One unit (N >= 2K > K). The start loads X, Y and Z with the pre-rotation (no take
+      // choice in front of the adders and the barrel: a vector's last X and Z go to the output
+      // from the adders, and its last Y is not needed). ph: 0 the clock after the start, then
+      // 1 ..; iteration it = ph / 2, phase B when ph is odd. Only the shifts of real iterations
+      // (below K) need their stages.
+      localparam integer SW = (K > 1) ? $clog2(K) : 0;
+      localparam integer SH_MASK_I = ((1 << SW) - 1) << 1;
+      localparam [PW-1:0] SH_MASK = SH_MASK_I[PW-1:0];
+      localparam integer LAST_I = 2 * K - 1;  // phase B of iteration K-1
+      localparam [PW-1:0] LAST = LAST_I[PW-1:0];
+      reg  [PW-1:0] ph_q;
+      wire [PW-1:0] ph_d = start_i ? {PW{1'b0}} : ph_q + 1'b1;
+      wire phase_b = ph_q[0];
+      // s: the rotation direction, the sign of Y entering the iteration (registered for phase
+      // A); inv: the barrel's inversion (s in phase A, ~s in phase B); last: phase B of the last
+      // iteration, whose X and Z are the result.
+      reg s_q, inv_q, last_q;
+      wire [XY_W:0] y_sum;
+      wire s_next = start_i ? ysign_d[0] : y_sum[XY_W];
+      always @(posedge clk_i) begin
+        ph_q   <= ph_d;
+        if (!ph_d[0]) s_q <= s_next;
+        inv_q  <= ph_d[0] ? ~s_q : s_next;
+        last_q <= (ph_d == LAST);
+      end
+      reg [XY_W-2:0] x_q;
+      reg [XY_W-1:0] y_q;
+      reg [Z_W-1:0]  z_q;
+      // The shared barrel: Y in phase A, X (never negative, so its arithmetic shift is the
+      // logical one) in phase B; shift it = ph / 2 (the mask keeps its real bits).
+      wire [XY_W-1:0] bin = phase_b ? {1'b0, x_q} : y_q;
+      wire [PW-1:0] sh = (ph_q & SH_MASK) >> 1;
+      wire [XY_W-1:0] w = barrel(bin, sh, 1'b1) ^ {XY_W{inv_q}};
+      reg [XY_W-2:0] t_q;  // the X adder's operand: X's width
+      always @(posedge clk_i) t_q <= w[XY_W-2:0];
+      // The pre-rotation's registers are the units' form's (this form loads X, Y, Z directly).
+      wire unused_pre = ^{st, xr[0], yr[0], zr[0]};
+      // The arctangent word of iteration it: from the bus (an N/2:1 choice) or from a memory
+      // port addressed the clock before (phase A, with ph_d / 2 = it).
+      wire [Z_W-1:0] at;
+      if (AT_RAM_UNITS > 0) begin : g_at_ram
+        wire [PW-1:0] idx = ph_d >> 1;
+        if (AT_IDX_W > PW) begin : g_wide
+          assign at_idx_o = {{(AT_IDX_W-PW){1'b0}}, idx};
+        end else begin : g_fit
+          assign at_idx_o = idx[AT_IDX_W-1:0];
+        end
+        assign at = {{(Z_W-AT_W){1'b0}}, at_word_i[0 +: AT_W]};
+      end else begin : g_at_bus
+        // Iterations N / 2 >= K: the words past K - 1 are read by phases nobody uses.
+        wire [Z_W-1:0] at_p [0:N/2-1];
+        for (p = 0; p < N / 2; p = p + 1) begin : g_it
+          if (p < K) begin : g_at
+            assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[p * AT_W +: AT_W]};
+          end else begin : g_noat
+            assign at_p[p] = {Z_W{1'b0}};
+          end
+        end
+        assign at = at_p[ph_q[PW-1:1]];
+        assign at_idx_o = {AT_IDX_W{1'b0}};
+      end
+      // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
+      wire [XY_W-1:0] x_sum = {x_q, 1'b1} + {t_q, s_q};
+      assign y_sum = {y_q, 1'b1} + {w, inv_q};
+      wire [Z_W:0] z_sum = {z_q, 1'b1} + {at ^ {Z_W{s_q}}, s_q};
+      always @(posedge clk_i) begin
+        if (start_i) begin
+          x_q <= x0_abs[XY_W-2:0];
+          y_q <= y_pre_d;
+          z_q <= {neg0, {(Z_W-1){1'b0}}} | Z_RND;
+        end else if (phase_b) begin
+          x_q <= x_sum[XY_W-1:1];
+          y_q <= y_sum[XY_W:1];
+          z_q <= z_sum[Z_W:1];
+        end
+      end
+      // The result, from the last iteration's adders (held until the next vector's).
+      wire [Z_W-1:0] z_k = z_sum[Z_W:1];
+      wire [XY_W-2:0] x_k = x_sum[XY_W-1:1];
+      if (DROP > 0) begin : g_drop
+        wire unused_z = ^z_k[DROP-1:0];
+      end
+      always @(posedge clk_i) begin
+        if (last_q) begin
+          angle_o <= z_k[Z_W-1:DROP];
+          mag_o   <= {1'b0, x_k[XY_W-2:G]};
+        end
+      end
+      assign xr[1] = x_q;
+      assign yr[1] = y_q;
+      assign zr[1] = z_q;
+      assign ysign_d[1] = y_sum[XY_W];
+    end else begin : g_units
     for (u = 0; u < U; u = u + 1) begin : g_unit
       localparam integer I0 = u * N;  // first iteration of the unit
       localparam integer YW = (I0 + 1 <= 2) ? XY_W : XY_W + 1 - I0;
@@ -244,23 +364,19 @@ module acore_fold_cordic #(
       assign zr[u+1] = z_q;
       assign ysign_d[u+1] = y_sum[YW];
     end
-  endgenerate
-
-  // ---- output: the clock after iteration K-1, round the angle, drop the guard bits ----
-  wire [Z_W-1:0] z_k = zr[U];
-  wire [Z_W-1:0] z_rnd;
-  generate
-    if (DROP > 0) begin : g_rnd
-      assign z_rnd = z_k + ({{(Z_W-1){1'b0}}, 1'b1} << (DROP - 1));
-    end else begin : g_nornd
-      assign z_rnd = z_k;
+    // ---- output: the clock after iteration K-1, the angle (rounded: Z_RND is in Z's start
+    // value), drop the guard bits ----
+    wire [Z_W-1:0] z_k = zr[U];
+    wire [XY_W-2:0] x_k = xr[U];
+    if (DROP > 0) begin : g_drop
+      wire unused_z = ^z_k[DROP-1:0];
+    end
+    always @(posedge clk_i) begin
+      angle_o <= z_k[Z_W-1:DROP];
+      mag_o   <= {1'b0, x_k[XY_W-2:G]};
+    end
     end
   endgenerate
-  wire [XY_W-2:0] x_k = xr[U];
-  always @(posedge clk_i) begin
-    angle_o <= z_rnd[Z_W-1:DROP];
-    mag_o   <= {1'b0, x_k[XY_W-2:G]};
-  end
 
 endmodule
 

@@ -195,7 +195,7 @@ module acore_fold_datapath #(
   localparam integer F = H;
   localparam integer SL = acore_fold_scaler_latency(REG_W, F);
   localparam integer PL = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_latency(DEGREE, S_W, F);
-  localparam integer CL = acore_cordic_latency(K, 0, 0);
+  localparam integer CL = acore_fold_cordic_latency(K, FOLD);
   localparam integer R = acore_fold_r(REG_W, FOLD);
   localparam integer C = acore_fold_c(REG_W, S_W, CORRECTION, DEGREE, FOLD);
   // The accepting edge to valid_o, in clocks after it, minus one.

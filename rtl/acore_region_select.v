@@ -44,13 +44,17 @@ module acore_region_select #(
     .MSG("illegal parameter: acore_region_select: RG_W is derived (clog2(REGIONS)), do not override"))
     RG_W_is_derived ();
 
-  // Clock 1: magnitudes as unsigned S_W-bit numbers (|-2^(S_W-1)| = 2^(S_W-1) still fits).
+  // Clock 1: magnitudes as unsigned S_W-bit numbers (|-2^(S_W-1)| = 2^(S_W-1) still fits), each
+  // -v as ~(v - 1): one carry chain (v plus the sign in every bit) and an exclusive or, where
+  // sign ? 0 - v : v costs a subtractor and a choice.
   // Clock 2: compare and select. One carry chain per clock.
+  wire [S_W-1:0] s13_dec = s13_i + {S_W{s13_i[S_W-1]}};
+  wire [S_W-1:0] s24_dec = s24_i + {S_W{s24_i[S_W-1]}};
   reg [S_W-1:0] a13_q, a24_q, s13_q, s24_q;
   always @(posedge clk_i) begin
     if (en_i) begin
-      a13_q <= s13_i[S_W-1] ? ({S_W{1'b0}} - s13_i) : s13_i;
-      a24_q <= s24_i[S_W-1] ? ({S_W{1'b0}} - s24_i) : s24_i;
+      a13_q <= s13_dec ^ {S_W{s13_i[S_W-1]}};
+      a24_q <= s24_dec ^ {S_W{s24_i[S_W-1]}};
       s13_q <= s13_i;
       s24_q <= s24_i;
     end
