@@ -145,6 +145,9 @@ module acore_fold_poly #(
   acore_check #(.OK(F >= 1 && (F & (F - 1)) == 0), .VALUE(F),
     .MSG("illegal parameter: acore_fold_poly: F must be a power of two (FOLD/2)"))
     F_must_be_a_power_of_two ();
+  acore_check #(.OK(RAM_DELAY != 2 || (F >= 2 && INIT_AT < F)), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_poly: sparse lines (RAM_DELAY = 2) need INIT_AT < F (a line's output is held F clocks)"))
+    RAM_DELAY_2_needs_INIT_AT_below_F ();
   acore_check #(.OK(PORTS == acore_fold_poly_ports_paired(PAIRED, DEGREE, S_W, F)), .VALUE(PORTS),
     .MSG("illegal parameter: acore_fold_poly: PORTS is derived (acore_fold_poly_ports_paired), do not override"))
     PORTS_is_derived ();
@@ -268,11 +271,18 @@ module acore_fold_poly #(
   generate
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
       // Address of a_j, formed at the step's start and presented one clock before the multiplier
-      // adds the word (INIT_AT clocks into the step).
+      // adds the word (INIT_AT clocks into the step). From step 1 on with sparse lines the base
+      // address is the line's output, held from the step's start until the next item's (F > INIT_AT
+      // clocks): the address needs no delay of its own.
       localparam integer J_I = term_off(DEGREE - 1 - m);
       localparam [ADDR_W-1:0] J_A = J_I[ADDR_W-1:0];
-      acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_da (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(ra[(m + 1) * ADDR_W +: ADDR_W]));
+      localparam integer DA = (RAM_DELAY == 2 && m > 0) ? 0 : INIT_AT - 1;
+      if (DA == 0) begin : g_ahold
+        assign ra[(m + 1) * ADDR_W +: ADDR_W] = bs[m] + J_A;
+      end else begin : g_adelay
+        acore_delay #(.W(ADDR_W), .DEPTH(DA)) u_da (
+          .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(ra[(m + 1) * ADDR_W +: ADDR_W]));
+      end
       // Its read clock (PM): the step's start, INIT_AT - 1 clocks later (reset, as the starts).
       if (PM != 0 && INIT_AT > 1) begin : g_rd
         reg [INIT_AT-2:0] rd_q;
