@@ -252,6 +252,73 @@ function integer acore_fold_poly_ports(input integer f_degree, input integer f_s
   acore_fold_poly_ports = f_degree + 1 - acore_fold_poly_share(f_s_w, f_f);
 endfunction
 
+// acore_fold_poly with PAIRED (the folded datapath's items: a sample's two items F clocks apart,
+// samples 2F clocks apart at least, at arbitrary gaps): a static schedule of its reads over fewer
+// ports. Read i = 2 k + c is read k (0: a_n at the item's start; m + 1: step m's word, INIT_AT - 1
+// clocks into step m, which starts 2 + m (ML + 1) clocks after its item; INIT_AT =
+// acore_fold_mul_init_at) of item c (0 the first),
+// at acore_fold_poly_pair_at(i) clocks after the pair's first item starts.
+function integer acore_fold_poly_pair_t(input integer f_i, input integer f_ml, input integer f_ia,
+                                        input integer f_f);
+  acore_fold_poly_pair_t = (f_i % 2) * f_f + ((f_i < 2) ? 0 : 2 + (f_i / 2 - 1) * (f_ml + 1) + f_ia - 1);
+endfunction
+function integer acore_fold_poly_pair_at(input integer f_i, input integer f_s_w, input integer f_f);
+  acore_fold_poly_pair_at = acore_fold_poly_pair_t(f_i, acore_fold_mul_latency(f_s_w, f_f),
+                                                   acore_fold_mul_init_at(f_s_w, f_f), f_f);
+endfunction
+// Read f_i's port: the window of 2F clocks (from the pair's first read) it falls in. Reads of two
+// samples are 2F clocks apart or more plus their offsets' difference, so two reads of one window
+// (offsets less than 2F apart, and distinct: acore_fold_poly_pair_ok) never meet on a clock,
+// whatever the gaps between the samples. f_i = -1: the number of ports (the last read is the
+// second item's last step).
+function integer acore_fold_poly_pair_port(input integer f_i, input integer f_degree,
+                                           input integer f_s_w, input integer f_f);
+  acore_fold_poly_pair_port = (f_i < 0) ?
+    acore_fold_poly_pair_at(2 * f_degree + 1, f_s_w, f_f) / (2 * f_f) + 1 :
+    acore_fold_poly_pair_at(f_i, f_s_w, f_f) / (2 * f_f);
+endfunction
+// 1 when the windowed schedule holds: no two reads at one clock, and no window (port) without a
+// read. (The multiplier's latency computed once: Yosys evaluates constant functions slowly.)
+function integer acore_fold_poly_pair_ok(input integer f_degree, input integer f_s_w,
+                                         input integer f_f);
+  integer f_a, f_b, f_p, f_any, f_ml, f_ia, f_np;
+  begin
+    acore_fold_poly_pair_ok = 1;
+    f_ml = acore_fold_mul_latency(f_s_w, f_f);
+    f_ia = acore_fold_mul_init_at(f_s_w, f_f);
+    f_np = acore_fold_poly_pair_t(2 * f_degree + 1, f_ml, f_ia, f_f) / (2 * f_f) + 1;
+    for (f_a = 0; f_a < 2 * (f_degree + 1); f_a = f_a + 1)
+      for (f_b = f_a + 1; f_b < 2 * (f_degree + 1); f_b = f_b + 1)
+        if (acore_fold_poly_pair_t(f_a, f_ml, f_ia, f_f) == acore_fold_poly_pair_t(f_b, f_ml, f_ia, f_f))
+          acore_fold_poly_pair_ok = 0;
+    for (f_p = 0; f_p < f_np; f_p = f_p + 1) begin
+      f_any = 0;
+      for (f_a = 0; f_a < 2 * (f_degree + 1); f_a = f_a + 1)
+        if (acore_fold_poly_pair_t(f_a, f_ml, f_ia, f_f) / (2 * f_f) == f_p) f_any = 1;
+      if (f_any == 0) acore_fold_poly_pair_ok = 0;
+    end
+  end
+endfunction
+// 1 when acore_fold_poly with PAIRED uses the windowed schedule: paired items from
+// acore_fold_lean() on (F >= 8), the schedule holds and it needs fewer ports than one port a read
+// (acore_fold_poly_ports; at S_W = 18: 2 instead of 3 at F = 16, none fewer at F = 8).
+function integer acore_fold_poly_paired(input integer f_paired, input integer f_degree,
+                                        input integer f_s_w, input integer f_f);
+  begin
+    acore_fold_poly_paired = 0;
+    if (f_paired != 0 && acore_fold_lean(2 * f_f) != 0 && acore_fold_poly_share(f_s_w, f_f) != 0)
+      if (acore_fold_poly_pair_port(-1, f_degree, f_s_w, f_f) <
+          acore_fold_poly_ports(f_degree, f_s_w, f_f))
+        acore_fold_poly_paired = acore_fold_poly_pair_ok(f_degree, f_s_w, f_f);
+  end
+endfunction
+// Its read ports with PAIRED.
+function integer acore_fold_poly_ports_paired(input integer f_paired, input integer f_degree,
+                                              input integer f_s_w, input integer f_f);
+  acore_fold_poly_ports_paired = (acore_fold_poly_paired(f_paired, f_degree, f_s_w, f_f) != 0) ?
+    acore_fold_poly_pair_port(-1, f_degree, f_s_w, f_f) : acore_fold_poly_ports(f_degree, f_s_w, f_f);
+endfunction
+
 // acore_fold_poly: a_n addressed and read, DEGREE steps (folded multiplier with a_j as addend,
 // saturate), round, subtract, saturate.
 function integer acore_fold_poly_latency(input integer f_degree, input integer f_s_w,

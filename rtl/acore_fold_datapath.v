@@ -86,69 +86,76 @@ module acore_fold_datapath #(
 `include "acore_derived.vh"
 
   // The valid bits read below (acore_fold_lean: v_q[t] for these t only), i = 0 .. 12 (-1 past).
+  // C and LATENCY from R, PL and CL (as acore_fold_c; PL = 0 without correction): fewer arguments,
+  // since Yosys's time at elaboration grows with them (checked against C and LATENCY below).
   function integer vtap(input integer i, input integer h, input integer sl, input integer r,
-                        input integer pl, input integer c, input integer cl, input integer lat);
-    case (i)
-      0: vtap = 0;
-      1: vtap = h - 1;
-      2: vtap = h;
-      3: vtap = sl;
-      4: vtap = sl + h;
-      5: vtap = r;
-      6: vtap = r + h;
-      7: vtap = r + pl;
-      8: vtap = c;
-      9: vtap = sl + h + pl - 2;
-      10: vtap = sl + 2 * h + pl - 2;
-      11: vtap = c + cl - 1;
-      12: vtap = lat;
-      default: vtap = -1;
-    endcase
+                        input integer pl, input integer cl, input integer sp);
+    integer c;
+    begin
+      c = r + ((pl == 0) ? 0 : h + pl);
+      case (i)
+        0: vtap = 0;
+        1: vtap = h - 1;
+        2: vtap = h;
+        3: vtap = sl;
+        4: vtap = sl + h;
+        5: vtap = r;
+        6: vtap = r + h;
+        7: vtap = r + pl;
+        8: vtap = c;
+        // (the curve's sparse line's pops; sp = S_PAIR_RAM, the line in block RAM: none, tap 0 again)
+        9: vtap = (sp != 0) ? 0 : sl + h + pl - 2;
+        10: vtap = (sp != 0) ? 0 : sl + 2 * h + pl - 2;
+        11: vtap = c + cl - 1;
+        12: vtap = c + cl;
+        default: vtap = -1;
+      endcase
+    end
   endfunction
   // 1 when t is one of them.
   function integer vtap_is(input integer t, input integer h, input integer sl, input integer r,
-                           input integer pl, input integer c, input integer cl, input integer lat);
+                           input integer pl, input integer cl, input integer sp);
     integer i;
     begin
       vtap_is = 0;
       for (i = 0; i < 13; i = i + 1)
-        if (vtap(i, h, sl, r, pl, c, cl, lat) == t) vtap_is = 1;
+        if (vtap(i, h, sl, r, pl, cl, sp) == t) vtap_is = 1;
     end
   endfunction
   // The smallest one above p (2^30 when none). The three functions below walk the distinct
   // values in order through this one: a few thousand calls at elaboration, where comparing every
   // pair for every bit took Yosys 26 s.
   function integer vtap_next(input integer p, input integer h, input integer sl, input integer r,
-                             input integer pl, input integer c, input integer cl, input integer lat);
+                             input integer pl, input integer cl, input integer sp);
     integer i, v;
     begin
       vtap_next = 1 << 30;
       for (i = 0; i < 13; i = i + 1) begin
-        v = vtap(i, h, sl, r, pl, c, cl, lat);
+        v = vtap(i, h, sl, r, pl, cl, sp);
         if (v > p && v < vtap_next) vtap_next = v;
       end
     end
   endfunction
   // How many distinct ones are below t.
   function integer vtap_rank(input integer t, input integer h, input integer sl, input integer r,
-                             input integer pl, input integer c, input integer cl, input integer lat);
+                             input integer pl, input integer cl, input integer sp);
     integer i, p;
     begin
       vtap_rank = 0;
       p = -(1 << 30);
       for (i = 0; i < 13; i = i + 1) begin
-        p = vtap_next(p, h, sl, r, pl, c, cl, lat);
+        p = vtap_next(p, h, sl, r, pl, cl, sp);
         if (p < t) vtap_rank = vtap_rank + 1;
       end
     end
   endfunction
   // The k-th smallest distinct one (k = 0: the smallest).
   function integer vtap_kth(input integer k, input integer h, input integer sl, input integer r,
-                            input integer pl, input integer c, input integer cl, input integer lat);
+                            input integer pl, input integer cl, input integer sp);
     integer i;
     begin
       vtap_kth = -(1 << 30);
-      for (i = 0; i <= k; i = i + 1) vtap_kth = vtap_next(vtap_kth, h, sl, r, pl, c, cl, lat);
+      for (i = 0; i <= k; i = i + 1) vtap_kth = vtap_next(vtap_kth, h, sl, r, pl, cl, sp);
     end
   endfunction
 
@@ -166,7 +173,8 @@ module acore_fold_datapath #(
   localparam integer ATAN_BASE = acore_addr_atan(TERMS, REGIONS, 0);
   localparam integer H = FOLD / 2;
   localparam integer U = acore_fold_cordic_units(K, FOLD);
-  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_ports(DEGREE, S_W, FOLD / 2);
+  localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 :
+                          acore_fold_poly_ports_paired(1, DEGREE, S_W, FOLD / 2);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
   // The scaler's ports: offset and reciprocal, or both on one (acore_fold_lean).
@@ -198,8 +206,18 @@ module acore_fold_datapath #(
   localparam integer CL = acore_fold_cordic_latency(K, FOLD);
   localparam integer R = acore_fold_r(REG_W, FOLD);
   localparam integer C = acore_fold_c(REG_W, S_W, CORRECTION, DEGREE, FOLD);
+  // From acore_fold_lean() on, the blocks the Horner chain's paired schedule frees (fewer copies of
+  // the map: acore_fold_poly_paired) hold the curve's delay line instead of its flops.
+  localparam integer PP_FREED = (CORRECTION == ACORE_CORR_NONE) ? 0 :
+                                (acore_fold_poly_ports(DEGREE, S_W, FOLD / 2) - PP) * BPW;
+  localparam integer S_LINE_B = (S_W > 16) ? 2 : 1;
+  localparam integer S_PAIR_RAM = (SPARSE != 0 && PP_FREED >= S_LINE_B &&
+                                   H + PL - 1 <= 257) ? 1 : 0;
   // The accepting edge to valid_o, in clocks after it, minus one.
   localparam integer LATENCY = acore_fold_datapath_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOLD);
+  acore_check #(.OK(vtap(8, H, SL, R, PL, CL, 0) == C && vtap(12, H, SL, R, PL, CL, 0) == LATENCY),
+    .VALUE(LATENCY), .MSG("illegal parameter: acore_fold_datapath: vtap's C and LATENCY must be the schedule's"))
+    vtap_must_follow_the_schedule ();
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(FOLD != 1 && acore_fold_legal(FOLD) != 0), .VALUE(FOLD),
@@ -241,18 +259,18 @@ module acore_fold_datapath #(
       // acore_fold_lean: only the clocks read below (vtap) are made, each from the one before by
       // an acore_pulse_delay (samples are FOLD clocks apart at least: a counter per FOLD clocks,
       // not a flop a clock); every other bit is zero.
-      localparam integer ND = vtap_rank(LATENCY + 1, H, SL, R, PL, C, CL, LATENCY);
+      localparam integer ND = vtap_rank(LATENCY + 1, H, SL, R, PL, CL, S_PAIR_RAM);
       wire [ND:0] vd;
       assign vd[0] = accept_i;
       for (gt = 0; gt < ND; gt = gt + 1) begin : g_seg
-        localparam integer T = vtap_kth(gt, H, SL, R, PL, C, CL, LATENCY);
-        localparam integer T0 = (gt == 0) ? -1 : vtap_kth(gt - 1, H, SL, R, PL, C, CL, LATENCY);
+        localparam integer T = vtap_kth(gt, H, SL, R, PL, CL, S_PAIR_RAM);
+        localparam integer T0 = (gt == 0) ? -1 : vtap_kth(gt - 1, H, SL, R, PL, CL, S_PAIR_RAM);
         acore_pulse_delay #(.DEPTH(T - T0), .GAP(FOLD)) u_v (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(vd[gt]), .q_o(vd[gt + 1]));
       end
       for (gt = 0; gt <= LATENCY; gt = gt + 1) begin : g_vbit
-        if (vtap_is(gt, H, SL, R, PL, C, CL, LATENCY) != 0) begin : g_tap
-          assign v_q[gt] = vd[vtap_rank(gt, H, SL, R, PL, C, CL, LATENCY) + 1];
+        if (vtap_is(gt, H, SL, R, PL, CL, S_PAIR_RAM) != 0) begin : g_tap
+          assign v_q[gt] = vd[vtap_rank(gt, H, SL, R, PL, CL, S_PAIR_RAM) + 1];
         end else begin : g_none
           assign v_q[gt] = 1'b0;
         end
@@ -350,7 +368,10 @@ module acore_fold_datapath #(
       // Each item's curve, straight from the scaler to the clock the polynomial's value is ready
       // (PL - 3 clocks after the item's start; block RAM with S_RAM).
       wire [S_W-1:0] s_pc;
-      if (SPARSE != 0) begin : g_ssparse
+      if (S_PAIR_RAM != 0) begin : g_spair
+        acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
+          .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
+      end else if (SPARSE != 0) begin : g_ssparse
         // Pushed with each item's scaled curve (clocks SL, SL + H), due H + PL - 1 clocks later.
         acore_sparse_delay #(.W(S_W), .DEPTH(H + PL - 1), .GAP(H)) u_ds (
           .clk_i(clk_i), .rst_i(rst_i), .push_i(v_q[SL] | v_q[SL + H]), .d_i(s_sc),
@@ -374,7 +395,7 @@ module acore_fold_datapath #(
       acore_fold_poly #(
         .REG_W(REG_W), .S_W(S_W), .S_F(S_F), .DEGREE(DEGREE), .COEF_F(COEF_F), .ACC_G(ACC_G),
         .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F),
-        .RAM_DELAY((SPARSE != 0) ? 2 : U_RAM), .MULT(MULT)
+        .RAM_DELAY((SPARSE != 0) ? 2 : U_RAM), .MULT(MULT), .PAIRED(1)
       ) u_pc (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
         .s_i(s_pc),

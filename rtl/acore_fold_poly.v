@@ -13,7 +13,13 @@
 // address one clock before the word is used (coef_addr_o, coef_i one clock later). With
 // acore_fold_poly_share (F >= 8 at S_W = 18) port 0 also reads step 0's word, on every clock but
 // an item's start (the step's read is INIT_AT + 1 < F clocks after its item's start, so never on
-// another item's), and step m reads on port m.
+// another item's), and step m reads on port m. With PAIRED (the folded datapath: a sample's two
+// items F clocks apart, samples 2F apart at least) and acore_fold_poly_paired() (F = 16 at S_W =
+// 18), every read of a pair falls in a window of 2F clocks that is one port (rtl/acore_derived.vh,
+// acore_fold_poly_pair_port): reads of one window are less than 2F clocks apart, so two samples'
+// reads never meet on a port whatever their gap, and a port presents at each of its read clocks
+// that read's address (a_n and steps 0..1 of the first item, a_n and step 0 of the second on port
+// 0; the rest on port 1 at F = 16: 2 ports instead of 3).
 //
 //   clock 0: item in, a_n addressed | 1: a_n read | 2: step 0 | step m: ML clocks of multiplier
 //   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
@@ -45,8 +51,12 @@ module acore_fold_poly #(
   parameter integer RAM_DELAY = 0,
   // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
   parameter integer MULT = 0,
+  // 1: the items come in pairs (the folded datapath's two curves of a sample: the second F clocks
+  // after the first, pairs 2F clocks apart at least, the first item after reset a pair's first),
+  // and where acore_fold_poly_paired() says so, the reads share fewer ports on a static schedule.
+  parameter integer PAIRED = 0,
   // Derived, do not override: coefficient read ports.
-  parameter integer PORTS = acore_fold_poly_ports(DEGREE, S_W, F)
+  parameter integer PORTS = acore_fold_poly_ports_paired(PAIRED, DEGREE, S_W, F)
 ) (
   input  wire                     clk_i,
   // Synchronous reset (of the start bits and the delay lines' pointers).
@@ -83,6 +93,36 @@ module acore_fold_poly #(
   localparam integer LATENCY = acore_fold_poly_latency(DEGREE, S_W, F);
   localparam integer RN = ACC_F - S_F;      // rounding shift of the final accumulator
   localparam integer SHARE = acore_fold_poly_share(S_W, F);  // a_n and step 0 on port 0
+  localparam integer PM = acore_fold_poly_paired(PAIRED, DEGREE, S_W, F);  // the paired schedule
+  // PM: the reads (2 k + c: read k of item c) on port p but those of its first read's k (the
+  // port's default address), and the reads k whose two items share a port.
+  function [2*DEGREE+1:0] own_reads(input integer p);
+    integer i;
+    begin
+      own_reads = {(2*DEGREE+2){1'b0}};
+      for (i = 0; i < 2 * DEGREE + 2; i = i + 1)
+        if (acore_fold_poly_pair_port(i, DEGREE, S_W, F) == p && i / 2 != first_read(p) / 2)
+          own_reads[i] = 1'b1;
+    end
+  endfunction
+  function [DEGREE:0] both_ports();
+    integer k;
+    begin
+      both_ports = {(DEGREE+1){1'b0}};
+      for (k = 0; k <= DEGREE; k = k + 1)
+        if (acore_fold_poly_pair_port(2 * k, DEGREE, S_W, F) ==
+            acore_fold_poly_pair_port(2 * k + 1, DEGREE, S_W, F)) both_ports[k] = 1'b1;
+    end
+  endfunction
+  // PM: the first read (2 k + c: read k of item c) on port p.
+  function integer first_read(input integer p);
+    integer i;
+    begin
+      first_read = 0;
+      for (i = 2 * DEGREE + 1; i >= 0; i = i - 1)
+        if (acore_fold_poly_pair_port(i, DEGREE, S_W, F) == p) first_read = i;
+    end
+  endfunction
   // The address of the item's word of power j, from its word 0 (the map: the powers of a region's
   // curve are consecutive words).
   function integer term_off(input integer j);
@@ -105,8 +145,11 @@ module acore_fold_poly #(
   acore_check #(.OK(F >= 1 && (F & (F - 1)) == 0), .VALUE(F),
     .MSG("illegal parameter: acore_fold_poly: F must be a power of two (FOLD/2)"))
     F_must_be_a_power_of_two ();
-  acore_check #(.OK(PORTS == acore_fold_poly_ports(DEGREE, S_W, F)), .VALUE(PORTS),
-    .MSG("illegal parameter: acore_fold_poly: PORTS is derived (acore_fold_poly_ports), do not override"))
+  acore_check #(.OK(RAM_DELAY != 2 || (F >= 2 && INIT_AT < F)), .VALUE(F),
+    .MSG("illegal parameter: acore_fold_poly: sparse lines (RAM_DELAY = 2) need INIT_AT < F (a line's output is held F clocks)"))
+    RAM_DELAY_2_needs_INIT_AT_below_F ();
+  acore_check #(.OK(PORTS == acore_fold_poly_ports_paired(PAIRED, DEGREE, S_W, F)), .VALUE(PORTS),
+    .MSG("illegal parameter: acore_fold_poly: PORTS is derived (acore_fold_poly_ports_paired), do not override"))
     PORTS_is_derived ();
 
   // A coefficient word, sign-extended and shifted to ACC_F fraction bits.
@@ -127,13 +170,67 @@ module acore_fold_poly #(
   endgenerate
   localparam integer DEG_I = term_off(DEGREE);
   localparam [ADDR_W-1:0] DEG_A = DEG_I[ADDR_W-1:0];
-  // Step m's word address, one clock before its multiplier adds the word.
-  wire [ADDR_W-1:0] step_a [0:DEGREE-1];
+  // Read k (0: a_n, at the item's start; m + 1: step m's word, one clock before its multiplier
+  // adds it): its address, its read clock (rd: PM only) and its word, one clock later.
+  wire [(DEGREE+1)*ADDR_W-1:0] ra;  // read k at bits [k ADDR_W +: ADDR_W]
+  wire [DEGREE:0]   rd;
+  wire [REG_W-1:0]  cw [0:DEGREE];
+  assign ra[0 +: ADDR_W] = base_i + DEG_A;
+  assign rd[0] = start_i;
+  genvar gk, gp;
   generate
-    if (SHARE != 0) begin : g_share
-      assign coef_addr_o[ADDR_W-1:0] = start_i ? base_i + DEG_A : step_a[0];
-    end else begin : g_own
-      assign coef_addr_o[ADDR_W-1:0] = base_i + DEG_A;
+    if (PM == 0) begin : g_ports
+      // One port a read, but a_n and step 0 on port 0 with SHARE (the step's read is never at an
+      // item's start).
+      wire unused_rd = ^rd;
+      if (SHARE != 0) begin : g_share
+        assign coef_addr_o[ADDR_W-1:0] = start_i ? ra[0 +: ADDR_W] : ra[ADDR_W +: ADDR_W];
+      end else begin : g_own
+        assign coef_addr_o[ADDR_W-1:0] = ra[0 +: ADDR_W];
+      end
+      for (gk = 0; gk <= DEGREE; gk = gk + 1) begin : g_k
+        localparam integer P = (gk == 0) ? 0 : gk - SHARE;
+        if (gk > SHARE) begin : g_addr
+          assign coef_addr_o[P * ADDR_W +: ADDR_W] = ra[gk * ADDR_W +: ADDR_W];
+        end
+        assign cw[gk] = coef_i[P * REG_W +: REG_W];
+      end
+    end else begin : g_pair
+      // The static schedule (acore_fold_poly_pair_port): port p presents, at each read clock of
+      // its reads, that read's address, else its first read's (a read's item: a toggle per read,
+      // 0 at the pair's first item; it flips at the read, so the clock after, with the word, it
+      // is the other's). The windows keep two reads of a port off one clock (checked above).
+      wire [DEGREE:0] sec;
+      localparam [DEGREE:0] BOTH = both_ports();
+      wire unused_sec = ^sec;  // (read only where an item's two reads are on two ports)
+      for (gk = 0; gk <= DEGREE; gk = gk + 1) begin : g_k
+        reg tg_q;
+        always @(posedge clk_i) begin
+          if (rst_i) tg_q <= 1'b0;
+          else if (rd[gk]) tg_q <= ~tg_q;
+        end
+        assign sec[gk] = tg_q;
+        localparam integer P0 = acore_fold_poly_pair_port(2 * gk, DEGREE, S_W, F);
+        localparam integer P1 = acore_fold_poly_pair_port(2 * gk + 1, DEGREE, S_W, F);
+        if (P0 == P1) begin : g_one
+          assign cw[gk] = coef_i[P0 * REG_W +: REG_W];
+        end else begin : g_two
+          assign cw[gk] = tg_q ? coef_i[P0 * REG_W +: REG_W] : coef_i[P1 * REG_W +: REG_W];
+        end
+      end
+      for (gp = 0; gp < PORTS; gp = gp + 1) begin : g_port
+        localparam integer FIRST = first_read(gp);
+        localparam [2*DEGREE+1:0] OWN = own_reads(gp);
+        reg [ADDR_W-1:0] a_p;
+        integer i;
+        always @(*) begin
+          a_p = ra[(FIRST / 2) * ADDR_W +: ADDR_W];
+          for (i = 0; i < 2 * DEGREE + 2; i = i + 1)
+            if (OWN[i] && rd[i / 2] && (BOTH[i / 2] || sec[i / 2] == ((i % 2) != 0)))
+              a_p = ra[(i / 2) * ADDR_W +: ADDR_W];
+        end
+        assign coef_addr_o[gp * ADDR_W +: ADDR_W] = a_p;
+      end
     end
   endgenerate
 
@@ -152,7 +249,7 @@ module acore_fold_poly #(
     u0_q  <= u_next;
     b0_q  <= base_i;
     ov0_q <= ovf_i;
-    an_q  <= coef_acc(coef_i[0 +: REG_W]);
+    an_q  <= coef_acc(cw[0]);
     u1_q  <= u0_q;
     b1_q  <= b0_q;
     ov1_q <= ov0_q;
@@ -174,20 +271,44 @@ module acore_fold_poly #(
   generate
     for (m = 0; m < DEGREE; m = m + 1) begin : g_step
       // Address of a_j, formed at the step's start and presented one clock before the multiplier
-      // adds the word (INIT_AT clocks into the step).
+      // adds the word (INIT_AT clocks into the step). From step 1 on with sparse lines the base
+      // address is the line's output, held from the step's start until the next item's (F > INIT_AT
+      // clocks): the address needs no delay of its own.
       localparam integer J_I = term_off(DEGREE - 1 - m);
       localparam [ADDR_W-1:0] J_A = J_I[ADDR_W-1:0];
-      acore_delay #(.W(ADDR_W), .DEPTH(INIT_AT - 1)) u_da (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(step_a[m]));
-      if (SHARE == 0 || m > 0) begin : g_port
-        assign coef_addr_o[(m + 1 - SHARE) * ADDR_W +: ADDR_W] = step_a[m];
+      localparam integer DA = (RAM_DELAY == 2 && m > 0) ? 0 : INIT_AT - 1;
+      if (DA == 0) begin : g_ahold
+        assign ra[(m + 1) * ADDR_W +: ADDR_W] = bs[m] + J_A;
+      end else begin : g_adelay
+        acore_delay #(.W(ADDR_W), .DEPTH(DA)) u_da (
+          .clk_i(clk_i), .en_i(1'b1), .d_i(bs[m] + J_A), .q_o(ra[(m + 1) * ADDR_W +: ADDR_W]));
+      end
+      // Its read clock (PM): the step's start, INIT_AT - 1 clocks later (reset, as the starts).
+      if (PM != 0 && INIT_AT > 1) begin : g_rd
+        reg [INIT_AT-2:0] rd_q;
+        if (INIT_AT > 2) begin : g_sh
+          always @(posedge clk_i) begin
+            if (rst_i) rd_q <= {(INIT_AT-1){1'b0}};
+            else rd_q <= {rd_q[INIT_AT-3:0], st[m]};
+          end
+        end else begin : g_one
+          always @(posedge clk_i) begin
+            if (rst_i) rd_q <= 1'b0;
+            else rd_q <= st[m];
+          end
+        end
+        assign rd[m + 1] = rd_q[INIT_AT-2];
+      end else if (PM != 0) begin : g_rd0
+        assign rd[m + 1] = st[m];
+      end else begin : g_nord
+        assign rd[m + 1] = 1'b0;
       end
       wire [P_W-1:0] sum;
       acore_fold_mul #(
         .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F), .MULT(MULT)
       ) u_mul (
         .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
-        .init_i(coef_acc(coef_i[(m + 1 - SHARE) * REG_W +: REG_W])), .p_o(sum));
+        .init_i(coef_acc(cw[m + 1])), .p_o(sum));
       // The item beside the multiplier to the next step: start, and argument with base address.
       // The start bits are reset (as the chain's first two), so a sparse line's pushes and pops
       // pair up from reset on; st_p: the start one clock early, the sparse line's pop.
