@@ -240,9 +240,10 @@ module acore_board #(
       ovf_q <= est_ovf;
     end
   end
-  // The uncompensated angle last delivered (ANGLEUNC).
-  reg [ANGLE_W-1:0] unc_q;
-  always @(posedge clk_i) if (est_take) unc_q <= est_angle;
+  // The uncompensated angle last delivered (ANGLEUNC), held complemented: the interfaces' adders
+  // below take ~x (the flop's cell inverts for free: its LUT would pass the bit through otherwise).
+  reg [ANGLE_W-1:0] unc_n_q;
+  always @(posedge clk_i) if (est_take) unc_n_q <= ~est_angle;
 
   // ---- MAG and AGC (the header): the magnitude last delivered, its upper bits and its logarithm ----
   // MAG is taken with the sample. lg m = e + f/32 needs the leading one e of m and the 5 bits f
@@ -309,7 +310,9 @@ module acore_board #(
   localparam integer AGC_D_W = MAG_E_W + 5 + 3;  // signed, holds AGC_REF - lg m
   localparam integer AGC_REF = AGC_MID + AGC_OCTAVE * S_F + AGC_GAIN_F;
   localparam [AGC_D_W-1:0] AGC_REF_W = AGC_REF[AGC_D_W-1:0];
-  wire [AGC_D_W-1:0] agc_d = AGC_REF_W - {3'b000, mag_e, mag_f};
+  // AGC_REF - lg m as ~(lg m + ~AGC_REF): a constant operand, not lg m's complement, on the carry
+  // chain (an inverted operand costs a LUT a bit in front of it; the outer ~ folds into the sums).
+  wire [AGC_D_W-1:0] agc_d = ~({3'b000, mag_e, mag_f} + ~AGC_REF_W);
   reg [AGC_W-1:0] agc_q;
   always @(posedge clk_i) begin
     if (rst_i) agc_q <= {AGC_W{1'b1}};
@@ -363,17 +366,18 @@ module acore_board #(
   // take it with each observer output; the SPI port reads it at once (a new zero or direction
   // shows in the next ANGLECOM, as on the AS5047P).
   wire [ANGLE_W-1:0] if_zero = {rg_if_zero_zero, {(ANGLE_W-14){1'b0}}};
-  // (ANGLECOM is the same angle: one adder for both.) x - zero, or with DIR zero - x =
-  // ~(x - zero - 1) = ~(x + ~zero): each angle takes one adder, x + ~zero plus 1 without DIR and
-  // its complement with it, whose operands reach the carry chain as they are (the complement
-  // folds into the sum bits' logic), not an inversion of each operand and a subtractor.
-  wire [ANGLE_W-1:0] if_inv = {ANGLE_W{rg_if_ctrl_dir}};
-  wire [ANGLE_W-1:0] if_nzero = ~if_zero;
-  wire [ANGLE_W-1:0] if_ci = {{(ANGLE_W-1){1'b0}}, ~rg_if_ctrl_dir};
-  wire [ANGLE_W-1:0] if_src = rg_if_ctrl_daec ? trk_angle : unc_q;
-  wire [ANGLE_W-1:0] if_angle = (if_src + if_nzero + if_ci) ^ if_inv;
+  // (ANGLECOM is the same angle: one adder for both.) x - zero = ~(~x + zero) and, with DIR,
+  // zero - x = ~x + zero + 1: each angle takes one adder, ~x + zero + DIR, complemented without
+  // DIR. Its operands reach the carry chain as they are: ~x comes from a LUT that is there anyway
+  // (the DAEC select; ANGLEUNC's flop, held complemented) and the zero is the register itself, so
+  // no LUT inverts an operand in front of the carry chain, and the complement of the sum folds
+  // into the sum bits' logic.
+  wire [ANGLE_W-1:0] if_ninv = {ANGLE_W{~rg_if_ctrl_dir}};
+  wire [ANGLE_W-1:0] if_ci = {{(ANGLE_W-1){1'b0}}, rg_if_ctrl_dir};
+  wire [ANGLE_W-1:0] if_src_n = rg_if_ctrl_daec ? ~trk_angle : unc_n_q;
+  wire [ANGLE_W-1:0] if_angle = (if_src_n + if_zero + if_ci) ^ if_ninv;
   wire [ANGLE_W-1:0] if_com = if_angle;
-  wire [ANGLE_W-1:0] if_unc = (unc_q + if_nzero + if_ci) ^ if_inv;
+  wire [ANGLE_W-1:0] if_unc = (unc_n_q + if_zero + if_ci) ^ if_ninv;
 
   // ---- the interfaces ----
   // Their inputs as wide as their registers' fields (ABZ_INDEX.POS has one bit more than N: a
