@@ -243,16 +243,19 @@ module acore_fold_poly #(
   wire [ADDR_W-1:0] bs  [0:DEGREE];
   wire              ov  [0:DEGREE];
   wire              st  [0:DEGREE];
-  reg [S_W-1:0]    u0_q, u1_q;
-  reg [ADDR_W-1:0] b0_q, b1_q;
-  reg              ov0_q, st0_q, ov1_q, st1_q;
+  // F >= 2: the item's registers load at its start only and hold it until the next item's, at
+  // least 2 clocks later, so they present it at the first step's start as well (clock 2): no
+  // second register each. F = 1: a register a clock (an item may come every clock).
+  localparam integer HOLD0 = (F >= 2) ? 1 : 0;
+  reg [S_W-1:0]    u0_q;
+  reg [ADDR_W-1:0] b0_q;
+  reg              ov0_q, st0_q, st1_q;
   always @(posedge clk_i) begin
-    u0_q  <= u_next;
-    b0_q  <= base_i;
-    ov0_q <= ovf_i;
-    u1_q  <= u0_q;
-    b1_q  <= b0_q;
-    ov1_q <= ov0_q;
+    if (HOLD0 == 0 || start_i) begin
+      u0_q  <= u_next;
+      b0_q  <= base_i;
+      ov0_q <= ovf_i;
+    end
     if (rst_i) begin
       st0_q <= 1'b0;
       st1_q <= 1'b0;
@@ -273,9 +276,25 @@ module acore_fold_poly #(
       assign acc[0] = an_q;
     end
   endgenerate
-  assign us[0]  = u1_q;
-  assign bs[0]  = b1_q;
-  assign ov[0]  = ov1_q;
+  generate
+    if (HOLD0 != 0) begin : g_hold0
+      assign us[0] = u0_q;
+      assign bs[0] = b0_q;
+      assign ov[0] = ov0_q;
+    end else begin : g_item1
+      reg [S_W-1:0]    u1_q;
+      reg [ADDR_W-1:0] b1_q;
+      reg              ov1_q;
+      always @(posedge clk_i) begin
+        u1_q  <= u0_q;
+        b1_q  <= b0_q;
+        ov1_q <= ov0_q;
+      end
+      assign us[0] = u1_q;
+      assign bs[0] = b1_q;
+      assign ov[0] = ov1_q;
+    end
+  endgenerate
   assign st[0]  = st1_q;
 
   genvar m;
