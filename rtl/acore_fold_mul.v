@@ -28,7 +28,10 @@
 // straight into the accumulator (acc = acc + (O or -O) + O >>> 1), O shifts by 2 and X by 2
 // (zeros in). Once X is empty the accumulator adds nothing and holds the result until the next
 // start_i, F clocks later: LATENCY = F. One O, one X and one accumulator serve every product.
-// A new product may start every F clocks. Sums are modulo 2^P_W (harmless while the exact result
+// A new product may start every F clocks. With A_PRE = 1 (g_seq only) a_i is read at pre_i, one
+// clock before start_i, and O waits through the start clock: the caller need not hold a in a
+// register of its own (acore_fold_poly's first step reads its coefficient word straight from the
+// register file's memory). Sums are modulo 2^P_W (harmless while the exact result
 // fits P_W bits, which the elaboration check enforces). No reset: data only; start_i must be low
 // (or its product ignored) until the first real operand.
 //
@@ -54,11 +57,15 @@ module acore_fold_mul #(
   parameter integer F = 2,
   // 0: adders and shifters (every partial product floored); 1: the multiply operator (DSP blocks;
   // the full product floored once).
-  parameter integer MULT = 0
+  parameter integer MULT = 0,
+  // 1 (the accumulate-in-place form only): a_i is read at pre_i, one clock before start_i.
+  parameter integer A_PRE = 0
 ) (
   input  wire              clk_i,
   // a_i and b_i are valid (a product starts); needed for F > 1 only.
   input  wire              start_i,
+  // A_PRE = 1: a_i is valid (one clock before start_i); else unused.
+  input  wire              pre_i,
   input  wire [A_W-1:0]    a_i,
   input  wire [B_W-1:0]    b_i,
   // Addend, valid INIT_AT clocks after start_i.
@@ -84,6 +91,9 @@ module acore_fold_mul #(
   localparam integer NG = (B_W + 1) / 2;
   localparam integer SEQ = (MULT == 0) ? acore_fold_mul_seq(B_W, F) : 0;
 
+  acore_check #(.OK(A_PRE == 0 || SEQ != 0), .VALUE(A_PRE),
+    .MSG("illegal parameter: acore_fold_mul: A_PRE = 1 needs the accumulate-in-place form (acore_fold_mul_seq, MULT = 0)"))
+    A_PRE_needs_the_in_place_form ();
   acore_check #(.OK(F == 1 || B >= 2), .VALUE(B_W),
     .MSG("illegal parameter: acore_fold_mul: B_W over F clocks must leave at least 2 bits a clock"))
     B_W_must_leave_2_bits_a_clock ();
@@ -121,7 +131,7 @@ module acore_fold_mul #(
       always @(posedge clk_i) p_q <= prod + init_ext;
       assign p_o = p_q;
       // start_i is not needed: the tree takes an operand every clock.
-      wire unused_start = ^{start_i, o0};  // (o0: the folded forms')
+      wire unused_start = ^{start_i, pre_i, o0};  // (o0, pre_i: the in-place form's)
     end else if (MULT != 0) begin : g_hw
       // The product of the operands of start_i, floored, INIT_AT clocks later (the multiplier runs
       // every clock; only the start clock's product is used), then the addend, then to LATENCY.
@@ -134,7 +144,7 @@ module acore_fold_mul #(
       always @(posedge clk_i) sum_q <= prod + init_ext;
       acore_delay #(.W(P_W), .DEPTH(LATENCY - INIT_AT - 1)) u_dsum (
         .clk_i(clk_i), .en_i(1'b1), .d_i(sum_q), .q_o(p_o));
-      wire unused_start = ^{start_i, o0};  // (o0: the folded forms')
+      wire unused_start = ^{start_i, pre_i, o0};  // (o0, pre_i: the in-place form's)
     end else if (SEQ != 0) begin : g_seq
       // X: b padded to NG groups.
       localparam integer X_W = 2 * NG;
@@ -154,14 +164,14 @@ module acore_fold_mul #(
       wire signed [O_W-1:0] o_s = o_q;
       wire [O_W-1:0] o_next = o_s >>> 2;
       wire [O_W-1:0] o_h = o_s >>> 1;
+      // O is loaded at start_i (or at pre_i with A_PRE, then waits through the start clock).
+      wire o_load = (A_PRE != 0) ? pre_i : start_i;
+      wire o_wait = (A_PRE != 0) ? start_i : 1'b0;
       always @(posedge clk_i) begin
-        if (start_i) begin
-          o_q <= o0;
-          x_q <= b_pad;
-        end else if (!add_init) begin
-          o_q <= o_next;
-          x_q <= {x_q[X_W-3:0], 2'b00};
-        end
+        if (o_load) o_q <= o0;
+        else if (!add_init && !o_wait) o_q <= o_next;
+        if (start_i) x_q <= b_pad;
+        else if (!add_init) x_q <= {x_q[X_W-3:0], 2'b00};
       end
       // The two terms of a clock, each as wide as its operands plus a sign bit for their sum: the
       // first group's top bit of a signed b weighs -2^(B_W-1) (~O plus a carry-in); the addend
@@ -185,6 +195,9 @@ module acore_fold_mul #(
         else acc_q <= acc_q + s0_ext;
       assign p_o = {{(P_W-ACC_W){acc_q[ACC_W-1]}}, acc_q};
       wire unused_init_ext = ^init_ext;  // (the other forms')
+      if (A_PRE == 0) begin : g_nopre
+        wire unused_pre = pre_i;
+      end
     end else begin : g_fold
       localparam integer X_W = F * B;
       localparam integer PAD = X_W - B_W;
@@ -265,6 +278,7 @@ module acore_fold_mul #(
       reg [P_W-1:0] acc_q;
       always @(posedge clk_i) acc_q <= (t_first ? init_ext : acc_q) + t_sum;
       assign p_o = acc_q;
+      wire unused_pre = pre_i;  // (the in-place form's)
     end
   endgenerate
 

@@ -21,7 +21,8 @@
 // that read's address (a_n and steps 0..1 of the first item, a_n and step 0 of the second on port
 // 0; the rest on port 1 at F = 16: 2 ports instead of 3).
 //
-//   clock 0: item in, a_n addressed | 1: a_n read | 2: step 0 | step m: ML clocks of multiplier
+//   clock 0: item in, a_n addressed | 1: a_n read (into step 0's O with the in-place multiplier,
+//   acore_fold_mul's A_PRE) | 2: step 0 | step m: ML clocks of multiplier
 //   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
 //   LATENCY = 5 + DEGREE (ML + 1) (26 at F = 1 with the defaults), ML = acore_fold_mul's LATENCY
 `resetall
@@ -158,7 +159,8 @@ module acore_fold_poly #(
   endfunction
 
   // Clock 0: address a_n; u (centred with XCENTER) and the item registered. Clock 1: a_n into a
-  // register (a block RAM's word should not start a path through logic), the item beside it.
+  // register (a block RAM's word should not start a path through logic: no more than the one
+  // multiplexer of the first step's O, where that register is O itself), the item beside it.
   wire [S_W-1:0] u_next;
   generate
     if (XCENTER != 0) begin : g_centre
@@ -241,18 +243,19 @@ module acore_fold_poly #(
   wire [ADDR_W-1:0] bs  [0:DEGREE];
   wire              ov  [0:DEGREE];
   wire              st  [0:DEGREE];
-  reg [S_W-1:0]    u0_q, u1_q;
-  reg [ADDR_W-1:0] b0_q, b1_q;
-  reg              ov0_q, st0_q, ov1_q, st1_q;
-  reg [ACC_W-1:0]  an_q;
+  // F >= 2: the item's registers load at its start only and hold it until the next item's, at
+  // least 2 clocks later, so they present it at the first step's start as well (clock 2): no
+  // second register each. F = 1: a register a clock (an item may come every clock).
+  localparam integer HOLD0 = (F >= 2) ? 1 : 0;
+  reg [S_W-1:0]    u0_q;
+  reg [ADDR_W-1:0] b0_q;
+  reg              ov0_q, st0_q, st1_q;
   always @(posedge clk_i) begin
-    u0_q  <= u_next;
-    b0_q  <= base_i;
-    ov0_q <= ovf_i;
-    an_q  <= coef_acc(cw[0]);
-    u1_q  <= u0_q;
-    b1_q  <= b0_q;
-    ov1_q <= ov0_q;
+    if (HOLD0 == 0 || start_i) begin
+      u0_q  <= u_next;
+      b0_q  <= base_i;
+      ov0_q <= ovf_i;
+    end
     if (rst_i) begin
       st0_q <= 1'b0;
       st1_q <= 1'b0;
@@ -261,10 +264,37 @@ module acore_fold_poly #(
       st1_q <= st0_q;
     end
   end
-  assign acc[0] = an_q;
-  assign us[0]  = u1_q;
-  assign bs[0]  = b1_q;
-  assign ov[0]  = ov1_q;
+  // a_n for the first step: with the accumulate-in-place multiplier (A_PRE) read by it straight
+  // from the memory's word at clock 1 (its O register is the word's register); else a register.
+  localparam integer A_PRE = (MULT == 0) ? acore_fold_mul_seq(S_W, F) : 0;
+  generate
+    if (A_PRE != 0) begin : g_anpre
+      assign acc[0] = coef_acc(cw[0]);
+    end else begin : g_anreg
+      reg [ACC_W-1:0] an_q;
+      always @(posedge clk_i) an_q <= coef_acc(cw[0]);
+      assign acc[0] = an_q;
+    end
+  endgenerate
+  generate
+    if (HOLD0 != 0) begin : g_hold0
+      assign us[0] = u0_q;
+      assign bs[0] = b0_q;
+      assign ov[0] = ov0_q;
+    end else begin : g_item1
+      reg [S_W-1:0]    u1_q;
+      reg [ADDR_W-1:0] b1_q;
+      reg              ov1_q;
+      always @(posedge clk_i) begin
+        u1_q  <= u0_q;
+        b1_q  <= b0_q;
+        ov1_q <= ov0_q;
+      end
+      assign us[0] = u1_q;
+      assign bs[0] = b1_q;
+      assign ov[0] = ov1_q;
+    end
+  endgenerate
   assign st[0]  = st1_q;
 
   genvar m;
@@ -305,9 +335,10 @@ module acore_fold_poly #(
       end
       wire [P_W-1:0] sum;
       acore_fold_mul #(
-        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F), .MULT(MULT)
+        .A_W(ACC_W), .B_W(S_W), .B_SIGNED(1), .RSHIFT(U_SH), .INIT_W(ACC_W), .P_W(P_W), .F(F), .MULT(MULT),
+        .A_PRE((m == 0) ? A_PRE : 0)
       ) u_mul (
-        .clk_i(clk_i), .start_i(st[m]), .a_i(acc[m]), .b_i(us[m]),
+        .clk_i(clk_i), .start_i(st[m]), .pre_i((m == 0) ? st0_q : 1'b0), .a_i(acc[m]), .b_i(us[m]),
         .init_i(coef_acc(cw[m + 1])), .p_o(sum));
       // The item beside the multiplier to the next step: start, and argument with base address.
       // The start bits are reset (as the chain's first two), so a sparse line's pushes and pops

@@ -101,7 +101,7 @@ module acore_fold_scaler #(
   acore_fold_mul #(
     .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F), .MULT(MULT)
   ) u_mul (
-    .clk_i(clk_i), .start_i(start_m), .a_i(t_m), .b_i(r_q), .init_i(half), .p_o(p));
+    .clk_i(clk_i), .start_i(start_m), .pre_i(1'b0), .a_i(t_m), .b_i(r_q), .init_i(half), .p_o(p));
 
   wire [S_W-1:0] s_d;
   wire ovf_d;
