@@ -164,8 +164,10 @@ module acore_track #(
   // D = COMP_LATENCY + lead / 2^LEAD_F with LEAD_F fraction bits.
   localparam integer LAT_D = COMP_LATENCY * (2 ** LEAD_F);
   wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};
-  // Half an output LSB in the loop's scale (round to nearest).
+  // Half an output LSB in the loop's scale (round to nearest; SERIAL = 3 takes its low FRAC_W bits).
+  /* verilator lint_off UNUSEDSIGNAL */
   wire [P_W-1:0] half = {{ANGLE_W{1'b0}}, 1'b1, {(FRAC_W - 1){1'b0}}};
+  /* verilator lint_on UNUSEDSIGNAL */
 
   generate
     if (SERIAL == 0) begin : g_par
@@ -526,11 +528,18 @@ module acore_track #(
     // (sg = 1); neither sum leaves P_W signed bits (0 <= thr * 2^FRAC_W < 2^(P_W-1)), so it is
     // the sum's bit P_W-1 against sg.
     wire sg = t_q[P_W-1];
-    wire [P_W-1:0] thr_x = {1'b0, lot_thr_i, {FRAC_W{1'b0}}} ^ {P_W{~sg}};
-    wire [TW-1:0] b = {{(TW - P_W){sx}},
-                       ({P_W{op_x}} & x_q) | ({P_W{op_v}} & v_q) |
-                       ({P_W{op_t}} & {~th_q, {FRAC_W{1'b1}}}) | ({P_W{op_h}} & half) |
-                       ({P_W{op_l}} & thr_x)};
+    wire [ANGLE_W-1:0] thr_x = {1'b0, lot_thr_i} ^ {ANGLE_W{~sg}};  // its low FRAC_W bits: ~sg
+    // B's low FRAC_W bits are phi's, v's, or all ones (~theta's and ~(thr * 2^FRAC_W)'s low bits)
+    // or 0, with half's one bit beside: a two-bit code, each bit a function of four flops, makes
+    // every such bit of B one LUT of the code and phi's and v's bit (the selects are exclusive).
+    wire k1 = op_t | (op_l & ~sg);
+    wire s_x = op_x | k1, s_v = op_v | k1;
+    wire [FRAC_W-1:0] b_lo = s_v ? (s_x ? {FRAC_W{1'b1}} : v_q[FRAC_W-1:0]) :
+                             (s_x ? x_q[FRAC_W-1:0] : {FRAC_W{1'b0}});
+    wire [ANGLE_W-1:0] b_hi = ({ANGLE_W{op_x}} & x_q[P_W-1:FRAC_W]) |
+                              ({ANGLE_W{op_v}} & v_q[P_W-1:FRAC_W]) | ({ANGLE_W{op_t}} & ~th_q) |
+                              ({ANGLE_W{op_l}} & thr_x);
+    wire [TW-1:0] b = {{(TW - P_W){sx}}, b_hi, b_lo | ({FRAC_W{op_h}} & half[FRAC_W-1:0])};
     wire [TW-1:0] sum = t_q + b;
     // The turn count moved by the carry above phi (two bits: -1, 0 or +1).
     wire [1:0] dlt = sum[P_W+1:P_W];
