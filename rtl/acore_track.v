@@ -164,8 +164,10 @@ module acore_track #(
   // D = COMP_LATENCY + lead / 2^LEAD_F with LEAD_F fraction bits.
   localparam integer LAT_D = COMP_LATENCY * (2 ** LEAD_F);
   wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};
-  // Half an output LSB in the loop's scale (round to nearest).
+  // Half an output LSB in the loop's scale (round to nearest; SERIAL = 3 takes its low FRAC_W bits).
+  /* verilator lint_off UNUSEDSIGNAL */
   wire [P_W-1:0] half = {{ANGLE_W{1'b0}}, 1'b1, {(FRAC_W - 1){1'b0}}};
+  /* verilator lint_on UNUSEDSIGNAL */
 
   generate
     if (SERIAL == 0) begin : g_par
@@ -514,6 +516,7 @@ module acore_track #(
     // product's additions of phi and half, p_sh its other steps.
     reg eq_lend, eq_pend;
     reg at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l;
+    reg s_x, s_v;
     // t's next value, registered likewise: written (t_we) or cleared (t_clr), with tm the choice
     // of sum, ~sum (the error), sum shifted one bit, t shifted SB bits.
     reg t_we, t_clr;
@@ -526,11 +529,17 @@ module acore_track #(
     // (sg = 1); neither sum leaves P_W signed bits (0 <= thr * 2^FRAC_W < 2^(P_W-1)), so it is
     // the sum's bit P_W-1 against sg.
     wire sg = t_q[P_W-1];
-    wire [P_W-1:0] thr_x = {1'b0, lot_thr_i, {FRAC_W{1'b0}}} ^ {P_W{~sg}};
-    wire [TW-1:0] b = {{(TW - P_W){sx}},
-                       ({P_W{op_x}} & x_q) | ({P_W{op_v}} & v_q) |
-                       ({P_W{op_t}} & {~th_q, {FRAC_W{1'b1}}}) | ({P_W{op_h}} & half) |
-                       ({P_W{op_l}} & thr_x)};
+    wire [ANGLE_W-1:0] thr_x = {1'b0, lot_thr_i} ^ {ANGLE_W{~sg}};  // its low FRAC_W bits: ~sg
+    // B's low FRAC_W bits are phi's, v's, or all ones (~theta's and ~(thr * 2^FRAC_W)'s low bits)
+    // or 0, with half's one bit beside: a registered two-bit code (s_x: phi or the ones, s_v: v or
+    // the ones; the selects are exclusive) makes every such bit of B one LUT of the code and phi's
+    // and v's bit, one LUT level from flops.
+    wire [FRAC_W-1:0] b_lo = s_v ? (s_x ? {FRAC_W{1'b1}} : v_q[FRAC_W-1:0]) :
+                             (s_x ? x_q[FRAC_W-1:0] : {FRAC_W{1'b0}});
+    wire [ANGLE_W-1:0] b_hi = ({ANGLE_W{op_x}} & x_q[P_W-1:FRAC_W]) |
+                              ({ANGLE_W{op_v}} & v_q[P_W-1:FRAC_W]) | ({ANGLE_W{op_t}} & ~th_q) |
+                              ({ANGLE_W{op_l}} & thr_x);
+    wire [TW-1:0] b = {{(TW - P_W){sx}}, b_hi, b_lo | ({FRAC_W{op_h}} & half[FRAC_W-1:0])};
     wire [TW-1:0] sum = t_q + b;
     // The turn count moved by the carry above phi (two bits: -1, 0 or +1).
     wire [1:0] dlt = sum[P_W+1:P_W];
@@ -619,9 +628,11 @@ module acore_track #(
     wire ins_x_n = ph_n && s_n == S_LF;
     wire ins_h_n = ph_n && s_n == S_LH;
     wire p_sh_n = ph_n && !ins_x_n && !ins_h_n;
+    wire op_x_n = take || at_x_n || ins_x_n || (pl && eq_lend);
+    wire op_v_n = c1 || at_v_n || (p_sh_n && w_pad[s_n]);
     always @(posedge clk_i) begin
       if (rst_i) begin
-        {at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l} <= 10'd0;
+        {at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l, s_x, s_v} <= 12'd0;
         {t_we, t_clr, tm} <= 4'd0;
       end else begin
         t_clr <= (ph && eq_pend) || r2 || (pl_n && s_n == S_LOOP_END);
@@ -633,11 +644,15 @@ module acore_track #(
         shb <= shb_n;
         sh1 <= sh1_n;
         p_sh <= p_sh_n;
-        op_x <= take || at_x_n || ins_x_n || (pl && eq_lend);
-        op_v <= c1 || at_v_n || (p_sh_n && w_pad[s_n]);
+        op_x <= op_x_n;
+        op_v <= op_v_n;
         op_t <= c2;
         op_h <= ins_h_n || r2;
         op_l <= c3;
+        // The ones: ~theta's in C3; ~(thr * 2^FRAC_W)'s in C4 when e >= 0, e's sign the inverse
+        // of sum's bit P_W-1 in C3 (t = ~sum there).
+        s_x <= op_x_n || c2 || (c3 && sum[P_W-1]);
+        s_v <= op_v_n || c2 || (c3 && sum[P_W-1]);
       end
     end
     always @(posedge clk_i) begin
