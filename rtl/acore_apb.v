@@ -18,7 +18,7 @@
 //
 // APB timing: zero wait states (PREADY is always high). The shell decodes the address and reads
 // in the setup phase (PSEL && !PENABLE), so the access phase returns registered data, also from
-// the shadow RAM, which holds CRC_SHADOW, CRC_REF and CRC_SCRUB too (rtl/acore_coef_bank.v).
+// the shadow RAM, which holds CRC_EXPECTED, CRC_SHADOW, CRC_REF and CRC_SCRUB too (rtl/acore_coef_bank.v).
 // PSLVERR (with PRDATA = 0 and no effect) answers: an unmapped or unaligned address; a write with PSTRB != 4'b1111 (32-bit writes only); a write to a read-only register;
 // a shadow-window access, a commit request or a CRC_EXPECTED write while a commit is busy
 // (decided in the setup phase). Busy refusals are errors rather than wait states because a commit
@@ -243,21 +243,27 @@ module acore_apb #(
   assign rg_ctrl_commit_lock = busy;
   assign rg_crc_expected_lock = busy;
 
+  // The shadow's write data is PWDATA whole (CRC_EXPECTED's word), whose REG_W low bits the
+  // COEF window's write data repeats: that copy goes unused.
+  wire coef_wdata_unused = ^rg_coef_wdata;
+
   // ---- the coefficient bank: shadow, commit, CRC, scrubber ----
   acore_coef_bank #(
     .REG_W(REG_W), .WORDS(WORDS), .RD_LAT(HOST_RD_LAT), .RD_HOLD((SERIAL == 0) ? 1 : 0), .CRC_W(CRC_W),
     .CNT_W(CNT_W), .SETTLE(2),
-    .INIT_FILE(INIT_FILE)
+    .INIT_FILE(INIT_FILE), .EXP_RESET(CRC_EXPECTED_RESET)
   ) u_bank (
     .clk_i(clk_i), .rst_i(rst_i),
     // The shadow is the COEF window's memory (the block reads it in every setup phase).
-    .sh_we_i(rg_coef_we), .sh_waddr_i(rg_coef_addr), .sh_wdata_i(rg_coef_wdata),
+    // (its write data PWDATA: CRC_EXPECTED's word, whose REG_W low bits are a COEF word's)
+    .sh_we_i(rg_coef_we), .sh_waddr_i(rg_coef_addr), .sh_wdata_i(rg_crc_expected_wdata),
     .sh_re_i(rg_coef_re), .sh_raddr_i(rg_coef_addr), .crc_shadow_re_i(rg_crc_shadow_re),
-    .crc_scrub_re_i(rg_crc_scrub_re), .crc_ref_re_i(rg_crc_ref_re), .sh_rdata_o(rg_coef_rdata),
+    .crc_scrub_re_i(rg_crc_scrub_re), .crc_ref_re_i(rg_crc_ref_re),
+    .exp_re_i(rg_crc_expected_re), .exp_we_i(rg_crc_expected_we), .sh_rdata_o(rg_coef_rdata),
     .crc_shadow_zero_o(rg_crc_shadow_zero), .crc_scrub_zero_o(rg_crc_scrub_zero),
     .crc_ref_zero_o(rg_crc_ref_zero),
     .commit_i(rg_ctrl_commit), .check_i(rg_ctrl_crc_check), .scrub_i(rg_ctrl_scrub),
-    .crc_expected_i(rg_crc_expected), .accept_i(accept), .emit_i(emit),
+    .accept_i(accept), .emit_i(emit),
     .busy_o(busy), .bank_o(bank), .ref_valid_o(ref_valid),
     .scrub_passes_o(rg_scrub_passes_passes),
     .done_o(done), .refused_o(refused), .scrub_err_o(scrub_err),

@@ -103,10 +103,12 @@ module acore_apb_regblock #(
   output wire [MAG_W-1:0] mag_hi_o,
   // MAG_HI.MAG_HI: written in this clock
   output wire mag_hi_we_o,
-  // CRC_EXPECTED.CRC_EXPECTED: the value
-  output wire [31:0] crc_expected_o,
-  // CRC_EXPECTED.CRC_EXPECTED: written in this clock
+  // CRC_EXPECTED.CRC_EXPECTED: read its word of COEF's memory now (a setup phase)
+  output wire crc_expected_re_o,
+  // CRC_EXPECTED.CRC_EXPECTED: write its word now
   output wire crc_expected_we_o,
+  // CRC_EXPECTED.CRC_EXPECTED: the word
+  output wire [31:0] crc_expected_wdata_o,
   // CRC_EXPECTED.CRC_EXPECTED: refused while STATUS.BUSY
   input  wire crc_expected_lock_i,
   // CRC_SHADOW.CRC_SHADOW: read its word of COEF's memory now (a setup phase)
@@ -131,7 +133,7 @@ module acore_apb_regblock #(
   output wire coef_we_o,
   // COEF: the word written
   output wire [REG_W-1:0] coef_wdata_o,
-  // COEF: the word read, the clock after coef_re_o (its REG_W low bits; all 32 for CRC_SHADOW, CRC_REF, CRC_SCRUB)
+  // COEF: the word read, the clock after coef_re_o (its REG_W low bits; all 32 for CRC_EXPECTED, CRC_SHADOW, CRC_REF, CRC_SCRUB)
   input  wire [31:0] coef_rdata_i,
   // COEF: any access refused while STATUS.BUSY
   input  wire coef_lock_i
@@ -172,7 +174,6 @@ module acore_apb_regblock #(
   localparam integer IRQ_PENDING = 0;
   localparam integer MAG_LO_MAG_LO = 0;
   localparam integer MAG_HI_MAG_HI = 0;
-  localparam integer CRC_EXPECTED_CRC_EXPECTED = 0;
   localparam integer SCRUB_PASSES_PASSES = 0;
   localparam integer COEF_ADDR_W = (COEF_SIZE > 1) ? $clog2(COEF_SIZE) : 1;
   localparam [31:0] ID_VALUE = 32'h41430100;
@@ -206,7 +207,6 @@ module acore_apb_regblock #(
   reg status_done_q;
   reg [MAG_W-1:0] mag_lo_q;
   reg [MAG_W-1:0] mag_hi_q;
-  reg [31:0] crc_expected_q;
 
   // ---- decode and read in the setup phase ----
   wire setup = psel_i & ~penable_i;
@@ -263,7 +263,6 @@ module acore_apb_regblock #(
   reg [31:0] rv_irq;
   reg [31:0] rv_mag_lo;
   reg [31:0] rv_mag_hi;
-  reg [31:0] rv_crc_expected;
   reg [31:0] rv_scrub_passes;
   always @(*) begin
     rv_ctrl = 32'd0;
@@ -286,8 +285,6 @@ module acore_apb_regblock #(
     rv_mag_lo[MAG_LO_MAG_LO +: MAG_W] = mag_lo_q;
     rv_mag_hi = 32'd0;
     rv_mag_hi[MAG_HI_MAG_HI +: MAG_W] = mag_hi_q;
-    rv_crc_expected = 32'd0;
-    rv_crc_expected[CRC_EXPECTED_CRC_EXPECTED +: 32] = crc_expected_q;
     rv_scrub_passes = 32'd0;
     rv_scrub_passes[SCRUB_PASSES_PASSES +: 16] = scrub_passes_passes_i;
   end
@@ -302,11 +299,10 @@ module acore_apb_regblock #(
       ({32{rs_irq}} & rv_irq) |
       ({32{rs_mag_lo}} & rv_mag_lo) |
       ({32{rs_mag_hi}} & rv_mag_hi) |
-      ({32{rs_crc_expected}} & rv_crc_expected) |
       ({32{rs_scrub_passes}} & rv_scrub_passes);
   // Registers kept in COEF's memory: read through its port (their words the
   // owner's), 0 while the owner has no value for them.
-  wire mem_coef_sel = in_regs & ((rs_crc_shadow & ~crc_shadow_zero_i) | (rs_crc_ref & ~crc_ref_zero_i) | (rs_crc_scrub & ~crc_scrub_zero_i));
+  wire mem_coef_sel = in_regs & (rs_crc_expected | (rs_crc_shadow & ~crc_shadow_zero_i) | (rs_crc_ref & ~crc_ref_zero_i) | (rs_crc_scrub & ~crc_scrub_zero_i));
 
   // Setup phase: the answer and which register an error-free write will change,
   // each a flop set only by a setup phase and clear in every other clock. Under the
@@ -356,6 +352,7 @@ module acore_apb_regblock #(
   assign coef_addr_o = coef_idx[COEF_ADDR_W-1:0];
   assign coef_we_o = access & w_coef_q;
   assign coef_wdata_o = pwdata_i[REG_W-1:0];
+  assign crc_expected_re_o = setup & ~pwrite_i & in_regs & rs_crc_expected;
   assign crc_shadow_re_o = setup & ~pwrite_i & in_regs & rs_crc_shadow;
   assign crc_ref_re_o = setup & ~pwrite_i & in_regs & rs_crc_ref;
   assign crc_scrub_re_o = setup & ~pwrite_i & in_regs & rs_crc_scrub;
@@ -379,7 +376,6 @@ module acore_apb_regblock #(
       status_done_q <= 1'd0;
       mag_lo_q <= MAG_LO_RST[MAG_W-1:0];
       mag_hi_q <= MAG_HI_RST[MAG_W-1:0];
-      crc_expected_q <= 32'd0;
     end else begin
       if (wr_ctrl) begin
         ctrl_crc_check_q <= pwdata_i[CTRL_CRC_CHECK];
@@ -397,9 +393,6 @@ module acore_apb_regblock #(
       end
       if (wr_mag_hi) begin
         mag_hi_q <= pwdata_i[MAG_HI_MAG_HI +: MAG_W];
-      end
-      if (wr_crc_expected) begin
-        crc_expected_q <= pwdata_i[CRC_EXPECTED_CRC_EXPECTED +: 32];
       end
     end
   end
@@ -419,8 +412,8 @@ module acore_apb_regblock #(
   assign mag_lo_we_o = wr_mag_lo;
   assign mag_hi_o = mag_hi_q;
   assign mag_hi_we_o = wr_mag_hi;
-  assign crc_expected_o = crc_expected_q;
   assign crc_expected_we_o = wr_crc_expected;
+  assign crc_expected_wdata_o = pwdata_i;
 
 endmodule
 

@@ -139,8 +139,9 @@ wire [MAG_W-1:0] rg_mag_lo;  // MAG_LO.MAG_LO: the value
 wire rg_mag_lo_we;  // MAG_LO.MAG_LO: written in this clock
 wire [MAG_W-1:0] rg_mag_hi;  // MAG_HI.MAG_HI: the value
 wire rg_mag_hi_we;  // MAG_HI.MAG_HI: written in this clock
-wire [31:0] rg_crc_expected;  // CRC_EXPECTED.CRC_EXPECTED: the value
-wire rg_crc_expected_we;  // CRC_EXPECTED.CRC_EXPECTED: written in this clock
+wire rg_crc_expected_re;  // CRC_EXPECTED.CRC_EXPECTED: read its word of COEF's memory now (a setup phase)
+wire rg_crc_expected_we;  // CRC_EXPECTED.CRC_EXPECTED: write its word now
+wire [31:0] rg_crc_expected_wdata;  // CRC_EXPECTED.CRC_EXPECTED: the word
 wire rg_crc_expected_lock;  // in: CRC_EXPECTED.CRC_EXPECTED: refused while STATUS.BUSY
 wire rg_crc_shadow_re;  // CRC_SHADOW.CRC_SHADOW: read its word of COEF's memory now (a setup phase)
 wire rg_crc_shadow_zero;  // in: CRC_SHADOW.CRC_SHADOW: no value yet, reads 0
@@ -153,7 +154,7 @@ wire rg_coef_re;  // COEF: read the word at the address
 wire [COEF_ADDR_W-1:0] rg_coef_addr;  // COEF: the word index
 wire rg_coef_we;  // COEF: write the word
 wire [REG_W-1:0] rg_coef_wdata;  // COEF: the word written
-wire [31:0] rg_coef_rdata;  // in: COEF: the word read, the clock after coef_re_o (its REG_W low bits; all 32 for CRC_SHADOW, CRC_REF, CRC_SCRUB)
+wire [31:0] rg_coef_rdata;  // in: COEF: the word read, the clock after coef_re_o (its REG_W low bits; all 32 for CRC_EXPECTED, CRC_SHADOW, CRC_REF, CRC_SCRUB)
 wire rg_coef_lock;  // in: COEF: any access refused while STATUS.BUSY
 acore_apb_regblock #(
   .APB_AW(APB_AW),
@@ -205,8 +206,9 @@ acore_apb_regblock #(
   .mag_lo_we_o(rg_mag_lo_we),
   .mag_hi_o(rg_mag_hi),
   .mag_hi_we_o(rg_mag_hi_we),
-  .crc_expected_o(rg_crc_expected),
+  .crc_expected_re_o(rg_crc_expected_re),
   .crc_expected_we_o(rg_crc_expected_we),
+  .crc_expected_wdata_o(rg_crc_expected_wdata),
   .crc_expected_lock_i(rg_crc_expected_lock),
   .crc_shadow_re_o(rg_crc_shadow_re),
   .crc_shadow_zero_i(rg_crc_shadow_zero),

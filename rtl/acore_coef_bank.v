@@ -10,7 +10,7 @@
 //   CHECK   the shadow's words, 0..WORDS-1, through the CRC engine
 //           (32/CRC_W clocks a word) while the samples in flight drain: the shell takes no new sample
 //           and counts accepted - emitted (accept_i, emit_i), so the tops need no new port. Both done:
-//           check_i and CRC != crc_expected_i -> refused: the active words stay, refused_o, done_o;
+//           check_i and CRC != CRC_EXPECTED's word -> refused: the active words stay, refused_o, done_o;
 //           otherwise:
 //   STREAM  the shadow's words into the top's register file through its host write port, one a clock
 //           (the shadow's output register drives the port's data);
@@ -33,20 +33,26 @@
 // The top's host port belongs to the commit while it streams and to the scrubber otherwise; the
 // host never drives it (the shell's register map has no window on the active words). The shadow's
 // read port belongs to the commit while busy_o, to the register block otherwise, and to the
-// register block's reads of CRC_SHADOW and CRC_SCRUB always.
+// register block's reads of the CRC registers always.
 //
-// CRC_SHADOW, CRC_SCRUB and CRC_REF live in the shadow's block RAM, in the three words after the
-// image (WORDS, WORDS + 1, WORDS + 2; the RAM is 32 bits wide, which costs no block RAM where two
-// 16-bit ones hold an 18-bit word): no flops, no read multiplexer of their own. The register block
-// reads them in the setup phase like a COEF word (crc_*_re_i), also while busy: the commit's
-// shadow read of that clock waits one clock (the CRC engine keeps the word it folds, so only the
-// read itself moves), and a CRC word is never read and written in one clock: CRC_SHADOW is
-// written when the CHECK pass's CRC is ready and no CRC read is under way (the engine holds its
-// CRC), CRC_REF when a commit is applied (a clock later after a CRC read: the engine still holds
-// the CRC then), CRC_SCRUB when a scrubber pass ends; the pass's end waits for a clock without an
-// APB setup phase or shadow write, because it also reads CRC_REF's word for the scrubber's
+// CRC_SHADOW, CRC_SCRUB, CRC_REF and CRC_EXPECTED live in the shadow's block RAM, in the four
+// words after the image (WORDS .. WORDS + 3; the RAM is 32 bits wide, which costs no block RAM
+// where two 16-bit ones hold an 18-bit word): no flops, no read multiplexer of their own.
+// CRC_EXPECTED is the register block's to write (exp_we_i, in an APB access phase, refused while
+// busy_o); reset writes its reset value (EXP_RESET) into its word. The CHECK pass's end reads it
+// (with CRC_SHADOW's write: another word) and the comparator takes it the clock after, so a
+// checked commit compares with the word, which no write changes until the commit ends. The
+// register block reads them in the setup phase like a COEF word (crc_*_re_i, exp_re_i), also
+// while busy: the commit's shadow read of that clock waits one clock (the CRC engine keeps the
+// word it folds, so only the read itself moves), and a CRC word is never read and written in one
+// clock outside reset (CRC_EXPECTED's is written in an access phase, read in a setup phase or,
+// while writes of it are refused, at the CHECK pass's end): CRC_SHADOW is written when the CHECK
+// pass's CRC is ready and no CRC read is under way (the engine holds its CRC), CRC_REF when a
+// commit is applied (a clock later after a CRC read: the engine still holds the CRC then),
+// CRC_SCRUB when a scrubber pass ends; the pass's end waits for a clock without an APB setup
+// phase or shadow or CRC_EXPECTED write, because it also reads CRC_REF's word for the scrubber's
 // comparison (the RAM's output register holds it the clock after). Until its first write after
-// reset a CRC word reads 0 (crc_*_zero_o; CRC_REF's: no commit applied yet).
+// reset an RO CRC word reads 0 (crc_*_zero_o; CRC_REF's: no commit applied yet).
 `resetall
 `default_nettype none
 
@@ -67,6 +73,8 @@ module acore_coef_bank #(
   parameter integer SETTLE = 2,
   // $readmemh image: the shadow's power-up contents (the shell gives the top the same one).
   parameter INIT_FILE = "",
+  // CRC_EXPECTED's reset value (the register table's), written into its word in reset.
+  parameter [31:0] EXP_RESET = 32'd0,
   // Derived, do not override.
   parameter integer ADDR_W = $clog2(WORDS)
 ) (
@@ -74,23 +82,25 @@ module acore_coef_bank #(
   input  wire              rst_i,
   // Shadow bank, register block side: write, and read (q one clock after sh_re_i) while !busy_o;
   // the CRC registers' words read (q one clock later, any time), and whether they hold a value.
+  // The write data is PWDATA, the shadow's (its REG_W low bits) and CRC_EXPECTED's (exp_we_i).
   input  wire              sh_we_i,
   input  wire [ADDR_W-1:0] sh_waddr_i,
-  input  wire [REG_W-1:0]  sh_wdata_i,
+  input  wire [31:0]       sh_wdata_i,
   input  wire              sh_re_i,
   input  wire [ADDR_W-1:0] sh_raddr_i,
   input  wire              crc_shadow_re_i,
   input  wire              crc_scrub_re_i,
   input  wire              crc_ref_re_i,
+  input  wire              exp_re_i,
+  input  wire              exp_we_i,
   output wire [31:0]       sh_rdata_o,
   output wire              crc_shadow_zero_o,
   output wire              crc_scrub_zero_o,
   output wire              crc_ref_zero_o,
-  // Control: commit request (one clock), CRC check and scrubbing enables, the expected CRC.
+  // Control: commit request (one clock), CRC check and scrubbing enables.
   input  wire              commit_i,
   input  wire              check_i,
   input  wire              scrub_i,
-  input  wire [31:0]       crc_expected_i,
   // A sample entered the top / a result left it (handshakes at the top's ports).
   input  wire              accept_i,
   input  wire              emit_i,
@@ -154,28 +164,23 @@ module acore_coef_bank #(
   // read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK: for the
   // CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads a CRC
   // word in this clock (it has the read port: the commit's read waits).
-  localparam integer RAM_AW = $clog2(WORDS + 3);
+  localparam integer RAM_AW = $clog2(WORDS + 4);
   localparam integer A_SHADOW_I = WORDS, A_SCRUB_I = WORDS + 1, A_REF_I = WORDS + 2;
+  localparam integer A_EXP_I = WORDS + 3;
   localparam [RAM_AW-1:0] A_SHADOW = A_SHADOW_I[RAM_AW-1:0], A_SCRUB = A_SCRUB_I[RAM_AW-1:0];
-  localparam [RAM_AW-1:0] A_REF = A_REF_I[RAM_AW-1:0];
+  localparam [RAM_AW-1:0] A_REF = A_REF_I[RAM_AW-1:0], A_EXP = A_EXP_I[RAM_AW-1:0];
   reg [ADDR_W-1:0] ra_q;
   reg more_q, ld_q, pend_q;
   reg [SC_W-1:0] sc_q;
   wire [31:0] q;
-  wire x_rd = crc_shadow_re_i | crc_scrub_re_i | crc_ref_re_i;
+  wire x_rd = crc_shadow_re_i | crc_scrub_re_i | crc_ref_re_i | exp_re_i;
   wire c_re = more_q & ~x_rd &
       ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
   wire crc_end, s_pass, ref_we;
   wire crc_we = crc_end | s_pass | ref_we;
   wire [31:0] crc;
-  wire [31:0] ram_wdata;
-  assign ram_wdata[REG_W-1:0] = crc_we ? crc[REG_W-1:0] : sh_wdata_i;
-  generate
-    if (REG_W < 32) begin : g_hi
-      // (a coefficient word's bits above REG_W are never read: they take the CRC's, no gate)
-      assign ram_wdata[31:REG_W] = crc[31:REG_W];
-    end
-  endgenerate
+  // (reset writes CRC_EXPECTED's reset value; nothing else writes in reset)
+  wire [31:0] ram_wdata = rst_i ? EXP_RESET : crc_we ? crc : sh_wdata_i;
   reg [RAM_AW-1:0] sh_waddr, sh_raddr;
   always @(*) begin
     sh_waddr = {RAM_AW{1'b0}};
@@ -183,13 +188,14 @@ module acore_coef_bank #(
     sh_raddr = {RAM_AW{1'b0}};
     sh_raddr[ADDR_W-1:0] = busy_q ? ra_q : sh_raddr_i;
   end
-  // (a pass's end reads CRC_REF's word: s_pass)
-  acore_sync_ram #(.W(32), .DEPTH(WORDS + 3), .INIT_WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
-    .clk_i(clk_i), .we_i(sh_we_i | crc_we),
-    .waddr_i(crc_we ? (crc_end ? A_SHADOW : s_pass ? A_SCRUB : A_REF) : sh_waddr),
-    .wdata_i(ram_wdata), .re_i(x_rd | s_pass | (busy_q ? c_re : sh_re_i)),
-    .raddr_i(crc_shadow_re_i ? A_SHADOW : crc_scrub_re_i ? A_SCRUB :
-             (crc_ref_re_i | s_pass) ? A_REF : sh_raddr), .q_o(q));
+  // (the CHECK pass's end reads CRC_EXPECTED's word: crc_end; a pass's end CRC_REF's: s_pass)
+  acore_sync_ram #(.W(32), .DEPTH(WORDS + 4), .INIT_WORDS(WORDS), .INIT_FILE(INIT_FILE)) u_shadow (
+    .clk_i(clk_i), .we_i(rst_i | sh_we_i | exp_we_i | crc_we),
+    .waddr_i((rst_i | exp_we_i) ? A_EXP :
+             crc_we ? (crc_end ? A_SHADOW : s_pass ? A_SCRUB : A_REF) : sh_waddr),
+    .wdata_i(ram_wdata), .re_i(x_rd | crc_end | s_pass | (busy_q ? c_re : sh_re_i)),
+    .raddr_i(crc_shadow_re_i ? A_SHADOW : crc_scrub_re_i ? A_SCRUB : crc_ref_re_i ? A_REF :
+             (exp_re_i | crc_end) ? A_EXP : s_pass ? A_REF : sh_raddr), .q_o(q));
   assign sh_rdata_o = q;
 
   // ---- CRC engine, the commit's while busy, the scrubber's otherwise ----
@@ -209,7 +215,8 @@ module acore_coef_bank #(
   acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT), .HOLD(RD_HOLD)) u_scrub (
     .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
     .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
-    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | sh_re_i), .pass_o(s_pass));
+    .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | exp_we_i | sh_re_i),
+    .pass_o(s_pass));
 
   // ---- samples in the top: accepted - emitted ----
   // One adder: + 1, - 1 (all ones) or + 0.
@@ -222,19 +229,21 @@ module acore_coef_bank #(
   wire drained = (inflight_q == {CNT_W{1'b0}});
 
   // ---- the commit ----
-  // One 32-bit comparator, registered (neq_q), for both users: the commit compares the CRC with
-  // crc_expected_i, the scrubber with CRC_REF's word (the RAM's output the clock after a pass's
-  // end); sel_q records which reference neq_q was computed with (1: the commit's). The CRC stays
-  // still for the clocks its users read neq_q.
-  reg neq_q, sel_q;
+  // One 32-bit comparator of the CRC with the RAM's output, registered (neq_q) in the clock the
+  // output holds its user's reference: the commit's CRC_EXPECTED word the clock after the CHECK
+  // pass's end (exp_ld_q), the scrubber's CRC_REF word the clock after a pass's end (pass1_q,
+  // below); neq_q then holds until the next. sel_q records whether a commit was busy in the
+  // clock of the last comparison (1: the commit's). The CRC stays still for the clocks its users
+  // read neq_q.
+  reg neq_q, sel_q, exp_ld_q, pass1_q;
   always @(posedge clk_i) begin
-    neq_q <= (crc != (busy_q ? crc_expected_i : q));
+    if (busy_q ? exp_ld_q : pass1_q) neq_q <= (crc != q);
     sel_q <= busy_q;
   end
 
   // fed_q: the last shadow word went into the CRC engine; crc_done_q: its CRC is in CRC_SHADOW's
-  // word (written in a clock without a CRC read; the engine keeps it until the commit ends);
-  // cmp_q: neq_q holds its comparison with crc_expected_i.
+  // word (written in a clock without a CRC read, which also reads CRC_EXPECTED's; the engine
+  // keeps the CRC until the commit ends); cmp_q: neq_q holds its comparison with CRC_EXPECTED.
   reg fed_q, crc_done_q, cmp_q, bank_q, ref_valid_q;
   reg [3:0] settle_q;
   assign crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle & ~x_rd;
@@ -249,9 +258,11 @@ module acore_coef_bank #(
       ref_valid_q <= 1'b0;
       pend_q <= 1'b0;
       ld_q <= 1'b0;
+      exp_ld_q <= 1'b0;
     end else begin
       pend_q <= (state_q == C_STREAM) & c_re;
       ld_q <= (state_q == C_CHECK) & c_re;
+      exp_ld_q <= crc_end;
       if (c_re) begin
         ra_q <= ra_q + 1'b1;
         more_q <= (ra_q != LAST);
@@ -332,7 +343,7 @@ module acore_coef_bank #(
   // ---- scrubber passes ----
   // The comparison of the clock after the pass is read two clocks after it (the flag three); a
   // commit starting meanwhile takes the comparator, and that pass goes unjudged.
-  reg pass1_q, pass2_q, judged_q, scrub_bad;
+  reg pass2_q, judged_q, scrub_bad;
   always @(posedge clk_i) begin
     if (rst_i) begin
       pass1_q <= 1'b0;

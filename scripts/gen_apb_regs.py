@@ -109,12 +109,15 @@ KINDS = {
     "mem": (
         "mem WINDOW",
         (
-            "the owner keeps the RO field above (bits 31:0, its register's only field) in a word "
-            "of WINDOW's memory beyond the window's own: the block reads it through the window's "
-            "read port (output rg_<reg>_<field>_re, high in a setup phase at its address: the "
-            "owner reads that word instead; the window's read data is then 32 bits wide) and "
-            "the access phase returns it, zero wait states; input rg_<reg>_<field>_zero: the "
-            "word holds no value yet, the register reads 0"
+            "the owner keeps the RO or RW field above (bits 31:0, its register's only field) in "
+            "a word of WINDOW's memory beyond the window's own: the block reads it through the "
+            "window's read port (output rg_<reg>_<field>_re, high in a setup phase at its "
+            "address: the owner reads that word instead; the window's read data is then 32 bits "
+            "wide) and the access phase returns it, zero wait states. RO: input "
+            "rg_<reg>_<field>_zero: the word holds no value yet, the register reads 0. RW: no "
+            "flops; outputs rg_<reg>_<field>_we (an error-free write's access phase) and "
+            "rg_<reg>_<field>_wdata (PWDATA): the owner writes the word, and writes the field's "
+            "reset value into it in reset"
         ),
     ),
     "clears": (
@@ -474,7 +477,7 @@ def parse(root, rel):
             attr_field(("RW",), "only an RW field has a hardware write port").hw = rest
         elif kind == "mem":
             need(1)
-            f = attr_field(("RO",), "only an RO field is kept in a window's memory")
+            f = attr_field(("RO", "RW"), "only an RO or RW field is kept in a window's memory")
             if f.reg.kind != "reg" or f.reg.fields != [f] or (f.msb, f.lsb) != (31, 0):
                 raise DescError(
                     f"{where}: mem of field {f.name}: a register's only field, bits 31:0"
@@ -538,6 +541,8 @@ def validate(blk):
         if r.kind == "window" and r.size is None:
             raise DescError(f"{r.where}: window {r.name} has no 'size' line ({KINDS['size'][0]})")
         for f in r.fields:
+            if f.mem is not None and f.hw is not None:
+                raise DescError(f"{f.where}: field {f.name}: mem and hw: one writer of its word")
             if f.mem is not None and not any(
                 x.kind == "window" and x.name == f.mem for x in blk.regs
             ):
@@ -670,7 +675,21 @@ def owner_ports(blk):
         for f in r.fields:
             s, d = f.port(), f.decl()
             desc = f"{r.name}.{f.name}"
-            if f.access == "RW":
+            if f.access == "RW" and f.mem:
+                out.append(
+                    (
+                        f"{s}_re_o",
+                        f"rg_{s}_re",
+                        "output",
+                        "",
+                        f"{desc}: read its word of {f.mem}'s memory now (a setup phase)",
+                    )
+                )
+                out.append((f"{s}_we_o", f"rg_{s}_we", "output", "", f"{desc}: write its word now"))
+                out.append(
+                    (f"{s}_wdata_o", f"rg_{s}_wdata", "output", "[31:0]", f"{desc}: the word")
+                )
+            elif f.access == "RW":
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: the value"))
                 out.append(
                     (f"{s}_we_o", f"rg_{s}_we", "output", "", f"{desc}: written in this clock")
@@ -976,7 +995,7 @@ def gen_regblock(blk):
             v = sum(int(f.reset, 0) << f.lsb for f in r.fields)
             o.append(f"  localparam [31:0] {r.name}_VALUE = 32'h{v:08X};\n")
     wregs = [r for r in plain if r.writable()]
-    stored = [f for r in wregs for f in r.fields if f.access in ("RW", "W1C")]
+    stored = [f for r in wregs for f in r.fields if f.access in ("RW", "W1C") and not f.mem]
     rst_lps = [f for f in stored if not isnum(f.reset) or not isinstance(f.width(), int)]
     if rst_lps:
         o.append(
@@ -1204,7 +1223,12 @@ def gen_regblock(blk):
             f"  // Registers kept in {w.name}'s memory: read through its port (their words the\n"
             "  // owner's), 0 while the owner has no value for them.\n"
             f"  wire mem_{lw}_sel = in_regs & ("
-            + " | ".join(f"(rs_{f.reg.name.lower()} & ~{f.port()}_zero_i)" for f in kept)
+            + " | ".join(
+                f"rs_{f.reg.name.lower()}"
+                if f.access == "RW"
+                else f"(rs_{f.reg.name.lower()} & ~{f.port()}_zero_i)"
+                for f in kept
+            )
             + ");\n"
         )
     # Setup flops.
@@ -1313,7 +1337,7 @@ def gen_regblock(blk):
             o.append(f"      {f.port()}_q <= {f.port().upper()}_RST[{f.vwidth()}-1:0];\n")
     o.append("    end else begin\n")
     for r in wregs:
-        rw = [f for f in r.fields if f.access == "RW"]
+        rw = [f for f in r.fields if f.access == "RW" and not f.mem]
         if rw:
             o.append(f"      if (wr_{r.name.lower()}) begin\n")
             for f in rw:
@@ -1352,6 +1376,12 @@ def gen_regblock(blk):
         o.append(f"  assign {f.port()}_o = {f.port()}_q;\n")
         if f.access == "RW":
             o.append(f"  assign {f.port()}_we_o = wr_{f.reg.name.lower()};\n")
+    for f in blk.fields():
+        if f.mem and f.access == "RW":
+            o.append(
+                f"  assign {f.port()}_we_o = wr_{f.reg.name.lower()};\n"
+                f"  assign {f.port()}_wdata_o = pwdata_i;\n"
+            )
     o.append("\nendmodule\n\n`resetall\n")
     return "".join(o)
 

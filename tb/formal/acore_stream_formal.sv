@@ -333,9 +333,11 @@ module acore_stream_formal #(
   endgenerate
   // ---- shell (SHELL = 1): the APB4 rules, the commit, the CRC, the scrubber ----
   //   apb       PREADY high; PSLVERR only in an access phase (PSEL && PENABLE); no side effect
-  //             outside an error-free write access: a register value (CTRL's fields, MAG_LO/HI,
-  //             CRC_EXPECTED) changes, a shadow word is written, a commit is requested or a sticky
-  //             STATUS bit falls only the clock after one (or in reset).
+  //             outside an error-free write access: a register value (CTRL's fields, MAG_LO/HI)
+  //             changes, a shadow word is written, a commit is requested or a sticky STATUS bit
+  //             falls only the clock after one (or in reset); CRC_EXPECTED's word of the shadow
+  //             RAM is written exactly in reset (its reset value) and in an error-free write
+  //             access of CRC_EXPECTED (PWDATA), and never read in the clock it is written.
   //   atomic    the top's host port writes (the commit's stream) only while a commit is busy, with
   //             no sample in flight, none taken in that clock or the next (the write lands the
   //             clock after it is registered): every output is computed with one image; the
@@ -343,7 +345,10 @@ module acore_stream_formal #(
   //             streamed), nor read and written in one clock (its block RAM leaves that
   //             undefined: rtl/acore_sync_ram.v).
   //   crc       with CRC_CHECK set when the commit decides, a commit whose shadow CRC (the
-  //             engine's, CRC_SHADOW) differs from CRC_EXPECTED writes nothing and keeps the bank.
+  //             engine's, CRC_SHADOW) differs from CRC_EXPECTED (the harness's copy of the last
+  //             write, exp_q) writes nothing and keeps the bank.
+  //   The shadow RAM's read is cut (a free value each clock); the harness assumes only that a
+  //   read of CRC_EXPECTED's word returns exp_q, which the write rule above makes the RAM's.
   //   scrub     the scrubber never writes the top's words: every write is a commit's.
   //   count     the shell's in-flight counter equals the harness's (the invariant for induction).
   generate
@@ -373,7 +378,7 @@ module acore_stream_formal #(
       wire access = psel_i && penable_i;
       // (taps, connected by the driver to the shell's wires)
       wire tap_top_we, tap_busy, tap_coef_we, tap_sh_re, tap_commit, tap_decide, tap_check;
-      wire [31:0] tap_crc_expected, tap_crc;
+      wire [31:0] tap_crc;
       wire [CNT_W-1:0] tap_inflight;
       wire tap_bank;
       wire tap_scrub;
@@ -382,9 +387,29 @@ module acore_stream_formal #(
       wire tap_ovf, tap_los, tap_dos, tap_crc_shadow_err, tap_crc_active_err, tap_done;
       wire [5:0] tap_sticky = {tap_ovf, tap_los, tap_dos, tap_crc_shadow_err, tap_crc_active_err,
                                tap_done};
-      wire [31+2+6+2*MAG_W:0] regs = {tap_crc_expected, tap_check, tap_scrub, tap_irq_en, tap_mag_lo,
-                                      tap_mag_hi};
-      reg [31+2+6+2*MAG_W:0] past_regs_q;
+      wire [2+6+2*MAG_W-1:0] regs = {tap_check, tap_scrub, tap_irq_en, tap_mag_lo, tap_mag_hi};
+      reg [2+6+2*MAG_W-1:0] past_regs_q;
+      // CRC_EXPECTED in the shadow RAM (rtl/acore_coef_bank.v: the word after CRC_REF's): the
+      // RAM's ports, the harness's copy of the register (reset value 0, the register table's)
+      // and whether the RAM's output holds a read of its word.
+      localparam integer RAM_AW = $clog2(WORDS + 4);
+      localparam integer A_EXP_I = WORDS + 3;
+      localparam [RAM_AW-1:0] A_EXP = A_EXP_I[RAM_AW-1:0];
+      wire tap_ram_we;
+      wire [RAM_AW-1:0] tap_ram_waddr, tap_ram_raddr;
+      wire [31:0] tap_ram_wdata, tap_q;
+      wire exp_wr = access && pwrite_i && !pslverr_o && paddr_i == 32'h40;
+      wire exp_we = tap_ram_we && tap_ram_waddr == A_EXP;
+      reg [31:0] exp_q;
+      reg exp_rd_q = 1'b0;
+      always @(posedge clk_i) begin
+        if (rst_i) exp_q <= 32'd0;
+        else if (exp_wr) exp_q <= pwdata_i;
+        exp_rd_q <= !rst_i && tap_sh_re && tap_ram_raddr == A_EXP;
+      end
+      always @(*) begin
+        if (!init_q && exp_rd_q) assume (tap_q == exp_q);
+      end
       reg [5:0] past_sticky_q;
       reg past_wr_q = 1'b0, past_top_we_q = 1'b0, past_bank_q, ok_q, past_shell_rst_q = 1'b1;
       always @(posedge clk_i) begin
@@ -396,7 +421,7 @@ module acore_stream_formal #(
         past_shell_rst_q <= rst_i;
         // the commit's verdict, when it decides: may it write? (the CRC engine holds the shadow's
         // CRC, which CRC_SHADOW's word took, from the CHECK pass's end: the invariants below)
-        if (tap_decide) ok_q <= !tap_check || tap_crc == tap_crc_expected;
+        if (tap_decide) ok_q <= !tap_check || tap_crc == exp_q;
       end
       always @(posedge clk_i) begin
         if (!init_q && !rst_i) begin
@@ -418,6 +443,13 @@ module acore_stream_formal #(
           // count
           assert (tap_inflight == inflight);
         end
+        // CRC_EXPECTED's word
+        if (!init_q) begin
+          assert (exp_we == (rst_i || exp_wr));
+          if (exp_we) assert (tap_ram_wdata == (rst_i ? 32'd0 : pwdata_i));
+          // (in reset a read of it may meet reset's write: nothing takes that read's output)
+          if (exp_we && !rst_i) assert (!(tap_sh_re && tap_ram_raddr == A_EXP));
+        end
       end
 
       // The commit's invariants (what makes the proof unbounded: the bank's state, its comparator
@@ -433,7 +465,7 @@ module acore_stream_formal #(
       (* keep *) wire [2:0] tap_state;
       (* keep *) wire [3:0] tap_settle;
       (* keep *) wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel;
-      (* keep *) wire tap_more, tap_ld, tap_pend, tap_crc_idle;
+      (* keep *) wire tap_more, tap_ld, tap_pend, tap_crc_idle, tap_exp_ld;
       wire streaming = tap_state == C_STREAM || tap_state == C_SETTLE;
       wire checked = tap_state == C_CHECK && tap_crc_done;
       always @(posedge clk_i) begin
@@ -449,13 +481,16 @@ module acore_stream_formal #(
           if (tap_top_we) assert (streaming);
           if (tap_top_we && tap_state == C_SETTLE) assert (tap_settle != 0);
           // CHECK: once the last word is fed, no more loads; once its CRC is taken (into
-          // CRC_SHADOW's word), the engine is idle (its CRC still) and the comparator holds CRC !=
-          // CRC_EXPECTED (locked while busy), also once the comparison is ready.
+          // CRC_SHADOW's word, with a read of CRC_EXPECTED's), the engine is idle (its CRC still);
+          // the clock after, the RAM's output holds CRC_EXPECTED's word (exp_ld); from the next,
+          // the comparator holds CRC != CRC_EXPECTED (locked while busy).
           if (tap_state == C_CHECK && tap_fed) assert (!tap_more);
           if (checked) begin
             assert (tap_fed && !tap_more && !tap_ld && tap_crc_idle && tap_sel);
-            assert (tap_neq == (tap_crc != tap_crc_expected));
+            if (tap_cmp) assert (tap_neq == (tap_crc != exp_q));
+            else assert (tap_exp_ld);
           end
+          if (tap_exp_ld) assert (checked && !tap_cmp && exp_rd_q);
           if (tap_state == C_CHECK && tap_cmp) assert (tap_crc_done);
         end
       end

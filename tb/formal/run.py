@@ -219,6 +219,17 @@ MUTANTS = {
         24,
         SMALL_WORDS,
     ),
+    # Shell: the CHECK pass's end does not read CRC_EXPECTED's word (the comparator takes whatever
+    # word the RAM's output last held): a wrong CRC can be applied.
+    "apb_expected_not_read": (
+        "apb",
+        "acore_coef_bank.v",
+        r"\(exp_re_i \| crc_end\) \? A_EXP",
+        "exp_re_i ? A_EXP",
+        "crc: a commit with a wrong CRC writes the top",
+        24,
+        SMALL_WORDS,
+    ),
     # Board: the observer does not take a sample the estimator flags (loss of signal) while the
     # estimator, seeing the observer ready, delivers it: the sample is lost between the two.
     "board_drops_flagged": (
@@ -388,7 +399,11 @@ def stream_setup(line, words=None):
             (r + "tap_commit", p + "rg_ctrl_commit"),
             (r + "tap_decide", p + "u_bank.decide"),
             (r + "tap_check", p + "u_regs.ctrl_crc_check_q"),
-            (r + "tap_crc_expected", p + "u_regs.crc_expected_q"),
+            (r + "tap_ram_we", p + "u_bank.u_shadow.we_i"),
+            (r + "tap_ram_waddr", p + "u_bank.u_shadow.waddr_i"),
+            (r + "tap_ram_wdata", p + "u_bank.u_shadow.wdata_i"),
+            (r + "tap_ram_raddr", p + "u_bank.u_shadow.raddr_i"),
+            (r + "tap_q", p + "u_bank.u_shadow.q_o"),
             (r + "tap_inflight", p + "u_bank.inflight_q"),
             (r + "tap_scrub", p + "u_regs.ctrl_scrub_q"),
             (r + "tap_irq_en", p + "u_regs.ctrl_irq_en_q"),
@@ -419,6 +434,7 @@ def stream_setup(line, words=None):
                 ("ld", "ld_q"),
                 ("pend", "pend_q"),
                 ("crc_idle", "crc_idle"),
+                ("exp_ld", "exp_ld_q"),
             ]
         ]
     cut = [] if serial else CUT_TOP
