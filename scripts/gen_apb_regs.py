@@ -612,6 +612,17 @@ def reset_value(r):
 # ---- rtl/<owner>_regs.vh: the owner's view -------------------------------------------------------
 
 
+def mem_read_port(s, desc, mem):
+    """The owner's read strobe of a field kept in a window's memory (RO or RW alike)."""
+    return (
+        f"{s}_re_o",
+        f"rg_{s}_re",
+        "output",
+        "",
+        f"{desc}: read its word of {mem}'s memory now (a setup phase)",
+    )
+
+
 def owner_ports(blk):
     """The block's field ports: (port, wire, direction, Verilog range, comment)."""
     out = []
@@ -676,15 +687,7 @@ def owner_ports(blk):
             s, d = f.port(), f.decl()
             desc = f"{r.name}.{f.name}"
             if f.access == "RW" and f.mem:
-                out.append(
-                    (
-                        f"{s}_re_o",
-                        f"rg_{s}_re",
-                        "output",
-                        "",
-                        f"{desc}: read its word of {f.mem}'s memory now (a setup phase)",
-                    )
-                )
+                out.append(mem_read_port(s, desc, f.mem))
                 out.append((f"{s}_we_o", f"rg_{s}_we", "output", "", f"{desc}: write its word now"))
                 out.append(
                     (f"{s}_wdata_o", f"rg_{s}_wdata", "output", "[31:0]", f"{desc}: the word")
@@ -715,15 +718,7 @@ def owner_ports(blk):
             elif f.access == "W1" and f.clears is None:
                 out.append((f"{s}_o", f"rg_{s}", "output", d, f"{desc}: a write of 1, this clock"))
             elif f.mem:
-                out.append(
-                    (
-                        f"{s}_re_o",
-                        f"rg_{s}_re",
-                        "output",
-                        "",
-                        f"{desc}: read its word of {f.mem}'s memory now (a setup phase)",
-                    )
-                )
+                out.append(mem_read_port(s, desc, f.mem))
                 out.append(
                     (f"{s}_zero_i", f"rg_{s}_zero", "input", "", f"{desc}: no value yet, reads 0")
                 )
