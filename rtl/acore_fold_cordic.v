@@ -169,7 +169,7 @@ module acore_fold_cordic #(
   localparam integer ST_D = (U - 1) * N;
   wire [ST_D:0] st;
   assign st[0] = start_i;
-  genvar u, p;
+  genvar u;
   generate
     if (ST_D > 0) begin : g_st
       reg [ST_D-1:0] st_q;
@@ -241,16 +241,11 @@ module acore_fold_cordic #(
         end
         assign at = {{(Z_W-AT_W){1'b0}}, at_word_i[0 +: AT_W]};
       end else begin : g_at_bus
-        // Iterations N / 2 >= K: the words past K - 1 are read by phases nobody uses.
-        wire [Z_W-1:0] at_p [0:N/2-1];
-        for (p = 0; p < N / 2; p = p + 1) begin : g_it
-          if (p < K) begin : g_at
-            assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[p * AT_W +: AT_W]};
-          end else begin : g_noat
-            assign at_p[p] = {Z_W{1'b0}};
-          end
-        end
-        assign at = at_p[ph_q[PW-1:1]];
+        // Two phases an iteration: iteration ph_q / 2 (N / 2 >= K: the words past K - 1 are
+        // read by phases nobody uses).
+        acore_fold_atan_pick #(
+          .K(K), .AT_W(AT_W), .Z_W(Z_W), .N(N / 2), .IDX_W(PW - 1), .I0(0)
+        ) u_at (.atan_i(atan_i), .idx_i(ph_q[PW-1:1]), .at_o(at));
         assign at_idx_o = {AT_IDX_W{1'b0}};
       end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
@@ -335,16 +330,9 @@ module acore_fold_cordic #(
         assign at_idx_o[u * AT_IDX_W +: AT_IDX_W] = idx;
         assign at = {{(Z_W-AT_W){1'b0}}, at_word_i[u * AT_W +: AT_W]};
       end else begin : g_at_bus
-        wire [Z_W-1:0] at_p [0:N-1];
-        for (p = 0; p < N; p = p + 1) begin : g_ph
-          localparam integer I = I0 + p;
-          if (I < K) begin : g_at
-            assign at_p[p] = {{(Z_W-AT_W){1'b0}}, atan_i[I * AT_W +: AT_W]};
-          end else begin : g_noat
-            assign at_p[p] = {Z_W{1'b0}};
-          end
-        end
-        assign at = at_p[ph_q];
+        acore_fold_atan_pick #(
+          .K(K), .AT_W(AT_W), .Z_W(Z_W), .N(N), .IDX_W(PW), .I0(I0)
+        ) u_at (.atan_i(atan_i), .idx_i(ph_q), .at_o(at));
         assign at_idx_o[u * AT_IDX_W +: AT_IDX_W] = {AT_IDX_W{1'b0}};
       end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.

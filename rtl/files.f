@@ -28,6 +28,7 @@ acore_fourier_correct.v
 acore_fold_mul.v
 acore_fold_scaler.v
 acore_fold_poly.v
+acore_fold_atan_pick.v
 acore_fold_cordic.v
 acore_fold_regs.v
 acore_fold_fifo.v
