@@ -100,6 +100,20 @@ CASES = [
         "register IRQ is RO but its fields",
         r"^reg    0x028  IRQ",
     ),
+    (
+        SHELL,
+        r"^mem    COEF$",
+        "+hw     the firmware",
+        "field CRC_EXPECTED: mem and hw: one writer of its word",
+        r"^field  31:0   CRC_EXPECTED",
+    ),
+    (
+        SHELL,
+        r"^mem    COEF$",
+        "mem    STATUS",
+        "field CRC_EXPECTED: mem STATUS is not a window",
+        r"^field  31:0   CRC_EXPECTED",
+    ),
 ]
 
 
