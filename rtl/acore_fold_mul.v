@@ -37,7 +37,8 @@
 //
 // MULT = 1 (hardware multipliers, fixed_point.hpp hw_mul()): p = init + ((a * b) >>> RSHIFT), the
 // exact product floored once (acore_hw_mul: a DSP block), carried to INIT_AT, where init is added,
-// then to LATENCY: the same interface and schedule as MULT = 0.
+// then to LATENCY: the same interface and schedule as MULT = 0. On the in-place form's schedule
+// (acore_fold_mul_seq: products F clocks apart, LATENCY = F) the sum waits in one register.
 `resetall
 `default_nettype none
 
@@ -141,10 +142,23 @@ module acore_fold_mul #(
       ) u_hw (
         .clk_i(clk_i), .en_i(1'b1), .a_i(a_i), .b_i(b_i), .p_o(prod));
       reg [P_W-1:0] sum_q;
-      always @(posedge clk_i) sum_q <= prod + init_ext;
-      acore_delay #(.W(P_W), .DEPTH(LATENCY - INIT_AT - 1)) u_dsum (
-        .clk_i(clk_i), .en_i(1'b1), .d_i(sum_q), .q_o(p_o));
-      wire unused_start = ^{start_i, pre_i, o0};  // (o0, pre_i: the in-place form's)
+      if (acore_fold_mul_seq(B_W, F) != 0) begin : g_hold
+        // The in-place form's schedule (INIT_AT = 1, LATENCY = F, products F clocks apart): the
+        // sum is taken at clock 1 only and waits in its register until the next product's, F
+        // clocks later, past LATENCY: no delay line.
+        reg ld_q;
+        always @(posedge clk_i) begin
+          ld_q <= start_i;
+          if (ld_q) sum_q <= prod + init_ext;
+        end
+        assign p_o = sum_q;
+        wire unused_start = ^{pre_i, o0};  // (o0, pre_i: the in-place form's)
+      end else begin : g_line
+        always @(posedge clk_i) sum_q <= prod + init_ext;
+        acore_delay #(.W(P_W), .DEPTH(LATENCY - INIT_AT - 1)) u_dsum (
+          .clk_i(clk_i), .en_i(1'b1), .d_i(sum_q), .q_o(p_o));
+        wire unused_start = ^{start_i, pre_i, o0};  // (o0, pre_i: the in-place form's)
+      end
     end else if (SEQ != 0) begin : g_seq
       // X: b padded to NG groups.
       localparam integer X_W = 2 * NG;
