@@ -454,9 +454,11 @@ module acore_spi_as5047 #(
       if (cs_rise) begin
         if (cmd_ok) begin
           // A read: its register answers next. A write: the data frame answers the old content.
+          // (wr_reg_q counts only while wr_data_q is set: after a write. An unknown address
+          // selects NOP, so a read needs no test of its own.)
           wr_data_q <= write;
-          wr_reg_q <= (write & writable) ? sel_reg : AS5047_S_NOP;
-          ans_q <= ((read & known) | (write & writable)) ? sel_ans : AS5047_S_NOP;
+          wr_reg_q <= writable ? sel_reg : AS5047_S_NOP;
+          ans_q <= (read | writable) ? sel_ans : AS5047_S_NOP;
         end else if (wr_do) begin
           // The data frame: the next frame answers the register's new content.
           wr_data_q <= 1'b0;
