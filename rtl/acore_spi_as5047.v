@@ -62,7 +62,9 @@
 // port's timing rule, and SCLK_MIN, the shortest SCLK period (in clocks) the port is built for,
 // must meet it: SCLK_MIN >= SYNC + 2, refused at elaboration otherwise (SYNC = 2 takes SCLK up to
 // clk/4, SYNC = 3 clk/5, SYNC = 4 clk/6). The answer word follows its register while CSn is high
-// and freezes when CSn falls (the angle is the one at the start of the frame that carries it).
+// and freezes when CSn falls (the angle is the one at the start of the frame that carries it);
+// its parity bit, the first on MISO, is the parity of the frozen word from the clock after, SYNC + 1
+// clocks after CSn falls, like every later bit after its falling edge.
 // CSn timing, in clocks of clk_i: the first falling SCLK edge at least SYNC + 2 clocks after CSn
 // falls (the AS5047P's own t_L, 350 ns, is longer above 12 MHz); CSn high at least 2 clocks
 // between frames (the answer is loaded in the second). A frame after a shorter gap is a framing
@@ -195,17 +197,21 @@ module acore_spi_as5047 #(
   endfunction
   localparam [2:0] ABI_BIN_LAST = AS5047_ABIRES_BIN_LAST[2:0],
                    ABI_DEC_LAST = AS5047_ABIRES_DEC_LAST[2:0];
-  // n >= k for a constant k, as gates from the MSB down (k's 1 bits need n's, a 0 bit of k under
-  // a 1 of n decides): a few LUTs, where a comparator would take a carry chain as wide as n.
-  function ge_const(input [N_W-1:0] n, input integer k);
+  // n >= k for a constant k (n's low w bits), as gates from the MSB down (k's 1 bits need n's, a
+  // 0 bit of k under a 1 of n decides): a few LUTs, where a comparator would take a carry chain as
+  // wide as n.
+  function ge_w(input [31:0] n, input integer w, input integer k);
     integer b;
     reg r;
     begin
       r = 1'b1;  // the bits below: equal so far
-      for (b = 0; b < N_W; b = b + 1)
+      for (b = 0; b < w; b = b + 1)
         r = ((k >> b) & 1) != 0 ? (n[b] & r) : (n[b] | r);
-      ge_const = r;
+      ge_w = r;
     end
+  endfunction
+  function ge_const(input [N_W-1:0] n, input integer k);
+    ge_const = ge_w({{(32-N_W){1'b0}}, n}, N_W, k);
   endfunction
   // The code read for an N in one table: the first code (largest N first) whose N is not above n;
   // the last otherwise. Each table's comparisons are with constants; ABIBIN picks the table.
@@ -221,26 +227,69 @@ module acore_spi_as5047 #(
   function [2:0] abi_code(input bin, input [N_W-1:0] n);
     abi_code = bin ? abi_code_tab(1'b1, n) : abi_code_tab(1'b0, n);
   endfunction
-  // HYS read back: AS5047_HYS_MAX - ceil(width / 2^HYS_SHIFT), at least 0.
-  localparam [HYS_W:0] HYS_ROUND = (1 << HYS_SHIFT) - 1;
+  // The settings' encodings as look-ups of their few codes, compared with constants (a LUT or
+  // two a bit, where an adder and a comparator would each take a carry chain).
+  localparam integer HYS_CODE_W = AS5047_SETTINGS2_HYS_W, PP_CODE_W = AS5047_SETTINGS2_UVWPP_W,
+                     HYS_HI_W = HYS_W - HYS_SHIFT;
+  // HYS read back: AS5047_HYS_MAX - ceil(width / 2^HYS_SHIFT), at least 0. The ceiling is the
+  // width's bits from HYS_SHIFT up (hi), plus 1 when a bit below is set (lo).
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [HYS_W:0] hys_up = {1'b0, cfg_hys_i} + HYS_ROUND;  // its bits below HYS_SHIFT: not needed
+  function [HYS_CODE_W-1:0] hys_read(input [HYS_HI_W-1:0] hi, input lo);
+    integer k, h;
+    reg [31:0] v;  // below AS5047_HYS_MAX: fits HYS's bits
+    begin
+      h = {{(32-HYS_HI_W){1'b0}}, hi};
+      v = 0;
+      for (k = 0; k < AS5047_HYS_MAX; k = k + 1)
+        if ((h == k && !lo) || (h + 1 == k && lo)) v = AS5047_HYS_MAX - k;
+      hys_read = v[HYS_CODE_W-1:0];
+    end
+  endfunction
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [HYS_W-HYS_SHIFT:0] hys_lsbs = hys_up[HYS_W:HYS_SHIFT];
-  localparam [HYS_W-HYS_SHIFT:0] HYS_MAX = AS5047_HYS_MAX[HYS_W-HYS_SHIFT:0];
-  /* verilator lint_off UNUSEDSIGNAL */
-  wire [HYS_W-HYS_SHIFT:0] hys_left = HYS_MAX - hys_lsbs;  // below HYS_MAX: fits HYS's bits
-  /* verilator lint_on UNUSEDSIGNAL */
-  wire [AS5047_SETTINGS2_HYS_W-1:0] hys_code =
-    (hys_lsbs >= HYS_MAX) ? {AS5047_SETTINGS2_HYS_W{1'b0}} : hys_left[AS5047_SETTINGS2_HYS_W-1:0];
+  wire [HYS_CODE_W-1:0] hys_code = hys_read(cfg_hys_i[HYS_W-1:HYS_SHIFT], |cfg_hys_i[HYS_SHIFT-1:0]);
   // UVWPP read back: pole pairs - AS5047_UVWPP_OFFSET, within 0 .. its code of AS5047_UVWPP_MAX_PP.
-  localparam [PP_W-1:0] PP_MAX = AS5047_UVWPP_MAX_PP[PP_W-1:0],
-                        PP_OFFSET = AS5047_UVWPP_OFFSET[PP_W-1:0];
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [PP_W-1:0] pp_code = ((cfg_pp_i >= PP_MAX) ? PP_MAX : (cfg_pp_i < PP_OFFSET) ? PP_OFFSET : cfg_pp_i) -
-                            PP_OFFSET;
+  function [PP_CODE_W-1:0] pp_read(input [PP_W-1:0] pp);
+    integer p, n;
+    reg [31:0] v;  // at most the code of AS5047_UVWPP_MAX_PP: fits UVWPP's bits
+    begin
+      n = {{(32-PP_W){1'b0}}, pp};
+      v = 0;  // below AS5047_UVWPP_OFFSET
+      for (p = AS5047_UVWPP_OFFSET; p < AS5047_UVWPP_MAX_PP; p = p + 1)
+        if (n == p) v = p - AS5047_UVWPP_OFFSET;
+      if (ge_w(n, PP_W, AS5047_UVWPP_MAX_PP)) v = AS5047_UVWPP_MAX_PP - AS5047_UVWPP_OFFSET;
+      pp_read = v[PP_CODE_W-1:0];
+    end
+  endfunction
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [AS5047_SETTINGS2_UVWPP_W-1:0] uvwpp_code = pp_code[AS5047_SETTINGS2_UVWPP_W-1:0];
+  wire [PP_CODE_W-1:0] uvwpp_code = pp_read(cfg_pp_i);
+  // Written: pole pairs UVWPP + AS5047_UVWPP_OFFSET, at most AS5047_UVWPP_MAX_PP; the hysteresis
+  // (AS5047_HYS_MAX - HYS) << HYS_SHIFT.
+  /* verilator lint_off UNUSEDSIGNAL */
+  function [PP_W-1:0] pp_write(input [PP_CODE_W-1:0] code);
+    integer c, k;
+    reg [31:0] v;  // at most AS5047_UVWPP_MAX_PP: fits PP_W
+    begin
+      k = {{(32-PP_CODE_W){1'b0}}, code};
+      v = 0;
+      for (c = 0; c < (1 << PP_CODE_W); c = c + 1)
+        if (k == c)
+          v = (c + AS5047_UVWPP_OFFSET >= AS5047_UVWPP_MAX_PP) ? AS5047_UVWPP_MAX_PP : c + AS5047_UVWPP_OFFSET;
+      pp_write = v[PP_W-1:0];
+    end
+  endfunction
+  function [HYS_W-1:0] hys_write(input [HYS_CODE_W-1:0] code);
+    integer c, k;
+    reg [31:0] v;  // at most AS5047_HYS_MAX << HYS_SHIFT: fits HYS_W
+    begin
+      k = {{(32-HYS_CODE_W){1'b0}}, code};
+      v = 0;
+      for (c = 0; c < AS5047_HYS_MAX; c = c + 1)
+        if (k == c) v = (AS5047_HYS_MAX - c) << HYS_SHIFT;
+      hys_write = v[HYS_W-1:0];
+    end
+  endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [AS5047_SETTINGS2_ABIRES_W-1:0] abires_code = abi_code(abibin_q, cfg_n_i);
 
   // ---- the answer of the next frame ----
@@ -289,24 +338,27 @@ module acore_spi_as5047 #(
       end
       AS5047_S_MAG: data = mag_i;
       AS5047_S_ANGLEUNC: data = angle_unc_i[ANGLE_W-1 -: 14];
-      AS5047_S_ANGLECOM: data = dsel_q ? angle_unc_i[ANGLE_W-1 -: 14] : angle_com_i[ANGLE_W-1 -: 14];
+      AS5047_S_ANGLECOM: data = angle_com_i[ANGLE_W-1 -: 14];
       default: data = 14'd0;
     endcase
   end
   wire ef = |errfl_q;
-  wire [15:0] answer = {^{ef, data}, ef, data};
 
   // ---- the frame ----
   // One shift register both ways (a frame shifts its command in at the bottom while the answer
   // leaves at the top, on the same falling edges): it holds the command received when CSn rises,
   // is decoded in that clock and is loaded with the next answer in the same clock. After a
-  // frame's 16th bit MISO passes on what came in on MOSI, as a daisy chain does.
+  // frame's 16th bit MISO passes on what came in on MOSI, as a daisy chain does. One parity of
+  // its bits below the top serves both ways: the received frame's check, and the answer's parity
+  // bit, taken while CSn is high (a clock behind the word it follows) and once more in the clock
+  // CSn falls, on the frozen word.
   reg [15:0] sr_q;
   reg [4:0] bits_q;    // saturates at 17: too long
   reg wr_data_q;       // the next frame is a write's data frame
   reg [AS5047_S_W-1:0] wr_reg_q;  // the register it writes (AS5047_S_NOP: none, the data frame is consumed)
   reg short_q;         // this frame followed a CSn gap of one clock: a framing error
-  wire parity_ok = ~^sr_q;
+  wire par_lo = ^sr_q[14:0];
+  wire parity_ok = ~(sr_q[15] ^ par_lo);
   wire read = sr_q[14];
   wire [13:0] addr = sr_q[13:0];
   wire [AS5047_S_W-1:0] sel_reg = as5047_sel(addr);
@@ -314,6 +366,10 @@ module acore_spi_as5047 #(
   wire nop = (addr == AS5047_A_NOP);
   wire known = nop | (sel_reg != AS5047_S_NOP);
   wire writable = as5047_writable(sel_reg);
+  // The register a read answers: ANGLECOM with Dataselect set answers ANGLEUNC's angle, chosen
+  // here rather than in the answer (Dataselect changes only with a write's data frame, whose next
+  // answer is SETTINGS1).
+  wire [AS5047_S_W-1:0] sel_ans = (sel_reg == AS5047_S_ANGLECOM && dsel_q) ? AS5047_S_ANGLEUNC : sel_reg;
   wire write = ~read & ~nop;
   // Errors found at the end of this frame, as ERRFL bits.
   wire [2:0] err_new = (bits_q != 5'd16 || short_q) ? E_FRERR : ~parity_ok ? E_PARERR :
@@ -343,15 +399,20 @@ module acore_spi_as5047 #(
   wire [2:0] n_code = wr_set2 ? wd[AS5047_SETTINGS2_ABIRES_MSB:AS5047_SETTINGS2_ABIRES_LSB] : abires_code;
   assign cfg_n_o = abi_n(n_bin, n_code);
   assign cfg_pp_we_o = wr_do & wr_set2;
-  // UVWPP + AS5047_UVWPP_OFFSET, at most AS5047_UVWPP_MAX_PP.
-  wire [PP_W-1:0] pp_new = {{(PP_W-AS5047_SETTINGS2_UVWPP_W){1'b0}}, wd_uvwpp} + PP_OFFSET;
-  assign cfg_pp_o = (pp_new >= PP_MAX) ? PP_MAX : pp_new;
+  assign cfg_pp_o = pp_write(wd_uvwpp);
   assign cfg_hys_we_o = wr_do & wr_set2;
-  assign cfg_hys_o = {{(HYS_W-AS5047_SETTINGS2_HYS_W){1'b0}}, HYS_MAX[AS5047_SETTINGS2_HYS_W-1:0] - wd_hys}
-                     << HYS_SHIFT;
+  assign cfg_hys_o = hys_write(wd_hys);
   // ERRFL's own answer clears it when the frame carrying it starts (not after a short gap: the
   // frame then carries 0xC000 instead).
   wire clear_errfl = cs_fall & (ans_q == AS5047_S_ERRFL) & ~cs_short;
+  // (A short gap's answer, EF with even parity and data 0, is the register's synchronous reset
+  // value, so its load takes no logic of each bit.)
+  always @(posedge clk_i) begin
+    if (rst_i || cs_short) sr_q <= 16'hC000;
+    else if (!sel) sr_q <= {par_lo, ef, data};
+    else if (fall) sr_q <= {sr_q[14:0], mosi};
+    else if (cs_fall) sr_q[15] <= par_lo;
+  end
   always @(posedge clk_i) begin
     if (rst_i) begin
       errfl_q <= 3'd0;
@@ -361,7 +422,6 @@ module acore_spi_as5047 #(
       wr_reg_q <= AS5047_S_NOP;
       short_q <= 1'b0;
       frame_o <= 1'b0;
-      sr_q <= 16'd0;
       progen_q <= AS5047_PROG_PROGEN_RESET;
       progver_q <= AS5047_PROG_PROGVER_RESET;
       abibin_q <= AS5047_SETTINGS1_ABIBIN_RESET;
@@ -371,9 +431,6 @@ module acore_spi_as5047 #(
       erren_q <= AS5047_ZPOSL_ERR_EN_RESET;
     end else begin
       frame_o <= cs_rise;
-      if (!sel) sr_q <= answer;
-      else if (cs_short) sr_q <= 16'hC000;  // EF with even parity, data 0
-      else if (fall) sr_q <= {sr_q[14:0], mosi};
       if (cs_fall) short_q <= cs_short;
       if (cs_fall) bits_q <= 5'd0;
       else if (fall && bits_q != 5'd17) bits_q <= bits_q + 5'd1;
@@ -397,9 +454,11 @@ module acore_spi_as5047 #(
       if (cs_rise) begin
         if (cmd_ok) begin
           // A read: its register answers next. A write: the data frame answers the old content.
+          // (wr_reg_q counts only while wr_data_q is set: after a write. An unknown address
+          // selects NOP, so a read needs no test of its own.)
           wr_data_q <= write;
-          wr_reg_q <= (write & writable) ? sel_reg : AS5047_S_NOP;
-          ans_q <= ((read & known) | (write & writable)) ? sel_reg : AS5047_S_NOP;
+          wr_reg_q <= writable ? sel_reg : AS5047_S_NOP;
+          ans_q <= (read | writable) ? sel_ans : AS5047_S_NOP;
         end else if (wr_do) begin
           // The data frame: the next frame answers the register's new content.
           wr_data_q <= 1'b0;
