@@ -523,8 +523,8 @@ module acore_track #(
     wire take = in_valid_i && in_ready_o;
 
     // Each clock's operations registered from the phases' and counters' next values (the adder's
-    // operand select and t's input select one LUT level from flops): at_x phi = pred + e >>> k,
-    // at_v v = v + e >>> (2k + 1), shb / sh1 the loop's shifts by SB / 1 bit, ins_x the
+    // operand select and t's input select one LUT level from flops): at_x X = X + e >>> k (phi +
+    // half), at_v v = v + e >>> (2k + 1), shb / sh1 the loop's shifts by SB / 1 bit, ins_x the
     // product's addition of X, p_sh its other steps; op_lp / op_ln the threshold's complement or
     // itself on B (e >= 0 or e < 0).
     reg eq_lend, eq_pend;
