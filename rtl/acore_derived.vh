@@ -515,10 +515,10 @@ function integer acore_track_shift_loop(input integer f_frac_w, input integer f_
   end
 endfunction
 // Its clocks from a sample taken to its result, which are also its clocks per sample. Its fixed
-// schedule (rtl/acore_track.v, g_shf): 3 clocks to the prediction and the error; one to the loss
-// of tracking; the loop; 2 to the rounded angle; v * D over D's DE_W nonzero bits with phi and
-// half added in two more steps; the compensated angle with the output's valid; the output
-// register.
+// schedule (rtl/acore_track.v, g_shf): 3 clocks to the error (one idle); one to the loss of
+// tracking; the loop; 2 to the next sample's prediction; v * (D - 1) over D's DE_W nonzero bits
+// with the phi register added in two more steps (one without an addition); the compensated angle
+// with the output's valid; the output register.
 function integer acore_track_shift_cycles(input integer f_frac_w, input integer f_comp_latency,
                                           input integer f_lead_w, input integer f_lead_f,
                                           input integer f_b);

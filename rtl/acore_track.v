@@ -150,6 +150,9 @@ module acore_track #(
   acore_check #(.OK(COMP_LATENCY >= 0 && COMP_LATENCY <= 255), .VALUE(COMP_LATENCY),
     .MSG("illegal parameter: COMP_LATENCY must be 0..255"))
     COMP_LATENCY_must_be_0_to_255 ();
+  acore_check #(.OK(SERIAL != 3 || COMP_LATENCY >= 1), .VALUE(COMP_LATENCY),
+    .MSG("illegal parameter: COMP_LATENCY must be >= 1 with SERIAL = 3"))
+    COMP_LATENCY_must_be_at_least_1_with_SERIAL_3 ();
   acore_check #(.OK(LEAD_W >= 1 && LEAD_W <= 12), .VALUE(LEAD_W),
     .MSG("illegal parameter: LEAD_W must be 1..12"))
     LEAD_W_must_be_1_to_12 ();
@@ -161,8 +164,9 @@ module acore_track #(
   localparam [3:0] K_MIN4 = K_MIN[3:0];
   localparam [3:0] K_MAX4 = K_MAX[3:0];
   wire [3:0] k = (bw_i < K_MIN4) ? K_MIN4 : (bw_i > K_MAX4) ? K_MAX4 : bw_i;
-  // D = COMP_LATENCY + lead / 2^LEAD_F with LEAD_F fraction bits.
-  localparam integer LAT_D = COMP_LATENCY * (2 ** LEAD_F);
+  // D = COMP_LATENCY + lead / 2^LEAD_F with LEAD_F fraction bits; SERIAL = 3 takes D - 1 (its
+  // phi register carries one v: g_shf).
+  localparam integer LAT_D = (COMP_LATENCY - ((SERIAL == 3) ? 1 : 0)) * (2 ** LEAD_F);
   wire [D_W-1:0] d = LAT_D[D_W-1:0] + {{(D_W - LEAD_W){1'b0}}, lead_i};
   // Half an output LSB in the loop's scale (round to nearest; SERIAL = 3 takes its low FRAC_W bits).
   /* verilator lint_off UNUSEDSIGNAL */
@@ -454,14 +458,21 @@ module acore_track #(
     // tracking from one more sum on the adder, and the product over D's DE_W nonzero bits only:
     // 30 clocks a sample at the board's widths and FOLD 32's COMP_LATENCY with SHIFT_BITS = 3.
     // Per sample, after the clock taking it (t is 0 then: cleared after each sample and by reset):
-    //   C1..C3  t = phi, t = phi + v (the prediction, written to phi and the turn count),
-    //           t = ~(t + ~theta) = theta - pred: the error e
+    // Its phi register holds X = phi + v + half, with the turn count of that sum: the prediction
+    // and half an output LSB (reset: half, phi = v = 0), so that the prediction needs no sum of its
+    // own and the rounded angle is X itself.
+    //   C1      t = ~theta * 2^FRAC_W - half (t's input as the complement of theta, not B's)
+    //   C2      t = ~(t + X) = theta * 2^FRAC_W - pred: the error e (all of it, not yet wrapped to
+    //           P_W bits: the loop's first shift does that, and the first sample's e >= 0 needs none)
+    //   C3      idle
     //   C4      sum = e +- thr * 2^FRAC_W: the loss of tracking to its output (t stays)
     //   loop    LOOP_L clocks: rem = k (0 for the first sample) shifts of e, then a pause
-    //           phi = t + phi; rem = k + 1 more shifts, then a pause v = t + v (not the first
-    //           sample); idle to the loop's end, whose last clock clears t
-    //   R2, R3  t = phi, sum = phi + half: the rounded angle and turn count to the outputs; t = 0
-    //   product v * D + (phi + half) * 2^LEAD_F least significant bit of D first, as g_ser's
+    //           X = t + X = phi + half (its bits above FRAC_W and its turn count: the rounded
+    //           angle and turn count, to the outputs); rem = k + 1 more shifts, then a pause
+    //           v = t + v (not the first sample); idle to the loop's end, whose last clock clears t
+    //   R2, R3  t = v, X = t + X = phi + v + half: the next sample's prediction; t = 0
+    //   product v * (D - 1) + X * 2^LEAD_F least significant bit of D - 1 first, as g_ser's (X
+    //           carries the one v and the half): phi + half + v * D
     //   fin     the compensated angle and the output's valid; t = 0
     // v is the velocity output register itself and the outputs other than out_angle_comp_o take
     // the sample's values during the schedule (as the word-serial form's): a sample is taken only
@@ -482,7 +493,8 @@ module acore_track #(
     localparam integer R_S = $clog2(SB + 1);
     localparam integer R_W = (R_K > R_S) ? R_K : R_S;
     localparam [R_W-1:0] R_SB = SB[R_W-1:0];
-    // D's bits in the order the product takes them, two zeros where phi and half are added.
+    // The bits of D - 1 (d here: COMP_LATENCY >= 1) in the order the product takes them, two
+    // zeros where X is added and the step after it (a step without an addition).
     localparam integer LO_M = (1 << LEAD_F) - 1;
     localparam integer HI_M = ((1 << (DE_W + 2)) - 1) & ~((1 << (LEAD_F + 2)) - 1);
     // (D's bits from DE_W up are zero)
@@ -500,10 +512,10 @@ module acore_track #(
     reg             xd_q, vd_q;  // the loop's phi and v updates done
     reg [3:0]       k_q;       // the code, latched with the sample
     reg             started_q;
-    reg [ANGLE_W-1:0] th_q;
+    reg [ANGLE_W-1:0] th_q;    // theta from the clock taking it to C1's end, then 0
     reg [TW-1:0]    t_q;
     reg [DE_W-1:0]  tf_q;      // the product's bits below t
-    reg [P_W-1:0]   x_q;       // phi
+    reg [P_W-1:0]   x_q;       // X = phi + v + half (between samples and until the loop's pause)
     reg [TURN_W-1:0] turns_q;
     wire [P_W-1:0]  v_q = out_velocity_o;
 
@@ -511,14 +523,16 @@ module acore_track #(
     wire take = in_valid_i && in_ready_o;
 
     // Each clock's operations registered from the phases' and counters' next values (the adder's
-    // operand select and t's input select one LUT level from flops): at_x phi = pred + e >>> k,
-    // at_v v = v + e >>> (2k + 1), shb / sh1 the loop's shifts by SB / 1 bit, ins_x / ins_h the
-    // product's additions of phi and half, p_sh its other steps.
+    // operand select and t's input select one LUT level from flops): at_x X = X + e >>> k (phi +
+    // half), at_v v = v + e >>> (2k + 1), shb / sh1 the loop's shifts by SB / 1 bit, ins_x the
+    // product's addition of X, p_sh its other steps; op_lp / op_ln the threshold's complement or
+    // itself on B (e >= 0 or e < 0).
     reg eq_lend, eq_pend;
-    reg at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l;
+    reg at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_lp, op_ln;
     reg s_x, s_v;
     // t's next value, registered likewise: written (t_we) or cleared (t_clr), with tm the choice
-    // of sum, ~sum (the error), sum shifted one bit, t shifted SB bits.
+    // of sum, ~(sum ^ th_x) (C1: theta's complement, sum being 0; C2: ~sum, th_q being 0), sum
+    // shifted one bit, t shifted SB bits.
     reg t_we, t_clr;
     reg [1:0] tm;
 
@@ -529,17 +543,16 @@ module acore_track #(
     // (sg = 1); neither sum leaves P_W signed bits (0 <= thr * 2^FRAC_W < 2^(P_W-1)), so it is
     // the sum's bit P_W-1 against sg.
     wire sg = t_q[P_W-1];
-    wire [ANGLE_W-1:0] thr_x = {1'b0, lot_thr_i} ^ {ANGLE_W{~sg}};  // its low FRAC_W bits: ~sg
-    // B's low FRAC_W bits are phi's, v's, or all ones (~theta's and ~(thr * 2^FRAC_W)'s low bits)
-    // or 0, with half's one bit beside: a registered two-bit code (s_x: phi or the ones, s_v: v or
-    // the ones; the selects are exclusive) makes every such bit of B one LUT of the code and phi's
-    // and v's bit, one LUT level from flops.
+    // B's low FRAC_W bits are X's, v's, all ones (~(thr * 2^FRAC_W)'s low bits) or 0: a registered
+    // two-bit code (s_x: X or the ones, s_v: v or the ones; the selects are exclusive) makes every
+    // such bit of B one LUT of the code and X's and v's bit, one LUT level from flops.
     wire [FRAC_W-1:0] b_lo = s_v ? (s_x ? {FRAC_W{1'b1}} : v_q[FRAC_W-1:0]) :
                              (s_x ? x_q[FRAC_W-1:0] : {FRAC_W{1'b0}});
+    wire [ANGLE_W-1:0] thr = {1'b0, lot_thr_i};
     wire [ANGLE_W-1:0] b_hi = ({ANGLE_W{op_x}} & x_q[P_W-1:FRAC_W]) |
-                              ({ANGLE_W{op_v}} & v_q[P_W-1:FRAC_W]) | ({ANGLE_W{op_t}} & ~th_q) |
-                              ({ANGLE_W{op_l}} & thr_x);
-    wire [TW-1:0] b = {{(TW - P_W){sx}}, b_hi, b_lo | ({FRAC_W{op_h}} & half[FRAC_W-1:0])};
+                              ({ANGLE_W{op_v}} & v_q[P_W-1:FRAC_W]) | ({ANGLE_W{op_lp}} & ~thr) |
+                              ({ANGLE_W{op_ln}} & thr);
+    wire [TW-1:0] b = {{(TW - P_W){sx}}, b_hi, b_lo};
     wire [TW-1:0] sum = t_q + b;
     // The turn count moved by the carry above phi (two bits: -1, 0 or +1).
     wire [1:0] dlt = sum[P_W+1:P_W];
@@ -549,7 +562,12 @@ module acore_track #(
     wire [TW-1:0] sum_sh = {pl ? {(TW - P_W + 1){sum[P_W-1]}} : {sum[TW-1], sum[TW-1:P_W]},
                             sum[P_W-1:1]};
     wire [TW-1:0] t_shb = {{(TW - P_W + SB){t_q[P_W-1]}}, t_q[P_W-1:SB]};
-    wire [TW-1:0] t_n = tm[1] ? (tm[0] ? t_shb : sum_sh) : (tm[0] ? ~sum : sum);
+    // t's input in two LUTs a bit, theta's complement with no LUT of its own: the first picks the
+    // shift (tm[1]) or gives tm[0], which the second takes as its choice of sum or ~(sum ^ th_x).
+    // th_x: theta in C1 with half's bit (t = ~theta * 2^FRAC_W - half, all ones above P_W), 0 after.
+    wire [TW-1:0] th_x = {{(TW - P_W){1'b0}}, th_q, c1, {(FRAC_W - 1){1'b0}}};
+    wire [TW-1:0] t_l1 = tm[1] ? (tm[0] ? t_shb : sum_sh) : {TW{tm[0]}};
+    wire [TW-1:0] t_n = tm[1] ? t_l1 : ((t_l1 & ~(sum ^ th_x)) | (~t_l1 & sum));
 
     wire lot_cmp = ~(sum[P_W-1] ^ sg);
     /* verilator lint_off UNUSEDSIGNAL */
@@ -563,7 +581,7 @@ module acore_track #(
         {c1, c2, c3, c4, pl, r2, r3, ph, fin} <= 9'd0;
         started_q <= 1'b0;
         t_q <= {TW{1'b0}};
-        x_q <= {P_W{1'b0}};
+        x_q <= half;
         turns_q <= {TURN_W{1'b0}};
         out_valid_o <= 1'b0;
         out_angle_o <= {ANGLE_W{1'b0}};
@@ -584,18 +602,19 @@ module acore_track #(
         r3 <= r2;
         ph <= r3 || (ph && !eq_pend);
         fin <= ph && eq_pend;
-        if (take) begin
-          k_q <= k;
-          th_q <= in_angle_i;
+        if (take) k_q <= k;
+        if (c1) th_q <= {ANGLE_W{1'b0}};
+        else if (take) th_q <= in_angle_i;
+        if (at_x || r3) begin
+          x_q <= sum[P_W-1:0];
+          turns_q <= turns_sum;
         end
-        if (c2 || at_x) x_q <= sum[P_W-1:0];
-        if (c2 || (at_x && started_q)) turns_q <= turns_sum;
-        if (at_v && started_q) out_velocity_o <= sum[P_W-1:0];
-        if (c4) out_lot_o <= started_q && lot_cmp;
-        if (r3) begin
+        if (at_x) begin
           out_angle_o <= sum[P_W-1:FRAC_W];
           out_turns_o <= turns_sum;
         end
+        if (at_v && started_q) out_velocity_o <= sum[P_W-1:0];
+        if (c4) out_lot_o <= started_q && lot_cmp;
         if (t_clr) t_q <= {TW{1'b0}};
         else if (t_we) t_q <= t_n;
         if (fin) begin
@@ -626,19 +645,18 @@ module acore_track #(
     wire shb_n = pl_n && !vd_n && big_n;
     wire sh1_n = pl_n && !vd_n && !z_n && !big_n;
     wire ins_x_n = ph_n && s_n == S_LF;
-    wire ins_h_n = ph_n && s_n == S_LH;
+    wire ins_h_n = ph_n && s_n == S_LH;  // the step after it: t holds
     wire p_sh_n = ph_n && !ins_x_n && !ins_h_n;
-    wire op_x_n = take || at_x_n || ins_x_n || (pl && eq_lend);
-    wire op_v_n = c1 || at_v_n || (p_sh_n && w_pad[s_n]);
+    wire op_x_n = c1 || at_x_n || ins_x_n || r2;
+    wire op_v_n = (pl && eq_lend) || at_v_n || (p_sh_n && w_pad[s_n]);
     always @(posedge clk_i) begin
       if (rst_i) begin
-        {at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_t, op_h, op_l, s_x, s_v} <= 12'd0;
+        {at_x, at_v, shb, sh1, p_sh, op_x, op_v, op_lp, op_ln, s_x, s_v} <= 11'd0;
         {t_we, t_clr, tm} <= 4'd0;
       end else begin
         t_clr <= (ph && eq_pend) || r2 || (pl_n && s_n == S_LOOP_END);
-        t_we <= take || c1 || c2 || (pl && eq_lend) || shb_n || sh1_n || p_sh_n || ins_x_n ||
-                ins_h_n;
-        tm <= {shb_n || sh1_n || p_sh_n, c2 || shb_n};
+        t_we <= take || c1 || (pl && eq_lend) || shb_n || sh1_n || p_sh_n || ins_x_n;
+        tm <= {shb_n || sh1_n || p_sh_n, take || c1 || shb_n};
         at_x <= at_x_n;
         at_v <= at_v_n;
         shb <= shb_n;
@@ -646,13 +664,12 @@ module acore_track #(
         p_sh <= p_sh_n;
         op_x <= op_x_n;
         op_v <= op_v_n;
-        op_t <= c2;
-        op_h <= ins_h_n || r2;
-        op_l <= c3;
-        // The ones: ~theta's in C3; ~(thr * 2^FRAC_W)'s in C4 when e >= 0, e's sign the inverse
-        // of sum's bit P_W-1 in C3 (t = ~sum there).
-        s_x <= op_x_n || c2 || (c3 && sum[P_W-1]);
-        s_v <= op_v_n || c2 || (c3 && sum[P_W-1]);
+        // C4: e + ~(thr * 2^FRAC_W) when e >= 0, e + thr * 2^FRAC_W when e < 0 (t = e from C3).
+        op_lp <= c3 && !sg;
+        op_ln <= c3 && sg;
+        // The ones: ~(thr * 2^FRAC_W)'s in C4 when e >= 0.
+        s_x <= op_x_n || (c3 && !sg);
+        s_v <= op_v_n || (c3 && !sg);
       end
     end
     always @(posedge clk_i) begin

@@ -265,8 +265,8 @@ MUTANTS = {
     "board_shift_comp_early": (
         "board_fold32",
         "acore_track.v",
-        r"(\n\s*)if \(r3\) begin(\n\s*)out_angle_o <= sum",
-        r"\1if (r3) begin\2out_angle_comp_o <= sum[P_W-1:FRAC_W];\2out_angle_o <= sum",
+        r"(\n\s*)if \(at_x\) begin(\n\s*)out_angle_o <= sum",
+        r"\1if (at_x) begin\2out_angle_comp_o <= sum[P_W-1:FRAC_W];\2out_angle_o <= sum",
         "hold: the compensated angle moves while no sample is given",
         24,
     ),
