@@ -139,8 +139,6 @@ module acore_coef_bank #(
     SETTLE_must_be_1_to_15 ();
 
   localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3, C_SETTLE = 3'd4;
-  localparam integer LAST_I = WORDS - 1;
-  localparam [ADDR_W-1:0] LAST = LAST_I[ADDR_W-1:0];
   // SETTLE's counter: SETTLE - 1 .. 0.
   localparam integer ST_W = (SETTLE > 1) ? $clog2(SETTLE) : 1;
   localparam integer SETTLE_LAST_I = SETTLE - 1;
@@ -163,23 +161,26 @@ module acore_coef_bank #(
   end
 
   // ---- shadow bank ----
-  // ra_q: the next word the commit reads; more_q: words left to read; sc_q: clocks to the next
-  // read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK: for the
-  // CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads a CRC
-  // word in this clock (it has the read port: the commit's read waits).
+  // ra_q: the next word the commit reads (the scrubber's address counter, which the commit clears
+  // (c_clr) and counts on (c_re) while the scrubber stops: one counter, and no multiplexer on the
+  // top's address; ra_last: it holds the last word); more_q: words left to read; sc_q: clocks to
+  // the next read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK:
+  // for the CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads
+  // a CRC word in this clock (it has the read port: the commit's read waits).
   localparam integer RAM_AW = $clog2(WORDS + 4);
   localparam integer A_SHADOW_I = WORDS, A_SCRUB_I = WORDS + 1, A_REF_I = WORDS + 2;
   localparam integer A_EXP_I = WORDS + 3;
   localparam [RAM_AW-1:0] A_SHADOW = A_SHADOW_I[RAM_AW-1:0], A_SCRUB = A_SCRUB_I[RAM_AW-1:0];
   localparam [RAM_AW-1:0] A_REF = A_REF_I[RAM_AW-1:0], A_EXP = A_EXP_I[RAM_AW-1:0];
-  reg [ADDR_W-1:0] ra_q;
+  wire [ADDR_W-1:0] ra_q;
+  wire ra_last;
   reg more_q, ld_q, pend_q;
   reg [SC_W-1:0] sc_q;
   wire [31:0] q;
   wire x_rd = crc_shadow_re_i | crc_scrub_re_i | crc_ref_re_i | exp_re_i;
   wire c_re = more_q & ~x_rd &
       ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
-  wire crc_end, s_pass, ref_we;
+  wire crc_end, s_pass, ref_we, c_clr;
   wire crc_we = crc_end | s_pass | ref_we;
   wire [31:0] crc;
   // (reset writes CRC_EXPECTED's reset value; nothing else writes in reset)
@@ -205,7 +206,6 @@ module acore_coef_bank #(
   wire crc_ready, crc_idle;
   wire s_init, s_load;
   wire [REG_W-1:0] s_word;
-  wire [ADDR_W-1:0] s_addr;
   // The engine takes the word in the clock of the load (the shadow's output register, the
   // scrubber's copy or (RD_HOLD) the top's read-back) and keeps what it still folds.
   acore_crc32 #(.CRC_W(CRC_W), .DATA_W(REG_W)) u_crc (
@@ -216,7 +216,8 @@ module acore_coef_bank #(
     .ready_o(crc_ready), .idle_o(crc_idle), .crc_o(crc));
 
   acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT), .HOLD(RD_HOLD)) u_scrub (
-    .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
+    .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .clr_i(c_clr), .inc_i(c_re),
+    .last_o(ra_last), .addr_o(ra_q), .rdata_i(top_rdata_i),
     .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
     .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | exp_we_i | sh_re_i),
     .pass_o(s_pass));
@@ -308,14 +309,10 @@ module acore_coef_bank #(
       endcase
     end
   end
+  assign c_clr = (state_q == C_INIT) | decide;
   always @(posedge clk_i) begin
-    if ((state_q == C_INIT) || decide) begin
-      ra_q <= {ADDR_W{1'b0}};
-      more_q <= 1'b1;
-    end else if (c_re) begin
-      ra_q <= ra_q + 1'b1;
-      more_q <= (ra_q != LAST);
-    end
+    if (c_clr) more_q <= 1'b1;
+    else if (c_re) more_q <= ~ra_last;
     if (state_q == C_INIT) sc_q <= {SC_W{1'b0}};
     else if (c_re) sc_q <= SC_LAST;
     else if (sc_q != {SC_W{1'b0}}) sc_q <= sc_q - 1'b1;
@@ -343,9 +340,11 @@ module acore_coef_bank #(
   assign crc_shadow_zero_o = sh_zero_q;
   assign crc_scrub_zero_o = sc_zero_q;
   assign crc_ref_zero_o = ~ref_valid_q;
-  // The top's port: in STREAM the word read last clock (its address registered with the read, its
-  // data the shadow's output register), else the scrubber's address.
-  always @(posedge clk_i) top_addr_o <= ((state_q == C_STREAM) & c_re) ? ra_q : s_addr;
+  // The top's port: the address counter's last value: in STREAM the word read last clock (its
+  // data the shadow's output register), else the scrubber's address. (After a commit it holds
+  // where the commit left the counter until a scrubber pass starts: a read that nothing takes, of
+  // a word or past the last, which the tops answer with 0.)
+  always @(posedge clk_i) top_addr_o <= ra_q;
   assign top_we_o = pend_q;
   assign top_wdata_o = q[REG_W-1:0];
 
