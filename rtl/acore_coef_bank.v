@@ -139,9 +139,10 @@ module acore_coef_bank #(
     SETTLE_must_be_1_to_15 ();
 
   localparam [2:0] C_IDLE = 3'd0, C_INIT = 3'd1, C_CHECK = 3'd2, C_STREAM = 3'd3, C_SETTLE = 3'd4;
-  localparam integer LAST_I = WORDS - 1;
-  localparam [ADDR_W-1:0] LAST = LAST_I[ADDR_W-1:0];
-  localparam [3:0] SETTLE_LAST = SETTLE[3:0] - 4'd1;
+  // SETTLE's counter: SETTLE - 1 .. 0.
+  localparam integer ST_W = (SETTLE > 1) ? $clog2(SETTLE) : 1;
+  localparam integer SETTLE_LAST_I = SETTLE - 1;
+  localparam [ST_W-1:0] SETTLE_LAST = SETTLE_LAST_I[ST_W-1:0];
   // The CHECK pass reads a shadow word every STEPS clocks, the CRC engine's pace, so the engine is
   // always ready for it and the feed needs no handshake (every control below is a flop or a gate
   // from flops).
@@ -160,23 +161,26 @@ module acore_coef_bank #(
   end
 
   // ---- shadow bank ----
-  // ra_q: the next word the commit reads; more_q: words left to read; sc_q: clocks to the next
-  // read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK: for the
-  // CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads a CRC
-  // word in this clock (it has the read port: the commit's read waits).
+  // ra_q: the next word the commit reads (the scrubber's address counter, which the commit clears
+  // (c_clr) and counts on (c_re) while the scrubber stops: one counter, and no multiplexer on the
+  // top's address; ra_last: it holds the last word); more_q: words left to read; sc_q: clocks to
+  // the next read of the CHECK pass; ld_q: the RAM output holds the word read last clock (CHECK:
+  // for the CRC engine); pend_q: the same in STREAM (for the top). x_rd: the register block reads
+  // a CRC word in this clock (it has the read port: the commit's read waits).
   localparam integer RAM_AW = $clog2(WORDS + 4);
   localparam integer A_SHADOW_I = WORDS, A_SCRUB_I = WORDS + 1, A_REF_I = WORDS + 2;
   localparam integer A_EXP_I = WORDS + 3;
   localparam [RAM_AW-1:0] A_SHADOW = A_SHADOW_I[RAM_AW-1:0], A_SCRUB = A_SCRUB_I[RAM_AW-1:0];
   localparam [RAM_AW-1:0] A_REF = A_REF_I[RAM_AW-1:0], A_EXP = A_EXP_I[RAM_AW-1:0];
-  reg [ADDR_W-1:0] ra_q;
+  wire [ADDR_W-1:0] ra_q;
+  wire ra_last;
   reg more_q, ld_q, pend_q;
   reg [SC_W-1:0] sc_q;
   wire [31:0] q;
   wire x_rd = crc_shadow_re_i | crc_scrub_re_i | crc_ref_re_i | exp_re_i;
   wire c_re = more_q & ~x_rd &
       ((state_q == C_STREAM) | ((state_q == C_CHECK) & (sc_q == {SC_W{1'b0}})));
-  wire crc_end, s_pass, ref_we;
+  wire crc_end, s_pass, ref_we, c_clr;
   wire crc_we = crc_end | s_pass | ref_we;
   wire [31:0] crc;
   // (reset writes CRC_EXPECTED's reset value; nothing else writes in reset)
@@ -202,7 +206,6 @@ module acore_coef_bank #(
   wire crc_ready, crc_idle;
   wire s_init, s_load;
   wire [REG_W-1:0] s_word;
-  wire [ADDR_W-1:0] s_addr;
   // The engine takes the word in the clock of the load (the shadow's output register, the
   // scrubber's copy or (RD_HOLD) the top's read-back) and keeps what it still folds.
   acore_crc32 #(.CRC_W(CRC_W), .DATA_W(REG_W)) u_crc (
@@ -213,7 +216,8 @@ module acore_coef_bank #(
     .ready_o(crc_ready), .idle_o(crc_idle), .crc_o(crc));
 
   acore_coef_scrub #(.REG_W(REG_W), .WORDS(WORDS), .RD_LAT(RD_LAT), .HOLD(RD_HOLD)) u_scrub (
-    .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .addr_o(s_addr), .rdata_i(top_rdata_i),
+    .clk_i(clk_i), .rst_i(rst_i), .run_i(scrub_i & ~busy_q), .clr_i(c_clr), .inc_i(c_re),
+    .last_o(ra_last), .addr_o(ra_q), .rdata_i(top_rdata_i),
     .rd_ok_i(top_rd_ok_i), .crc_init_o(s_init), .crc_load_o(s_load), .crc_word_o(s_word),
     .crc_ready_i(crc_ready), .crc_idle_i(crc_idle), .hold_i(sh_we_i | exp_we_i | sh_re_i),
     .pass_o(s_pass));
@@ -235,21 +239,37 @@ module acore_coef_bank #(
   // below); neq_q then holds until the next. sel_q records whether a commit was busy in the
   // clock of the last comparison (1: the commit's). The CRC stays still for the clocks its users
   // read neq_q.
+  // The comparison in two levels, two bit pairs a LUT and an OR of the 16 (kept: left to itself
+  // the LUT mapper spends about a LUT a bit on the 32-bit inequality).
   reg neq_q, sel_q, exp_ld_q, pass1_q;
+  (* keep *) wire [15:0] ne2;
+  genvar gi;
+  generate
+    for (gi = 0; gi < 16; gi = gi + 1) begin : g_ne
+      assign ne2[gi] = |(crc[2*gi +: 2] ^ q[2*gi +: 2]);
+    end
+  endgenerate
   always @(posedge clk_i) begin
-    if (busy_q ? exp_ld_q : pass1_q) neq_q <= (crc != q);
+    if (busy_q ? exp_ld_q : pass1_q) neq_q <= |ne2;
     sel_q <= busy_q;
   end
 
-  // fed_q: the last shadow word went into the CRC engine; crc_done_q: its CRC is in CRC_SHADOW's
-  // word (written in a clock without a CRC read, which also reads CRC_EXPECTED's; the engine
-  // keeps the CRC until the commit ends); cmp_q: neq_q holds its comparison with CRC_EXPECTED.
-  reg fed_q, crc_done_q, cmp_q, bank_q, ref_valid_q;
-  reg [3:0] settle_q;
+  // fed_q: the last shadow word went into the CRC engine (no word left to read, none loading);
+  // crc_done_q: its CRC is in CRC_SHADOW's word (written in a clock without a CRC read, which
+  // also reads CRC_EXPECTED's; the engine keeps the CRC until the commit ends): the clock after
+  // (exp_ld_q) and from then on; cmp_q: neq_q holds its comparison with CRC_EXPECTED (the clock
+  // after exp_ld_q and from then on). Both are gates of flops the sequence has anyway.
+  reg cmp_q, bank_q, ref_valid_q;
+  reg [ST_W-1:0] settle_q;
+  wire fed_q = ~more_q & ~ld_q;
+  wire crc_done_q = cmp_q | exp_ld_q;
   assign crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle & ~x_rd;
   wire decide = (state_q == C_CHECK) & cmp_q & drained;
   wire refuse = decide & check_i & neq_q;
-  wire apply = (state_q == C_SETTLE) & (settle_q == 4'd0);
+  wire apply = (state_q == C_SETTLE) & (settle_q == {ST_W{1'b0}});
+  // The sequence's state, reset; its counters and flags below are set on the way into the state
+  // that reads them (INIT, the decision, STREAM's end), so they need no reset (nor a reset term in
+  // their enables).
   always @(posedge clk_i) begin
     if (rst_i) begin
       state_q <= C_IDLE;
@@ -263,10 +283,6 @@ module acore_coef_bank #(
       pend_q <= (state_q == C_STREAM) & c_re;
       ld_q <= (state_q == C_CHECK) & c_re;
       exp_ld_q <= crc_end;
-      if (c_re) begin
-        ra_q <= ra_q + 1'b1;
-        more_q <= (ra_q != LAST);
-      end
       case (state_q)
         C_IDLE: begin
           if (req_q) begin
@@ -274,36 +290,15 @@ module acore_coef_bank #(
             busy_q <= 1'b1;
           end
         end
-        C_INIT: begin
-          ra_q <= {ADDR_W{1'b0}};
-          more_q <= 1'b1;
-          sc_q <= {SC_W{1'b0}};
-          fed_q <= 1'b0;
-          crc_done_q <= 1'b0;
-          cmp_q <= 1'b0;
-          state_q <= C_CHECK;
-        end
+        C_INIT: state_q <= C_CHECK;
         C_CHECK: begin
-          if (c_re) sc_q <= SC_LAST;
-          else if (sc_q != {SC_W{1'b0}}) sc_q <= sc_q - 1'b1;
-          if (ld_q && !more_q) fed_q <= 1'b1;
-          if (crc_end) crc_done_q <= 1'b1;
-          cmp_q <= crc_done_q;
           if (decide) begin
-            ra_q <= {ADDR_W{1'b0}};
-            more_q <= 1'b1;
             state_q <= refuse ? C_IDLE : C_STREAM;
             busy_q <= ~refuse;
           end
         end
-        C_STREAM: begin
-          if (!more_q && !pend_q) begin
-            settle_q <= SETTLE_LAST;
-            state_q <= C_SETTLE;
-          end
-        end
+        C_STREAM: if (!more_q && !pend_q) state_q <= C_SETTLE;
         default: begin  // C_SETTLE
-          settle_q <= settle_q - 4'd1;
           if (apply) begin
             bank_q <= ~bank_q;
             ref_valid_q <= 1'b1;
@@ -314,29 +309,42 @@ module acore_coef_bank #(
       endcase
     end
   end
-  // The CRC registers read 0 until the first commit (and pass). An applied commit's CRC is the
+  assign c_clr = (state_q == C_INIT) | decide;
+  always @(posedge clk_i) begin
+    if (c_clr) more_q <= 1'b1;
+    else if (c_re) more_q <= ~ra_last;
+    if (state_q == C_INIT) sc_q <= {SC_W{1'b0}};
+    else if (c_re) sc_q <= SC_LAST;
+    else if (sc_q != {SC_W{1'b0}}) sc_q <= sc_q - 1'b1;
+    cmp_q <= (state_q == C_CHECK) & crc_done_q;
+    settle_q <= (state_q == C_STREAM) ? SETTLE_LAST : settle_q - 1'b1;
+  end
+  // The CRC registers read 0 until the first commit (and pass): sh_zero_q and sc_zero_q, kept as
+  // the ports want them (set in reset, cleared by the first write). An applied commit's CRC is the
   // engine's still (it folds nothing from the CHECK pass's end to the commit's).
   // ref_pend_q: CRC_REF's word waits a clock (its apply met a CRC read); the APB's next setup
   // phase is a clock later still.
-  reg sh_ok_q, sc_ok_q, ref_pend_q;
+  reg sh_zero_q, sc_zero_q, ref_pend_q;
   always @(posedge clk_i) begin
     if (rst_i) begin
-      sh_ok_q <= 1'b0;
-      sc_ok_q <= 1'b0;
+      sh_zero_q <= 1'b1;
+      sc_zero_q <= 1'b1;
       ref_pend_q <= 1'b0;
     end else begin
-      if (crc_end) sh_ok_q <= 1'b1;
-      if (s_pass) sc_ok_q <= 1'b1;
+      if (crc_end) sh_zero_q <= 1'b0;
+      if (s_pass) sc_zero_q <= 1'b0;
       ref_pend_q <= apply & x_rd;
     end
   end
   assign ref_we = (apply & ~x_rd) | ref_pend_q;
-  assign crc_shadow_zero_o = ~sh_ok_q;
-  assign crc_scrub_zero_o = ~sc_ok_q;
+  assign crc_shadow_zero_o = sh_zero_q;
+  assign crc_scrub_zero_o = sc_zero_q;
   assign crc_ref_zero_o = ~ref_valid_q;
-  // The top's port: in STREAM the word read last clock (its address registered with the read, its
-  // data the shadow's output register), else the scrubber's address.
-  always @(posedge clk_i) top_addr_o <= ((state_q == C_STREAM) & c_re) ? ra_q : s_addr;
+  // The top's port: the address counter's last value: in STREAM the word read last clock (its
+  // data the shadow's output register), else the scrubber's address. (After a commit it holds
+  // where the commit left the counter until a scrubber pass starts: a read that nothing takes, of
+  // a word or past the last, which the tops answer with 0.)
+  always @(posedge clk_i) top_addr_o <= ra_q;
   assign top_we_o = pend_q;
   assign top_wdata_o = q[REG_W-1:0];
 

@@ -27,7 +27,9 @@
 // HOLD = 1 (6 x 52 = 312 for the pipelined top at CRC_W = 16); on the streaming serial core, one
 // word per sample (the core idles one clock a sample).
 // run_i low (the bank commits, or the host disabled scrubbing) abandons the pass; it starts again
-// from word 0 when run_i returns.
+// from word 0 when run_i returns. Meanwhile the address counter is the commit's (clr_i, inc_i: it
+// reads the shadow and writes the top in address order too), so the bank needs no counter and no
+// address multiplexer of its own.
 `resetall
 `default_nettype none
 
@@ -47,6 +49,11 @@ module acore_coef_scrub #(
   input  wire              rst_i,
   // 1: scrub; 0: stop (the bank owns the top's port and the CRC engine).
   input  wire              run_i,
+  // While run_i is low the bank's commit steps the address counter (one counter for both: they
+  // never run at once): clear it, or count on; last_o: it holds the last word.
+  input  wire              clr_i,
+  input  wire              inc_i,
+  output wire              last_o,
   // Address wanted on the top's host port (registered by the bank), and the top's read-back.
   output reg  [ADDR_W-1:0] addr_o,
   input  wire [REG_W-1:0]  rdata_i,
@@ -109,8 +116,6 @@ module acore_coef_scrub #(
     end else begin
       case (state_q)
         ST_START: begin
-          addr_o <= {ADDR_W{1'b0}};
-          last_q <= 1'b0;
           wait_q <= {WAIT_W{1'b0}};
           state_q <= ST_READ;
         end
@@ -126,13 +131,7 @@ module acore_coef_scrub #(
           // HOLD: the address stays until the engine has folded the word (it reads the read-back).
           if (crc_ready_i) begin
             wait_q <= {WAIT_W{1'b0}};
-            if (HOLD == 0 && last_q) begin
-              state_q <= ST_END;
-            end else begin
-              addr_o <= addr_o + 1'b1;
-              last_q <= (addr_o == LAST - 1'b1);
-              state_q <= ST_READ;
-            end
+            state_q <= (HOLD == 0 && last_q) ? ST_END : ST_READ;
           end
         end
         default: begin  // ST_END: until the last word is folded in (and no hold)
@@ -141,6 +140,21 @@ module acore_coef_scrub #(
       endcase
     end
   end
+
+  // The address counter: cleared in START, counted on in LOAD (but after the last word); the
+  // commit's steps while run_i is low (the state is START then, and nothing else moves it).
+  wire a_clr = clr_i | (run_i & (state_q == ST_START));
+  wire a_inc = inc_i | (run_i & (state_q == ST_LOAD) & crc_ready_i & ~((HOLD == 0) & last_q));
+  always @(posedge clk_i) begin
+    if (a_clr) begin
+      addr_o <= {ADDR_W{1'b0}};
+      last_q <= 1'b0;
+    end else if (a_inc) begin
+      addr_o <= addr_o + 1'b1;
+      last_q <= (addr_o == LAST - 1'b1);
+    end
+  end
+  assign last_o = last_q;
 
   generate
     if (HOLD != 0) begin : g_hold

@@ -463,7 +463,8 @@ module acore_stream_formal #(
                        C_SETTLE = 3'd4;
       // (keep: with INVARIANTS = 0 nothing reads them, and the driver still connects them)
       (* keep *) wire [2:0] tap_state;
-      (* keep *) wire [3:0] tap_settle;
+      // (SETTLE's counter: clog2(SETTLE) bits, one at the shell's SETTLE = 2)
+      (* keep *) wire tap_settle;
       (* keep *) wire tap_busy_q, tap_req, tap_fed, tap_crc_done, tap_cmp, tap_neq, tap_sel;
       (* keep *) wire tap_more, tap_ld, tap_pend, tap_crc_idle, tap_exp_ld;
       wire streaming = tap_state == C_STREAM || tap_state == C_SETTLE;
