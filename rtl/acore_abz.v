@@ -124,8 +124,11 @@ module acore_abz #(
   // steps and one that takes its count and loads the next operand.
   reg pend_q, run_q;
   reg [1:0] pass_q;
-  reg [ANGLE_W-1:0] ang_q, op_q, acc_q;
+  reg [ANGLE_W-1:0] ang_q, op_q;
   reg [L_W-1:0] low_q, nsh_q;
+  // The partial sum, signed: a digit may subtract (below), so it lies in -op .. op - 1.
+  reg [ANGLE_W:0] acc_q;
+  reg cy_q;                      // the digit before took 4 too many: this one owes it
   // N changed during this conversion: its result is dropped (the change converts again).
   reg stale_q;
   reg [K_W-1:0] k_q;
@@ -141,12 +144,40 @@ module acore_abz #(
   wire [ANGLE_W-1:0] op_addend = add2 ? {hys_a[ANGLE_W-2:0], 1'b0} : ~hys_a;
   wire [ANGLE_W:0] op_sum = {1'b0, op_base} + {1'b0, op_addend} + {{ANGLE_W{1'b0}}, ~add2};
   wire [ANGLE_W-1:0] op_next = op_sum[ANGLE_W-1:0];
-  // A step: acc + op (two low bits of N): below 4 2^ANGLE_W, ANGLE_W + 2 bits; two settle.
-  wire [ANGLE_W+1:0] psum = {2'b00, acc_q} + (nsh_q[0] ? {2'b00, op_q} : {(ANGLE_W+2){1'b0}}) +
-                            (nsh_q[1] ? {1'b0, op_q, 1'b0} : {(ANGLE_W+2){1'b0}});
-  // (Its two low bits go below the partial sum, whose upper bits are the product's.)
+  // A step adds op times a digit of N, two bits of N and the carry of the digit before:
+  // v = 0 .. 4 is 0, op, 2 op, 4 op - op (-op now, the 4 op owed to the next digit: cy), 4 op (0
+  // now, owed likewise). One adder with a four-way operand (0, op, 2 op, ~op with a carry in: one
+  // LUT a bit) instead of two adders for op and 2 op. The last digit owes nothing: N's top pair
+  // with the carry is at most 2 (N <= 2^(N_W-1)), so the product is exact and the sum ends >= 0.
+  // The digit is recoded a clock ahead (dsel_q, from the next pair of N and the carry), so each
+  // bit of the operand is one LUT of op's two bits and dsel_q's.
+  reg [1:0] dsel_q;
+  function [2:0] recode;         // {carry out, select} of a pair of N and the carry in
+    input [1:0] pair;
+    input cin;
+    reg [2:0] v;
+    begin
+      v = {1'b0, pair} + {2'b00, cin};
+      recode = {pair[1] & (pair[0] | cin),                       // v >= 3: 4 op owed onward
+                (v == 3'd2) | (v == 3'd3), (v == 3'd1) | (v == 3'd3)};
+    end
+  endfunction
+  wire [2:0] rc_first = recode(n_clamped[1:0], 1'b0);
+  wire [2:0] rc_next = recode(nsh_q[1:0], cy_q);
+  reg [ANGLE_W+2:0] dop;
+  always @(*) begin
+    case (dsel_q)
+      2'd1: dop = {3'b000, op_q};
+      2'd2: dop = {2'b00, op_q, 1'b0};
+      2'd3: dop = {3'b111, ~op_q};
+      default: dop = {(ANGLE_W+3){1'b0}};
+    endcase
+  end
+  // acc + digit op lies in -2 op .. 3 op - 1: ANGLE_W + 3 bits, signed; two settle.
+  wire [ANGLE_W+2:0] psum = {{2{acc_q[ANGLE_W]}}, acc_q} + dop + {{(ANGLE_W+2){1'b0}}, dsel_q == 2'd3};
+  // (Its two low bits go below the partial sum, which takes its upper bits, its sign included.)
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [P_W+1:0] step_nxt = {psum, low_q} >> 2;  // the top two bits are 0
+  wire [P_W+2:0] step_nxt = {psum, low_q} >> 2;
   /* verilator lint_on UNUSEDSIGNAL */
   // A new N converts the latest angle again (the count re-homes on that result).
   wire redo = n_change & have_q;
@@ -168,39 +199,44 @@ module acore_abz #(
     else if (n_change) stale_q <= 1'b1;
     if (load || (turn && !res)) begin
       op_q <= op_next;
-      acc_q <= {ANGLE_W{1'b0}};
+      acc_q <= {(ANGLE_W+1){1'b0}};
+      {cy_q, dsel_q} <= rc_first;
       low_q <= {L_W{1'b0}};
       // (Every pass takes N as it is: should it change during a conversion, the result is stale.)
-      nsh_q <= {{(L_W-N_W){1'b0}}, n_clamped};
+      nsh_q <= {{(L_W-N_W){1'b0}}, n_clamped} >> 2;  // the pairs after the first
       k_q <= NH[K_W-1:0];
       pass_q <= load ? 2'd0 : pass_q + 2'd1;
     end else if (run_q && !turn) begin
-      {acc_q, low_q} <= step_nxt[P_W-1:0];
+      {acc_q, low_q} <= step_nxt[P_W:0];
+      {cy_q, dsel_q} <= rc_next;
       nsh_q <= nsh_q >> 2;
       k_q <= k_q - 1'b1;
     end
   end
   // The product's count: the bits from ANGLE_W - 2 up (below 4N: C_W bits hold them).
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [P_W-1:0] prod = {acc_q, low_q};
+  wire [P_W-1:0] prod = {acc_q[ANGLE_W-1:0], low_q};
   /* verilator lint_on UNUSEDSIGNAL */
   wire [C_W-1:0] cnt_of = prod[ANGLE_W-2 +: C_W];
   wire [C_W-1:0] lo_q = cnt_of;
   // The window's ends are compared with the target as each pass ends (the target changes only
   // with a result, so it is the one the result is checked against), on one comparator:
-  // target >= lm after pass 0, target >= lp + 1 (the carry in) after pass 1; lm > lp exactly
+  // lm > target after pass 0, lp + 1 (the carry in) > target after pass 1; lm > lp exactly
   // when the window passes the turn's end (it covers less than half a turn).
   reg ge_lm_q, le_lp_q, wrap_q;
-  reg [C_W-1:0] tgt_q;
+  // The target is kept inverted (ntgt = ~target): the comparator here and the count's difference
+  // below then subtract it with no inverter in front of their carry chains (a carry chain takes
+  // its operands as they are); the inverter sits before the register's input, in its cell.
+  reg [C_W-1:0] ntgt_q;
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [C_W:0] cmp = {1'b0, tgt_q} + {1'b0, ~cnt_of} + {{C_W{1'b0}}, pass_q == 2'd0};
+  wire [C_W:0] cmp = {1'b0, ntgt_q} + {1'b0, cnt_of} + {{C_W{1'b0}}, pass_q != 2'd0};
   /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk_i) begin
     if (turn && pass_q == 2'd0) begin
-      ge_lm_q <= cmp[C_W];
+      ge_lm_q <= ~cmp[C_W];
       wrap_q <= op_sum[ANGLE_W];
     end
-    if (turn && pass_q == 2'd1) le_lp_q <= ~cmp[C_W];
+    if (turn && pass_q == 2'd1) le_lp_q <= cmp[C_W];
   end
 
   // ---- the count ----
@@ -209,18 +245,18 @@ module acore_abz #(
   reg rehome_q;                  // N changed: hold A/B until the first target with the new N
   wire [M_W-1:0] m2_cur = {1'b0, n_cur_q, 1'b0};
   wire [M_W-1:0] cnt_w = {1'b0, cnt_q};
-  // (tgt - cnt) mod 4N <= 2N, the shorter way forward, from d = tgt - cnt - 1 = tgt + ~cnt (no
-  // carry in): d >= 0 (tgt > cnt) goes up when d - 2N < 0, d < 0 (tgt <= cnt) when d + 2N < 0
-  // (that is tgt - cnt <= -2N; tgt = cnt is no step), on one adder (-2N as ~2N + 1): a sign each,
-  // no test for 0. Both lie in -2N .. 2N - 1.
-  wire [M_W-1:0] diff1 = {1'b0, tgt_q} + ~cnt_w;          // modulo 2^M_W
-  wire neg = diff1[M_W-1];
+  // (tgt - cnt) mod 4N <= 2N, the shorter way forward, from e = cnt - tgt = cnt + ntgt + 1:
+  // e < 0 (tgt > cnt) goes up when e + 2N >= 0, e >= 0 (tgt <= cnt) when e - 2N >= 0 (that is
+  // tgt - cnt <= -2N; tgt = cnt is no step), on one adder (-2N as ~2N + 1): a sign each, no test
+  // for 0 but e's own. Both lie in -2N .. 2N - 1.
+  wire [M_W-1:0] e_ct = cnt_w + {1'b1, ntgt_q} + {{(M_W-1){1'b0}}, 1'b1};  // modulo 2^M_W
+  wire pos = ~e_ct[M_W-1];                               // e >= 0
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [M_W-1:0] e_dir = diff1 + (neg ? m2_cur : ~m2_cur) + {{(M_W-1){1'b0}}, ~neg};
+  wire [M_W-1:0] e_dir = e_ct + (pos ? ~m2_cur : m2_cur) + {{(M_W-1){1'b0}}, pos};
   /* verilator lint_on UNUSEDSIGNAL */
   reg adj_q, adj_up_q;           // re-homing: the count's upper part moves by +-1 (4 counts) now
-  wire moving = (diff1 != {M_W{1'b1}}) & ~rehome_q & ~adj_q;  // tgt != cnt
-  wire up = e_dir[M_W-1];
+  wire moving = (e_ct != {M_W{1'b0}}) & ~rehome_q & ~adj_q;  // tgt != cnt
+  wire up = ~e_dir[M_W-1];
   // The top count 4N - 1 is {N - 1, 2'b11}: its upper part (from the register N, beside the step,
   // not after it: the path through the direction and the step's adder is the board's longest).
   wire [C_W-3:0] top_hi = n_cur_q[C_W-3:0] - 1'b1;
@@ -230,7 +266,6 @@ module acore_abz #(
   wire sp_ready = ((sp_q >> 1) == {SP_W{1'b0}});
   // The window lm .. lp round the turn holds the target.
   wire in_win = wrap_q ? (ge_lm_q | le_lp_q) : (ge_lm_q & le_lp_q);
-  wire [C_W-1:0] new_tgt = in_win ? tgt_q : lo_q;
   // A result with the N in use (one converted before a change is dropped).
   wire res_ok = res & ~stale_q & ~n_change;
   // Re-homing: the count keeps its two low bits (A, B hold) and takes the value nearest the new
@@ -256,7 +291,7 @@ module acore_abz #(
   always @(posedge clk_i) begin
     if (rst_i) begin
       cnt_q <= {C_W{1'b0}};
-      tgt_q <= {C_W{1'b0}};
+      ntgt_q <= {C_W{1'b1}};
       sp_q <= {SP_W{1'b0}};
       n_cur_q <= n_clamped;
       rehome_q <= 1'b0;
@@ -271,13 +306,13 @@ module acore_abz #(
       end else if (res_ok && rehome_q) begin
         rehome_q <= 1'b0;
         cnt_q <= {lo_q[C_W-1:2], cnt_q[1:0]};
-        tgt_q <= lo_q;
+        ntgt_q <= ~lo_q;
         adj_q <= home_up | home_dn;
         adj_up_q <= home_up;
       end else if (adj_q) begin
         cnt_q <= cnt_next;
       end else begin
-        if (res_ok) tgt_q <= new_tgt;
+        if (res_ok && !in_win) ntgt_q <= ~lo_q;
         if (moving && sp_ready) begin
           sp_q <= spacing_i;
           cnt_q <= cnt_next;
