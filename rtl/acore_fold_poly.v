@@ -25,6 +25,16 @@
 //   acore_fold_mul's A_PRE) | 2: step 0 | step m: ML clocks of multiplier
 //   (addend a_j), 1 clock saturate | round, subtract, saturate (one carry chain per clock)
 //   LATENCY = 5 + DEGREE (ML + 1) (26 at F = 1 with the defaults), ML = acore_fold_mul's LATENCY
+//
+// With PAIRED and acore_fold_poly_chain() (F = 16 at S_W = 18, MULT = 0) a multiplier per item in
+// flight instead of one per step: item c of a pair runs its whole chain on multiplier c
+// (acore_fold_mul's LOAD form, T = acore_fold_mul_load_step clocks a step) and reads on port c;
+// the argument, the next word's address and the overflow so far wait in one register each
+// (g_chain below):
+//   clock 0: a_n addressed | 1: a_n loaded into the accumulator | 2 + m T: step m starts (its word
+//   addressed the clock before, O the saturated accumulator) | 2 + DEGREE T: saturated result
+//   into round, subtract, saturate, shared by the pair's two items (they end F clocks apart)
+//   LATENCY = 5 + DEGREE T (35 at F = 16 with the defaults)
 `resetall
 `default_nettype none
 
@@ -48,7 +58,8 @@ module acore_fold_poly #(
   parameter integer F = 1,
   // Where the argument (with the base address) waits for the Horner steps, DEGREE - 1 lines of
   // S_W + ADDR_W bits: 0 flop chains (acore_delay), 1 block RAM (acore_ram_delay), 2 a few
-  // words of flops (acore_sparse_delay: the items come F clocks apart at least).
+  // words of flops (acore_sparse_delay: the items come F clocks apart at least). Not read by the
+  // chain per item (acore_fold_poly_chain), which keeps the argument in a register.
   parameter integer RAM_DELAY = 0,
   // 0: products on adders and shifters; 1: on hardware multipliers (acore_hw_mul.v, DSP blocks).
   parameter integer MULT = 0,
