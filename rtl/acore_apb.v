@@ -104,7 +104,7 @@ module acore_apb #(
 
   // ---- the top's timing, by its own functions (rtl/acore_derived.vh) ----
   localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO, MULT) :
-      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD);
+      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD, MULT);
   localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO, MULT) :
       acore_top_cycles(FOLD);
   // The most samples the top holds at once (a commit waits until none is left): one per pipeline

@@ -132,7 +132,7 @@ module acore_board #(
   // The estimator's timing (the shell's): clocks from a sample taken to its angle on angle_o, and
   // clocks per sample at full rate (the interfaces take one sample a clock).
   localparam integer LATENCY = (SERIAL != 0) ? acore_serial_latency(REG_W, S_W, DEGREE, K, ZERO, MULT) :
-      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD);
+      acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K, FOURIER_M, FOLD, MULT);
   localparam integer CYCLES = (SERIAL != 0) ? acore_serial_cycles(REG_W, S_W, DEGREE, K, ZERO, MULT) :
       acore_top_cycles(FOLD);
 

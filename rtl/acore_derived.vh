@@ -231,6 +231,12 @@ function integer acore_fold_mul_init_at(input integer f_b_w, input integer f_f);
   acore_fold_mul_init_at = (acore_fold_mul_seq(f_b_w, f_f) != 0) ? 1 :
                            acore_fold_mul_latency(f_b_w, f_f) - f_f;
 endfunction
+// The in-place form with LOAD (the addend loaded into the accumulator at start_i, the groups on
+// the clocks after): clocks from start_i until the result is in the accumulator, ceil(B_W / 2) + 1
+// (a Horner chain's step on one multiplier: acore_fold_poly_chain).
+function integer acore_fold_mul_load_step(input integer f_b_w);
+  acore_fold_mul_load_step = (f_b_w + 1) / 2 + 1;
+endfunction
 
 // acore_fold_scaler: t = d - O, the folded multiplier (rounding constant as its addend), saturate.
 // (acore_fold_lean: the reciprocal one clock after the offset, the product one clock later.)
@@ -312,19 +318,40 @@ function integer acore_fold_poly_paired(input integer f_paired, input integer f_
         acore_fold_poly_paired = acore_fold_poly_pair_ok(f_degree, f_s_w, f_f);
   end
 endfunction
-// Its read ports with PAIRED.
+// acore_fold_poly with PAIRED: 1 when each item's whole Horner chain runs on one multiplier of
+// its own (item c of a sample on multiplier c), its steps one after another on the same
+// accumulator (acore_fold_mul's LOAD form: the addend loaded at a step's start, the groups right
+// after, the next step's operand the saturated result). An item loads a_n into the accumulator one
+// clock after its start and starts its DEGREE steps the clock after; its result is final
+// 2 + DEGREE * acore_fold_mul_load_step clocks after its start, and must be read before the next
+// item on that multiplier (2F clocks after this one at the earliest) loads its a_n, at its clock
+// 1: DEGREE steps in 2F - 1 clocks (F = 16 at S_W = 18 and DEGREE <= 3). Adders and shifters only
+// (MULT = 0), two bits of the argument a clock (acore_fold_mul_seq).
+function integer acore_fold_poly_chain(input integer f_paired, input integer f_degree,
+                                       input integer f_s_w, input integer f_f, input integer f_mult);
+  acore_fold_poly_chain = (f_paired != 0 && f_mult == 0 && acore_fold_mul_seq(f_s_w, f_f) != 0 &&
+                           f_degree * acore_fold_mul_load_step(f_s_w) <= 2 * f_f - 1) ? 1 : 0;
+endfunction
+// Its read ports with PAIRED: with acore_fold_poly_chain one a multiplier (an item's reads are
+// less than 2F clocks apart, the next item on the multiplier 2F clocks later at the earliest).
 function integer acore_fold_poly_ports_paired(input integer f_paired, input integer f_degree,
-                                              input integer f_s_w, input integer f_f);
-  acore_fold_poly_ports_paired = (acore_fold_poly_paired(f_paired, f_degree, f_s_w, f_f) != 0) ?
+                                              input integer f_s_w, input integer f_f,
+                                              input integer f_mult);
+  acore_fold_poly_ports_paired =
+    (acore_fold_poly_chain(f_paired, f_degree, f_s_w, f_f, f_mult) != 0) ? 2 :
+    (acore_fold_poly_paired(f_paired, f_degree, f_s_w, f_f) != 0) ?
     acore_fold_poly_pair_port(-1, f_degree, f_s_w, f_f) : acore_fold_poly_ports(f_degree, f_s_w, f_f);
 endfunction
 
 // acore_fold_poly: a_n addressed and read, DEGREE steps (folded multiplier with a_j as addend,
-// saturate), round, subtract, saturate.
-function integer acore_fold_poly_latency(input integer f_degree, input integer f_s_w,
-                                         input integer f_f);
-  acore_fold_poly_latency = 2 + f_degree * (acore_fold_mul_latency(f_s_w, f_f) + 1) +
-                            acore_round_sub_sat_latency();
+// saturate), round, subtract, saturate; with acore_fold_poly_chain, a_n read and loaded, DEGREE
+// chained steps of acore_fold_mul_load_step clocks, then round, subtract, saturate.
+function integer acore_fold_poly_latency(input integer f_paired, input integer f_degree,
+                                         input integer f_s_w, input integer f_f,
+                                         input integer f_mult);
+  acore_fold_poly_latency = (acore_fold_poly_chain(f_paired, f_degree, f_s_w, f_f, f_mult) != 0) ?
+    2 + f_degree * acore_fold_mul_load_step(f_s_w) + acore_round_sub_sat_latency() :
+    2 + f_degree * (acore_fold_mul_latency(f_s_w, f_f) + 1) + acore_round_sub_sat_latency();
 endfunction
 
 // The folded datapath's schedule (acore_fold_datapath.v), in clocks after the accepting edge: the
@@ -336,15 +363,16 @@ function integer acore_fold_r(input integer f_reg_w, input integer f_fold);
 endfunction
 function integer acore_fold_c(input integer f_reg_w, input integer f_s_w,
                               input integer f_correction, input integer f_degree,
-                              input integer f_fold);
+                              input integer f_fold, input integer f_mult);
   acore_fold_c = acore_fold_r(f_reg_w, f_fold) + ((f_correction == ACORE_CORR_NONE) ? 0 :
-                 (f_fold / 2) + acore_fold_poly_latency(f_degree, f_s_w, f_fold / 2));
+                 (f_fold / 2) + acore_fold_poly_latency(1, f_degree, f_s_w, f_fold / 2, f_mult));
 endfunction
 // The accepting edge to valid_o, in clocks after it, minus one (v_q[LATENCY]).
 function integer acore_fold_datapath_latency(input integer f_reg_w, input integer f_s_w,
                                              input integer f_correction, input integer f_degree,
-                                             input integer f_k, input integer f_fold);
-  acore_fold_datapath_latency = acore_fold_c(f_reg_w, f_s_w, f_correction, f_degree, f_fold) +
+                                             input integer f_k, input integer f_fold,
+                                             input integer f_mult);
+  acore_fold_datapath_latency = acore_fold_c(f_reg_w, f_s_w, f_correction, f_degree, f_fold, f_mult) +
                                 acore_fold_cordic_latency(f_k, f_fold);
 endfunction
 
@@ -396,9 +424,10 @@ endfunction
 function integer acore_top_latency(input integer f_reg_w, input integer f_s_w,
                                    input integer f_correction, input integer f_degree,
                                    input integer f_k, input integer f_fourier_k,
-                                   input integer f_fourier_m, input integer f_fold);
+                                   input integer f_fourier_m, input integer f_fold,
+                                   input integer f_mult);
   acore_top_latency = (acore_folded(f_fold, f_correction, f_fourier_k) != 0) ?
-      1 + acore_fold_datapath_latency(f_reg_w, f_s_w, f_correction, f_degree, f_k, f_fold) +
+      1 + acore_fold_datapath_latency(f_reg_w, f_s_w, f_correction, f_degree, f_k, f_fold, f_mult) +
       acore_out_latency() + acore_fold_fifo_latency() :
       acore_prefilter_latency() + acore_scaler_latency(f_reg_w) + acore_region_select_latency() +
       acore_correction_latency(f_correction, f_degree, f_s_w) + acore_cordic_latency(f_k, 0, 0) +
@@ -419,7 +448,7 @@ function integer acore_top_capacity(input integer f_reg_w, input integer f_s_w,
   acore_top_capacity = (acore_folded(f_fold, f_correction, f_fourier_k) != 0) ?
       acore_fold_fifo_depth() :
       acore_top_latency(f_reg_w, f_s_w, f_correction, f_degree, f_k, f_fourier_k, f_fourier_m,
-                        f_fold);
+                        f_fold, 0);  // (pipelined: MULT leaves the latency as it is)
 endfunction
 
 // acore_serial_top: clocks per sample (the schedule in acore_serial_ctrl.v: 22 single operations,

@@ -174,7 +174,7 @@ module acore_fold_datapath #(
   localparam integer H = FOLD / 2;
   localparam integer U = acore_fold_cordic_units(K, FOLD);
   localparam integer PP = (CORRECTION == ACORE_CORR_NONE) ? 0 :
-                          acore_fold_poly_ports_paired(1, DEGREE, S_W, FOLD / 2);
+                          acore_fold_poly_ports_paired(1, DEGREE, S_W, FOLD / 2, MULT);
   localparam integer BPW = (REG_W > 16) ? 2 : 1;
   localparam integer FIFO_B = (ANGLE_W + RG_W + 3 > 16) ? 2 : 1;
   // The scaler's ports: offset and reciprocal, or both on one (acore_fold_lean).
@@ -202,10 +202,10 @@ module acore_fold_datapath #(
   localparam integer D_W = acore_d_w(IN_W);
   localparam integer F = H;
   localparam integer SL = acore_fold_scaler_latency(REG_W, F);
-  localparam integer PL = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_latency(DEGREE, S_W, F);
+  localparam integer PL = (CORRECTION == ACORE_CORR_NONE) ? 0 : acore_fold_poly_latency(1, DEGREE, S_W, F, MULT);
   localparam integer CL = acore_fold_cordic_latency(K, FOLD);
   localparam integer R = acore_fold_r(REG_W, FOLD);
-  localparam integer C = acore_fold_c(REG_W, S_W, CORRECTION, DEGREE, FOLD);
+  localparam integer C = acore_fold_c(REG_W, S_W, CORRECTION, DEGREE, FOLD, MULT);
   // From acore_fold_lean() on, the blocks the Horner chain's paired schedule frees (fewer copies of
   // the map: acore_fold_poly_paired) hold the curve's delay line instead of its flops.
   localparam integer PP_FREED = (CORRECTION == ACORE_CORR_NONE) ? 0 :
@@ -214,7 +214,7 @@ module acore_fold_datapath #(
   localparam integer S_PAIR_RAM = (SPARSE != 0 && PP_FREED >= S_LINE_B &&
                                    H + PL - 1 <= 257) ? 1 : 0;
   // The accepting edge to valid_o, in clocks after it, minus one.
-  localparam integer LATENCY = acore_fold_datapath_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOLD);
+  localparam integer LATENCY = acore_fold_datapath_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOLD, MULT);
   acore_check #(.OK(vtap(8, H, SL, R, PL, CL, 0) == C && vtap(12, H, SL, R, PL, CL, 0) == LATENCY),
     .VALUE(LATENCY), .MSG("illegal parameter: acore_fold_datapath: vtap's C and LATENCY must be the schedule's"))
     vtap_must_follow_the_schedule ();

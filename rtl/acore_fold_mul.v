@@ -31,7 +31,12 @@
 // A new product may start every F clocks. With A_PRE = 1 (g_seq only) a_i is read at pre_i, one
 // clock before start_i, and O waits through the start clock: the caller need not hold a in a
 // register of its own (acore_fold_poly's first step reads its coefficient word straight from the
-// register file's memory). Sums are modulo 2^P_W (harmless while the exact result
+// register file's memory). With LOAD = 1 (g_seq only) start_i loads init_i into the accumulator
+// (read at start_i: INIT_AT = 0) beside O and X, and the groups follow on clocks 1 .. NG: the
+// result is in the accumulator acore_fold_mul_load_step = NG + 1 clocks after start_i and held
+// until the next start_i, which may come on that clock (a Horner chain's steps back to back on one
+// multiplier, acore_fold_poly_chain: one clock a step less than the cleared form, at the cost of a
+// multiplexer per accumulator bit). Sums are modulo 2^P_W (harmless while the exact result
 // fits P_W bits, which the elaboration check enforces). No reset: data only; start_i must be low
 // (or its product ignored) until the first real operand.
 //
@@ -60,7 +65,10 @@ module acore_fold_mul #(
   // the full product floored once).
   parameter integer MULT = 0,
   // 1 (the accumulate-in-place form only): a_i is read at pre_i, one clock before start_i.
-  parameter integer A_PRE = 0
+  parameter integer A_PRE = 0,
+  // 1 (the accumulate-in-place form only, without A_PRE): init_i is loaded at start_i, the groups
+  // follow at once (see the header).
+  parameter integer LOAD = 0
 ) (
   input  wire              clk_i,
   // a_i and b_i are valid (a product starts); needed for F > 1 only.
@@ -95,6 +103,9 @@ module acore_fold_mul #(
   acore_check #(.OK(A_PRE == 0 || SEQ != 0), .VALUE(A_PRE),
     .MSG("illegal parameter: acore_fold_mul: A_PRE = 1 needs the accumulate-in-place form (acore_fold_mul_seq, MULT = 0)"))
     A_PRE_needs_the_in_place_form ();
+  acore_check #(.OK(LOAD == 0 || (SEQ != 0 && A_PRE == 0)), .VALUE(LOAD),
+    .MSG("illegal parameter: acore_fold_mul: LOAD = 1 needs the accumulate-in-place form (acore_fold_mul_seq, MULT = 0) without A_PRE"))
+    LOAD_needs_the_in_place_form ();
   acore_check #(.OK(F == 1 || B >= 2), .VALUE(B_W),
     .MSG("illegal parameter: acore_fold_mul: B_W over F clocks must leave at least 2 bits a clock"))
     B_W_must_leave_2_bits_a_clock ();
@@ -168,11 +179,20 @@ module acore_fold_mul #(
       end else begin : g_nopad
         assign b_pad = b_i;
       end
-      // start_i delayed 1 and 2 clocks: the addend's clock (O and X wait), the first group's.
-      reg [1:0] sd_q;
-      always @(posedge clk_i) sd_q <= {sd_q[0], start_i};
-      wire add_init = sd_q[0];
-      wire first = sd_q[1];
+      // start_i delayed 1 and 2 clocks: the addend's clock (O and X wait), the first group's;
+      // with LOAD no addend's clock: the first group one clock after start_i.
+      wire add_init, first;
+      if (LOAD != 0) begin : g_sdload
+        reg sd_q;
+        always @(posedge clk_i) sd_q <= start_i;
+        assign add_init = 1'b0;
+        assign first = sd_q;
+      end else begin : g_sdclr
+        reg [1:0] sd_q;
+        always @(posedge clk_i) sd_q <= {sd_q[0], start_i};
+        assign add_init = sd_q[0];
+        assign first = sd_q[1];
+      end
       reg [O_W-1:0] o_q;
       reg [X_W-1:0] x_q;
       wire signed [O_W-1:0] o_s = o_q;
@@ -203,9 +223,12 @@ module acore_fold_mul #(
       // sign-extended to P_W.
       localparam integer ACC_W = (NEED_W > T_W) ? NEED_W : T_W;
       wire [ACC_W-1:0] s0_ext = {{(ACC_W-T_W){s0[T_W]}}, s0[T_W:1]};
+      // Cleared at start_i (a synchronous clear), or loaded with the addend (LOAD).
+      wire [ACC_W-1:0] acc_start = (LOAD != 0) ? {{(ACC_W-INIT_W){init_i[INIT_W-1]}}, init_i} :
+                                                 {ACC_W{1'b0}};
       reg [ACC_W-1:0] acc_q;
       always @(posedge clk_i)
-        if (start_i) acc_q <= {ACC_W{1'b0}};
+        if (start_i) acc_q <= acc_start;
         else acc_q <= acc_q + s0_ext;
       assign p_o = {{(P_W-ACC_W){acc_q[ACC_W-1]}}, acc_q};
       wire unused_init_ext = ^init_ext;  // (the other forms')

@@ -112,7 +112,7 @@ module acore_top #(
   // Pipelined: the stages in a row; folded (acore_fold_datapath.v's schedule): the accepting edge
   // to out_valid_o with the output FIFO empty.
   localparam integer LATENCY = acore_top_latency(REG_W, S_W, CORRECTION, DEGREE, K, FOURIER_K,
-                                                 FOURIER_M, FOLD);
+                                                 FOURIER_M, FOLD, MULT);
   // Clocks per sample at full rate (Verilator public, read by the tests).
   localparam integer CYCLES = acore_top_cycles(FOLD);
 
