@@ -254,16 +254,16 @@ module acore_coef_bank #(
     sel_q <= busy_q;
   end
 
-  // fed_q: the last shadow word went into the CRC engine (no word left to read, none loading);
-  // crc_done_q: its CRC is in CRC_SHADOW's word (written in a clock without a CRC read, which
+  // fed: the last shadow word went into the CRC engine (no word left to read, none loading);
+  // crc_done: its CRC is in CRC_SHADOW's word (written in a clock without a CRC read, which
   // also reads CRC_EXPECTED's; the engine keeps the CRC until the commit ends): the clock after
   // (exp_ld_q) and from then on; cmp_q: neq_q holds its comparison with CRC_EXPECTED (the clock
   // after exp_ld_q and from then on). Both are gates of flops the sequence has anyway.
   reg cmp_q, bank_q, ref_valid_q;
   reg [ST_W-1:0] settle_q;
-  wire fed_q = ~more_q & ~ld_q;
-  wire crc_done_q = cmp_q | exp_ld_q;
-  assign crc_end = (state_q == C_CHECK) & fed_q & ~crc_done_q & crc_idle & ~x_rd;
+  wire fed = ~more_q & ~ld_q;
+  wire crc_done = cmp_q | exp_ld_q;
+  assign crc_end = (state_q == C_CHECK) & fed & ~crc_done & crc_idle & ~x_rd;
   wire decide = (state_q == C_CHECK) & cmp_q & drained;
   wire refuse = decide & check_i & neq_q;
   wire apply = (state_q == C_SETTLE) & (settle_q == {ST_W{1'b0}});
@@ -316,7 +316,7 @@ module acore_coef_bank #(
     if (state_q == C_INIT) sc_q <= {SC_W{1'b0}};
     else if (c_re) sc_q <= SC_LAST;
     else if (sc_q != {SC_W{1'b0}}) sc_q <= sc_q - 1'b1;
-    cmp_q <= (state_q == C_CHECK) & crc_done_q;
+    cmp_q <= (state_q == C_CHECK) & crc_done;
     settle_q <= (state_q == C_STREAM) ? SETTLE_LAST : settle_q - 1'b1;
   end
   // The CRC registers read 0 until the first commit (and pass): sh_zero_q and sc_zero_q, kept as

@@ -183,6 +183,12 @@ module acore_fold_poly #(
       assign u_next = x_i;
     end
   endgenerate
+  // The address of the item's a_n, from its word 0; the output stage's input (the chain's last
+  // result, saturated, with its overflow so far).
+  localparam integer DEG_I = term_off(DEGREE);
+  localparam [ADDR_W-1:0] DEG_A = DEG_I[ADDR_W-1:0];
+  wire [ACC_W-1:0] out_acc;
+  wire             out_ov;
   genvar gk, gp, m, gc;
   generate
     if (CH != 0) begin : g_chain
@@ -203,8 +209,6 @@ module acore_fold_poly #(
       localparam integer END = 2 + DEGREE * T;
       localparam integer CNT_W = $clog2(END + 1);
       localparam [CNT_W-1:0] END_C = END[CNT_W-1:0];
-      localparam integer TOP_I = term_off(DEGREE);
-      localparam [ADDR_W-1:0] TOP_A = TOP_I[ADDR_W-1:0];
       localparam integer NEXT_I = term_off(DEGREE - 1);
       localparam [ADDR_W-1:0] NEXT_A = NEXT_I[ADDR_W-1:0];
       // The powers of a region's curve are consecutive words (the map): each step's word one
@@ -216,7 +220,7 @@ module acore_fold_poly #(
         if (rst_i) cur_q <= 1'b0;
         else if (start_i) cur_q <= ~cur_q;
       end
-      wire [ADDR_W-1:0] top_addr = base_i + TOP_A;
+      wire [ADDR_W-1:0] top_addr = base_i + DEG_A;
       wire [ADDR_W-1:0] next_addr = base_i + NEXT_A;
       wire [2*ACC_W-1:0] res;  // multiplier c's saturated result at bits [c ACC_W +: ACC_W]
       wire [1:0] res_ov, fin;
@@ -281,19 +285,16 @@ module acore_fold_poly #(
       // 1 is at its clock F), so fin of multiplier 1 says which.
       wire sel = fin[1];
       wire unused_fin0 = fin[0];
-      acore_round_sub_sat #(.ACC_W(ACC_W), .RN(RN), .S_W(S_W)) u_out (
-        .clk_i(clk_i), .en_i(1'b1), .acc_i(sel ? res[ACC_W +: ACC_W] : res[0 +: ACC_W]), .s_i(s_i),
-        .ov_i(sel ? res_ov[1] : res_ov[0]), .y_o(y_o), .ovf_o(ovf_o));
+      assign out_acc = sel ? res[ACC_W +: ACC_W] : res[0 +: ACC_W];
+      assign out_ov = sel ? res_ov[1] : res_ov[0];
     end else begin : g_steps
-    localparam integer DEG_I = term_off(DEGREE);
-    localparam [ADDR_W-1:0] DEG_A = DEG_I[ADDR_W-1:0];
-    // Read k (0: a_n, at the item's start; m + 1: step m's word, one clock before its multiplier
-    // adds it): its address, its read clock (rd: PM only) and its word, one clock later.
-    wire [(DEGREE+1)*ADDR_W-1:0] ra;  // read k at bits [k ADDR_W +: ADDR_W]
-    wire [DEGREE:0]   rd;
-    wire [REG_W-1:0]  cw [0:DEGREE];
-    assign ra[0 +: ADDR_W] = base_i + DEG_A;
-    assign rd[0] = start_i;
+      // Read k (0: a_n, at the item's start; m + 1: step m's word, one clock before its multiplier
+      // adds it): its address, its read clock (rd: PM only) and its word, one clock later.
+      wire [(DEGREE+1)*ADDR_W-1:0] ra;  // read k at bits [k ADDR_W +: ADDR_W]
+      wire [DEGREE:0]   rd;
+      wire [REG_W-1:0]  cw [0:DEGREE];
+      assign ra[0 +: ADDR_W] = base_i + DEG_A;
+      assign rd[0] = start_i;
       if (PM == 0) begin : g_ports
         // One port a read, but a_n and step 0 on port 0 with SHARE (the step's read is never at an
         // item's start).
@@ -348,37 +349,37 @@ module acore_fold_poly #(
         end
       end
 
-    // Per step m: its inputs at its start clock (accumulator, argument, curve, base address,
-    // overflow so far, start).
-    wire [ACC_W-1:0]  acc [0:DEGREE];
-    wire [S_W-1:0]    us  [0:DEGREE];
-    wire [ADDR_W-1:0] bs  [0:DEGREE];
-    wire              ov  [0:DEGREE];
-    wire              st  [0:DEGREE];
-    // F >= 2: the item's registers load at its start only and hold it until the next item's, at
-    // least 2 clocks later, so they present it at the first step's start as well (clock 2): no
-    // second register each. F = 1: a register a clock (an item may come every clock).
-    localparam integer HOLD0 = (F >= 2) ? 1 : 0;
-    reg [S_W-1:0]    u0_q;
-    reg [ADDR_W-1:0] b0_q;
-    reg              ov0_q, st0_q, st1_q;
-    always @(posedge clk_i) begin
-      if (HOLD0 == 0 || start_i) begin
-        u0_q  <= u_next;
-        b0_q  <= base_i;
-        ov0_q <= ovf_i;
+      // Per step m: its inputs at its start clock (accumulator, argument, curve, base address,
+      // overflow so far, start).
+      wire [ACC_W-1:0]  acc [0:DEGREE];
+      wire [S_W-1:0]    us  [0:DEGREE];
+      wire [ADDR_W-1:0] bs  [0:DEGREE];
+      wire              ov  [0:DEGREE];
+      wire              st  [0:DEGREE];
+      // F >= 2: the item's registers load at its start only and hold it until the next item's, at
+      // least 2 clocks later, so they present it at the first step's start as well (clock 2): no
+      // second register each. F = 1: a register a clock (an item may come every clock).
+      localparam integer HOLD0 = (F >= 2) ? 1 : 0;
+      reg [S_W-1:0]    u0_q;
+      reg [ADDR_W-1:0] b0_q;
+      reg              ov0_q, st0_q, st1_q;
+      always @(posedge clk_i) begin
+        if (HOLD0 == 0 || start_i) begin
+          u0_q  <= u_next;
+          b0_q  <= base_i;
+          ov0_q <= ovf_i;
+        end
+        if (rst_i) begin
+          st0_q <= 1'b0;
+          st1_q <= 1'b0;
+        end else begin
+          st0_q <= start_i;
+          st1_q <= st0_q;
+        end
       end
-      if (rst_i) begin
-        st0_q <= 1'b0;
-        st1_q <= 1'b0;
-      end else begin
-        st0_q <= start_i;
-        st1_q <= st0_q;
-      end
-    end
-    // a_n for the first step: with the accumulate-in-place multiplier (A_PRE) read by it straight
-    // from the memory's word at clock 1 (its O register is the word's register); else a register.
-    localparam integer A_PRE = (MULT == 0) ? acore_fold_mul_seq(S_W, F) : 0;
+      // a_n for the first step: with the accumulate-in-place multiplier (A_PRE) read by it straight
+      // from the memory's word at clock 1 (its O register is the word's register); else a register.
+      localparam integer A_PRE = (MULT == 0) ? acore_fold_mul_seq(S_W, F) : 0;
       if (A_PRE != 0) begin : g_anpre
         assign acc[0] = coef_acc(cw[0]);
       end else begin : g_anreg
@@ -403,7 +404,7 @@ module acore_fold_poly #(
         assign bs[0] = b1_q;
         assign ov[0] = ov1_q;
       end
-    assign st[0]  = st1_q;
+      assign st[0]  = st1_q;
 
       for (m = 0; m < DEGREE; m = m + 1) begin : g_step
         // Address of a_j, formed at the step's start and presented one clock before the multiplier
@@ -519,14 +520,18 @@ module acore_fold_poly #(
         assign ov[m+1]  = ov_q;
       end
 
-    // y = saturate(s - round_shr(acc, RN), S_W): round, subtract, saturate, one clock each.
-    acore_round_sub_sat #(.ACC_W(ACC_W), .RN(RN), .S_W(S_W)) u_out (
-      .clk_i(clk_i), .en_i(1'b1), .acc_i(acc[DEGREE]), .s_i(s_i), .ov_i(ov[DEGREE]), .y_o(y_o), .ovf_o(ovf_o));
+      // The last step's result to the output stage.
+      assign out_acc = acc[DEGREE];
+      assign out_ov = ov[DEGREE];
 
-    // The last step's start, base and argument have no further reader.
-    wire unused_tail = st[DEGREE] ^ ^bs[DEGREE] ^ ^us[DEGREE];
+      // The last step's start, base and argument have no further reader.
+      wire unused_tail = st[DEGREE] ^ ^bs[DEGREE] ^ ^us[DEGREE];
     end
   endgenerate
+
+  // y = saturate(s - round_shr(acc, RN), S_W): round, subtract, saturate, one clock each.
+  acore_round_sub_sat #(.ACC_W(ACC_W), .RN(RN), .S_W(S_W)) u_out (
+    .clk_i(clk_i), .en_i(1'b1), .acc_i(out_acc), .s_i(s_i), .ov_i(out_ov), .y_o(y_o), .ovf_o(ovf_o));
 
 endmodule
 
