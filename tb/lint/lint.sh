@@ -18,7 +18,10 @@ cd "$root/rtl"
 mapfile -t files < <(grep -v '^#' files.f | grep '\.v$')
 fail=0
 out=""
-lint() { out=$(verilator --lint-only -Wall verilator.vlt "${files[@]}" "$@" 2>&1); }
+# Each run reads its top's file and finds the modules below it in rtl/ (-y: every module is in a file
+# of its name, which -Wall's DECLFILENAME enforces): the same hierarchy as with every file of
+# files.f on the command line, without parsing the files it does not use.
+lint() { out=$(verilator --lint-only -Wall verilator.vlt -y . "$@" 2>&1); }
 run() { # run DESCRIPTION VERILATOR_ARGS...: status 1 on a failure
   local name=$1
   shift
@@ -52,7 +55,7 @@ shell_rules_only() {
 declare -A linted # module and sorted parameters -> what linted it
 for f in "${files[@]}"; do
   m=$(basename "$f" .v)
-  if run "$m" --top-module "$m"; then linted[$(key "$m")]=$m; fi
+  if run "$m" "$f" --top-module "$m"; then linted[$(key "$m")]=$m; fi
 done
 while read -r name module flows params; do
   [ -n "$name" ] || continue
@@ -62,7 +65,7 @@ while read -r name module flows params; do
     continue
   fi
   mapfile -t g < <(gargs $params)
-  if run "$module $name" --top-module "$module" "${g[@]}"; then linted[$k]="$module $name"; fi
+  if run "$module $name" "$module.v" --top-module "$module" "${g[@]}"; then linted[$k]="$module $name"; fi
 done <<<"$lines"
 while read -r name module flows params; do
   [ -n "$name" ] || continue
@@ -75,7 +78,7 @@ while read -r name module flows params; do
   [ -z "${linted[$k]:-}" ] || continue
   linted[$k]="acore_apb around $name"
   mapfile -t g < <(gargs "${shell[@]}")
-  if lint --top-module acore_apb "${g[@]}"; then
+  if lint acore_apb.v --top-module acore_apb "${g[@]}"; then
     echo "lint ok:   acore_apb around $name"
   elif why=$(shell_rules_only); then
     echo "lint n/a:  acore_apb around $name: the shell does not take it ($why)"

@@ -2,12 +2,16 @@
 # SPDX-License-Identifier: MIT
 """Parameter rules of the RTL, checked against every tool and against the model.
 
-  param_checks.py illegal [--root DIR] [--jobs N]
+  param_checks.py illegal [--root DIR] [--jobs N] [--tools all|rotate]
       Every row of tb/lint/illegal_params.txt (an illegal configuration and the rule it breaks) must
       stop Verilator (--lint-only -Wall), Icarus (iverilog elaboration) and Yosys (read_verilog -sv;
       hierarchy) with that rule's message (rtl/acore_check.v): Verilator names the rule's instance
       and the value, Icarus the instance and the value, Yosys the rule's text. Each top's defaults
       must pass all three (the control), and so must the APB shell's.
+      --tools all (the default): every row through all three tools. --tools rotate: row k (from 0,
+      in the table's order) through one tool, Verilator, Icarus and Yosys in turn, so that every
+      rule's condition is checked and each tool stops on a third of the rows, for a third of the
+      time (the default CTest run; the full matrix is the CTest configuration Long's).
   param_checks.py agree --validator BIN [--root DIR] [--jobs N] [--sets N] [--seed S]
       N random parameter sets around the limits (half for each top), each judged by
       `verilator --lint-only -Wall` and by the model's DatapathConfig::validate() for that top (BIN
@@ -138,14 +142,27 @@ def read_table(path):
     return rows
 
 
-def check_illegal(root, row, msgs):
-    """Returns a list of failures (empty: every tool stopped with the rule)."""
+TOOL_NAMES = ("verilator", "iverilog", "yosys")
+
+
+def check_illegal(root, row, msgs, tools=TOOL_NAMES):
+    """Returns a list of failures (empty: every tool of `tools` stopped with the rule)."""
     where, top, module, rule, value, params = row
     msg = msgs.get((module, rule))
     if msg is None:
         return [f"{where}: no acore_check instance {rule} in module {module}"]
     fails = []
     desc = f"{where} ({top} {' '.join(f'{k}={v}' for k, v in params)}): {module}.{rule}"
+    if "verilator" in tools:
+        fails += verilator_stops(root, top, params, msg, value, rule, desc)
+    if "iverilog" in tools:
+        fails += icarus_stops(root, top, params, value, rule, desc)
+    if "yosys" in tools:
+        fails += yosys_stops(root, top, params, msg, desc)
+    return fails
+
+
+def verilator_stops(root, top, params, msg, value, rule, desc):
     rc, out = verilator(root, top, params)
     # %Warning-USERERROR: <file>: <MSG> (value V)\n ... : ... In instance <path>.<rule>
     found = re.search(
@@ -154,23 +171,27 @@ def check_illegal(root, row, msgs):
         out,
     )
     if rc == 0 or not found:
-        fails.append(
-            f"{desc}: verilator (exit {rc}) did not stop with '{msg} (value {value})':\n"
-            f"{out[:1500]}"
-        )
+        why = f"did not stop with '{msg} (value {value})'"
+        return [f"{desc}: verilator (exit {rc}) {why}:\n{out[:1500]}"]
+    return []
+
+
+def icarus_stops(root, top, params, value, rule, desc):
     rc, out = icarus(root, top, params)
     if rc == 0 or not re.search(
         r"`[\w.\[\]]*\b%s\.failed\.value\[%d\]'" % (re.escape(rule), value), out
     ):
-        fails.append(
-            f"{desc}: iverilog (exit {rc}) did not stop in {rule}.failed.value[{value}]:\n"
-            f"{out[:1500]}"
-        )
+        why = f"did not stop in {rule}.failed.value[{value}]"
+        return [f"{desc}: iverilog (exit {rc}) {why}:\n{out[:1500]}"]
+    return []
+
+
+def yosys_stops(root, top, params, msg, desc):
     rc, out = yosys(root, top, params)
     errors = re.findall(r"ERROR: (.*)", out)
     if rc == 0 or not errors or errors[0] != msg + ".":
-        fails.append(f"{desc}: yosys (exit {rc}) did not stop with '{msg}':\n{out[:1500]}")
-    return fails
+        return [f"{desc}: yosys (exit {rc}) did not stop with '{msg}':\n{out[:1500]}"]
+    return []
 
 
 def check_legal(root, top):
@@ -324,19 +345,26 @@ def illegal(args):
     msgs = rule_messages(args.root)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:
         controls = list(ex.map(lambda t: check_legal(args.root, t), TOPS + SHELLS))
-        results = list(ex.map(lambda r: check_illegal(args.root, r, msgs), rows))
+        tools = [
+            TOOL_NAMES if args.tools == "all" else (TOOL_NAMES[k % len(TOOL_NAMES)],)
+            for k in range(len(rows))
+        ]
+        results = list(
+            ex.map(lambda rt: check_illegal(args.root, rt[0], msgs, rt[1]), zip(rows, tools))
+        )
     fails = [f for c in controls for f in c]
-    for row, r in zip(rows, results):
+    for row, t, r in zip(rows, tools, results):
         print(
             f"{'ok  ' if not r else 'FAIL'} {row[1]} {row[2]}.{row[3]} = {row[4]}: "
-            f"{' '.join(f'{k}={v}' for k, v in row[5])}"
+            f"{' '.join(f'{k}={v}' for k, v in row[5])} ({', '.join(t)})"
         )
         fails += r
     for f in fails:
         print(f)
     print(
-        f"{len(rows)} illegal configurations, each rejected by verilator, iverilog and yosys with "
-        f"its rule: {len(rows) - sum(1 for r in results if r)} passed, "
+        f"{len(rows)} illegal configurations, each rejected with its rule by "
+        f"{'verilator, iverilog and yosys' if args.tools == 'all' else 'one tool in turn'}: "
+        f"{len(rows) - sum(1 for r in results if r)} passed, "
         f"{sum(1 for r in results if r)} failed; defaults of {', '.join(TOPS + SHELLS)} accepted: "
         f"{'yes' if not any(controls) else 'NO'}"
     )
@@ -354,6 +382,7 @@ def main():
     )
     ap.add_argument("--validator", help="build/tb/acore_validate_params (agree)")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--tools", choices=("all", "rotate"), default="all")
     ap.add_argument("--sets", type=int, default=48)
     ap.add_argument("--seed", type=int, default=11)
     try:
