@@ -365,7 +365,8 @@ module acore_fold_datapath #(
       // (PL - 3 clocks after the item's start; block RAM with S_RAM).
       wire [S_W-1:0] s_pc;
       if (S_PAIR_RAM != 0) begin : g_spair
-        acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
+        // (The chain's output stage registers the curve first: no flop copy after the block.)
+        acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1), .OUT_REG(0)) u_ds (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
       end else if (SPARSE != 0) begin : g_ssparse
         // Pushed with each item's scaled curve (clocks SL, SL + H), due H + PL - 1 clocks later.
