@@ -174,6 +174,13 @@ endfunction
 function integer acore_fold_cordic_latency(input integer f_k, input integer f_n);
   acore_fold_cordic_latency = acore_cordic_latency(f_k, 0, acore_fold_cordic_split(f_k, f_n));
 endfunction
+// acore_fold_datapath: 1 when its angle, magnitude, region and overflow hold from valid_o until the
+// next sample's (the split CORDIC's output registers, the sparse region and overflow lines of
+// acore_fold_lean), so the top may take them a clock later with no register of its own.
+function integer acore_fold_out_held(input integer f_k, input integer f_fold);
+  acore_fold_out_held = (acore_fold_cordic_split(f_k, f_fold) != 0 &&
+                         acore_fold_lean(f_fold) != 0) ? 1 : 0;
+endfunction
 
 // acore_cordic_rotate: one clock a stage.
 function integer acore_cordic_rotate_latency(input integer f_m);

@@ -13,8 +13,9 @@
 //   0       d13, d24 (held until the next sample); c13 item into the scaler
 //   H       c24 item into the scaler
 //   SL      s13 out (held);   H + SL: s24 out -> region select (2 clocks)
-//   R = H + SL + 2: region, x (held for c24); c13 item into the Horner chain; R + H: c24 (each
-//           item's curve goes from the scaler to the chain's subtraction through a delay line)
+//   R = H + SL + 2: region, x (held until the next sample's); c13 item into the Horner chain;
+//           R + H: c24 (each item's curve goes from the scaler to the chain's subtraction through
+//           a delay line)
 //   R + PL  y13 out (held);   C = R + H + PL: y24 out -> CORDIC
 //   C + CL  angle, magnitude, and the region and overflow of the sample beside them (valid_o)
 // A sample is a valid bit that travels with it (valid_o); nothing stalls: the top's credit counter
@@ -323,45 +324,40 @@ module acore_fold_datapath #(
     .recip_i(recip), .s_o(s_sc), .ovf_o(ovf_sc));
 
   // ---- 3: pair the curves, domain selection ----
+  // The region select runs on a sample's two clocks alone (en_i at H + SL, its clock 1), so its
+  // region and x hold from R until the next sample's, past the c24 item's R + H; s13 reaches its
+  // clock 2 from the held s13_q (HELD13), with no copy of its own. The scaler overflow of the
+  // sample follows the same two clocks (rs2_q: clock 2).
   reg [S_W-1:0] s13_q;
-  reg           sc_ovf13_q, sc_ovf_q, sc_ovf_r_q;
+  reg           sc_ovf13_q, sc_ovf_s_q, sc_ovf_q, rs2_q;
+  always @(posedge clk_i) begin
+    if (rst_i) rs2_q <= 1'b0;
+    else rs2_q <= v_q[SL + H];
+  end
   always @(posedge clk_i) begin
     if (v_q[SL]) begin
       s13_q      <= s_sc;
       sc_ovf13_q <= ovf_sc;
     end
-    // Scaler overflow of the sample, beside the region select's two clocks.
-    sc_ovf_q   <= sc_ovf13_q | ovf_sc;
-    sc_ovf_r_q <= sc_ovf_q;
+    if (v_q[SL + H]) sc_ovf_s_q <= sc_ovf13_q | ovf_sc;
+    if (rs2_q) sc_ovf_q <= sc_ovf_s_q;
   end
   wire [RG_W-1:0] region;
   wire [S_W-1:0]  x, s13_r, s24_r;
-  acore_region_select #(.S_W(S_W), .REGIONS(REGIONS)) u_rs (
-    .clk_i(clk_i), .en_i(1'b1), .s13_i(s13_q), .s24_i(s_sc),
+  acore_region_select #(.S_W(S_W), .REGIONS(REGIONS), .HELD13(1)) u_rs (
+    .clk_i(clk_i), .en_i(v_q[SL + H]), .s13_i(s13_q), .s24_i(s_sc),
     .region_o(region), .x_o(x), .s13_o(s13_r), .s24_o(s24_r));
-  // What the c24 item needs H clocks after clock R (at FOLD = 2 the next sample's region select
-  // output is due then; and no stall enable holds a stage here).
-  reg [RG_W-1:0] region_h_q;
-  reg [S_W-1:0]  x_h_q;
-  reg            sc_ovf_h_q;
-  always @(posedge clk_i) begin
-    if (v_q[R]) begin
-      region_h_q <= region;
-      x_h_q      <= x;
-      sc_ovf_h_q <= sc_ovf_r_q;
-    end
-  end
 
-  // ---- 4: correction (CORRECTION), c13 item at R (from the region select), c24 at R + H (from
-  // the held copy); pair the results ----
+  // ---- 4: correction (CORRECTION), c13 item at R, c24 at R + H (both from the region select's
+  // held outputs); pair the results ----
   wire [S_W-1:0] y13, y24;
   wire           pc_ovf;
   generate
     if (CORRECTION == ACORE_CORR_NONE) begin : g_none
-      wire unused_x = ^{x, x_h_q, region_h_q, sc_ovf_h_q};
+      wire unused_x = ^x;
       assign y13 = s13_r;
       assign y24 = s24_r;
-      assign pc_ovf = sc_ovf_r_q;
+      assign pc_ovf = sc_ovf_q;
     end else begin : g_poly
       wire pc_second = v_q[R + H];
       wire unused_s = ^{s13_r, s24_r};  // the curves reach the correction from the scaler
@@ -369,7 +365,8 @@ module acore_fold_datapath #(
       // (PL - 3 clocks after the item's start; block RAM with S_RAM).
       wire [S_W-1:0] s_pc;
       if (S_PAIR_RAM != 0) begin : g_spair
-        acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1)) u_ds (
+        // (The chain's output stage registers the curve first: no flop copy after the block.)
+        acore_ram_delay #(.W(S_W), .DEPTH(H + PL - 1), .OUT_REG(0)) u_ds (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(s_sc), .q_o(s_pc));
       end else if (SPARSE != 0) begin : g_ssparse
         // Pushed with each item's scaled curve (clocks SL, SL + H), due H + PL - 1 clocks later.
@@ -397,10 +394,8 @@ module acore_fold_datapath #(
         .ACC_I(ACC_I), .XCENTER(XCENTER), .ADDR_W(ADDR_W), .F(F),
         .RAM_DELAY((SPARSE != 0) ? 2 : U_RAM), .MULT(MULT), .PAIRED(1)
       ) u_pc (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(pc_second ? x_h_q : x),
-        .s_i(s_pc),
-        .base_i(pc_second ? base_tab[{region_h_q, 1'b1}] : base_tab[{region, 1'b0}]),
-        .ovf_i(pc_second ? sc_ovf_h_q : sc_ovf_r_q), .coef_addr_o(raddr[0 +: PP * ADDR_W]),
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(v_q[R] | pc_second), .x_i(x), .s_i(s_pc),
+        .base_i(base_tab[{region, pc_second}]), .ovf_i(sc_ovf_q), .coef_addr_o(raddr[0 +: PP * ADDR_W]),
         .coef_i(rdata[0 +: PP * REG_W]), .y_o(y_pc), .ovf_o(ovf_pc));
       reg [S_W-1:0] y13_q;
       reg           ovf13_q;

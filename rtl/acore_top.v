@@ -334,8 +334,22 @@ module acore_top #(
         if (rst_i) out_vld_q <= 1'b0;
         else out_vld_q <= dp_valid;
       end
+      // The FIFO's word: the output register's, but where the datapath's outputs hold past valid_o
+      // (acore_fold_out_held) the fields the register only copies are taken from the datapath
+      // itself, the clock after valid_o: the same word, without their flops (the limits' compares
+      // and the ZERO subtraction stay registered, so their inputs are read at the same clock).
+      wire [OUT_W-1:0] fifo_word;
+      if (acore_fold_out_held(K, FOLD) != 0) begin : g_held
+        wire [ANGLE_W-1:0] angle_f = (ZERO != 0) ? out_word_q[ANGLE_W-1:0] : angle_c;
+        assign fifo_word = {mag_c, out_word_q[ANGLE_W + RG_W + 1 +: 2], dp_ovf, region_d, angle_f};
+        // (The register's copies, left to synthesis to remove.)
+        wire unused_copies = ^{out_word_q[ANGLE_W + RG_W + 3 +: MAG_W], out_word_q[ANGLE_W +: RG_W + 1],
+                               out_word_q[ANGLE_W-1:0]};
+      end else begin : g_reg
+        assign fifo_word = out_word_q;
+      end
       acore_fold_fifo #(.W(OUT_W), .DEPTH(FIFO_DEPTH)) u_fifo (
-        .clk_i(clk_i), .rst_i(rst_i), .wr_i(out_vld_q), .wdata_i(out_word_q), .valid_o(out_valid_o),
+        .clk_i(clk_i), .rst_i(rst_i), .wr_i(out_vld_q), .wdata_i(fifo_word), .valid_o(out_valid_o),
         .ready_i(out_ready_i), .data_o(out_word));
     end
   endgenerate
