@@ -19,8 +19,7 @@
 // Y += (X >>> i) ^ {~s} + ~s, Z += atan_i ^ {s} + s. One inversion flag (s in phase A, ~s in B),
 // registered, shares the barrel's last LUT, which then feeds both T and the Y adder.
 // X's pre-rotation takes no adder of its own there: the start loads x ^ {neg} and clears T,
-// and the X adder, idle in phase A, adds the negation's carry on the clock after the start. Z's
-// register holds Z ^ {s} in phase B (phase A turns it so), and its adder adds atan_i as it is.
+// and the X adder, idle in phase A, adds the negation's carry on the clock after the start.
 //
 // Unit u at phase p (p = 0 the clock a vector arrives from unit u-1 or the pre-rotation) adds the
 // operand shifted by uN + p and atan word uN + p: at p = 0 it reads the previous unit's registers,
@@ -264,12 +263,7 @@ module acore_fold_cordic #(
       wire x_cin = first_q ? z_q[Z_W-1] : s_q;
       wire [XY_W-1:0] x_sum = {x_q, 1'b1} + {t_q, x_cin};
       assign y_sum = {y_q, 1'b1} + {w, inv_q};
-      // Z in the rotation's representation: phase A turns the plain Z into Z ^ {s} (~Z = -Z - 1
-      // when s = 1), so that phase B's sum with the word as it is, z_a = (Z ^ {s}) + atan_i, is
-      // the new Z in that representation (~Z + atan_i = ~(Z - atan_i)), plain again after ^ {s}.
-      // The exclusive or sits in the LUT in front of Z's register (and of the angle's), not in
-      // front of the adder: Z's register and the angle's do not share the adder's LUT.
-      wire [Z_W-1:0] z_a = z_q + at;
+      wire [Z_W:0] z_sum = {z_q, 1'b1} + {at ^ {Z_W{s_q}}, s_q};
       always @(posedge clk_i) begin
         if (start_i) begin
           x_q <= x0[XY_W-2:0] ^ {(XY_W-1){neg0}};
@@ -277,12 +271,14 @@ module acore_fold_cordic #(
           z_q <= {neg0, {(Z_W-1){1'b0}}} | Z_RND;
         end else begin
           if (phase_b || first_q) x_q <= x_sum[XY_W-1:1];
-          if (phase_b) y_q <= y_sum[XY_W:1];
-          z_q <= (phase_b ? z_a : z_q) ^ {Z_W{s_q}};
+          if (phase_b) begin
+            y_q <= y_sum[XY_W:1];
+            z_q <= z_sum[Z_W:1];
+          end
         end
       end
       // The result, from the last iteration's adders (held until the next vector's).
-      wire [Z_W-1:0] z_k = z_a ^ {Z_W{s_q}};
+      wire [Z_W-1:0] z_k = z_sum[Z_W:1];
       wire [XY_W-2:0] x_k = x_sum[XY_W-1:1];
       if (DROP > 0) begin : g_drop
         wire unused_z = ^z_k[DROP-1:0];
