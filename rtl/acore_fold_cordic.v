@@ -18,6 +18,8 @@
 // T = (Y >>> i) ^ {s}; phase B shifts X through the same barrel and updates X += T + s,
 // Y += (X >>> i) ^ {~s} + ~s, Z += atan_i ^ {s} + s. One inversion flag (s in phase A, ~s in B),
 // registered, shares the barrel's last LUT, which then feeds both T and the Y adder.
+// X's pre-rotation takes no adder of its own there: the start loads x ^ {neg} and clears T,
+// and the X adder, idle in phase A, adds the negation's carry on the clock after the start.
 //
 // Unit u at phase p (p = 0 the clock a vector arrives from unit u-1 or the pre-rotation) adds the
 // operand shifted by uN + p and atan word uN + p: at p = 0 it reads the previous unit's registers,
@@ -226,7 +228,16 @@ module acore_fold_cordic #(
       wire [PW-1:0] sh = (ph_q & SH_MASK) >> 1;
       wire [XY_W-1:0] w = barrel(bin, sh, 1'b1) ^ {XY_W{inv_q}};
       reg [XY_W-2:0] t_q;  // the X adder's operand: X's width
-      always @(posedge clk_i) t_q <= w[XY_W-2:0];
+      // X's pre-rotation on the X adder: the start loads x ^ {neg0} (~x = -x - 1 when x < 0: no
+      // adder of its own) and clears T, and on the clock after it (phase A of iteration 0, when
+      // the X adder is otherwise idle) X += T + neg0 completes -x = ~x + 1. neg0 waits in Z's
+      // top bit, which the start loads with it and phase A leaves alone.
+      reg first_q;
+      always @(posedge clk_i) begin
+        first_q <= start_i;
+        if (start_i) t_q <= {(XY_W-1){1'b0}};
+        else t_q <= w[XY_W-2:0];
+      end
       // The pre-rotation's registers are the units' form's (this form loads X, Y, Z directly).
       wire unused_pre = ^{st, xr[0], yr[0], zr[0]};
       // The arctangent word of iteration it: from the bus (an N/2:1 choice) or from a memory
@@ -249,18 +260,21 @@ module acore_fold_cordic #(
         assign at_idx_o = {AT_IDX_W{1'b0}};
       end
       // {a, 1} + {b, c}: bit 0 carries c into the real sum, so this is a + b + c in one adder.
-      wire [XY_W-1:0] x_sum = {x_q, 1'b1} + {t_q, s_q};
+      wire x_cin = first_q ? z_q[Z_W-1] : s_q;
+      wire [XY_W-1:0] x_sum = {x_q, 1'b1} + {t_q, x_cin};
       assign y_sum = {y_q, 1'b1} + {w, inv_q};
       wire [Z_W:0] z_sum = {z_q, 1'b1} + {at ^ {Z_W{s_q}}, s_q};
       always @(posedge clk_i) begin
         if (start_i) begin
-          x_q <= x0_abs[XY_W-2:0];
+          x_q <= x0[XY_W-2:0] ^ {(XY_W-1){neg0}};
           y_q <= y_pre_d;
           z_q <= {neg0, {(Z_W-1){1'b0}}} | Z_RND;
-        end else if (phase_b) begin
-          x_q <= x_sum[XY_W-1:1];
-          y_q <= y_sum[XY_W:1];
-          z_q <= z_sum[Z_W:1];
+        end else begin
+          if (phase_b || first_q) x_q <= x_sum[XY_W-1:1];
+          if (phase_b) begin
+            y_q <= y_sum[XY_W:1];
+            z_q <= z_sum[Z_W:1];
+          end
         end
       end
       // The result, from the last iteration's adders (held until the next vector's).

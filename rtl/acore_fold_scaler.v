@@ -12,7 +12,9 @@
 //   clock 0: d_i, offset_i, recip_i   1: t_q   1..1+ML: product   2+ML: s_o, ovf_o
 //   LATENCY = ML + 2 (ML = acore_fold_mul's LATENCY); a new item every F clocks.
 // From acore_fold_lean(2 F) on (one register-file port for both words), recip_i comes one clock
-// after d_i and offset_i, and everything after it one clock later: LATENCY = ML + 3.
+// after d_i and offset_i, and everything after it one clock later: LATENCY = ML + 3. There, with the
+// accumulate-in-place multiplier (acore_fold_mul_seq), t_q goes straight to the multiplier's
+// operand register the clock before its start (A_PRE), instead of through a second register.
 `resetall
 `default_nettype none
 
@@ -51,6 +53,9 @@ module acore_fold_scaler #(
   localparam integer P_W = T_W + ((REG_W > RS) ? (REG_W - RS) : 0) + 2;
   localparam integer LATENCY = acore_fold_scaler_latency(REG_W, F);
   localparam integer LATE_R = acore_fold_lean(2 * F);
+  // 1: the multiplier is the accumulate-in-place form, whose operand register can be loaded the
+  // clock before the start (acore_fold_mul's A_PRE).
+  localparam integer T_PRE = (MULT == 0) ? acore_fold_mul_seq(REG_W, F) : 0;
 
   // Parameter rules (acore_check.v: stops Verilator, Icarus and Yosys at elaboration).
   acore_check #(.OK(SCALE_G >= 0 && SCALE_G <= R_SHIFT), .VALUE(SCALE_G),
@@ -63,8 +68,9 @@ module acore_fold_scaler #(
   reg [T_W-1:0]   t_q;
   reg [REG_W-1:0] r_q;
   reg             start_q;
-  wire [T_W-1:0]  t_m;    // t and the start at the reciprocal's clock
+  wire [T_W-1:0]  t_m;    // t (at pre_m, else at start_m) and the start at the reciprocal's clock
   wire            start_m;
+  wire            pre_m;  // A_PRE: t is read the clock before the start
   always @(posedge clk_i) begin
     t_q     <= {{(T_W-D_W){d_i[D_W-1]}}, d_i} - {{(T_W-REG_W){offset_i[REG_W-1]}}, offset_i};
     r_q     <= recip_i;
@@ -72,16 +78,23 @@ module acore_fold_scaler #(
   end
   generate
     if (LATE_R != 0) begin : g_late
-      reg [T_W-1:0] t2_q;
-      reg           start2_q;
-      always @(posedge clk_i) begin
-        t2_q     <= t_q;
-        start2_q <= start_q;
-      end
-      assign t_m = t2_q;
+      reg start2_q;
+      always @(posedge clk_i) start2_q <= start_q;
       assign start_m = start2_q;
+      if (T_PRE != 0) begin : g_pre
+        // The multiplier's operand register takes t at start_q and waits through the start: t
+        // needs no second register of its own.
+        assign t_m = t_q;
+        assign pre_m = start_q;
+      end else begin : g_t2
+        reg [T_W-1:0] t2_q;
+        always @(posedge clk_i) t2_q <= t_q;
+        assign t_m = t2_q;
+        assign pre_m = 1'b0;
+      end
     end else begin : g_same
       assign t_m = t_q;
+      assign pre_m = 1'b0;
       assign start_m = start_q;
     end
   endgenerate
@@ -99,9 +112,10 @@ module acore_fold_scaler #(
 
   wire [P_W-1:0] p;
   acore_fold_mul #(
-    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F), .MULT(MULT)
+    .A_W(T_W), .B_W(REG_W), .B_SIGNED(0), .RSHIFT(RS), .INIT_W(H_W), .P_W(P_W), .F(F), .MULT(MULT),
+    .A_PRE((LATE_R != 0) ? T_PRE : 0)
   ) u_mul (
-    .clk_i(clk_i), .start_i(start_m), .pre_i(1'b0), .a_i(t_m), .b_i(r_q), .init_i(half), .p_o(p));
+    .clk_i(clk_i), .start_i(start_m), .pre_i(pre_m), .a_i(t_m), .b_i(r_q), .init_i(half), .p_o(p));
 
   wire [S_W-1:0] s_d;
   wire ovf_d;
