@@ -343,7 +343,7 @@ module acore_apb_regblock #(
   end
 
   // ---- the access phase ----
-  assign prdata_o = rdata_q | ({32{win_coef_q}} & ~({32{~mem_coef_q}} << REG_W) & coef_rdata_i);
+  assign prdata_o = rdata_q | ((({32{win_coef_q}} & ~({32{1'b1}} << REG_W)) | ({32{mem_coef_q}} & ({32{1'b1}} << REG_W))) & coef_rdata_i);
   assign pslverr_o = err_q;
   // COEF: every setup phase reads the word (used only for a read of the window): the
   // address decode stays off the memory's read enable; its write enable is gated

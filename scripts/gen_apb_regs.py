@@ -1281,8 +1281,13 @@ def gen_regblock(blk):
         fw = w.fields[0].vwidth()
         lw = w.name.lower()
         if blk.mems(w):
-            # (the window's words: their field's low bits; a kept register's: all 32)
-            rd += f" | ({{32{{win_{lw}_q}}}} & ~({{32{{~mem_{lw}_q}}}} << {fw}) & {lw}_rdata_i)"
+            # (the window's words: their field's low bits; a kept register's: all 32. A kept
+            # register's read sets mem_q with win_q, so the bits above the field need only
+            # mem_q: one input fewer where the read data's OR takes another block's.)
+            rd += (
+                f" | ((({{32{{win_{lw}_q}}}} & ~({{32{{1'b1}}}} << {fw})) |"
+                f" ({{32{{mem_{lw}_q}}}} & ({{32{{1'b1}}}} << {fw}))) & {lw}_rdata_i)"
+            )
             continue
         pad = f"{{{{(32-{fw}){{1'b0}}}}, {lw}_rdata_i}}" if fw != "32" else f"{lw}_rdata_i"
         rd += f" | ({{32{{win_{lw}_q}}}} & {pad})"
