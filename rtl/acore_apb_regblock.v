@@ -219,7 +219,10 @@ module acore_apb_regblock #(
   localparam integer COEF_SEL_I = 1024 >> 10;
   localparam [COEF_SEL_W-1:0] COEF_SEL = COEF_SEL_I[COEF_SEL_W-1:0];
   wire [7:0] coef_idx = paddr_i[9:2];
-  wire in_coef = (paddr_i[APB_AW-1:10] == COEF_SEL) && ({1'b0, coef_idx} < COEF_SIZE[8:0]);
+  // (The words present as a table, bit a for word a: a function of the index's bits,
+  // where a comparison with the size would take a carry chain.)
+  localparam [255:0] COEF_HAS = ~({256{1'b1}} << COEF_SIZE);
+  wire in_coef = (paddr_i[APB_AW-1:10] == COEF_SEL) && COEF_HAS[coef_idx];
   wire is_ro = REGS_RO[ridx];
   wire is_rw = REGS_WR[ridx];
   wire reg_ok = in_regs & (is_rw | (is_ro & ~pwrite_i));
@@ -343,7 +346,7 @@ module acore_apb_regblock #(
   end
 
   // ---- the access phase ----
-  assign prdata_o = rdata_q | ({32{win_coef_q}} & ~({32{~mem_coef_q}} << REG_W) & coef_rdata_i);
+  assign prdata_o = rdata_q | ((({32{win_coef_q}} & ~({32{1'b1}} << REG_W)) | ({32{mem_coef_q}} & ({32{1'b1}} << REG_W))) & coef_rdata_i);
   assign pslverr_o = err_q;
   // COEF: every setup phase reads the word (used only for a read of the window): the
   // address decode stays off the memory's read enable; its write enable is gated

@@ -63,7 +63,8 @@
 //         it, beyond the scaled curves' range (at the defaults AGC stays above 52).
 // Both are taken with each estimator output (MAG with the angle; AGC from it one clock later, or,
 // where a sample's clocks leave room (CYCLES > MAG_W), from a normaliser shifting one bit a clock:
-// MAG_W - e clocks later, at most MAG_W, the last sample's AGC until then), read over SPI (MAG, DIAAGC.AGC) and APB (the board's MAG_AGC register); the model is
+// MAG_W - e clocks later, at most MAG_W (sooner for an m with AGC 255 whatever its low bits), the last
+// sample's AGC until then), read over SPI (MAG, DIAAGC.AGC) and APB (the board's MAG_AGC register); the model is
 // model/ip/stages/interfaces.cpp's as5047::mag_field and as5047::agc_field.
 `resetall
 `default_nettype none
@@ -256,36 +257,51 @@ module acore_board #(
   localparam integer MAG_TOP_I = MAG_W - 1;
   localparam [MAG_E_W-1:0] MAG_TOP = MAG_TOP_I[MAG_E_W-1:0];
   localparam integer MAG_NORM_SEQ = (CYCLES > MAG_W) ? 1 : 0;
+  localparam integer AGC_D_W = MAG_E_W + 5 + 3;  // signed, holds AGC_REF - lg m
+  localparam integer AGC_REF = AGC_MID + AGC_OCTAVE * S_F + AGC_GAIN_F;
+  // The normaliser's lowest bit: AGC is 255 whatever f for a leading one at AGC_E_SAT or below
+  // (AGC_REF - 32 e - 31 > 255), so only the bits f can take above it matter (from AGC_E_SAT - 4
+  // up) and the count stops there (m below it: AGC 255, as it would be lower down).
+  localparam integer AGC_E_SAT = (AGC_REF - 31 - (1 << AGC_W)) / AGC_OCTAVE;
+  localparam integer MAG_LOW_I = (AGC_REF - 31 - (1 << AGC_W) < 0 || AGC_E_SAT < 4) ? 0 :
+      (AGC_E_SAT - 4 > MAG_W - 6) ? MAG_W - 6 : AGC_E_SAT - 4;
+  localparam [MAG_E_W-1:0] MAG_LOW = MAG_LOW_I[MAG_E_W-1:0];
+  localparam integer NORM_W = MAG_W - MAG_LOW_I;
   wire [MAG_F_W-1:0] mag_field;
   wire [MAG_E_W-1:0] mag_e;  // lg m in 1/32: the leading one's position e (0 for m = 0 too)
   wire [4:0] mag_f;          // and the 5 bits below it
   wire mag_lg_ok;            // e and f are the last sample's
   generate
     if (MAG_NORM_SEQ != 0) begin : g_mag_seq
+      // (norm_q: m's bits MAG_W-1 .. MAG_LOW, e counting down to MAG_LOW)
       reg [MAG_F_W-1:0] field_q;
-      reg [MAG_W-1:0] norm_q;
+      reg [NORM_W-1:0] norm_q;
       reg [MAG_E_W-1:0] e_q;
-      wire stop = norm_q[MAG_W-1] | (e_q == {MAG_E_W{1'b0}});
+      wire stop = norm_q[NORM_W-1] | (e_q == MAG_LOW);
       always @(posedge clk_i) begin
         if (rst_i) begin
           field_q <= {MAG_F_W{1'b0}};
-          norm_q <= {MAG_W{1'b0}};
-          e_q <= {MAG_E_W{1'b0}};
+          norm_q <= {NORM_W{1'b0}};
+          e_q <= MAG_LOW;
         end else if (est_take) begin
           field_q <= est_mag[MAG_W-1] ? {MAG_F_W{1'b1}} : est_mag[MAG_W-2 -: MAG_F_W];
-          norm_q <= est_mag;
+          norm_q <= est_mag[MAG_W-1 -: NORM_W];
           e_q <= MAG_TOP;
         end else if (!stop) begin
-          norm_q <= {norm_q[MAG_W-2:0], 1'b0};
+          norm_q <= {norm_q[NORM_W-2:0], 1'b0};
           e_q <= e_q - 1'b1;
         end
       end
       assign mag_field = field_q;
       assign mag_e = e_q;
-      assign mag_f = norm_q[MAG_W-2 -: 5];
+      assign mag_f = norm_q[NORM_W-2 -: 5];
       assign mag_lg_ok = stop;
       // The leading one itself and the bits below f are not part of lg m (named unused_* for lint).
-      wire unused_norm = ^{norm_q[MAG_W-1], norm_q[MAG_W-7:0]};
+      wire unused_norm = ^{norm_q[NORM_W-1], norm_q[NORM_W-7:0]};
+      if (MAG_LOW_I > 0) begin : g_low
+        // The bits below MAG_LOW only in MAG (named unused_* for lint).
+        wire unused_mag_low = ^est_mag[MAG_LOW_I-1:0];
+      end
     end else begin : g_mag_comb
       reg [MAG_W-1:0] mag_q;
       always @(posedge clk_i) begin
@@ -307,8 +323,6 @@ module acore_board #(
       wire unused_mag_norm = ^{mag_norm[MAG_W-1], mag_norm[MAG_W-7:0]};
     end
   endgenerate
-  localparam integer AGC_D_W = MAG_E_W + 5 + 3;  // signed, holds AGC_REF - lg m
-  localparam integer AGC_REF = AGC_MID + AGC_OCTAVE * S_F + AGC_GAIN_F;
   localparam [AGC_D_W-1:0] AGC_REF_W = AGC_REF[AGC_D_W-1:0];
   // AGC_REF - lg m as ~(lg m + ~AGC_REF): a constant operand, not lg m's complement, on the carry
   // chain (an inverted operand costs a LUT a bit in front of it; the outer ~ folds into the sums).

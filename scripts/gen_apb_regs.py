@@ -1058,8 +1058,10 @@ def gen_regblock(blk):
             f"  localparam integer {n}_SEL_I = {w.offset} >> {aw};\n"
             f"  localparam [{n}_SEL_W-1:0] {n}_SEL = {n}_SEL_I[{n}_SEL_W-1:0];\n"
             f"  wire [{aw - 3}:0] {lw}_idx = paddr_i[{aw - 1}:2];\n"
-            f"  wire in_{lw} = (paddr_i[APB_AW-1:{aw}] == {n}_SEL) && "
-            f"({{1'b0, {lw}_idx}} < {n}_SIZE[{aw - 2}:0]);\n"
+            f"  // (The words present as a table, bit a for word a: a function of the index's bits,\n"
+            "  // where a comparison with the size would take a carry chain.)\n"
+            f"  localparam [{w.words - 1}:0] {n}_HAS = ~({{{w.words}{{1'b1}}}} << {n}_SIZE);\n"
+            f"  wire in_{lw} = (paddr_i[APB_AW-1:{aw}] == {n}_SEL) && {n}_HAS[{lw}_idx];\n"
         )
     o.append(
         "  wire is_ro = REGS_RO[ridx];\n  wire is_rw = REGS_WR[ridx];\n"
@@ -1281,8 +1283,13 @@ def gen_regblock(blk):
         fw = w.fields[0].vwidth()
         lw = w.name.lower()
         if blk.mems(w):
-            # (the window's words: their field's low bits; a kept register's: all 32)
-            rd += f" | ({{32{{win_{lw}_q}}}} & ~({{32{{~mem_{lw}_q}}}} << {fw}) & {lw}_rdata_i)"
+            # (the window's words: their field's low bits; a kept register's: all 32. A kept
+            # register's read sets mem_q with win_q, so the bits above the field need only
+            # mem_q: one input fewer where the read data's OR takes another block's.)
+            rd += (
+                f" | ((({{32{{win_{lw}_q}}}} & ~({{32{{1'b1}}}} << {fw})) |"
+                f" ({{32{{mem_{lw}_q}}}} & ({{32{{1'b1}}}} << {fw}))) & {lw}_rdata_i)"
+            )
             continue
         pad = f"{{{{(32-{fw}){{1'b0}}}}, {lw}_rdata_i}}" if fw != "32" else f"{lw}_rdata_i"
         rd += f" | ({{32{{win_{lw}_q}}}} & {pad})"
