@@ -458,10 +458,9 @@ module acore_track #(
     // tracking from one more sum on the adder, and the product over D's DE_W nonzero bits only:
     // 30 clocks a sample at the board's widths and FOLD 32's COMP_LATENCY with SHIFT_BITS = 3.
     // Per sample, after the clock taking it (t is 0 then: cleared after each sample and by reset):
-    // Its phi register holds X = phi + v + half: the prediction and half an output LSB (reset:
-    // half, phi = v = 0), so that the prediction needs no sum of its own and the rounded angle is
-    // X itself. The turn count is the rounded angle's (the output's); the turn the prediction
-    // carries is held beside it and added with the loop's update.
+    // Its phi register holds X = phi + v + half, with the turn count of that sum: the prediction
+    // and half an output LSB (reset: half, phi = v = 0), so that the prediction needs no sum of its
+    // own and the rounded angle is X itself.
     //   C1      t = ~theta * 2^FRAC_W - half (t's input as the complement of theta, not B's)
     //   C2      t = ~(t + X) = theta * 2^FRAC_W - pred: the error e (all of it, not yet wrapped to
     //           P_W bits: the loop's first shift does that, and the first sample's e >= 0 needs none)
@@ -471,8 +470,7 @@ module acore_track #(
     //           X = t + X = phi + half (its bits above FRAC_W and its turn count: the rounded
     //           angle and turn count, to the outputs); rem = k + 1 more shifts, then a pause
     //           v = t + v (not the first sample); idle to the loop's end, whose last clock clears t
-    //   R2, R3  t = v, X = t + X = phi + v + half: the next sample's prediction (its turn carry
-    //           held for the next update); t = 0
+    //   R2, R3  t = v, X = t + X = phi + v + half: the next sample's prediction; t = 0
     //   product v * (D - 1) + X * 2^LEAD_F least significant bit of D - 1 first, as g_ser's (X
     //           carries the one v and the half): phi + half + v * D
     //   fin     the compensated angle and the output's valid; t = 0
@@ -518,11 +516,7 @@ module acore_track #(
     reg [TW-1:0]    t_q;
     reg [DE_W-1:0]  tf_q;      // the product's bits below t
     reg [P_W-1:0]   x_q;       // X = phi + v + half (between samples and until the loop's pause)
-    // The turn count is the output register itself: it moves at the loop's pause only, by the
-    // pause's carry and the one the prediction (R3) carried, held until then in pc_q (so that
-    // the count's sum loads one register, its only load, and shares its logic cell).
-    wire [TURN_W-1:0] turns_q = out_turns_o;
-    reg [1:0]       pc_q;      // the prediction's turn carry: -1, 0 or +1
+    reg [TURN_W-1:0] turns_q;
     wire [P_W-1:0]  v_q = out_velocity_o;
 
     assign in_ready_o = !rst_i && !busy_q && (!out_valid_o || out_ready_i);
@@ -560,12 +554,9 @@ module acore_track #(
                               ({ANGLE_W{op_ln}} & thr);
     wire [TW-1:0] b = {{(TW - P_W){sx}}, b_hi, b_lo};
     wire [TW-1:0] sum = t_q + b;
-    // The turn count moved by the carry above phi (two bits: -1, 0 or +1) and the prediction's.
+    // The turn count moved by the carry above phi (two bits: -1, 0 or +1).
     wire [1:0] dlt = sum[P_W+1:P_W];
-    wire [2:0] dturns = {pc_q[1], pc_q} + {dlt[1], dlt};
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [TURN_W+1:0] turns_sum = {2'b00, turns_q} + {{(TURN_W - 1){dturns[2]}}, dturns};
-    /* verilator lint_on UNUSEDSIGNAL */
+    wire [TURN_W-1:0] turns_sum = turns_q + {{(TURN_W - 1){dlt[1]}}, dlt[0]};
     // sum shifted right one bit: in the loop e's sign (bit P_W-1) fills the bits above it; t
     // shifted right SB bits (B is 0 in the loop's shifts), e's sign filling.
     wire [TW-1:0] sum_sh = {pl ? {(TW - P_W + 1){sum[P_W-1]}} : {sum[TW-1], sum[TW-1:P_W]},
@@ -591,7 +582,7 @@ module acore_track #(
         started_q <= 1'b0;
         t_q <= {TW{1'b0}};
         x_q <= half;
-        pc_q <= 2'b00;
+        turns_q <= {TURN_W{1'b0}};
         out_valid_o <= 1'b0;
         out_angle_o <= {ANGLE_W{1'b0}};
         out_angle_comp_o <= {ANGLE_W{1'b0}};
@@ -614,11 +605,13 @@ module acore_track #(
         if (take) k_q <= k;
         if (c1) th_q <= {ANGLE_W{1'b0}};
         else if (take) th_q <= in_angle_i;
-        if (at_x || r3) x_q <= sum[P_W-1:0];
-        if (r3) pc_q <= dlt;
+        if (at_x || r3) begin
+          x_q <= sum[P_W-1:0];
+          turns_q <= turns_sum;
+        end
         if (at_x) begin
           out_angle_o <= sum[P_W-1:FRAC_W];
-          out_turns_o <= turns_sum[TURN_W-1:0];
+          out_turns_o <= turns_sum;
         end
         if (at_v && started_q) out_velocity_o <= sum[P_W-1:0];
         if (c4) out_lot_o <= started_q && lot_cmp;
