@@ -1058,7 +1058,7 @@ def gen_regblock(blk):
             f"  localparam integer {n}_SEL_I = {w.offset} >> {aw};\n"
             f"  localparam [{n}_SEL_W-1:0] {n}_SEL = {n}_SEL_I[{n}_SEL_W-1:0];\n"
             f"  wire [{aw - 3}:0] {lw}_idx = paddr_i[{aw - 1}:2];\n"
-            f"  // (The words present as a table, bit a for word a: a function of the index's bits,\n"
+            f"  // (The words present as a table, bit a for word a: a function of the index's bits,\n"  # noqa: E501
             "  // where a comparison with the size would take a carry chain.)\n"
             f"  localparam [{w.words - 1}:0] {n}_HAS = ~({{{w.words}{{1'b1}}}} << {n}_SIZE);\n"
             f"  wire in_{lw} = (paddr_i[APB_AW-1:{aw}] == {n}_SEL) && {n}_HAS[{lw}_idx];\n"
