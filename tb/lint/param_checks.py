@@ -142,7 +142,10 @@ def read_table(path):
     return rows
 
 
-TOOL_NAMES = ("verilator", "iverilog", "yosys")
+# The three tools, by the name the messages use (check_legal runs every one, check_illegal those
+# it is given).
+TOOLS = {"verilator": verilator, "iverilog": icarus, "yosys": yosys}
+TOOL_NAMES = tuple(TOOLS)
 
 
 def check_illegal(root, row, msgs, tools=TOOL_NAMES):
@@ -196,7 +199,7 @@ def yosys_stops(root, top, params, msg, desc):
 
 def check_legal(root, top):
     fails = []
-    for name, tool in (("verilator", verilator), ("iverilog", icarus), ("yosys", yosys)):
+    for name, tool in TOOLS.items():
         rc, out = tool(root, top, [])
         if rc != 0 or (name == "verilator" and "%Warning" in out):
             fails.append(f"{top} defaults: {name} rejected them (exit {rc}):\n{out[:1500]}")
