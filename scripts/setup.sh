@@ -64,7 +64,10 @@ fi
 # compiled through ccache), installed into .venv. No build isolation: the pinned requirements above.
 # Its RTL engine finds the run-time modules of the repository's CMake build in build/rtl/ (or in
 # $ACORE_RTL_DIR): looked for at run time, so they may be built after this.
-"$venv/bin/python" -m pip install -q --disable-pip-version-check --no-build-isolation \
+# CXX: the compiler the top-level build finds (c++), not the one Python was built with, which
+# scikit-build-core would pass otherwise: ccache keys on the compiler's name, and with the same name
+# the top-level build takes the model's objects from the cache (cmake/AcoreDeps.cmake).
+CXX=${CXX:-c++} "$venv/bin/python" -m pip install -q --disable-pip-version-check --no-build-isolation \
   --config-settings=cmake.define.ACORE_RTL_PLUGIN_DIR="$root/build/rtl" "$root"
 
 # nextpnr's WebAssembly builds compile to machine code on their first run (about a minute each,
