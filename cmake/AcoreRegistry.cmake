@@ -46,53 +46,44 @@ function(acore_gargs out name)
   endforeach()
   set(${out} ${g} PARENT_SCOPE)
 endfunction()
-# Removes the Verilator runtime that verilate() adds to a target (it links acore_vlt_runtime, built
-# once by model/rtlsim/CMakeLists.txt).
-function(acore_strip_runtime target)
-  get_target_property(srcs ${target} SOURCES)
-  list(FILTER srcs EXCLUDE REGEX "^${VERILATOR_ROOT}/include/")
-  set_property(TARGET ${target} PROPERTY SOURCES ${srcs})
+# Verilates a registry build at build time, as a step of its own that runs beside the others (the
+# verilate() of Verilator's CMake package runs Verilator while CMake configures, one build after the
+# other: about 100 s on one core for the default build's 56), and compiles the generated C++ as two
+# translation units instead of one compiler run per file, each parsing Verilator's headers again
+# (as Verilator's own __ALL.cpp does; cmake/AcoreVerilatedUnits.cmake writes them):
+#   <prefix>__slow_all.cpp  the run-once code (constructors, initial values, trace set-up) at SLOW,
+#                           with the waveform writer's per-clock code (__Trace__N.cpp, a third of the
+#                           generated C++), which runs only when a trace file is asked for;
+#   <prefix>__fast_all.cpp  the per-sample code at FAST (about 4 CPU-s instead of 16 for a
+#                           pipelined top's 11 files).
+# The target links acore_vlt_runtime (model/rtlsim/CMakeLists.txt: Verilator's runtime, compiled
+# once) and includes the generated headers (<prefix>.h, <prefix>_<module>.h). Verilator runs again
+# when a file of rtl/ changes (or VLT, or Verilator itself); FST tracing is compiled in.
+#   acore_verilate(TARGET PREFIX P TOP_MODULE M FAST FLAGS... SLOW FLAGS... VLT FILES...
+#                  VERILATOR_ARGS ARGS...)
+function(acore_verilate target)
+  cmake_parse_arguments(V "" "PREFIX;TOP_MODULE" "FAST;SLOW;VLT;VERILATOR_ARGS" ${ARGN})
+  set(mdir ${CMAKE_CURRENT_BINARY_DIR}/${target}.verilated)
+  set(units ${mdir}/${V_PREFIX}__slow_all.cpp ${mdir}/${V_PREFIX}__fast_all.cpp)
+  file(GLOB rtl_deps CONFIGURE_DEPENDS ${ACORE_ROOT}/rtl/*.v ${ACORE_ROOT}/rtl/*.vh)
+  add_custom_command(OUTPUT ${units}
+    COMMAND ${CMAKE_COMMAND} -E rm -rf ${mdir}
+    COMMAND ${VERILATOR_BIN} --compiler gcc --cc --make cmake --trace-fst --Mdir ${mdir}
+            --prefix ${V_PREFIX} --top ${V_TOP_MODULE} ${V_VERILATOR_ARGS} ${V_VLT} ${ACORE_RTL_FILES}
+    COMMAND ${CMAKE_COMMAND} -DMDIR=${mdir} -DPREFIX=${V_PREFIX}
+            -P ${ACORE_ROOT}/cmake/AcoreVerilatedUnits.cmake
+    DEPENDS ${rtl_deps} ${V_VLT} ${VERILATOR_BIN} ${ACORE_ROOT}/cmake/AcoreVerilatedUnits.cmake
+    WORKING_DIRECTORY ${ACORE_ROOT}/rtl
+    COMMENT "Verilating ${V_TOP_MODULE} for ${target}" VERBATIM)
+  target_sources(${target} PRIVATE ${units})
+  list(GET units 0 slow_unit)
+  list(GET units 1 fast_unit)
+  set_source_files_properties(${slow_unit} PROPERTIES COMPILE_OPTIONS "${V_SLOW}")
+  set_source_files_properties(${fast_unit} PROPERTIES COMPILE_OPTIONS "${V_FAST}")
+  # Public: the benches that link a test-local build (tb/CMakeLists.txt) include its headers.
+  target_include_directories(${target} PUBLIC ${mdir} ${VERILATOR_ROOT}/include
+                                               ${VERILATOR_ROOT}/include/vltstd)
+  target_compile_definitions(${target} PRIVATE VM_COVERAGE=0 VM_SC=0 VM_TRACE=1 VM_TRACE_FST=1
+                                               VM_TRACE_VCD=0)
   target_link_libraries(${target} PRIVATE acore_vlt_runtime)
-endfunction()
-# Verilator's generated C++ of a target, compiled as two translation units instead of one compiler
-# run per file, each of which parses Verilator's headers again (as Verilator's own __ALL.cpp does):
-#   - the run-once code (constructors, initial values, trace set-up: the sources verilate() gives
-#     no OPT_FAST flags) at LEVEL, as CMake's unity build of the target. The waveform writer's
-#     per-clock code (__Trace__N.cpp, a third of the generated C++) runs only when a trace file is
-#     asked for: it joins the run-once code at LEVEL (a traced run is slower);
-#   - the per-sample code (the sources verilate() gives OPT_FAST flags) at those flags, as one file
-#     <target>_fast.cpp that includes them (about 4 CPU-s instead of 16 for a pipelined top's 11 files).
-# HARNESS, the target's own source, keeps Release's -O3.
-function(acore_unity_slow target level harness)
-  target_compile_options(${target} PRIVATE ${level})
-  get_target_property(srcs ${target} SOURCES)
-  set(trace ${srcs})
-  list(FILTER trace INCLUDE REGEX "__Trace__[0-9]+\\.cpp$")
-  if(trace)
-    set_property(SOURCE ${trace} PROPERTY COMPILE_FLAGS)
-  endif()
-  set(fast "")
-  set(fast_flags "")
-  set(includes "")
-  foreach(f ${srcs})
-    if(f MATCHES "\\.cpp$" AND NOT f IN_LIST trace)
-      get_source_file_property(flags ${f} COMPILE_FLAGS)
-      if(flags)
-        list(APPEND fast ${f})
-        set(fast_flags ${flags})
-        string(APPEND includes "#include \"${f}\"\n")
-      endif()
-    endif()
-  endforeach()
-  if(fast)
-    set(unit ${CMAKE_CURRENT_BINARY_DIR}/${target}_fast.cpp)
-    file(CONFIGURE OUTPUT ${unit} CONTENT "// Generated by cmake/AcoreRegistry.cmake: the per-sample code of ${target}\n${includes}")
-    set_source_files_properties(${fast} PROPERTIES HEADER_FILE_ONLY ON)
-    separate_arguments(fast_flags UNIX_COMMAND "${fast_flags}")
-    target_sources(${target} PRIVATE ${unit})
-    set_source_files_properties(${unit} PROPERTIES COMPILE_OPTIONS "${fast_flags}"
-                                                   SKIP_UNITY_BUILD_INCLUSION ON)
-  endif()
-  set_source_files_properties(${harness} TARGET_DIRECTORY ${target} PROPERTIES COMPILE_OPTIONS -O3)
-  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
 endfunction()

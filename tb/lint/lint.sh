@@ -10,9 +10,16 @@
 #     instance of acore_apb, e.g. FOLD_must_be_1), the shell does not take that configuration: the
 #     line says so ("lint n/a") and it is not a failure; the rule comes from the RTL, so the shell is
 #     linted around every configuration it accepts.
+# VERILATED (optional, comma-separated registry names): the lines a CMake build has Verilated
+# already, with the same -Wall and waivers (cmake/AcoreRegistry.cmake's ACORE_VERILATOR_ARGS; a
+# warning stops that build): they count as linted and are not run again (CTest rtl_lint passes them).
 # Exit 1 on any other warning, 2 on a malformed registry.
+# usage: lint.sh [ROOT [VERILATED]]
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/../.." && pwd)}
+declare -A verilated
+IFS=, read -r -a _v <<<"${2:-}"
+for n in "${_v[@]}"; do verilated[$n]=1; done
 lines=$(python3 "$root/scripts/registry.py" --root "$root" lines --flow lint) || exit 2
 cd "$root/rtl"
 mapfile -t files < <(grep -v '^#' files.f | grep '\.v$')
@@ -62,6 +69,11 @@ while read -r name module flows params; do
   k=$(key "$module" $params)
   if [ -n "${linted[$k]:-}" ]; then
     echo "lint ok:   $module $name (as ${linted[$k]})"
+    continue
+  fi
+  if [ -n "${verilated[$name]:-}" ]; then
+    echo "lint ok:   $module $name (Verilated with -Wall by the build)"
+    linted[$k]="$module $name"
     continue
   fi
   mapfile -t g < <(gargs $params)
