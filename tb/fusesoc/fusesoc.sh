@@ -40,9 +40,9 @@ run() { # run TARGET [--PARAM=value ...] (the core's parameters come after its n
 sed -n '/^  rtl:/,/file_type/p' "$src/rtl/anglecore.core" | sed -n 's/^ *- *\(acore_[a-z0-9_]*\.v\)$/\1/p' >"$work/core_files.txt"
 grep -v '^#' "$src/rtl/files.f" | grep '\.v$' >"$work/files_f.txt"
 check core_files_equal_files_f diff "$work/files_f.txt" "$work/core_files.txt"
-# The committed vectors are the model's (tb/icarus/gen_vectors.cpp: acore_gen_vectors tb/icarus/vectors 0 1000).
+# The committed vectors are the model's (tb/icarus/gen_vectors.cpp: acore_gen_vectors tb/icarus/vectors 0 400).
 mkdir -p "$work/vectors"
-"$gen" "$work/vectors" 0 1000
+"$gen" "$work/vectors" 0 400
 check vectors_current diff -r "$src/tb/icarus/vectors" "$work/vectors"
 
 check lint run lint

@@ -10,7 +10,7 @@
 //   FRAME 1: a random register image with random inputs (saturation paths)
 //   N: samples in all (default: frame 0 7501 = 5000 paper samples, 2500 random codes and the zero
 //      vector; frame 1 2501); with N, half of frame 0's are paper samples. tb/icarus/vectors/ holds
-//      `acore_gen_vectors tb/icarus/vectors 0 1000` (FuseSoC's sim target; tb/fusesoc/fusesoc.sh
+//      `acore_gen_vectors tb/icarus/vectors 0 400` (FuseSoC's sim target; tb/fusesoc/fusesoc.sh
 //      checks it is current).
 #include <fmt/format.h>
 

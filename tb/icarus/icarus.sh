@@ -5,10 +5,11 @@
 # acore_serial_top, tb/icarus/acore_apb_tb_icarus.v around the APB shell (its SERIAL). The benches are
 # written for the default widths: a line that sets another parameter is refused.
 # usage: icarus.sh GEN_VECTORS_BINARY SOURCE_DIR WORK_DIR
-# ACORE_ICARUS_SAMPLES="N0 N1": samples of frames 0 and 1 (default "2001 1001": half of frame 0
-# paper samples, a turn at 0.36 degree steps, half random and extreme codes. Icarus runs the
-# pipelined top at about 150 samples a second: the generator's own defaults, "7501 2501", take
-# three times as long and are what the Verilator co-sims' sample counts already exceed).
+# ACORE_ICARUS_SAMPLES="N0 N1": samples of frames 0 and 1 (default "1001 501": half of frame 0
+# paper samples, a turn at 0.72 degree steps, half random and extreme codes. Icarus runs the
+# pipelined top at about 150 samples a second; this bench is for X and reset behaviour, the
+# Verilator co-sims run far more samples of every build. "2001 1001" takes twice as long, the
+# generator's own defaults, "7501 2501", six times).
 set -euo pipefail
 gen=$1
 src=$2
@@ -58,7 +59,7 @@ for line in "${lines[@]}"; do
 done
 # The two frames run side by side (each runs every variant in turn): the simulations are
 # independent, and Icarus uses one core.
-read -r -a samples <<<"${ACORE_ICARUS_SAMPLES:-2001 1001}"
+read -r -a samples <<<"${ACORE_ICARUS_SAMPLES:-1001 501}"
 run_frame() {
   local frame=$1 v
   mkdir -p "$work/frame$frame"
