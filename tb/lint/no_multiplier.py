@@ -10,11 +10,14 @@ rtl/acore_derived.vh): they are evaluated at elaboration. The datapath multiplie
 shifters only. This check proves it on the netlist: for every line of rtl/configs.txt whose module
 is acore_top, acore_serial_top, acore_apb, acore_cordic, acore_cordic_serial, acore_track, a drive
 interface or the board top (acore_abz, acore_uvw, acore_spi_as5047, acore_pwm, acore_board), Yosys
-reads rtl/files.f, elaborates the module with the line's parameters (hierarchy -chparam) and runs
-`proc`; the design must then hold
+reads rtl/files.f and elaborates the module with the line's parameters (hierarchy -chparam); the
+design must then hold
 no $mul, $macc, $div, $mod, $divfloor, $modfloor or $pow cell (checked before any optimization, so
-a product cannot hide behind constant folding). A negative control first: a module with one `*`
-between two inputs must fail the same check, so the check cannot pass on a design it did not see.
+a product cannot hide behind constant folding). Elaboration makes a cell of every operator, inside
+processes and functions too, so `proc` (a third of the time) is not run. Negative controls first: a
+module with one `*` between two inputs, and one with a product in a clocked process and one in a
+function called from a combinational process, must each fail the same check, so the check cannot
+pass on a design it did not see.
 
 A line with MULT=1 (hardware multipliers, docs/datapath.md) may hold $mul cells, but only in
 acore_hw_mul (rtl/acore_hw_mul.v, which the stages instantiate in their MULT = 1 generate branches
@@ -80,7 +83,7 @@ def check(files, top, params, workdir):
     log = os.path.join(workdir, f"{top}_{abs(hash(chp))}.log")
     mlog = log + ".mul"
     script = (
-        f"read_verilog -sv -defer {' '.join(files)}; hierarchy -check -top {top}{chp}; proc; "
+        f"read_verilog -sv -defer {' '.join(files)}; hierarchy -check -top {top}{chp}; "
         f"tee -o {log} select -list {sel}; tee -o {mlog} select -list t:$mul"
     )
     p = subprocess.run(
@@ -141,6 +144,24 @@ def main():
             print("FAIL control: a product of two inputs was not found")
             return 1
         print("ok   control: a product of two inputs is found ($mul)")
+        # Products inside processes (no `proc` pass runs): clocked, and through a function.
+        ctlp = os.path.join(tmp, "mul_control_proc.v")
+        with open(ctlp, "w") as f:
+            f.write(
+                "module mul_control_proc(input wire clk, input wire [7:0] a, input wire [7:0] b,"
+                " output reg [15:0] q);\n"
+                "  always @(posedge clk) q <= a * b;\nendmodule\n"
+                "module mul_control_func(input wire [7:0] a, input wire [7:0] b,"
+                " output reg [15:0] r);\n"
+                "  function [15:0] f(input [7:0] x, input [7:0] y); f = x * y; endfunction\n"
+                "  always @* begin r = 16'd0; if (a[0]) r = f(a, b); end\nendmodule\n"
+            )
+        for top in ("mul_control_proc", "mul_control_func"):
+            ok, _ = check([ctlp], top, [], tmp)
+            if ok:
+                print(f"FAIL control: the product in a process of {top} was not found")
+                return 1
+        print("ok   control: products in a clocked process and in a function are found")
         # With MULT=1 too, when it is not in acore_hw_mul.
         ctl1 = os.path.join(tmp, "mul_control1.v")
         with open(ctl1, "w") as f:
