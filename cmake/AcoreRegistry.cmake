@@ -61,16 +61,25 @@ endfunction()
 # when a file of rtl/ changes (or VLT, or Verilator itself). FST tracing is compiled in, without the
 # parameters (--no-trace-params: two thirds of the traced names are constants the registry line
 # gives; without them the run-once code compiles in a fifth less time).
+# SYSTEMC: a SystemC model (--sc) without tracing; Verilator's runtime, which differs with SystemC,
+# is compiled into the target instead of linking acore_vlt_runtime.
 #   acore_verilate(TARGET PREFIX P TOP_MODULE M FAST FLAGS... SLOW FLAGS... VLT FILES...
-#                  VERILATOR_ARGS ARGS...)
+#                  VERILATOR_ARGS ARGS... [SYSTEMC])
 function(acore_verilate target)
-  cmake_parse_arguments(V "" "PREFIX;TOP_MODULE" "FAST;SLOW;VLT;VERILATOR_ARGS" ${ARGN})
+  cmake_parse_arguments(V "SYSTEMC" "PREFIX;TOP_MODULE" "FAST;SLOW;VLT;VERILATOR_ARGS" ${ARGN})
   set(mdir ${CMAKE_CURRENT_BINARY_DIR}/${target}.verilated)
   set(units ${mdir}/${V_PREFIX}__slow_all.cpp ${mdir}/${V_PREFIX}__fast_all.cpp)
   file(GLOB rtl_deps CONFIGURE_DEPENDS ${ACORE_ROOT}/rtl/*.v ${ACORE_ROOT}/rtl/*.vh)
+  if(V_SYSTEMC)
+    set(mode --sc)
+    set(vm VM_SC=1 VM_TRACE=0 VM_TRACE_FST=0)
+  else()
+    set(mode --cc --trace-fst --no-trace-params)
+    set(vm VM_SC=0 VM_TRACE=1 VM_TRACE_FST=1)
+  endif()
   add_custom_command(OUTPUT ${units}
     COMMAND ${CMAKE_COMMAND} -E rm -rf ${mdir}
-    COMMAND ${VERILATOR_BIN} --compiler gcc --cc --make cmake --trace-fst --no-trace-params --Mdir ${mdir}
+    COMMAND ${VERILATOR_BIN} --compiler gcc ${mode} --make cmake --Mdir ${mdir}
             --prefix ${V_PREFIX} --top ${V_TOP_MODULE} ${V_VERILATOR_ARGS} ${V_VLT} ${ACORE_RTL_FILES}
     COMMAND ${CMAKE_COMMAND} -DMDIR=${mdir} -DPREFIX=${V_PREFIX}
             -P ${ACORE_ROOT}/cmake/AcoreVerilatedUnits.cmake
@@ -85,7 +94,14 @@ function(acore_verilate target)
   # Public: the benches that link a test-local build (tb/CMakeLists.txt) include its headers.
   target_include_directories(${target} PUBLIC ${mdir} ${VERILATOR_ROOT}/include
                                                ${VERILATOR_ROOT}/include/vltstd)
-  target_compile_definitions(${target} PRIVATE VM_COVERAGE=0 VM_SC=0 VM_TRACE=1 VM_TRACE_FST=1
-                                               VM_TRACE_VCD=0)
-  target_link_libraries(${target} PRIVATE acore_vlt_runtime)
+  target_compile_definitions(${target} PRIVATE VM_COVERAGE=0 ${vm} VM_TRACE_VCD=0)
+  if(V_SYSTEMC)
+    find_package(Threads REQUIRED)
+    target_sources(${target} PRIVATE ${VERILATOR_ROOT}/include/verilated.cpp
+                                     ${VERILATOR_ROOT}/include/verilated_dpi.cpp
+                                     ${VERILATOR_ROOT}/include/verilated_threads.cpp)
+    target_link_libraries(${target} PRIVATE Threads::Threads)
+  else()
+    target_link_libraries(${target} PRIVATE acore_vlt_runtime)
+  endif()
 endfunction()
