@@ -131,50 +131,60 @@ def main():
     files = rtl_files(args.root)
     fails = 0
     with tempfile.TemporaryDirectory(prefix="acore_nomul_") as tmp:
-        # Negative control: a product of two inputs must be found.
-        ctl = os.path.join(tmp, "mul_control.v")
-        with open(ctl, "w") as f:
-            f.write(
-                "module mul_control(input wire [7:0] a, input wire [7:0] b, "
-                "output wire [15:0] p);\n"
-                "  assign p = a * b;\nendmodule\n"
-            )
-        ok, _ = check([ctl], "mul_control", [], tmp)
-        if ok:
-            print("FAIL control: a product of two inputs was not found")
-            return 1
-        print("ok   control: a product of two inputs is found ($mul)")
-        # Products inside processes (no `proc` pass runs): clocked, and through a function.
-        ctlp = os.path.join(tmp, "mul_control_proc.v")
-        with open(ctlp, "w") as f:
-            f.write(
-                "module mul_control_proc(input wire clk, input wire [7:0] a, input wire [7:0] b,"
-                " output reg [15:0] q);\n"
-                "  always @(posedge clk) q <= a * b;\nendmodule\n"
-                "module mul_control_func(input wire [7:0] a, input wire [7:0] b,"
-                " output reg [15:0] r);\n"
-                "  function [15:0] f(input [7:0] x, input [7:0] y); f = x * y; endfunction\n"
-                "  always @* begin r = 16'd0; if (a[0]) r = f(a, b); end\nendmodule\n"
-            )
-        for top in ("mul_control_proc", "mul_control_func"):
-            ok, _ = check([ctlp], top, [], tmp)
+        # Negative controls: each design holds a product the check must find (name, Verilog, top,
+        # parameters, what it shows).
+        controls = (
+            (
+                "mul_control",
+                (
+                    "module mul_control(input wire [7:0] a, input wire [7:0] b, "
+                    "output wire [15:0] p);\n  assign p = a * b;\nendmodule\n"
+                ),
+                [],
+                "a product of two inputs is found ($mul)",
+            ),
+            # Products inside processes (no `proc` pass runs): clocked, and through a function.
+            (
+                "mul_control_proc",
+                (
+                    "module mul_control_proc(input wire clk, input wire [7:0] a,"
+                    " input wire [7:0] b, output reg [15:0] q);\n"
+                    "  always @(posedge clk) q <= a * b;\nendmodule\n"
+                ),
+                [],
+                "a product in a clocked process is found",
+            ),
+            (
+                "mul_control_func",
+                (
+                    "module mul_control_func(input wire [7:0] a, input wire [7:0] b,"
+                    " output reg [15:0] r);\n"
+                    "  function [15:0] f(input [7:0] x, input [7:0] y); f = x * y; endfunction\n"
+                    "  always @* begin r = 16'd0; if (a[0]) r = f(a, b); end\nendmodule\n"
+                ),
+                [],
+                "a product in a function called from a combinational process is found",
+            ),
+            # With MULT=1 too, when it is not in acore_hw_mul.
+            (
+                "mul_control1",
+                (
+                    "module mul_control1 #(parameter integer MULT = 0) (input wire [7:0] a, "
+                    "input wire [7:0] b, output wire [15:0] p);\n  assign p = a * b;\nendmodule\n"
+                ),
+                [("MULT", "1")],
+                "with MULT=1, a product outside acore_hw_mul is found",
+            ),
+        )
+        for top, text, params, what in controls:
+            ctl = os.path.join(tmp, top + ".v")
+            with open(ctl, "w") as f:
+                f.write(text)
+            ok, _ = check([ctl], top, params, tmp)
             if ok:
-                print(f"FAIL control: the product in a process of {top} was not found")
+                print(f"FAIL control: not so: {what}")
                 return 1
-        print("ok   control: products in a clocked process and in a function are found")
-        # With MULT=1 too, when it is not in acore_hw_mul.
-        ctl1 = os.path.join(tmp, "mul_control1.v")
-        with open(ctl1, "w") as f:
-            f.write(
-                "module mul_control1 #(parameter integer MULT = 0) (input wire [7:0] a, "
-                "input wire [7:0] b, output wire [15:0] p);\n"
-                "  assign p = a * b;\nendmodule\n"
-            )
-        ok, _ = check([ctl1], "mul_control1", [("MULT", "1")], tmp)
-        if ok:
-            print("FAIL control: with MULT=1, a product outside acore_hw_mul was not found")
-            return 1
-        print("ok   control: with MULT=1, a product outside acore_hw_mul is found")
+            print(f"ok   control: {what}")
 
         def one(b):
             name, module, params = b
