@@ -63,12 +63,15 @@ endfunction()
 # gives; without them the run-once code compiles in a fifth less time).
 # SYSTEMC: a SystemC model (--sc) without tracing; Verilator's runtime, which differs with SystemC,
 # is compiled into the target instead of linking acore_vlt_runtime.
+# LINE: the registry line built, recorded in the global property ACORE_VERILATED (CTest rtl_lint does
+# not lint those lines again: Verilator ran on them with -Wall here, and a warning stops the build).
 #   acore_verilate(TARGET PREFIX P TOP_MODULE M FAST FLAGS... SLOW FLAGS... VLT FILES...
-#                  VERILATOR_ARGS ARGS... [SYSTEMC])
+#                  VERILATOR_ARGS ARGS... [LINE NAME] [SYSTEMC])
 function(acore_verilate target)
-  cmake_parse_arguments(V "SYSTEMC" "PREFIX;TOP_MODULE" "FAST;SLOW;VLT;VERILATOR_ARGS" ${ARGN})
+  cmake_parse_arguments(V "SYSTEMC" "PREFIX;TOP_MODULE;LINE" "FAST;SLOW;VLT;VERILATOR_ARGS" ${ARGN})
   set(mdir ${CMAKE_CURRENT_BINARY_DIR}/${target}.verilated)
-  set(units ${mdir}/${V_PREFIX}__slow_all.cpp ${mdir}/${V_PREFIX}__fast_all.cpp)
+  set(slow_unit ${mdir}/${V_PREFIX}__slow_all.cpp)
+  set(fast_unit ${mdir}/${V_PREFIX}__fast_all.cpp)
   file(GLOB rtl_deps CONFIGURE_DEPENDS ${ACORE_ROOT}/rtl/*.v ${ACORE_ROOT}/rtl/*.vh)
   if(V_SYSTEMC)
     set(mode --sc)
@@ -77,7 +80,7 @@ function(acore_verilate target)
     set(mode --cc --trace-fst --no-trace-params)
     set(vm VM_SC=0 VM_TRACE=1 VM_TRACE_FST=1)
   endif()
-  add_custom_command(OUTPUT ${units}
+  add_custom_command(OUTPUT ${slow_unit} ${fast_unit}
     COMMAND ${CMAKE_COMMAND} -E rm -rf ${mdir}
     COMMAND ${VERILATOR_BIN} --compiler gcc ${mode} --make cmake --Mdir ${mdir}
             --prefix ${V_PREFIX} --top ${V_TOP_MODULE} ${V_VERILATOR_ARGS} ${V_VLT} ${ACORE_RTL_FILES}
@@ -86,9 +89,7 @@ function(acore_verilate target)
     DEPENDS ${rtl_deps} ${V_VLT} ${VERILATOR_BIN} ${ACORE_ROOT}/cmake/AcoreVerilatedUnits.cmake
     WORKING_DIRECTORY ${ACORE_ROOT}/rtl
     COMMENT "Verilating ${V_TOP_MODULE} for ${target}" VERBATIM)
-  target_sources(${target} PRIVATE ${units})
-  list(GET units 0 slow_unit)
-  list(GET units 1 fast_unit)
+  target_sources(${target} PRIVATE ${slow_unit} ${fast_unit})
   set_source_files_properties(${slow_unit} PROPERTIES COMPILE_OPTIONS "${V_SLOW}")
   set_source_files_properties(${fast_unit} PROPERTIES COMPILE_OPTIONS "${V_FAST}")
   # Public: the benches that link a test-local build (tb/CMakeLists.txt) include its headers.
@@ -103,5 +104,8 @@ function(acore_verilate target)
     target_link_libraries(${target} PRIVATE Threads::Threads)
   else()
     target_link_libraries(${target} PRIVATE acore_vlt_runtime)
+  endif()
+  if(V_LINE)
+    set_property(GLOBAL APPEND PROPERTY ACORE_VERILATED ${V_LINE})
   endif()
 endfunction()
