@@ -113,19 +113,9 @@ module acore_fold_datapath #(
       endcase
     end
   endfunction
-  // 1 when t is one of them.
-  function integer vtap_is(input integer t, input integer h, input integer sl, input integer r,
-                           input integer pl, input integer cl, input integer sp);
-    integer i;
-    begin
-      vtap_is = 0;
-      for (i = 0; i < 13; i = i + 1)
-        if (vtap(i, h, sl, r, pl, cl, sp) == t) vtap_is = 1;
-    end
-  endfunction
-  // The smallest one above p (2^30 when none). The three functions below walk the distinct
-  // values in order through this one: a few thousand calls at elaboration, where comparing every
-  // pair for every bit took Yosys 26 s.
+  // The smallest one above p (2^30 when none). The two functions below walk the distinct values
+  // in order through this one: a few hundred calls at elaboration, where comparing every pair
+  // for every bit took Yosys 26 s.
   function integer vtap_next(input integer p, input integer h, input integer sl, input integer r,
                              input integer pl, input integer cl, input integer sp);
     integer i, v;
@@ -245,6 +235,15 @@ module acore_fold_datapath #(
     .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .atan_o(atan), .last_o(last_o), .raddr_i(raddr), .rdata_p_o(rdata));
 
+  // The OR of the valid bits' slices (the sparse chain's taps, at most 13: vtap).
+  function [LATENCY:0] v_or(input [LATENCY*13+12:0] one);
+    integer i;
+    begin
+      v_or = {(LATENCY+1){1'b0}};
+      for (i = 0; i < 13; i = i + 1) v_or = v_or | one[i*(LATENCY+1) +: LATENCY+1];
+    end
+  endfunction
+
   // ---- valid bits: v[t] is high t clocks after the accepting edge (t = 0 the next clock) ----
   wire [LATENCY:0] v_q;
   genvar gt;
@@ -262,20 +261,23 @@ module acore_fold_datapath #(
       // not a flop a clock); every other bit is zero.
       localparam integer ND = vtap_rank(LATENCY + 1, H, SL, R, PL, CL, S_PAIR_RAM);
       wire [ND:0] vd;
+      // v_one's slice k: segment k's tap, vd[k + 1] at its clock (zero past ND). A loop over the
+      // taps, not over every clock: a function call per clock and tap took Yosys 7 s to elaborate.
+      wire [13*(LATENCY+1)-1:0] v_one;
       assign vd[0] = accept_i;
       for (gt = 0; gt < ND; gt = gt + 1) begin : g_seg
-        localparam integer T = vtap_kth(gt, H, SL, R, PL, CL, S_PAIR_RAM);
-        localparam integer T0 = (gt == 0) ? -1 : vtap_kth(gt - 1, H, SL, R, PL, CL, S_PAIR_RAM);
+        // The previous tap (T0, -1 before the first) and this one, the next above it.
+        localparam integer P = (gt == 0) ? -(1 << 30) : vtap_kth(gt - 1, H, SL, R, PL, CL, S_PAIR_RAM);
+        localparam integer T = vtap_next(P, H, SL, R, PL, CL, S_PAIR_RAM);
+        localparam integer T0 = (gt == 0) ? -1 : P;
         acore_pulse_delay #(.DEPTH(T - T0), .GAP(FOLD)) u_v (
           .clk_i(clk_i), .rst_i(rst_i), .d_i(vd[gt]), .q_o(vd[gt + 1]));
+        assign v_one[gt*(LATENCY+1) +: LATENCY+1] = {{LATENCY{1'b0}}, vd[gt + 1]} << T;
       end
-      for (gt = 0; gt <= LATENCY; gt = gt + 1) begin : g_vbit
-        if (vtap_is(gt, H, SL, R, PL, CL, S_PAIR_RAM) != 0) begin : g_tap
-          assign v_q[gt] = vd[vtap_rank(gt, H, SL, R, PL, CL, S_PAIR_RAM) + 1];
-        end else begin : g_none
-          assign v_q[gt] = 1'b0;
-        end
+      for (gt = ND; gt < 13; gt = gt + 1) begin : g_none
+        assign v_one[gt*(LATENCY+1) +: LATENCY+1] = {(LATENCY+1){1'b0}};
       end
+      assign v_q = v_or(v_one);
       wire unused_v = ^v_q;
     end
   endgenerate
