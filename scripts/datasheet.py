@@ -4,13 +4,15 @@
 family) and configuration of the estimator, so a user picks a line without reading the flow
 (scripts/synth.sh's last step).
 
-usage: datasheet.py [--root DIR] [--out FILE]   (default: print to stdout)
+usage: datasheet.py [--root DIR] [--out FILE [--check]] [--anglecore BIN]   (default: stdout)
+  --check: write nothing; exit 1 when FILE differs from what it would write (CTest
+  datasheet_current: the checked-in table is the reports' and the model's now)
 
-Read only from the reports scripts/synth.sh wrote (synth/reports/) and the design-space table
-(synth/reports/design_space.csv); the devices, families, their cell classes and capacities from
-synth/devices.toml, the configurations from the build registry rtl/configs.txt: every line of a top
-module (acore_top, acore_serial_top, acore_apb, acore_board) placed on a device, then those with an
-area-only family that has no device (xc7: no clock). Per line:
+Read from the reports scripts/synth.sh wrote (synth/reports/) and the model (`BIN sweep`, default
+ROOT/build/anglecore: it must be built); the devices, families, their cell classes and capacities
+from synth/devices.toml, the configurations from the build registry rtl/configs.txt: every line of a
+top module (acore_top, acore_serial_top, acore_apb, acore_board) placed on a device, then those with
+an area-only family that has no device (xc7: no clock). Per line:
   logic      the place-and-route log's logic cells, used/available (the family's pnr_cell)
   LUT, FF    the family's lut and ff cell classes in the Yosys report of the placed netlist
   BRAM, DSP  the log's block RAMs and hard multipliers (pnr_bram, pnr_dsp); Yosys's count where the
@@ -19,16 +21,21 @@ area-only family that has no device (xc7: no clock). Per line:
              design is larger than the device or its package)
   samples/s  Fmax / clocks per sample (the module's CYCLES; FOLD for a folded top)
   latency    the module's LATENCY clocks at that Fmax, in microseconds
-  accuracy   RMS / max error in degrees on the noise-free paper scenario: the design-space row of
-             the same datapath parameters (the serial core, the folded tops, the shell and the board
-             compute bit for bit what the pipelined top computes: the same model)
+  accuracy   RMS / max error in degrees on the noise-free paper scenario of the bit-accurate model
+             of the same datapath parameters, calibrated and validated as the design space's
+             accuracy half (`anglecore sweep`, its default samples; MULT = 1's rounding included;
+             the serial core, the folded tops, the shell and the board compute bit for bit what the
+             pipelined top computes: the same model)
 """
 
 import argparse
-import csv
+import difflib
+import json
 import os
 import re
+import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -41,27 +48,37 @@ BUILD_ONLY = {"FOLD", "SERIAL"}
 SCENARIO = "paper-noiseless"
 
 
-def accuracy_rows(root):
-    """Canonical datapath parameters -> (RMS, max) of the pipelined rows of the design space."""
-    path = os.path.join(root, "synth", "reports", "design_space.csv")
-    out = {}
-    if not os.path.exists(path):
-        return out
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            if r.get("engine") != "pipelined" or not r.get(f"{SCENARIO}_fixed_rms"):
-                continue
-            params = tuple(tuple(p.split("=", 1)) for p in r["params"].split())
-            out[params] = (float(r[f"{SCENARIO}_fixed_rms"]), float(r[f"{SCENARIO}_fixed_max"]))
-    return out
-
-
 class Accuracy:
-    def __init__(self, root):
-        self.root = root
-        self.rows = accuracy_rows(root)
+    """RMS / max error (degrees, SCENARIO, the bit-accurate model) of each line's datapath, from
+    one `anglecore sweep` of the lines' distinct datapath parameters: the model as it is now,
+    calibrated as the sweep calibrates (the design space's accuracy half), MULT = 1 included."""
+
+    def __init__(self, root, anglecore, lines):
         self.defaults = registry.rtl_parameters(root, "acore_top")
-        self.keys = {self.canonical(p): v for p, v in self.rows.items()}
+        if not os.access(anglecore, os.X_OK):
+            raise registry.RegistryError(
+                f"{anglecore}: no anglecore binary (build it with scripts/build.sh, or pass "
+                "--anglecore): the accuracy column is the model's"
+            )
+        keys = sorted({self.canonical(l.params) for l in lines})
+        with tempfile.TemporaryDirectory() as d:
+            grid = os.path.join(d, "grid.json")
+            with open(grid, "w") as f:
+                json.dump([{k: [int(v)] for k, v in key} for key in keys], f)
+            p = subprocess.run(
+                [anglecore, "sweep", "--grid", grid, "--out", d, "--jobs", "2"],
+                capture_output=True,
+                text=True,
+            )
+            if p.returncode != 0:
+                raise registry.RegistryError(f"{anglecore} sweep: {p.stderr.strip()[-2000:]}")
+            self.keys = {}
+            for line in open(os.path.join(d, "accuracy-0-of-1.jsonl")):
+                r = json.loads(line)
+                fixed = r.get("accuracy", {}).get(SCENARIO, {}).get("fixed")
+                if fixed:
+                    params = tuple(tuple(q.split("=", 1)) for q in r["params"].split())
+                    self.keys[self.canonical(params)] = (fixed["rms"], fixed["max_abs"])
 
     def canonical(self, params):
         """The datapath parameters that differ from acore_top's defaults, sorted."""
@@ -81,10 +98,10 @@ def fmt_fmax(fmax, why):
     return f"{fmax:.1f}" if fmax else (why or "-")
 
 
-def build(root):
+def build(root, anglecore):
     t = registry.table(root)
     lines = [l for l in registry.load(root) if l.module in TOPS]
-    acc = Accuracy(root)
+    acc = Accuracy(root, anglecore, lines)
     timing = {}
 
     def clocks(line):
@@ -164,13 +181,14 @@ def build(root):
         "Generated by `scripts/datasheet.py --out synth/reports/datasheet.md` (the last step of "
         f"`scripts/synth.sh`) from its reports ({t.flow['yosys']}; "
         + "; ".join(f"{f.title}: {f.measured_with}" for f in t.families.values() if f.placed)
-        + f"; seed {t.seed}, target {t.freq} MHz) and the design-space table "
-        "(`synth/reports/design_space.csv`). One line per device and configuration of the "
+        + f"; seed {t.seed}, target {t.freq} MHz) and the model (`anglecore sweep`). "
+        "One line per device and configuration of the "
         "estimator, placed and routed whole in its pin wrapper; logic = the place-and-route "
         "log's logic cells; LUT, FF: Yosys's cells of the placed netlist; BRAM, DSP: the log's "
         "(Yosys's where not placed: the xc7 lines are Yosys's area alone, no clock); "
         "samples/s = Fmax / clocks per sample; latency = LATENCY clocks at Fmax; accuracy: the "
         "noise-free paper scenario, the bit-accurate model of the same datapath parameters "
+        "calibrated as the design space's accuracy half "
         "(FOLD, the serial core, the register shell and the board compute the same bits). "
         "Devices: "
         + "; ".join(
@@ -215,16 +233,34 @@ def main(argv):
     )
     ap.add_argument("--root", default=os.path.dirname(HERE))
     ap.add_argument("--out")
+    ap.add_argument("--check", action="store_true", help="compare with --out, write nothing")
+    ap.add_argument(
+        "--anglecore",
+        help="the anglecore binary whose `sweep` gives the accuracy column "
+        "(default: ROOT/build/anglecore)",
+    )
     try:
         a = ap.parse_args(argv)
     except SystemExit as e:
         return 0 if e.code == 0 else 2
+    if a.check and not a.out:
+        print("datasheet.py: --check needs --out FILE", file=sys.stderr)
+        return 2
     try:
-        text = build(os.path.abspath(a.root))
+        root = os.path.abspath(a.root)
+        text = build(root, a.anglecore or os.path.join(root, "build", "anglecore"))
     except (registry.RegistryError, devices.DevicesError) as e:
         print(f"datasheet.py: {e}", file=sys.stderr)
         return 2
-    if a.out:
+    if a.check:
+        old = open(a.out).read().splitlines() if a.out and os.path.exists(a.out) else []
+        diff = list(difflib.unified_diff(old, text.splitlines(), a.out, "now", lineterm="", n=0))
+        if diff:
+            print(f"datasheet.py: {a.out} is not current (scripts/synth.sh's last step writes it):")
+            print("\n".join(diff[:40]))
+            return 1
+        print(f"datasheet.py: {a.out} is current")
+    elif a.out:
         registry.write_if_changed(a.out, text)
     else:
         sys.stdout.write(text)
