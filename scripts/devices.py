@@ -53,7 +53,7 @@ DEVICE_FIELDS = {
     "pnr_args": list,
     "aliases": list,
     "constraints": str,
-    "wrapper": str,
+    "wrapper": (str, list),  # one pattern, or patterns in preference order
     "wrapper_required": bool,
     "suffix": str,
     "bare_suffix": str,
@@ -127,9 +127,21 @@ class Device:
                 setattr(self, k, d[k])
         self.capacity = dict(d["capacity"])
         self.synth_options = list(d.get("synth_options", []))
+        self.wrappers = [d["wrapper"]] if isinstance(d["wrapper"], str) else list(d["wrapper"])
 
-    def wrapper_module(self, module):
-        return self.wrapper.format(module=module)
+    def wrapper_names(self, module):
+        """The module's wrapper names on this device, in the table's order of preference."""
+        return [w.format(module=module) for w in self.wrappers]
+
+    def wrapper_module(self, module, source):
+        """(wrapper module, its file) of the module on this device: the first of wrapper_names
+        that `source` (module name -> the file defining it, or None) finds; (None, None) when
+        none is defined (the module is placed as it is)."""
+        for w in self.wrapper_names(module):
+            src = source(w)
+            if src:
+                return w, src
+        return None, None
 
     def constraint_files(self, root):
         if not self.constraints:
@@ -279,8 +291,9 @@ def _check(where, table, section, fields, required=True):
             continue
         v = section[k]
         if not isinstance(v, t) or (t is int and isinstance(v, bool)):
-            raise DevicesError(f"{where(table, k)}: {k}: expected {t.__name__}, got {v!r}")
-        if t is list and not all(isinstance(x, str) for x in v) and k != "columns":
+            types = " or ".join(x.__name__ for x in (t if isinstance(t, tuple) else (t,)))
+            raise DevicesError(f"{where(table, k)}: {k}: expected {types}, got {v!r}")
+        if isinstance(v, list) and not all(isinstance(x, str) for x in v) and k != "columns":
             raise DevicesError(f"{where(table, k)}: {k}: expected a list of strings")
 
 
@@ -415,10 +428,14 @@ def _load(root):
                 raise DevicesError(
                     f"{where(t, 'capacity')}: capacity: {k}: unknown (known: {', '.join(CAPACITY)})"
                 )
-        if "{module}" not in d["wrapper"]:
+        patterns = [d["wrapper"]] if isinstance(d["wrapper"], str) else d["wrapper"]
+        if not patterns:
             raise DevicesError(
-                f"{where(t, 'wrapper')}: wrapper: '{d['wrapper']}' must contain {{module}}"
+                f"{where(t, 'wrapper')}: wrapper: an empty list (one pattern or a list of them)"
             )
+        for w in patterns:
+            if "{module}" not in w:
+                raise DevicesError(f"{where(t, 'wrapper')}: wrapper: '{w}' must contain {{module}}")
         if not re.fullmatch(r"_[a-z0-9_]+", d["suffix"]):
             raise DevicesError(
                 f"{where(t, 'suffix')}: suffix: '{d['suffix']}': '_' then lower "

@@ -39,7 +39,8 @@ Synthesis rules (scripts/synth.sh; the registry's header states them for its rea
   FAMILY (generic, ice40, xilinx, ...)  the line's module with the line's parameters: design <name>,
                           report synth/reports/<family>_<name>.txt.
   DEVICE (hx8k, up5k, ...)  the module in the device's pin wrapper (its `wrapper`, e.g.
-                          <module>_pinwrap, a module of synth/*.v given the line's parameters),
+                          <module>_pinwrap, a module of synth/*.v given the line's parameters; of a
+                          list of patterns, the first whose module synth/*.v defines),
                           synthesized for the device's family and placed and routed on it: design
                           <name><suffix>, reports <family>_<name><suffix>.txt,
                           nextpnr_<name><suffix>.log. A module without that wrapper is placed as it
@@ -467,11 +468,10 @@ def device(root, flow=None):
 
 
 def pin_wrapper(root, module, flow=None):
-    """(wrapper module, its synth/ file) of the module on the device (default: the default device),
-    or (None, None): placed as it is."""
-    w = device(root, flow).wrapper_module(module)
-    src = synth_source(root, w)
-    return (w, src) if src else (None, None)
+    """(wrapper module, its synth/ file) of the module on the device (default: the default device):
+    the first of the device's wrapper patterns whose module synth/*.v defines, or (None, None):
+    placed as it is."""
+    return device(root, flow).wrapper_module(module, lambda w: synth_source(root, w))
 
 
 def placed_design(root, line, flow=None):
@@ -510,8 +510,8 @@ def synth_designs(root, names=None, flows=None):
         for d in bare:
             if d.wrapper_required:
                 raise RegistryError(
-                    f"{l.where}: flow {d.name}: no module {d.wrapper_module(l.module)} in "
-                    f"synth/*.v (the {d.title} in {d.package} has {d.capacity['user_io']} user "
+                    f"{l.where}: flow {d.name}: no module {' or '.join(d.wrapper_names(l.module))} "
+                    f"in synth/*.v (the {d.title} in {d.package} has {d.capacity['user_io']} user "
                     "pins: the design is placed in that wrapper)"
                 )
         own = [d.name for d in bare if not d.bare_suffix]

@@ -11,10 +11,11 @@ repository's registry files: each malformed one must stop `registry.py lines` an
 cmake` with exit 2 and the message naming rtl/configs.txt, the line and the field; the legal ones
 must come out as written. Then a CMake configuration including cmake/AcoreRegistry.cmake must fail
 on a malformed line with that message, and pass on a legal one with the values registry.py gave.
-Malformed devices tables stop the reader with synth/devices.toml's line and field. Finally the
-table's capacities against the checked-in place-and-route logs (the tools' own device databases):
-every log of a device reports its logic cells, block RAMs and hard multipliers out of the capacity
-the table states. Exit 1 on any failure, listing each.
+Malformed devices tables stop the reader with synth/devices.toml's line and field; a device's
+wrapper, one pattern or a list of them, resolves to the first whose module synth/*.v defines.
+Finally the table's capacities against the checked-in place-and-route logs (the tools' own device
+databases): every log of a device reports its logic cells, block RAMs and hard multipliers out of
+the capacity the table states. Exit 1 on any failure, listing each.
 """
 
 import glob
@@ -126,6 +127,36 @@ DEVICE_CASES = [
         "constraint_line = 'IO_LOC {port} {pin};'",
         r"synth/devices.toml:\d+: constraint_line: 'IO_LOC \{port\} \{pin\};' must name",
     ),
+    (
+        'wrapper = ["{module}_sg48wrap", "{module}_pinwrap"]',
+        'wrapper = ["{module}_sg48wrap", "acore_pinwrap"]',
+        r"synth/devices.toml:\d+: wrapper: 'acore_pinwrap' must contain \{module\}",
+    ),
+    (
+        'wrapper = ["{module}_sg48wrap", "{module}_pinwrap"]',
+        "wrapper = []",
+        r"synth/devices.toml:\d+: wrapper: an empty list",
+    ),
+    (
+        'wrapper = ["{module}_sg48wrap", "{module}_pinwrap"]',
+        'wrapper = ["{module}_sg48wrap", 2]',
+        r"synth/devices.toml:\d+: wrapper: expected a list of strings",
+    ),
+    (
+        'wrapper = "{module}_sg48wrap"',
+        "wrapper = 1",
+        r"synth/devices.toml:\d+: wrapper: expected str or list, got 1",
+    ),
+]
+# (device, module, the wrapper it is placed in; None: as it is): a wrapper of one pattern (hx8k,
+# up5k) and a list of them (gw1n9: the SG48 wrapper where synth/*.v has one, else the pin wrapper)
+WRAPPER_CASES = [
+    ("hx8k", "acore_board", "acore_board_pinwrap"),
+    ("up5k", "acore_board", "acore_board_sg48wrap"),
+    ("gw1n9", "acore_board", "acore_board_sg48wrap"),
+    ("gw1n9", "acore_top", "acore_top_pinwrap"),
+    ("gw1n9", "acore_serial_top", "acore_serial_top_pinwrap"),
+    ("gw1n9", "acore_track", None),
 ]
 
 fails = []
@@ -250,6 +281,13 @@ def check_devices(tmp):
             )
 
 
+def check_wrappers():
+    for dev, module, want in WRAPPER_CASES:
+        w, src = registry.pin_wrapper(ROOT, module, dev)
+        if w != want or (src is None) != (want is None):
+            fails.append(f"{module} on {dev}: wrapper {w} ({src}), expected {want}")
+
+
 def check_capacities():
     """Every checked-in log of a device counts its logic cells, block RAMs and DSPs out of the
     table's capacity (nextpnr's device database against the datasheet's figures)."""
@@ -307,14 +345,15 @@ def main():
         check_lines(work)
         check_cmake(work)
         check_devices(work)
+    check_wrappers()
     logs = check_capacities()
     check_header()
     for f in fails:
         print("FAIL", f)
     n = len(CASES) + 1 + 2 + len(DEVICE_CASES)
     print(
-        f"{n} registry and devices-table cases, {logs} place-and-route logs against the "
-        f"capacities: {len(fails)} failure(s)"
+        f"{n} registry and devices-table cases, {len(WRAPPER_CASES)} wrapper cases, {logs} "
+        f"place-and-route logs against the capacities: {len(fails)} failure(s)"
     )
     return 1 if fails else 0
 
