@@ -86,7 +86,9 @@ module acore_fold_datapath #(
 
 `include "acore_derived.vh"
 
-  // The valid bits read below (acore_fold_lean: v_q[t] for these t only), i = 0 .. 12 (-1 past).
+  // The valid bits read below (acore_fold_lean: v_q[t] for these t only), i = 0 .. NVTAP - 1 (-1
+  // past).
+  localparam integer NVTAP = 13;
   // C and LATENCY from R, PL and CL (as acore_fold_c; PL = 0 without correction): fewer arguments,
   // since Yosys's time at elaboration grows with them (checked against C and LATENCY below).
   function integer vtap(input integer i, input integer h, input integer sl, input integer r,
@@ -121,7 +123,7 @@ module acore_fold_datapath #(
     integer i, v;
     begin
       vtap_next = 1 << 30;
-      for (i = 0; i < 13; i = i + 1) begin
+      for (i = 0; i < NVTAP; i = i + 1) begin
         v = vtap(i, h, sl, r, pl, cl, sp);
         if (v > p && v < vtap_next) vtap_next = v;
       end
@@ -134,7 +136,7 @@ module acore_fold_datapath #(
     begin
       vtap_rank = 0;
       p = -(1 << 30);
-      for (i = 0; i < 13; i = i + 1) begin
+      for (i = 0; i < NVTAP; i = i + 1) begin
         p = vtap_next(p, h, sl, r, pl, cl, sp);
         if (p < t) vtap_rank = vtap_rank + 1;
       end
@@ -235,12 +237,12 @@ module acore_fold_datapath #(
     .clk_i(clk_i), .rst_i(rst_i), .addr_i(reg_addr_i), .wdata_i(reg_wdata_i), .we_i(reg_we_i),
     .rdata_o(reg_rdata_o), .atan_o(atan), .last_o(last_o), .raddr_i(raddr), .rdata_p_o(rdata));
 
-  // The OR of the valid bits' slices (the sparse chain's taps, at most 13: vtap).
-  function [LATENCY:0] v_or(input [LATENCY*13+12:0] one);
+  // The OR of the valid bits' slices (the sparse chain's taps, at most NVTAP).
+  function [LATENCY:0] v_or(input [NVTAP*(LATENCY+1)-1:0] one);
     integer i;
     begin
       v_or = {(LATENCY+1){1'b0}};
-      for (i = 0; i < 13; i = i + 1) v_or = v_or | one[i*(LATENCY+1) +: LATENCY+1];
+      for (i = 0; i < NVTAP; i = i + 1) v_or = v_or | one[i*(LATENCY+1) +: LATENCY+1];
     end
   endfunction
 
@@ -263,7 +265,7 @@ module acore_fold_datapath #(
       wire [ND:0] vd;
       // v_one's slice k: segment k's tap, vd[k + 1] at its clock (zero past ND). A loop over the
       // taps, not over every clock: a function call per clock and tap took Yosys 7 s to elaborate.
-      wire [13*(LATENCY+1)-1:0] v_one;
+      wire [NVTAP*(LATENCY+1)-1:0] v_one;
       assign vd[0] = accept_i;
       for (gt = 0; gt < ND; gt = gt + 1) begin : g_seg
         // The previous tap (T0, -1 before the first) and this one, the next above it.
@@ -274,7 +276,7 @@ module acore_fold_datapath #(
           .clk_i(clk_i), .rst_i(rst_i), .d_i(vd[gt]), .q_o(vd[gt + 1]));
         assign v_one[gt*(LATENCY+1) +: LATENCY+1] = {{LATENCY{1'b0}}, vd[gt + 1]} << T;
       end
-      for (gt = ND; gt < 13; gt = gt + 1) begin : g_none
+      for (gt = ND; gt < NVTAP; gt = gt + 1) begin : g_none
         assign v_one[gt*(LATENCY+1) +: LATENCY+1] = {(LATENCY+1){1'b0}};
       end
       assign v_q = v_or(v_one);

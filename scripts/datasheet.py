@@ -253,7 +253,7 @@ def main(argv):
         print(f"datasheet.py: {e}", file=sys.stderr)
         return 2
     if a.check:
-        old = open(a.out).read().splitlines() if a.out and os.path.exists(a.out) else []
+        old = open(a.out).read().splitlines() if os.path.exists(a.out) else []
         diff = list(difflib.unified_diff(old, text.splitlines(), a.out, "now", lineterm="", n=0))
         if diff:
             print(f"datasheet.py: {a.out} is not current (scripts/synth.sh's last step writes it):")

@@ -117,6 +117,11 @@ class Family:
         return [f"{self.title} {label}" for label, _ in self.columns]
 
 
+def wrapper_patterns(d):
+    """A device entry's wrapper patterns in order of preference (one pattern or a list of them)."""
+    return [d["wrapper"]] if isinstance(d["wrapper"], str) else list(d["wrapper"])
+
+
 class Device:
     """A part placed and routed: its family, part, pnr arguments, constraints, wrapper, capacity."""
 
@@ -127,7 +132,7 @@ class Device:
                 setattr(self, k, d[k])
         self.capacity = dict(d["capacity"])
         self.synth_options = list(d.get("synth_options", []))
-        self.wrappers = [d["wrapper"]] if isinstance(d["wrapper"], str) else list(d["wrapper"])
+        self.wrappers = wrapper_patterns(d)
 
     def wrapper_names(self, module):
         """The module's wrapper names on this device, in the table's order of preference."""
@@ -428,7 +433,7 @@ def _load(root):
                 raise DevicesError(
                     f"{where(t, 'capacity')}: capacity: {k}: unknown (known: {', '.join(CAPACITY)})"
                 )
-        patterns = [d["wrapper"]] if isinstance(d["wrapper"], str) else d["wrapper"]
+        patterns = wrapper_patterns(d)
         if not patterns:
             raise DevicesError(
                 f"{where(t, 'wrapper')}: wrapper: an empty list (one pattern or a list of them)"
